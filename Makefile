@@ -1,0 +1,45 @@
+# glintlab: the two set-up commands are `make demo` and `make test`.
+# Every target installs missing Debian packages first (scripts/install-deps.sh).
+
+JOBS        ?= $(shell nproc)
+BUILD       ?= build/release
+BUILD_ASAN  ?= build/asan
+CMAKE_FLAGS ?=
+
+.PHONY: all deps configure build demo test test-asan bench clean
+
+all: build
+
+deps:
+	@bash scripts/install-deps.sh
+
+$(BUILD)/build.ninja: | deps
+	cmake -S . -B $(BUILD) -G Ninja -DCMAKE_BUILD_TYPE=Release $(CMAKE_FLAGS)
+
+build: deps $(BUILD)/build.ninja
+	cmake --build $(BUILD) -j $(JOBS)
+
+# Renders the default scene to out/default.exr and out/default.png.
+demo: build
+	@mkdir -p out
+	$(BUILD)/glintlab render scenes/default.json -o out/default.exr
+
+# Builds Release and runs the whole test suite through ctest.
+test: build
+	cd $(BUILD) && ctest --output-on-failure -j $(JOBS)
+
+$(BUILD_ASAN)/build.ninja: | deps
+	cmake -S . -B $(BUILD_ASAN) -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DGLINTLAB_SANITIZE=ON $(CMAKE_FLAGS)
+
+# The same suite under AddressSanitizer + UndefinedBehaviorSanitizer.
+test-asan: deps $(BUILD_ASAN)/build.ninja
+	cmake --build $(BUILD_ASAN) -j $(JOBS) --target glintlab_tests glintlab_cli
+	cd $(BUILD_ASAN) && ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 \
+	    UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
+	    GLINTLAB_SANITIZED=1 ctest --output-on-failure -j $(JOBS)
+
+bench: build
+	$(BUILD)/glintlab_bench
+
+clean:
+	rm -rf build out

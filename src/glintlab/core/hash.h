@@ -1,0 +1,9 @@
+// C++ view of the shared hash functions (core/hash.glsl).
+#pragma once
+
+#include "glintlab/core/glsl.h"
+
+GLINTLAB_SHADER_BEGIN
+#include "glintlab/core/constants.glsl"
+#include "glintlab/core/hash.glsl"
+GLINTLAB_SHADER_END
