@@ -1,0 +1,127 @@
+#include "glintlab/core/image.h"
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <string>
+
+#include "glintlab/core/error.h"
+#include "glintlab/core/image_formats.h"
+
+namespace glintlab {
+
+Image::Image(int w, int h, glm::vec3 fill) : width(w), height(h) {
+    if (w < 0 || h < 0) fail("Image size {}x{} is negative", w, h);
+    pixels.assign(size_t(w) * size_t(h), fill);
+}
+
+float luminance(glm::vec3 rgb) {
+    return 0.2126f * rgb.x + 0.7152f * rgb.y + 0.0722f * rgb.z;
+}
+
+// IEC 61966-2-1: linear segment below 0.0031308 (encoded 0.04045), 2.4 power above.
+float srgb_encode(float linear) {
+    if (linear <= 0.0031308f) return 12.92f * linear;
+    return 1.055f * std::pow(linear, 1.0f / 2.4f) - 0.055f;
+}
+
+float srgb_decode(float encoded) {
+    if (encoded <= 0.04045f) return encoded / 12.92f;
+    return std::pow((encoded + 0.055f) / 1.055f, 2.4f);
+}
+
+namespace {
+
+std::string lower_extension(const std::filesystem::path& path) {
+    std::string ext = path.extension().string();
+    std::transform(ext.begin(), ext.end(), ext.begin(),
+                   [](unsigned char c) { return char(std::tolower(c)); });
+    return ext;
+}
+
+// Reports the first non-finite pixel in scan order, so the user can find it.
+void require_finite(const Image& image, const std::filesystem::path& path, const char* what) {
+    for (int y = 0; y < image.height; ++y) {
+        for (int x = 0; x < image.width; ++x) {
+            const glm::vec3& p = image.at(x, y);
+            if (std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z)) continue;
+            fail("{}: {} non-finite pixel at (x={}, y={}): ({}, {}, {}); pixels must be finite",
+                 path.string(), what, x, y, p.x, p.y, p.z);
+        }
+    }
+}
+
+// Writers must never leave a silently wrong file: check everything we can before opening it.
+void check_writable(const Image& image, const std::filesystem::path& path) {
+    if (image.width <= 0 || image.height <= 0)
+        fail("{}: cannot write an empty image ({}x{})", path.string(), image.width, image.height);
+    if (image.pixels.size() != size_t(image.width) * size_t(image.height))
+        fail("{}: image holds {} pixels but claims {}x{}", path.string(), image.pixels.size(),
+             image.width, image.height);
+    const std::filesystem::path parent = path.parent_path();
+    std::error_code ec;
+    if (!parent.empty() && !std::filesystem::is_directory(parent, ec))
+        fail("{}: cannot write, directory '{}' does not exist", path.string(), parent.string());
+    require_finite(image, path, "cannot write image with a");
+}
+
+}  // namespace
+
+Image read_image(const std::filesystem::path& path) {
+    const std::string ext = lower_extension(path);
+    const bool known =
+        ext == ".exr" || ext == ".hdr" || ext == ".png" || ext == ".jpg" || ext == ".jpeg";
+    if (!known)
+        fail("{}: unknown image extension '{}' (allowed: .exr, .hdr, .png, .jpg, .jpeg)",
+             path.string(), ext);
+    std::error_code ec;
+    if (!std::filesystem::exists(path, ec)) fail("{}: image file does not exist", path.string());
+    if (!std::filesystem::is_regular_file(path, ec))
+        fail("{}: image path is not a regular file", path.string());
+    if (std::filesystem::file_size(path, ec) == 0) fail("{}: image file is empty", path.string());
+
+    Image image;
+    if (ext == ".exr")
+        image = image_formats::read_exr(path);
+    else if (ext == ".hdr")
+        image = image_formats::read_radiance_hdr(path);
+    else
+        image = image_formats::read_srgb_8bit_or_16bit(path);
+
+    if (image.width <= 0 || image.height <= 0)
+        fail("{}: image has zero size ({}x{})", path.string(), image.width, image.height);
+    require_finite(image, path, "input image has a");
+    return image;
+}
+
+void write_exr(const Image& image, const std::filesystem::path& path) {
+    check_writable(image, path);
+    image_formats::write_exr_zip_float(image, path);
+}
+
+void write_png(const Image& image, const std::filesystem::path& path, float exposure_stops) {
+    if (!std::isfinite(exposure_stops))
+        fail("{}: exposure {} stops is not finite", path.string(), exposure_stops);
+    check_writable(image, path);
+    image_formats::write_png_8bit(image, path, exposure_stops);
+}
+
+void write_hdr(const Image& image, const std::filesystem::path& path) {
+    check_writable(image, path);
+    image_formats::write_radiance_hdr(image, path);
+}
+
+void write_image(const Image& image, const std::filesystem::path& path, float exposure_stops) {
+    const std::string ext = lower_extension(path);
+    if (ext == ".exr")
+        write_exr(image, path);
+    else if (ext == ".hdr")
+        write_hdr(image, path);
+    else if (ext == ".png")
+        write_png(image, path, exposure_stops);
+    else
+        fail("{}: unknown output image extension '{}' (allowed: .exr, .hdr, .png)", path.string(),
+             ext);
+}
+
+}  // namespace glintlab

@@ -1,0 +1,159 @@
+// OpenEXR reading and writing through the generic InputFile/FrameBuffer API,
+// which decodes every compression (including lossy DWAA/DWAB/B44 and PIZ)
+// and converts half channels to float for us.
+#include <cstdint>
+#include <exception>
+#include <string>
+
+#include <OpenEXR/ImfChannelList.h>
+#include <OpenEXR/ImfFrameBuffer.h>
+#include <OpenEXR/ImfHeader.h>
+#include <OpenEXR/ImfInputFile.h>
+#include <OpenEXR/ImfOutputFile.h>
+#include <OpenEXR/ImfRgbaFile.h>
+
+#include "glintlab/core/error.h"
+#include "glintlab/core/image_formats.h"
+
+namespace glintlab::image_formats {
+namespace {
+
+std::string channel_names(const Imf::ChannelList& channels) {
+    std::string names;
+    for (auto it = channels.begin(); it != channels.end(); ++it) {
+        if (!names.empty()) names += ", ";
+        names += it.name();
+    }
+    return names.empty() ? "none" : names;
+}
+
+struct Window {
+    int x0, y0, width, height;
+};
+
+Window window_of(const Imath::Box2i& box) {
+    return {box.min.x, box.min.y, box.max.x - box.min.x + 1, box.max.y - box.min.y + 1};
+}
+
+// The image is the display window; the data window may be offset from it,
+// smaller (uncovered pixels stay black) or larger (the overhang is cropped).
+Image place_in_display_window(const std::vector<glm::vec3>& data, Window dw, Window display) {
+    Image image(display.width, display.height);
+    for (int y = 0; y < dw.height; ++y) {
+        const int iy = dw.y0 + y - display.y0;
+        if (iy < 0 || iy >= display.height) continue;
+        for (int x = 0; x < dw.width; ++x) {
+            const int ix = dw.x0 + x - display.x0;
+            if (ix < 0 || ix >= display.width) continue;
+            image.at(ix, iy) = data[size_t(y) * size_t(dw.width) + size_t(x)];
+        }
+    }
+    return image;
+}
+
+// Luminance/chroma files (Y + RY/BY, subsampled chroma) need the RGBA
+// interface's colour conversion; it delivers half precision, which is all
+// such files store anyway.
+std::vector<glm::vec3> read_luminance_chroma(const std::filesystem::path& path, Window dw) {
+    Imf::RgbaInputFile file(path.c_str());
+    std::vector<Imf::Rgba> rgba(size_t(dw.width) * size_t(dw.height));
+    // The RGBA interface addresses pixels by absolute data-window coordinates; shift the base
+    // in integer arithmetic (out-of-range pointer arithmetic would be undefined behaviour).
+    const intptr_t shift =
+        (intptr_t(dw.x0) + intptr_t(dw.y0) * dw.width) * intptr_t(sizeof(Imf::Rgba));
+    file.setFrameBuffer(
+        reinterpret_cast<Imf::Rgba*>(reinterpret_cast<intptr_t>(rgba.data()) - shift), 1,
+        size_t(dw.width));
+    file.readPixels(dw.y0, dw.y0 + dw.height - 1);
+    std::vector<glm::vec3> data(rgba.size());
+    for (size_t i = 0; i < rgba.size(); ++i)
+        data[i] = glm::vec3(float(rgba[i].r), float(rgba[i].g), float(rgba[i].b));
+    return data;
+}
+
+std::vector<glm::vec3> read_rgb_or_grey(Imf::InputFile& file, const std::filesystem::path& path,
+                                        Window dw, const Imath::Box2i& data_box) {
+    const Imf::ChannelList& channels = file.header().channels();
+    const bool grey =
+        !channels.findChannel("R") && !channels.findChannel("G") && !channels.findChannel("B");
+    std::vector<glm::vec3> data(size_t(dw.width) * size_t(dw.height), glm::vec3(0.0f));
+    Imf::FrameBuffer frame;
+    const char* names[3] = {"R", "G", "B"};
+    for (int c = 0; c < 3; ++c) {
+        const char* name = grey ? "Y" : names[c];
+        const Imf::Channel* channel = channels.findChannel(name);
+        // A missing R, G or B reads as 0 (OpenEXR fills absent slices).
+        if (channel && (channel->xSampling != 1 || channel->ySampling != 1))
+            fail(
+                "{}: OpenEXR channel '{}' is subsampled ({}x{}); only full-resolution RGB or Y "
+                "is supported",
+                path.string(), name, channel->xSampling, channel->ySampling);
+        frame.insert(name, Imf::Slice::Make(Imf::FLOAT, &data[0][c], data_box, sizeof(glm::vec3),
+                                            sizeof(glm::vec3) * size_t(dw.width)));
+        // With a grey file the single Y channel goes into R; copied to G, B below.
+        if (grey) break;
+    }
+    file.setFrameBuffer(frame);
+    file.readPixels(data_box.min.y, data_box.max.y);
+    if (grey)
+        for (glm::vec3& p : data) p = glm::vec3(p.x);
+    return data;
+}
+
+}  // namespace
+
+Image read_exr(const std::filesystem::path& path) {
+    try {
+        Imf::InputFile file(path.c_str());
+        const Imf::Header& header = file.header();
+        const Imf::ChannelList& channels = header.channels();
+        const Imath::Box2i data_box = header.dataWindow();
+        const Window dw = window_of(data_box);
+        const Window display = window_of(header.displayWindow());
+        if (dw.width <= 0 || dw.height <= 0 || display.width <= 0 || display.height <= 0)
+            fail("{}: OpenEXR image has zero size (data window {}x{}, display window {}x{})",
+                 path.string(), dw.width, dw.height, display.width, display.height);
+
+        const bool has_rgb =
+            channels.findChannel("R") || channels.findChannel("G") || channels.findChannel("B");
+        const bool has_y = channels.findChannel("Y") != nullptr;
+        const bool has_chroma = channels.findChannel("RY") || channels.findChannel("BY");
+        std::vector<glm::vec3> data;
+        if (has_rgb || (has_y && !has_chroma))
+            data = read_rgb_or_grey(file, path, dw, data_box);
+        else if (has_y && has_chroma)
+            data = read_luminance_chroma(path, dw);
+        else
+            fail("{}: OpenEXR file has no R, G, B or Y channel (channels: {})", path.string(),
+                 channel_names(channels));
+        return place_in_display_window(data, dw, display);
+    } catch (const Error&) {
+        throw;
+    } catch (const std::exception& e) {
+        fail("{}: cannot read OpenEXR file: {}", path.string(), e.what());
+    }
+}
+
+void write_exr_zip_float(const Image& image, const std::filesystem::path& path) {
+    try {
+        Imf::Header header(image.width, image.height);
+        header.compression() = Imf::ZIP_COMPRESSION;
+        const char* names[3] = {"R", "G", "B"};
+        Imf::FrameBuffer frame;
+        // OutputFile only reads the pixels; the Slice API takes a non-const pointer.
+        char* base = reinterpret_cast<char*>(const_cast<glm::vec3*>(image.pixels.data()));
+        for (int c = 0; c < 3; ++c) {
+            header.channels().insert(names[c], Imf::Channel(Imf::FLOAT));
+            frame.insert(names[c],
+                         Imf::Slice(Imf::FLOAT, base + c * sizeof(float), sizeof(glm::vec3),
+                                    sizeof(glm::vec3) * size_t(image.width)));
+        }
+        Imf::OutputFile file(path.c_str(), header);
+        file.setFrameBuffer(frame);
+        file.writePixels(image.height);
+    } catch (const std::exception& e) {
+        fail("{}: cannot write OpenEXR file: {}", path.string(), e.what());
+    }
+}
+
+}  // namespace glintlab::image_formats

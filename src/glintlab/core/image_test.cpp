@@ -1,0 +1,218 @@
+#include "glintlab/core/image.h"
+
+#include <cmath>
+#include <fstream>
+#include <string>
+
+#include <OpenEXR/ImfChannelList.h>
+#include <OpenEXR/ImfFrameBuffer.h>
+#include <OpenEXR/ImfHeader.h>
+#include <OpenEXR/ImfInputFile.h>
+#include <OpenEXR/ImfOutputFile.h>
+#include <gtest/gtest.h>
+
+#include "glintlab/core/error.h"
+#include "glintlab/core/image_test_util.h"
+
+namespace glintlab {
+namespace {
+
+using testing::ScratchDir;
+
+// Expects fn() to throw glintlab::Error whose message contains every needle.
+template <typename Fn>
+void expect_error(Fn fn, std::initializer_list<std::string> needles) {
+    try {
+        fn();
+        ADD_FAILURE() << "no glintlab::Error thrown";
+    } catch (const Error& e) {
+        for (const std::string& n : needles)
+            EXPECT_NE(std::string(e.what()).find(n), std::string::npos)
+                << "message '" << e.what() << "' lacks '" << n << "'";
+    }
+}
+
+// A deterministic image with values from 0 to ~4 and distinct channels.
+Image ramp_image(int w, int h) {
+    Image image(w, h);
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x)
+            image.at(x, y) = glm::vec3(4.0f * float(x) / float(w - 1), float(y) / float(h - 1),
+                                       0.001f * float(x * y));
+    return image;
+}
+
+TEST(ImageType, RowMajorTopLeftOrigin) {
+    Image image(3, 2, glm::vec3(0.5f));
+    EXPECT_EQ(image.pixels.size(), 6u);
+    image.at(2, 1) = glm::vec3(7.0f);
+    EXPECT_EQ(image.pixels[5], glm::vec3(7.0f));  // last pixel: x = width-1, y = height-1
+    image.at(1, 0) = glm::vec3(3.0f);
+    EXPECT_EQ(image.pixels[1], glm::vec3(3.0f));
+    EXPECT_EQ(image.pixels[0], glm::vec3(0.5f));
+}
+
+TEST(ImageColor, LuminanceUsesRec709Weights) {
+    // BT.709 weights; they sum to 1 so white has luminance 1 (float sum is exact to 1 ulp).
+    EXPECT_FLOAT_EQ(luminance(glm::vec3(1.0f, 0.0f, 0.0f)), 0.2126f);
+    EXPECT_FLOAT_EQ(luminance(glm::vec3(0.0f, 1.0f, 0.0f)), 0.7152f);
+    EXPECT_FLOAT_EQ(luminance(glm::vec3(0.0f, 0.0f, 1.0f)), 0.0722f);
+    EXPECT_NEAR(luminance(glm::vec3(1.0f)), 1.0f, 1e-6f);
+}
+
+TEST(ImageColor, SrgbCurvesMatchStandardAndInvert) {
+    // Reference values from the IEC 61966-2-1 formulas evaluated in double precision.
+    EXPECT_NEAR(srgb_encode(0.18f), 0.461356129500f, 1e-6f);
+    EXPECT_NEAR(srgb_decode(0.5f), 0.214041140482f, 1e-6f);
+    EXPECT_FLOAT_EQ(srgb_encode(1.0f), 1.0f);
+    EXPECT_FLOAT_EQ(srgb_encode(0.0f), 0.0f);
+    EXPECT_FLOAT_EQ(srgb_encode(0.001f), 0.01292f);  // linear toe
+    // The two pieces meet at 0.0031308 (encoded 0.04045) to within the constants' 5 digits.
+    EXPECT_NEAR(1.055f * std::pow(0.0031308f, 1.0f / 2.4f) - 0.055f, 12.92f * 0.0031308f, 1e-6f);
+    // Round trip: both curves are smooth with bounded slope on [0,1], so float rounding
+    // (a few ulp at each pow) keeps the inverse within 1e-5 relative.
+    for (int i = 0; i <= 1000; ++i) {
+        const float x = float(i) / 1000.0f;
+        EXPECT_NEAR(srgb_decode(srgb_encode(x)), x, 1e-5f * x + 1e-7f) << x;
+    }
+}
+
+TEST(ImageExr, WriteExrIsLosslessFloatZip) {
+    ScratchDir dir;
+    const Image image = ramp_image(37, 23);
+    const auto path = dir / "ramp.exr";
+    write_exr(image, path);
+    Imf::InputFile file(path.c_str());
+    EXPECT_EQ(file.header().compression(), Imf::ZIP_COMPRESSION);
+    for (const char* c : {"R", "G", "B"}) {
+        ASSERT_NE(file.header().channels().findChannel(c), nullptr) << c;
+        EXPECT_EQ(file.header().channels().findChannel(c)->type, Imf::FLOAT) << c;
+    }
+    const Image back = read_image(path);
+    ASSERT_EQ(back.width, 37);
+    ASSERT_EQ(back.height, 23);
+    EXPECT_EQ(back.pixels, image.pixels);  // float32 + ZIP: bit-exact
+}
+
+TEST(ImagePng, RoundTripWithinHalfAnEightBitStep) {
+    ScratchDir dir;
+    const Image image = ramp_image(64, 8);
+    for (float exposure : {0.0f, -1.5f}) {
+        const auto path = dir / "ramp.png";
+        write_png(image, path, exposure);
+        const Image back = read_image(path);
+        ASSERT_EQ(back.width, 64);
+        ASSERT_EQ(back.height, 8);
+        const float scale = std::exp2(exposure);
+        for (size_t i = 0; i < image.pixels.size(); ++i) {
+            for (int c = 0; c < 3; ++c) {
+                // Rounding to 8 bits moves the encoded value by at most half a step (1/510);
+                // values above 1 after exposure clamp to white.
+                const float want = std::min(srgb_encode(image.pixels[i][c] * scale), 1.0f);
+                EXPECT_NEAR(srgb_encode(back.pixels[i][c]), want, 0.5f / 255.0f + 1e-5f)
+                    << "pixel " << i << " channel " << c << " exposure " << exposure;
+            }
+        }
+    }
+}
+
+TEST(ImagePng, ClampsAndDecodesExactCodes) {
+    ScratchDir dir;
+    Image image(3, 1);
+    image.at(0, 0) = glm::vec3(-1.0f, 0.0f, 5.0f);  // below and above the displayable range
+    image.at(1, 0) = glm::vec3(srgb_decode(128.0f / 255.0f));  // exactly code 128
+    image.at(2, 0) = glm::vec3(0.25f);                         // exposure +2 stops -> 1.0
+    write_png(image, dir / "c.png");
+    Image back = read_image(dir / "c.png");
+    EXPECT_EQ(back.at(0, 0), glm::vec3(0.0f, 0.0f, 1.0f));
+    EXPECT_EQ(back.at(1, 0), glm::vec3(srgb_decode(128.0f / 255.0f)));
+    write_png(image, dir / "e.png", 2.0f);
+    back = read_image(dir / "e.png");
+    EXPECT_EQ(back.at(2, 0), glm::vec3(1.0f));
+}
+
+TEST(ImageHdr, RoundTripWithinRgbeMantissaPrecision) {
+    ScratchDir dir;
+    Image image = ramp_image(40, 10);
+    image.at(3, 3) = glm::vec3(1000.0f, 0.5f, 20.0f);
+    write_image(image, dir / "ramp.hdr");
+    const Image back = read_image(dir / "ramp.hdr");
+    ASSERT_EQ(back.width, 40);
+    ASSERT_EQ(back.height, 10);
+    for (size_t i = 0; i < image.pixels.size(); ++i) {
+        const glm::vec3 p = image.pixels[i];
+        // RGBE shares one exponent 2^e with max component in [2^(e-1), 2^e) and stores 8-bit
+        // truncated mantissas, so each channel is off by less than 2^(e-8) <= max/128.
+        const float bound = std::max({p.x, p.y, p.z}) / 128.0f + 1e-30f;
+        for (int c = 0; c < 3; ++c) EXPECT_NEAR(back.pixels[i][c], p[c], bound) << i;
+    }
+}
+
+TEST(ImageErrors, MissingUnknownEmptyAndCorruptFilesNameTheFile) {
+    ScratchDir dir;
+    const auto missing = dir / "nope.exr";
+    expect_error([&] { read_image(missing); }, {missing.string(), "does not exist"});
+    expect_error([&] { read_image(dir / "x.tiff"); }, {"x.tiff", "unknown", ".exr"});
+    for (const char* name : {"empty.exr", "empty.png", "empty.hdr"}) {
+        std::ofstream(dir / name).close();
+        expect_error([&] { read_image(dir / name); }, {name, "empty"});
+    }
+    for (const char* name : {"junk.exr", "junk.png", "junk.hdr", "junk.jpg"}) {
+        std::ofstream(dir / name) << "this is not an image file at all, just some text\n";
+        expect_error([&] { read_image(dir / name); }, {name, "cannot read"});
+    }
+    // A valid PNG under a .hdr name is not silently reinterpreted.
+    write_png(Image(2, 2, glm::vec3(0.5f)), dir / "real.png");
+    std::filesystem::copy_file(dir / "real.png", dir / "fake.hdr");
+    expect_error([&] { read_image(dir / "fake.hdr"); }, {"fake.hdr"});
+    // A truncated EXR (valid header, missing pixel data).
+    write_exr(ramp_image(64, 64), dir / "full.exr");
+    const auto size = std::filesystem::file_size(dir / "full.exr");
+    std::filesystem::copy_file(dir / "full.exr", dir / "cut.exr");
+    std::filesystem::resize_file(dir / "cut.exr", size / 2);
+    expect_error([&] { read_image(dir / "cut.exr"); }, {"cut.exr"});
+}
+
+TEST(ImageErrors, RejectsNonFinitePixelsOnReadWithCoordinates) {
+    ScratchDir dir;
+    // write_exr refuses NaN, so write the bad map with OpenEXR directly.
+    Image image(6, 4, glm::vec3(1.0f));
+    image.at(3, 2).y = std::nanf("");
+    image.at(5, 3).x = INFINITY;
+    {
+        Imf::Header header(6, 4);
+        Imf::FrameBuffer frame;
+        const char* names[3] = {"R", "G", "B"};
+        for (int c = 0; c < 3; ++c) {
+            header.channels().insert(names[c], Imf::Channel(Imf::FLOAT));
+            frame.insert(names[c],
+                         Imf::Slice(Imf::FLOAT, reinterpret_cast<char*>(&image.pixels[0][c]),
+                                    sizeof(glm::vec3), 6 * sizeof(glm::vec3)));
+        }
+        Imf::OutputFile out((dir / "nan.exr").c_str(), header);
+        out.setFrameBuffer(frame);
+        out.writePixels(4);
+    }
+    // The first offending pixel in scan order is reported.
+    expect_error([&] { read_image(dir / "nan.exr"); }, {"nan.exr", "x=3, y=2", "non-finite"});
+}
+
+TEST(ImageErrors, WritersRefuseMissingDirectoryAndNonFinitePixels) {
+    ScratchDir dir;
+    const Image good(4, 4, glm::vec3(0.5f));
+    for (const char* name : {"a.exr", "a.png", "a.hdr"}) {
+        const auto path = dir / "no_such_dir" / name;
+        expect_error([&] { write_image(good, path); }, {path.string(), "does not exist"});
+    }
+    Image bad = good;
+    bad.at(1, 2).z = std::nanf("");
+    for (const char* name : {"b.exr", "b.png", "b.hdr"}) {
+        expect_error([&] { write_image(bad, dir / name); }, {name, "x=1, y=2", "non-finite"});
+        EXPECT_FALSE(std::filesystem::exists(dir / name)) << "no partial file may be left";
+    }
+    expect_error([&] { write_image(good, dir / "c.bmp"); }, {"c.bmp", "unknown", ".png"});
+    expect_error([&] { write_image(Image(), dir / "d.exr"); }, {"d.exr", "empty"});
+}
+
+}  // namespace
+}  // namespace glintlab
