@@ -1,0 +1,24 @@
+// glTF 2.0 meshes (.gltf with embedded or external buffers, and .glb),
+// through tinygltf.
+#pragma once
+
+#include <filesystem>
+
+#include "glintlab/scene/mesh.h"
+
+namespace glintlab {
+
+// Loads every triangle primitive of every mesh instanced by the nodes of the
+// default scene (scene 0 when none is marked; all root nodes when the file
+// has no scenes), with the node hierarchy's transforms (matrix or TRS)
+// applied, merged into one mesh. TEXCOORD_0 becomes the uvs unchanged (glTF
+// puts the uv origin at the image's top-left corner). Normals (uvs) are kept
+// only if every primitive has them. Index types u8/u16/u32 and non-indexed
+// primitives are supported; textures and materials are ignored.
+// The format (JSON or binary) is chosen from the file's first bytes.
+// Throws glintlab::Error naming the file: missing file, parse error (with
+// tinygltf's message), unsupported primitive mode or accessor layout,
+// out-of-range indices, non-finite values, no triangles.
+TriangleMesh load_gltf(const std::filesystem::path& path);
+
+}  // namespace glintlab

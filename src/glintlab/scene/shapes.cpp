@@ -1,0 +1,116 @@
+#include "glintlab/scene/shapes.h"
+
+#include <cmath>
+
+#include <glm/gtc/constants.hpp>
+
+#include "glintlab/core/error.h"
+
+namespace glintlab {
+
+namespace {
+
+void require_positive(const char* shape, const char* key, float value) {
+    if (!(value > 0.0f) || !std::isfinite(value))
+        fail("{}: {} must be a finite number > 0, got {}", shape, key, value);
+}
+
+void require_at_least(const char* shape, const char* key, int value, int minimum) {
+    // The upper bound keeps the vertex count within 32-bit indices.
+    constexpr int kMaximum = 1 << 14;
+    if (value < minimum || value > kMaximum)
+        fail("{}: {} must be in [{}, {}], got {}", shape, key, minimum, kMaximum, value);
+}
+
+// Emits the two triangles of every cell of a (columns+1) x (rows+1) vertex
+// grid laid out row-major, counter-clockwise when column index increases
+// along the first tangent and row index along the second.
+// With `pole_rows`, the first and last rows collapse to a point (sphere
+// poles), so the degenerate half of each of their cells is dropped.
+void add_grid_triangles(TriangleMesh& mesh, int columns, int rows, bool pole_rows) {
+    const auto stride = static_cast<unsigned>(columns + 1);
+    for (int j = 0; j < rows; ++j) {
+        for (int i = 0; i < columns; ++i) {
+            const unsigned a = static_cast<unsigned>(j) * stride + static_cast<unsigned>(i);
+            const unsigned b = a + 1;
+            const unsigned c = b + stride;
+            const unsigned d = a + stride;
+            // In the first row a and b coincide (pole); in the last, c and d.
+            if (!(pole_rows && j == 0)) mesh.triangles.emplace_back(a, b, c);
+            if (!(pole_rows && j == rows - 1)) mesh.triangles.emplace_back(a, c, d);
+        }
+    }
+}
+
+}  // namespace
+
+TriangleMesh make_quad(glm::vec2 size, glm::vec2 uv_scale) {
+    require_positive("quad", "size.x", size.x);
+    require_positive("quad", "size.y", size.y);
+    const glm::vec2 h = 0.5f * size;
+    TriangleMesh mesh;
+    mesh.positions = {{-h.x, 0, h.y}, {h.x, 0, h.y}, {h.x, 0, -h.y}, {-h.x, 0, -h.y}};
+    mesh.normals.assign(4, glm::vec3(0, 1, 0));
+    mesh.uvs = {{0, 0}, {uv_scale.x, 0}, {uv_scale.x, uv_scale.y}, {0, uv_scale.y}};
+    mesh.triangles = {{0, 1, 2}, {0, 2, 3}};
+    return mesh;
+}
+
+TriangleMesh make_sphere(float radius, int segments_phi, int rings_theta) {
+    require_positive("sphere", "radius", radius);
+    require_at_least("sphere", "segments_phi", segments_phi, 3);
+    require_at_least("sphere", "rings_theta", rings_theta, 2);
+    TriangleMesh mesh;
+    const size_t count = static_cast<size_t>(segments_phi + 1) * (rings_theta + 1);
+    mesh.positions.reserve(count);
+    mesh.normals.reserve(count);
+    mesh.uvs.reserve(count);
+    for (int j = 0; j <= rings_theta; ++j) {
+        const float v = static_cast<float>(j) / static_cast<float>(rings_theta);
+        const float theta = v * glm::pi<float>();
+        for (int i = 0; i <= segments_phi; ++i) {
+            const float u = static_cast<float>(i) / static_cast<float>(segments_phi);
+            const float phi = u * glm::two_pi<float>();
+            const glm::vec3 n(std::sin(theta) * std::cos(phi), std::cos(theta),
+                              std::sin(theta) * std::sin(phi));
+            mesh.positions.push_back(radius * n);
+            mesh.normals.push_back(n);
+            mesh.uvs.emplace_back(u, v);
+        }
+    }
+    // cross(dp/dphi, dp/dtheta) points outward, so phi is the first grid
+    // direction and theta the second.
+    add_grid_triangles(mesh, segments_phi, rings_theta, /*pole_rows=*/true);
+    return mesh;
+}
+
+TriangleMesh make_torus(float major_radius, float minor_radius, int segments_major,
+                        int segments_minor, glm::vec2 uv_scale) {
+    require_positive("torus", "major_radius", major_radius);
+    require_positive("torus", "minor_radius", minor_radius);
+    require_at_least("torus", "segments_major", segments_major, 3);
+    require_at_least("torus", "segments_minor", segments_minor, 3);
+    TriangleMesh mesh;
+    const size_t count = static_cast<size_t>(segments_major + 1) * (segments_minor + 1);
+    mesh.positions.reserve(count);
+    mesh.normals.reserve(count);
+    mesh.uvs.reserve(count);
+    for (int j = 0; j <= segments_minor; ++j) {
+        const float v = static_cast<float>(j) / static_cast<float>(segments_minor);
+        const float b = v * glm::two_pi<float>();
+        for (int i = 0; i <= segments_major; ++i) {
+            const float u = static_cast<float>(i) / static_cast<float>(segments_major);
+            const float a = u * glm::two_pi<float>();
+            const glm::vec3 n(std::cos(b) * std::cos(a), std::sin(b), -std::cos(b) * std::sin(a));
+            const glm::vec3 centre(major_radius * std::cos(a), 0.0f, -major_radius * std::sin(a));
+            mesh.positions.push_back(centre + minor_radius * n);
+            mesh.normals.push_back(n);
+            mesh.uvs.push_back(glm::vec2(u, v) * uv_scale);
+        }
+    }
+    // cross(dp/da, dp/db) points away from the tube axis.
+    add_grid_triangles(mesh, segments_major, segments_minor, /*pole_rows=*/false);
+    return mesh;
+}
+
+}  // namespace glintlab
