@@ -87,7 +87,7 @@ double ProgressReporter::elapsed_seconds() const {
 void ProgressReporter::draw(bool final_line) {
     std::lock_guard<std::mutex> lock(draw_mutex_);
     if (!final_line && finished_ns_.load() >= 0) return;  // a late update must not redraw
-    const int64_t done = done_.load();  // an early done() shows where it stopped
+    const int64_t done = done_.load();                    // an early done() shows where it stopped
     // Room for the bar: the terminal width less the title and "[] 100% 59.9s elapsed, 59.9s left".
     const int columns = terminal_columns();
     const int bar = std::clamp(columns - int(title_.size()) - 40, 10, 50);
