@@ -42,17 +42,27 @@ bool row_is_zero(const Image& image, int y) {
     return std::all_of(row, row + image.width, [](glm::vec3 p) { return p == glm::vec3(0.0f); });
 }
 
+std::vector<char> zero_rows(const Image& image) {
+    std::vector<char> zero(size_t(image.height));
+    tbb::parallel_for(0, image.height, [&](int y) { zero[size_t(y)] = row_is_zero(image, y); });
+    return zero;
+}
+
 Image blur_rows(const Image& in, const std::vector<float>& taps) {
     const int radius = int(taps.size() / 2);
     const std::vector<float> scale = source_scales(taps, in.width);
     Image out(in.width, in.height);
     tbb::parallel_for(0, in.height, [&](int y) {
         if (row_is_zero(in, y)) return;  // bloom sources are sparse: most rows are empty
+        // Scaled sources with `radius` zeros either side: the convolution below then needs
+        // no bounds tests in its inner loop.
+        std::vector<glm::vec3> padded(size_t(in.width + 2 * radius), glm::vec3(0.0f));
+        for (int x = 0; x < in.width; ++x)
+            padded[size_t(x + radius)] = scale[size_t(x)] * in.at(x, y);
         for (int x = 0; x < in.width; ++x) {
             glm::vec3 sum(0.0f);
-            const int lo = std::max(-radius, x - in.width + 1), hi = std::min(radius, x);
-            for (int k = lo; k <= hi; ++k)
-                sum += taps[size_t(k + radius)] * scale[size_t(x - k)] * in.at(x - k, y);
+            const glm::vec3* src = &padded[size_t(x)];  // src[j] is source x - radius + j
+            for (size_t j = 0; j < taps.size(); ++j) sum += taps[taps.size() - 1 - j] * src[j];
             out.at(x, y) = sum;
         }
     });
@@ -63,11 +73,13 @@ Image blur_rows(const Image& in, const std::vector<float>& taps) {
 Image blur_columns(const Image& in, const std::vector<float>& taps) {
     const int radius = int(taps.size() / 2);
     const std::vector<float> scale = source_scales(taps, in.height);
+    const std::vector<char> zero = zero_rows(in);
     Image out(in.width, in.height);
     tbb::parallel_for(0, in.height, [&](int y) {
         glm::vec3* dst = &out.pixels[size_t(y) * size_t(in.width)];
         const int lo = std::max(-radius, y - in.height + 1), hi = std::min(radius, y);
         for (int k = lo; k <= hi; ++k) {
+            if (zero[size_t(y - k)]) continue;
             const float w = taps[size_t(k + radius)] * scale[size_t(y - k)];
             const glm::vec3* src = &in.pixels[size_t(y - k) * size_t(in.width)];
             for (int x = 0; x < in.width; ++x) dst[x] += w * src[x];
