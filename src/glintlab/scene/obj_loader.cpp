@@ -72,8 +72,12 @@ TriangleMesh load_obj(const std::filesystem::path& path) {
                     vertex_of.try_emplace(key, static_cast<unsigned>(mesh.positions.size()));
                 if (inserted) {
                     mesh.positions.push_back(fetch<3>(attrib.vertices, key[0], "vertex", path));
-                    if (all_normals)
-                        mesh.normals.push_back(fetch<3>(attrib.normals, key[1], "normal", path));
+                    if (all_normals) {
+                        // OBJ does not require unit normals; shading does.
+                        const glm::vec3 n = fetch<3>(attrib.normals, key[1], "normal", path);
+                        const float len = glm::length(n);
+                        mesh.normals.push_back(len > 0.0f ? n / len : n);
+                    }
                     if (all_uvs)
                         mesh.uvs.push_back(fetch<2>(attrib.texcoords, key[2], "texcoord", path));
                 }

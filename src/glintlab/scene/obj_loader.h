@@ -11,7 +11,7 @@ namespace glintlab {
 // positions/normals/uvs are de-indexed into one vertex per distinct
 // (position, normal, uv) index triple. Normals (uvs) are kept only if every
 // face corner has one; otherwise the mesh has none (faceted shading / no uv
-// parameterization). Materials are ignored.
+// parameterization). Normals are normalised. Materials are ignored.
 // Throws glintlab::Error naming the file when it is missing or malformed,
 // has no triangles, indices out of range or non-finite values.
 TriangleMesh load_obj(const std::filesystem::path& path);

@@ -51,7 +51,7 @@ TEST_F(MeshObj, QuadWithTexcoordsAndNormals) {
                                           "# unit quad in the xz plane\n"
                                           "v -1 0 1\nv 1 0 1\nv 1 0 -1\nv -1 0 -1\n"
                                           "vt 0 0\nvt 1 0\nvt 1 1\nvt 0 1\n"
-                                          "vn 0 1 0\n"
+                                          "vn 0 2 0\n"  // not unit: normalised on load
                                           "f 1/1/1 2/2/1 3/3/1 4/4/1\n"));
     // The quad face is split into 2 triangles over its 4 shared corners.
     ASSERT_EQ(m.triangles.size(), 2u);
