@@ -1,2 +1,29 @@
+// glintlab: render, validate and inspect glint models from the command line.
 #include <cstdio>
-int main() { return 0; }
+#include <exception>
+
+#include <fmt/format.h>
+
+#include "commands.h"
+#include "glintlab/core/error.h"
+
+int main(int argc, char** argv) {
+    CLI::App app{"glintlab: rendering and validation of glint (discrete microfacet) models"};
+    app.require_subcommand(1);
+    int status = 0;
+    glintlab::cmd::add_render_command(app, &status);
+    glintlab::cmd::add_info_command(app, &status);
+    glintlab::cmd::add_validate_command(app, &status);
+    try {
+        app.parse(argc, argv);
+    } catch (const CLI::ParseError& e) {
+        return app.exit(e);
+    } catch (const glintlab::Error& e) {
+        fmt::print(stderr, "glintlab: error: {}\n", e.what());
+        return 1;
+    } catch (const std::exception& e) {
+        fmt::print(stderr, "glintlab: internal error: {}\n", e.what());
+        return 2;
+    }
+    return status;
+}

@@ -3,7 +3,7 @@
 
 #include "glintlab/core/glsl.h"
 
-GLINTLAB_SHADER_BEGIN
+GLINTLAB_SHADER_FUNCTIONS_BEGIN
 #include "glintlab/core/constants.glsl"
 #include "glintlab/core/hash.glsl"
-GLINTLAB_SHADER_END
+GLINTLAB_SHADER_FUNCTIONS_END

@@ -1,0 +1,14 @@
+// Subcommands of the `glintlab` command-line tool, each registered on the
+// CLI11 app by its own file.
+#pragma once
+
+#include <CLI/CLI.hpp>
+
+namespace glintlab::cmd {
+
+// Each returns the process exit status through *status once run.
+void add_render_command(CLI::App& app, int* status);
+void add_info_command(CLI::App& app, int* status);
+void add_validate_command(CLI::App& app, int* status);
+
+}  // namespace glintlab::cmd

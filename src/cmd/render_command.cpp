@@ -1,0 +1,98 @@
+#include <chrono>
+#include <filesystem>
+#include <optional>
+#include <regex>
+
+#include <fmt/format.h>
+
+#include "commands.h"
+#include "glintlab/core/bloom.h"
+#include "glintlab/core/error.h"
+#include "glintlab/core/image.h"
+#include "glintlab/render/renderer.h"
+#include "glintlab/scene/scene_loader.h"
+
+namespace glintlab::cmd {
+namespace {
+
+struct RenderArgs {
+    std::string scene;
+    std::string output;
+    std::optional<int> spp;
+    std::optional<int64_t> seed;
+    int threads = 0;
+    std::string res;
+    std::string integrator;
+    std::optional<float> exposure;
+    bool quiet = false;
+};
+
+int run_render(const RenderArgs& a) {
+    Scene scene = load_scene(a.scene);
+    if (a.spp) scene.render.spp = *a.spp;
+    if (a.seed) scene.render.seed = static_cast<uint64_t>(*a.seed);
+    if (!a.integrator.empty())
+        scene.render.integrator = a.integrator == "path" ? RenderSettings::Integrator::Path
+                                                         : RenderSettings::Integrator::Direct;
+    if (!a.res.empty()) {
+        std::smatch m;
+        const std::regex re(R"((\d{1,5})x(\d{1,5}))");
+        if (!std::regex_match(a.res, m, re))
+            fail("--res: expected WxH with W and H in [1, 16384], got \"{}\"", a.res);
+        const int w = std::stoi(m[1]), h = std::stoi(m[2]);
+        if (w < 1 || h < 1 || w > 16384 || h > 16384)
+            fail("--res: W and H must be in [1, 16384], got {}x{}", w, h);
+        scene.camera.width = w, scene.camera.height = h;
+    }
+    if (a.exposure) scene.film.exposure = *a.exposure;
+
+    std::filesystem::path exr = a.output;
+    if (exr.empty()) exr = std::filesystem::path("out") / std::filesystem::path(a.scene).stem();
+    if (exr.extension() != ".exr") exr += ".exr";
+    if (!exr.parent_path().empty()) std::filesystem::create_directories(exr.parent_path());
+
+    const auto start = std::chrono::steady_clock::now();
+    Image image = render_scene(scene, RenderOptions{a.threads, a.quiet});
+    const double seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    const bool bloom = scene.film.bloom.strength > 0.0f;
+    const Image preview = bloom ? apply_bloom(image, scene.film.bloom) : image;
+    write_exr(scene.film.bloom_exr ? preview : image, exr);
+    std::filesystem::path png = exr;
+    png.replace_extension(".png");
+    write_png(preview, png, scene.film.exposure);
+    if (!a.quiet)
+        fmt::print("rendered {} ({}x{}, {} spp, {}) in {:.2f} s -> {}, {}\n", a.scene,
+                   scene.camera.width, scene.camera.height, scene.render.spp,
+                   scene.render.integrator == RenderSettings::Integrator::Path ? "path" : "direct",
+                   seconds, exr.string(), png.string());
+    return 0;
+}
+
+}  // namespace
+
+void add_render_command(CLI::App& app, int* status) {
+    auto args = std::make_shared<RenderArgs>();
+    CLI::App* sub = app.add_subcommand(
+        "render", "Render a JSON scene on the CPU to EXR (linear) and a PNG preview (sRGB)");
+    sub->add_option("scene", args->scene, "Scene file (JSON, see docs/SCENE_FORMAT.md)")
+        ->required()
+        ->check(CLI::ExistingFile);
+    sub->add_option("-o,--output", args->output,
+                    "Output EXR path (the PNG preview goes beside it); default out/<scene>.exr");
+    sub->add_option("--spp", args->spp, "Samples per pixel (overrides the scene)")
+        ->check(CLI::Range(1, 1 << 20));
+    sub->add_option("--seed", args->seed, "Random seed (overrides the scene)")
+        ->check(CLI::Range(int64_t{0}, int64_t{4294967295}));
+    sub->add_option("--threads", args->threads, "Worker threads (0 = all cores)")
+        ->check(CLI::Range(0, 1024));
+    sub->add_option("--res", args->res, "Resolution WxH (overrides the scene), e.g. 256x256");
+    sub->add_option("--integrator", args->integrator, "direct or path (overrides the scene)")
+        ->check(CLI::IsMember({"direct", "path"}));
+    sub->add_option("--exposure", args->exposure, "PNG exposure in stops (overrides the scene)")
+        ->check(CLI::Range(-20.0f, 20.0f));
+    sub->add_flag("-q,--quiet", args->quiet, "No progress bar or summary");
+    sub->callback([args, status] { *status = run_render(*args); });
+}
+
+}  // namespace glintlab::cmd

@@ -1,0 +1,45 @@
+#include <functional>
+#include <map>
+
+#include <fmt/format.h>
+
+#include "commands.h"
+#include "glintlab/validate/report.h"
+
+namespace glintlab::cmd {
+namespace {
+
+struct ValidateArgs {
+    std::string suite;
+    bool json = false;
+    int64_t seed = 1;
+};
+
+using SuiteRunner = std::function<ValidationReport(const ValidateArgs&)>;
+
+// The validation suites, by name. Each model issue adds its own.
+const std::map<std::string, SuiteRunner>& suites() {
+    static const std::map<std::string, SuiteRunner> table = {};
+    return table;
+}
+
+}  // namespace
+
+void add_validate_command(CLI::App& app, int* status) {
+    auto args = std::make_shared<ValidateArgs>();
+    CLI::App* sub = app.add_subcommand(
+        "validate", "Run a validation suite; exit status 0 only if every check passes");
+    std::vector<std::string> names;
+    for (const auto& [name, _] : suites()) names.push_back(name);
+    sub->add_option("suite", args->suite, "Suite name")->required()->check(CLI::IsMember(names));
+    sub->add_flag("--json", args->json, "Print one JSON object (docs/VALIDATION.md)");
+    sub->add_option("--seed", args->seed, "Random seed")->check(CLI::Range(int64_t{0}, int64_t{1} << 40));
+    sub->callback([args, status] {
+        const ValidationReport report = suites().at(args->suite)(*args);
+        if (args->json) fmt::print("{}\n", report.to_json().dump(2));
+        else fmt::print("{}", report.to_text());
+        *status = report.passed() ? 0 : 1;
+    });
+}
+
+}  // namespace glintlab::cmd

@@ -1,0 +1,66 @@
+#include "glintlab/glints/glint_bxdf.h"
+
+#include "glintlab/microfacet/microfacet.h"
+#include "glintlab/scene/scene.h"
+
+namespace glintlab {
+namespace {
+
+int ndf_id(NdfType t) { return t == NdfType::GGX ? shader::NDF_GGX : shader::NDF_BECKMANN; }
+
+}  // namespace
+
+float GlintBxdf::footprint_ndf(glm::vec3 h) const {
+    // Only `smooth` exists so far; the models of later issues dispatch here
+    // on desc->model (a closed set, ARCHITECTURE.md §5).
+    return shader::D_Microfacet(ndf_id(desc->ndf), h, desc->alpha_x, desc->alpha_y);
+}
+
+glm::vec3 GlintBxdf::fresnel(float cos_oh) const {
+    const FresnelDesc& f = desc->fresnel;
+    switch (f.mode) {
+        case FresnelDesc::Mode::None: return glm::vec3(1.0f);
+        case FresnelDesc::Mode::Schlick: return shader::F_Schlick(f.f0, cos_oh);
+        case FresnelDesc::Mode::Conductor: return shader::F_Conductor(cos_oh, f.eta, f.k);
+        case FresnelDesc::Mode::Dielectric: return glm::vec3(shader::F_Dielectric(cos_oh, f.eta.x));
+    }
+    return glm::vec3(1.0f);
+}
+
+glm::vec3 GlintBxdf::f(glm::vec3 wo, glm::vec3 wi) const {
+    if (wo.z <= 0.0f || wi.z <= 0.0f) return glm::vec3(0.0f);
+    glm::vec3 h = wo + wi;
+    if (glm::dot(h, h) == 0.0f) return glm::vec3(0.0f);
+    h = glm::normalize(h);
+    const float d = has_footprint ? footprint_ndf(h)
+                                  : shader::D_Microfacet(ndf_id(desc->ndf), h, desc->alpha_x, desc->alpha_y);
+    const float g = shader::G2_SmithCorrelated(ndf_id(desc->ndf), wo, wi, desc->alpha_x, desc->alpha_y);
+    return desc->color * fresnel(glm::dot(wo, h)) * (d * g / (4.0f * wo.z * wi.z));
+}
+
+float GlintBxdf::pdf(glm::vec3 wo, glm::vec3 wi) const {
+    if (wo.z <= 0.0f || wi.z <= 0.0f) return 0.0f;
+    glm::vec3 h = wo + wi;
+    if (glm::dot(h, h) == 0.0f) return 0.0f;
+    h = glm::normalize(h);
+    // Reflection Jacobian dωh/dωi = 1 / (4 |wo·h|) (Walter et al. 2007 Eq. 14).
+    return shader::pdf_vndf(ndf_id(desc->ndf), wo, h, desc->alpha_x, desc->alpha_y) /
+           (4.0f * std::abs(glm::dot(wo, h)));
+}
+
+std::optional<BsdfSample> GlintBxdf::sample(glm::vec3 wo, float, glm::vec2 u) const {
+    if (wo.z <= 0.0f) return std::nullopt;
+    const glm::vec3 h = shader::sample_vndf(ndf_id(desc->ndf), wo, desc->alpha_x, desc->alpha_y, u);
+    const glm::vec3 wi = glm::reflect(-wo, h);
+    if (wi.z <= 0.0f) return std::nullopt;
+    BsdfSample s;
+    s.wi = wi;
+    s.f = f(wo, wi);
+    s.pdf = pdf(wo, wi);
+    s.is_delta = false;
+    s.is_transmission = false;
+    if (s.pdf <= 0.0f) return std::nullopt;
+    return s;
+}
+
+}  // namespace glintlab

@@ -1,0 +1,36 @@
+// The BRDF of a glint material (ARCHITECTURE.md §4): a microfacet BRDF whose
+// NDF is replaced by the model's footprint NDF D_P(h) (000 Eq. 1–3; 002 Eq. 2;
+// 004 Eq. 1):
+//     f(wo, wi) = color · F(wo·h) · G2(wo, wi) · D_P(h) / (4 |wo·n| |wi·n|).
+// The `smooth` model has D_P = D. Without a footprint (secondary bounces)
+// every model falls back to its smooth limit D. Sampling uses the smooth
+// visible normals, so the estimator stays unbiased for any D_P.
+#pragma once
+
+#include <optional>
+
+#include <glm/glm.hpp>
+
+#include "glintlab/core/footprint.h"
+#include "glintlab/microfacet/bxdfs.h"
+
+namespace glintlab {
+
+struct GlintDesc;
+
+struct GlintBxdf {
+    const GlintDesc* desc = nullptr;
+    bool has_footprint = false;
+    Footprint footprint{};
+
+    // D_P(h) for the material's model over the footprint.
+    float footprint_ndf(glm::vec3 h) const;
+    glm::vec3 fresnel(float cos_oh) const;
+
+    glm::vec3 f(glm::vec3 wo, glm::vec3 wi) const;
+    float pdf(glm::vec3 wo, glm::vec3 wi) const;
+    std::optional<BsdfSample> sample(glm::vec3 wo, float uc, glm::vec2 u) const;
+    bool is_specular() const { return false; }
+};
+
+}  // namespace glintlab

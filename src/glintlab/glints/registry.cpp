@@ -1,0 +1,37 @@
+#include "glintlab/glints/registry.h"
+
+#include "glintlab/scene/json_reader.h"
+#include "glintlab/scene/scene.h"
+
+namespace glintlab {
+namespace {
+
+// `smooth`: the Cook–Torrance limit every glint model converges to; it has
+// no parameters of its own.
+void read_smooth_params(JsonObject& block, GlintDesc&) { block.finish(); }
+
+const GlintModelInfo kModels[] = {
+    {"smooth", "smooth microfacet BRDF (Cook-Torrance / Walter et al. 2007), the limit of every glint model",
+     true, true, true, true, read_smooth_params},
+};
+
+}  // namespace
+
+std::span<const GlintModelInfo> glint_models() { return kModels; }
+
+const GlintModelInfo* find_glint_model(std::string_view name) {
+    for (const GlintModelInfo& m : kModels)
+        if (m.name == name) return &m;
+    return nullptr;
+}
+
+std::string glint_model_names() {
+    std::string s;
+    for (const GlintModelInfo& m : kModels) {
+        if (!s.empty()) s += ", ";
+        s += m.name;
+    }
+    return s;
+}
+
+}  // namespace glintlab

@@ -1,0 +1,31 @@
+// The closed list of glint models (ARCHITECTURE.md §5): name → what the model
+// supports and how its own parameter block is read. Later issues add models
+// here; the scene parser and the CLI list them from this table.
+#pragma once
+
+#include <span>
+#include <string>
+#include <string_view>
+
+namespace glintlab {
+
+class JsonObject;
+struct GlintDesc;
+
+struct GlintModelInfo {
+    std::string_view name;
+    std::string_view description;
+    // Light types the model can shade; the scene loader rejects the others.
+    bool point_lights;
+    bool directional_lights;
+    bool sphere_lights;
+    bool environment_lights;
+    // Reads (and range-checks) the model's parameter block into desc.model_params.
+    void (*read_params)(JsonObject& block, GlintDesc& desc);
+};
+
+std::span<const GlintModelInfo> glint_models();
+const GlintModelInfo* find_glint_model(std::string_view name);
+std::string glint_model_names();  // "a, b, c" for error messages
+
+}  // namespace glintlab

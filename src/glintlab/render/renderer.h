@@ -1,0 +1,18 @@
+// Tile-parallel rendering of a scene on the CPU. Deterministic: every pixel
+// has its own sample stream (core/rng.h pixel_stream), so the same seed gives
+// a bit-identical image for any thread count and tile order.
+#pragma once
+
+#include "glintlab/core/image.h"
+#include "glintlab/scene/scene.h"
+
+namespace glintlab {
+
+struct RenderOptions {
+    int threads = 0;     // 0: all cores
+    bool quiet = false;  // no progress bar
+};
+
+Image render_scene(const Scene& scene, const RenderOptions& options);
+
+}  // namespace glintlab

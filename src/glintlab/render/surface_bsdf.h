@@ -1,0 +1,50 @@
+// The BSDF at a surface hit: the material's lobe (microfacet/bxdfs.h or a
+// glint model) in the local shading frame, with world ↔ local conversion.
+// Opaque materials are two-sided: the frame is flipped to the side of wo.
+#pragma once
+
+#include <optional>
+#include <variant>
+
+#include <glm/glm.hpp>
+
+#include "glintlab/core/footprint.h"
+#include "glintlab/glints/glint_bxdf.h"
+#include "glintlab/microfacet/bxdfs.h"
+#include "glintlab/render/accel.h"
+#include "glintlab/scene/scene.h"
+
+namespace glintlab {
+
+struct ShadingFrame {
+    glm::vec3 t{1, 0, 0}, b{0, 1, 0}, n{0, 0, 1};
+    glm::vec3 to_local(glm::vec3 v) const { return {glm::dot(v, t), glm::dot(v, b), glm::dot(v, n)}; }
+    glm::vec3 to_world(glm::vec3 v) const { return v.x * t + v.y * b + v.z * n; }
+};
+
+// A frame around the shading normal whose tangent follows ∂p/∂u, so that
+// anisotropic roughness (αx along u) and glint grids align with the uv axes.
+ShadingFrame shading_frame(const SurfaceHit& hit);
+
+class SurfaceBsdf {
+public:
+    using Lobe = std::variant<Bxdf, GlintBxdf>;
+    SurfaceBsdf(ShadingFrame frame, Lobe lobe) : frame_(frame), lobe_(std::move(lobe)) {}
+
+    glm::vec3 f(glm::vec3 wo, glm::vec3 wi) const;  // world directions
+    float pdf(glm::vec3 wo, glm::vec3 wi) const;
+    std::optional<BsdfSample> sample(glm::vec3 wo, float uc, glm::vec2 u) const;  // wi in world
+    bool is_specular() const;
+    const ShadingFrame& frame() const { return frame_; }
+
+private:
+    ShadingFrame frame_;
+    Lobe lobe_;
+};
+
+// `footprint` is the pixel footprint at the camera's first hit, null at later
+// bounces (glint models then fall back to their smooth limit: docs/ARCHITECTURE.md).
+SurfaceBsdf make_surface_bsdf(const MaterialDesc& material, const SurfaceHit& hit,
+                              glm::vec3 wo_world, const Footprint* footprint);
+
+}  // namespace glintlab

@@ -1,0 +1,435 @@
+#include "glintlab/scene/scene_loader.h"
+
+#include <cmath>
+#include <fstream>
+#include <limits>
+#include <map>
+
+#include <fmt/format.h>
+#include <glm/gtc/constants.hpp>
+
+#include "glintlab/core/error.h"
+#include "glintlab/core/image.h"
+#include "glintlab/glints/registry.h"
+#include "glintlab/scene/gltf_loader.h"
+#include "glintlab/scene/json_reader.h"
+#include "glintlab/scene/obj_loader.h"
+#include "glintlab/scene/shapes.h"
+#include "glintlab/scene/shapes_heightfield.h"
+#include "glintlab/scene/transform.h"
+
+namespace glintlab {
+namespace {
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+// Scene coordinates beyond this are certainly a mistake (and break fp32 traversal).
+constexpr float kMaxCoord = 1e6f;
+
+const std::vector<std::string> kNdfNames = {"beckmann", "ggx"};
+
+NdfType read_ndf(JsonObject& o, NdfType fallback) {
+    if (!o.has("ndf")) return fallback;
+    return o.string("ndf", "", kNdfNames) == "ggx" ? NdfType::GGX : NdfType::Beckmann;
+}
+
+// "roughness": α (slope roughness of Beckmann/GGX), one number (isotropic) or [αx, αy].
+void read_roughness(JsonObject& o, float min, float* ax, float* ay) {
+    const glm::vec2 a = o.vec2("roughness", glm::vec2(*ax, *ay), min, 1.0f);
+    *ax = a.x;
+    *ay = a.y;
+}
+
+struct MetalPreset {
+    const char* name;
+    glm::vec3 eta, k;
+};
+// RGB complex indices of refraction of common metals at ~650/550/450 nm.
+const MetalPreset kMetals[] = {
+    {"gold", {0.143f, 0.374f, 1.442f}, {3.983f, 2.385f, 1.603f}},
+    {"silver", {0.155f, 0.116f, 0.138f}, {4.828f, 3.122f, 2.147f}},
+    {"copper", {0.200f, 0.924f, 1.102f}, {3.912f, 2.452f, 2.142f}},
+    {"aluminium", {1.657f, 0.880f, 0.521f}, {9.224f, 6.270f, 4.837f}},
+};
+
+std::vector<std::string> metal_names() {
+    std::vector<std::string> n;
+    for (const MetalPreset& m : kMetals) n.emplace_back(m.name);
+    return n;
+}
+
+void read_conductor_ior(JsonObject& o, glm::vec3* eta, glm::vec3* k) {
+    if (o.has("metal")) {
+        if (o.has("eta") || o.has("k")) o.error("metal", "give either \"metal\" or \"eta\"/\"k\", not both");
+        const std::string name = o.string("metal", "", metal_names());
+        for (const MetalPreset& m : kMetals)
+            if (name == m.name) *eta = m.eta, *k = m.k;
+        return;
+    }
+    *eta = o.color("eta", *eta, 0.01f, 100.0f);
+    *k = o.color("k", *k, 0.0f, 100.0f);
+}
+
+FresnelDesc read_fresnel(JsonObject& parent) {
+    FresnelDesc f;
+    auto block = parent.object("fresnel");
+    if (!block) return f;
+    JsonObject& o = *block;
+    const std::string type =
+        o.required_string("type", {"none", "schlick", "conductor", "dielectric"});
+    if (type == "schlick") {
+        f.mode = FresnelDesc::Mode::Schlick;
+        f.f0 = o.color("f0", glm::vec3(0.04f), 0.0f, 1.0f);
+    } else if (type == "conductor") {
+        f.mode = FresnelDesc::Mode::Conductor;
+        f.eta = glm::vec3(0.2f), f.k = glm::vec3(3.9f);
+        read_conductor_ior(o, &f.eta, &f.k);
+    } else if (type == "dielectric") {
+        f.mode = FresnelDesc::Mode::Dielectric;
+        f.eta = glm::vec3(static_cast<float>(o.number("eta", 1.5, 1.0001, 4.0)));
+    }
+    o.finish();
+    return f;
+}
+
+GlintDesc read_glint(JsonObject& o) {
+    GlintDesc g;
+    const std::string model = o.required_string("model");
+    const GlintModelInfo* info = find_glint_model(model);
+    if (!info)
+        o.error("model", fmt::format("unknown glint model \"{}\": known models are {}", model,
+                                     glint_model_names()));
+    g.model = model;
+    g.ndf = read_ndf(o, NdfType::Beckmann);
+    read_roughness(o, 1e-3f, &g.alpha_x, &g.alpha_y);
+    g.log_density = static_cast<float>(o.number("log_density", 20.0, -20.0, 60.0));
+    g.fresnel = read_fresnel(o);
+    g.color = o.color("color", glm::vec3(1.0f), 0.0f, 1.0f);
+    g.seed = static_cast<uint32_t>(o.number("seed", 0.0, 0.0, 4294967295.0));
+    // Every known model may keep its block (switching models is one word);
+    // only the active one is read, the others are checked to be objects.
+    for (const GlintModelInfo& m : glint_models()) {
+        if (!o.has(m.name)) continue;
+        auto block = o.object(m.name);
+        if (m.name == model) {
+            info->read_params(*block, g);
+            g.model_params = *o.raw(m.name);
+        }
+    }
+    if (!o.has(model)) {
+        nlohmann::json empty = nlohmann::json::object();
+        JsonObject block(empty, o.path() + "/" + model, o.file());
+        info->read_params(block, g);
+    }
+    return g;
+}
+
+MaterialDesc read_material(JsonObject& o) {
+    MaterialDesc m;
+    m.name = o.required_string("name");
+    const std::string type =
+        o.required_string("type", {"diffuse", "conductor", "dielectric", "plastic", "glint"});
+    if (type == "diffuse") {
+        m.type = MaterialDesc::Type::Diffuse;
+        m.albedo = o.color("albedo", m.albedo, 0.0f, 1.0f);
+    } else if (type == "conductor") {
+        m.type = MaterialDesc::Type::Conductor;
+        m.ndf = read_ndf(o, NdfType::GGX);
+        read_roughness(o, 0.0f, &m.alpha_x, &m.alpha_y);
+        m.eta = glm::vec3(0.2f), m.k = glm::vec3(3.9f);
+        read_conductor_ior(o, &m.eta, &m.k);
+    } else if (type == "dielectric") {
+        m.type = MaterialDesc::Type::Dielectric;
+        m.ndf = read_ndf(o, NdfType::GGX);
+        read_roughness(o, 0.0f, &m.alpha_x, &m.alpha_y);
+        m.eta = glm::vec3(static_cast<float>(o.number("eta", 1.5, 1.0001, 4.0)));
+    } else if (type == "plastic") {
+        m.type = MaterialDesc::Type::Plastic;
+        m.albedo = o.color("albedo", m.albedo, 0.0f, 1.0f);
+        m.ndf = read_ndf(o, NdfType::GGX);
+        read_roughness(o, 0.0f, &m.alpha_x, &m.alpha_y);
+        m.eta = glm::vec3(static_cast<float>(o.number("eta", 1.5, 1.0001, 4.0)));
+    } else {
+        m.type = MaterialDesc::Type::Glint;
+        m.glint = read_glint(o);
+    }
+    o.finish();
+    return m;
+}
+
+Transform read_transform(JsonObject& parent) {
+    auto block = parent.object("transform");
+    if (!block) return Transform();
+    JsonObject& o = *block;
+    // Applied in the order scale, rotate, translate (the usual TRS).
+    Transform t;
+    if (o.has("scale")) {
+        const nlohmann::json* s = o.raw("scale");
+        glm::vec3 f = s->is_number() ? glm::vec3(static_cast<float>(o.number("scale", 1.0, 1e-6, 1e6)))
+                                      : o.vec3("scale", glm::vec3(1.0f), -1e6f, 1e6f);
+        for (int i = 0; i < 3; ++i)
+            if (std::abs(f[i]) < 1e-6f) o.error("scale", "scale factors must be non-zero");
+        t = Transform::scale(f) * t;
+    }
+    if (auto r = o.object("rotate")) {
+        const glm::vec3 axis = r->required_vec3("axis", -1.0f, 1.0f);
+        if (glm::length(axis) < 1e-6f) r->error("axis", "rotation axis must be non-zero");
+        const float deg = static_cast<float>(r->required_number("deg", -360.0, 360.0));
+        r->finish();
+        t = Transform::rotate(deg, axis) * t;
+    }
+    t = Transform::translate(o.vec3("translate", glm::vec3(0.0f), -kMaxCoord, kMaxCoord)) * t;
+    o.finish();
+    return t;
+}
+
+struct LoadContext {
+    std::map<std::string, int> material_index;
+    Scene* scene;
+};
+
+TriangleMesh read_heightfield(JsonObject& o) {
+    HeightfieldSettings s;
+    s.size = o.vec2("size", s.size, 1e-4f, kMaxCoord);
+    s.resolution = o.integer("resolution", s.resolution, 1, 4096);
+    s.amplitude = static_cast<float>(o.number("amplitude", s.amplitude, -1e3, 1e3));
+    s.frequency = static_cast<float>(o.number("frequency", s.frequency, 1e-3, 1e4));
+    s.octaves = o.integer("octaves", s.octaves, 1, 16);
+    s.seed = static_cast<uint32_t>(o.number("seed", 1.0, 0.0, 4294967295.0));
+    s.uv_scale = o.vec2("uv_scale", s.uv_scale, 1e-6f, 1e6f);
+    if (o.has("file")) {
+        // Height image: luminance in [0, 1] mapped to [-1, 1], bilinear.
+        auto image = std::make_shared<Image>(read_image(o.file_path("file")));
+        return make_heightfield(s, [image](glm::vec2 uv) {
+            const int w = image->width, h = image->height;
+            const float fx = std::clamp(uv.x, 0.0f, 1.0f) * static_cast<float>(w - 1);
+            const float fy = std::clamp(uv.y, 0.0f, 1.0f) * static_cast<float>(h - 1);
+            const int x0 = static_cast<int>(fx), y0 = static_cast<int>(fy);
+            const int x1 = std::min(x0 + 1, w - 1), y1 = std::min(y0 + 1, h - 1);
+            const float tx = fx - static_cast<float>(x0), ty = fy - static_cast<float>(y0);
+            const float a = glm::mix(luminance(image->at(x0, y0)), luminance(image->at(x1, y0)), tx);
+            const float b = glm::mix(luminance(image->at(x0, y1)), luminance(image->at(x1, y1)), tx);
+            return 2.0f * glm::mix(a, b, ty) - 1.0f;
+        });
+    }
+    return make_heightfield(s);
+}
+
+void read_shape(JsonObject& o, LoadContext& ctx) {
+    Shape shape;
+    const std::string type = o.required_string(
+        "type", {"quad", "sphere", "torus", "heightfield", "obj", "gltf"});
+    shape.name = o.string("name", fmt::format("{}", o.path()));
+    const std::string material = o.required_string("material");
+    const auto it = ctx.material_index.find(material);
+    if (it == ctx.material_index.end())
+        o.error("material", fmt::format("unknown material \"{}\" (define it under /materials)", material));
+    shape.material = it->second;
+    const Transform transform = read_transform(o);
+    const std::string where = fmt::format("{}: {}", o.file(), o.path());
+
+    if (type == "sphere") {
+        SphereGeometry s;
+        const glm::vec3 center = o.vec3("center", glm::vec3(0.0f), -kMaxCoord, kMaxCoord);
+        const float radius = static_cast<float>(o.number("radius", 1.0, 1e-6, kMaxCoord));
+        // Spheres stay analytic: the transform must be a similarity
+        // (rotation, uniform scale, translation).
+        const glm::mat3 m(transform.m);
+        const float sx = glm::length(m[0]), sy = glm::length(m[1]), sz = glm::length(m[2]);
+        const float tol = 1e-4f * sx;
+        if (std::abs(sx - sy) > tol || std::abs(sx - sz) > tol ||
+            std::abs(glm::dot(m[0], m[1])) > tol * sx || std::abs(glm::dot(m[0], m[2])) > tol * sx ||
+            std::abs(glm::dot(m[1], m[2])) > tol * sx || glm::determinant(m) <= 0.0f)
+            o.error("transform", "a sphere's transform must be a rotation, a uniform positive "
+                                 "scale and a translation (use a mesh for ellipsoids)");
+        s.center = transform.apply_point(center);
+        s.radius = radius * sx;
+        s.rotation = m / sx;
+        shape.geometry = s;
+    } else {
+        TriangleMesh mesh;
+        if (type == "quad") {
+            mesh = make_quad(o.vec2("size", glm::vec2(2.0f), 1e-6f, kMaxCoord),
+                             o.vec2("uv_scale", glm::vec2(1.0f), 1e-6f, 1e6f));
+        } else if (type == "torus") {
+            const float major = static_cast<float>(o.number("major_radius", 1.0, 1e-6, kMaxCoord));
+            const float minor = static_cast<float>(o.number("minor_radius", 0.3, 1e-6, kMaxCoord));
+            if (minor >= major) o.error("minor_radius", fmt::format("must be < major_radius = {}", major));
+            const int seg_major = o.integer("segments_major", 256, 3, 8192);
+            const int seg_minor = o.integer("segments_minor", 128, 3, 8192);
+            mesh = make_torus(major, minor, seg_major, seg_minor,
+                              o.vec2("uv_scale", glm::vec2(1.0f), 1e-6f, 1e6f));
+        } else if (type == "heightfield") {
+            mesh = read_heightfield(o);
+        } else if (type == "obj") {
+            mesh = load_obj(o.file_path("file"));
+        } else {
+            mesh = load_gltf(o.file_path("file"));
+        }
+        transform_mesh(mesh, transform);
+        mesh.validate(where);
+        if (ctx.scene->materials[shape.material].needs_uv() && !mesh.has_uvs())
+            o.error("material", fmt::format("material \"{}\" is a glint material and needs a uv "
+                                            "parameterization, but this mesh has no uvs",
+                                            material));
+        shape.geometry = std::move(mesh);
+    }
+    o.finish();
+    ctx.scene->shapes.push_back(std::move(shape));
+}
+
+void read_light(JsonObject& o, Scene& scene) {
+    const std::string type =
+        o.required_string("type", {"point", "directional", "sphere", "environment"});
+    if (type == "point") {
+        PointLight l;
+        l.position = o.required_vec3("position", -kMaxCoord, kMaxCoord);
+        l.intensity = o.color("intensity", l.intensity, 0.0f, 1e9f);
+        scene.lights.emplace_back(l);
+    } else if (type == "directional") {
+        DirectionalLight l;
+        const glm::vec3 d = o.required_vec3("direction", -kMaxCoord, kMaxCoord);
+        if (glm::length(d) < 1e-6f) o.error("direction", "direction must be non-zero");
+        l.direction = glm::normalize(d);
+        l.irradiance = o.color("irradiance", l.irradiance, 0.0f, 1e9f);
+        l.solid_angle = static_cast<float>(o.number("solid_angle_sr", 0.0, 0.0, 1.0));
+        if (l.solid_angle > 0.0f) {
+            l.cos_max = 1.0f - l.solid_angle / (2.0f * glm::pi<float>());
+            const float sin2 = 1.0f - l.cos_max * l.cos_max;
+            // Uniform radiance over the cone giving irradiance E at normal
+            // incidence: E = L·π sin²θmax.
+            l.radiance = l.irradiance / (glm::pi<float>() * sin2);
+        }
+        scene.lights.emplace_back(l);
+    } else if (type == "sphere") {
+        SphereLight l;
+        l.center = o.required_vec3("center", -kMaxCoord, kMaxCoord);
+        l.radius = static_cast<float>(o.required_number("radius", 1e-6, kMaxCoord));
+        l.radiance = o.color("radiance", l.radiance, 0.0f, 1e9f);
+        Shape shape;
+        shape.name = fmt::format("{}", o.path());
+        shape.geometry = SphereGeometry{l.center, l.radius, glm::mat3(1.0f)};
+        shape.area_light = static_cast<int>(scene.lights.size());
+        scene.shapes.push_back(std::move(shape));
+        scene.lights.emplace_back(l);
+    } else {
+        if (scene.environment >= 0) o.error("type", "only one environment light is allowed");
+        EnvironmentLight l;
+        const float scale = static_cast<float>(o.number("scale", 1.0, 0.0, 1e6));
+        const float rotation = static_cast<float>(o.number("rotation_deg", 0.0, -360.0, 360.0));
+        if (o.has("file") == o.has("radiance"))
+            o.error("file", "an environment light needs exactly one of \"file\" (lat-long .exr/.hdr) or \"radiance\"");
+        if (o.has("file")) {
+            l.file = o.file_path("file");
+            Image image = read_image(l.file);
+            l.map = std::make_shared<EnvironmentMap>(std::move(image), scale, rotation);
+        } else {
+            l.map = std::make_shared<EnvironmentMap>(
+                EnvironmentMap::constant(scale * o.color("radiance", glm::vec3(1.0f), 0.0f, 1e9f)));
+        }
+        scene.environment = static_cast<int>(scene.lights.size());
+        scene.lights.emplace_back(l);
+    }
+    o.finish();
+}
+
+Camera read_camera(JsonObject& o) {
+    Camera c;
+    const std::string type = o.string("type", "perspective", {"perspective", "orthographic"});
+    c.type = type == "perspective" ? Camera::Type::Perspective : Camera::Type::Orthographic;
+    c.eye = o.vec3("eye", c.eye, -kMaxCoord, kMaxCoord);
+    c.target = o.vec3("target", c.target, -kMaxCoord, kMaxCoord);
+    c.up = o.vec3("up", c.up, -kMaxCoord, kMaxCoord);
+    if (glm::length(c.target - c.eye) < 1e-6f) o.error("target", "target must differ from eye");
+    if (glm::length(glm::cross(glm::normalize(c.target - c.eye), c.up)) < 1e-4f)
+        o.error("up", "up must not be parallel to the viewing direction");
+    if (c.type == Camera::Type::Perspective) c.fov_deg = static_cast<float>(o.number("fov_deg", 40.0, 0.01, 179.0));
+    else c.ortho_height = static_cast<float>(o.number("height", 2.0, 1e-6, kMaxCoord));
+    o.finish();
+    return c;
+}
+
+void check_model_lights(const Scene& scene) {
+    for (const MaterialDesc& m : scene.materials) {
+        if (m.type != MaterialDesc::Type::Glint) continue;
+        const GlintModelInfo* info = find_glint_model(m.glint.model);
+        for (const Light& l : scene.lights) {
+            const char* unsupported = nullptr;
+            if (std::holds_alternative<PointLight>(l) && !info->point_lights) unsupported = "point";
+            if (std::holds_alternative<DirectionalLight>(l) && !info->directional_lights) unsupported = "directional";
+            if (std::holds_alternative<SphereLight>(l) && !info->sphere_lights) unsupported = "sphere";
+            if (std::holds_alternative<EnvironmentLight>(l) && !info->environment_lights) unsupported = "environment";
+            if (unsupported)
+                fail("{}: material \"{}\": glint model \"{}\" cannot shade {} lights", scene.file.string(),
+                     m.name, m.glint.model, unsupported);
+        }
+    }
+}
+
+}  // namespace
+
+Scene parse_scene(const nlohmann::json& document, const std::filesystem::path& file) {
+    Scene scene;
+    scene.file = file;
+    JsonObject root(document, "", file.string());
+
+    if (auto film = root.object("film")) {
+        scene.camera.width = film->integer("width", 512, 1, 16384);
+        scene.camera.height = film->integer("height", 512, 1, 16384);
+        scene.film.exposure = static_cast<float>(film->number("exposure", 0.0, -20.0, 20.0));
+        if (auto bloom = film->object("bloom")) {
+            scene.film.bloom.strength = static_cast<float>(bloom->number("strength", 0.1, 0.0, 1.0));
+            scene.film.bloom.radius_px = static_cast<float>(bloom->number("radius_px", 8.0, 0.5, 1024.0));
+            scene.film.bloom.threshold = static_cast<float>(bloom->number("threshold", 1.0, 0.0, 1e9));
+            scene.film.bloom_exr = bloom->boolean("apply_to_exr", false);
+            bloom->finish();
+        }
+        film->finish();
+    }
+    {
+        const int w = scene.camera.width, h = scene.camera.height;
+        auto cam = root.object("camera");
+        if (!cam) root.error("camera", "missing required object");
+        scene.camera = read_camera(*cam);
+        scene.camera.width = w, scene.camera.height = h;
+    }
+    if (auto render = root.object("render")) {
+        const std::string integrator = render->string("integrator", "path", {"path", "direct"});
+        scene.render.integrator = integrator == "path" ? RenderSettings::Integrator::Path
+                                                       : RenderSettings::Integrator::Direct;
+        scene.render.spp = render->integer("spp", scene.render.spp, 1, 1 << 20);
+        scene.render.max_depth = render->integer("max_depth", scene.render.max_depth, 1, 128);
+        scene.render.rr_depth = render->integer("rr_depth", scene.render.rr_depth, 1, 128);
+        scene.render.seed = static_cast<uint64_t>(render->number("seed", 0.0, 0.0, 4294967295.0));
+        render->finish();
+    }
+    LoadContext ctx{{}, &scene};
+    for (JsonObject& m : root.object_array("materials")) {
+        MaterialDesc desc = read_material(m);
+        if (ctx.material_index.contains(desc.name))
+            m.error("name", fmt::format("duplicate material name \"{}\"", desc.name));
+        ctx.material_index[desc.name] = static_cast<int>(scene.materials.size());
+        scene.materials.push_back(std::move(desc));
+    }
+    for (JsonObject& s : root.object_array("shapes")) read_shape(s, ctx);
+    for (JsonObject& l : root.object_array("lights")) read_light(l, scene);
+    root.ignore("comment");  // free text, for humans
+    root.finish();
+    if (scene.shapes.empty() && scene.lights.empty())
+        fail("{}: the scene has neither shapes nor lights", file.string());
+    check_model_lights(scene);
+    return scene;
+}
+
+Scene load_scene(const std::filesystem::path& file) {
+    std::ifstream in(file);
+    if (!in) fail("{}: cannot open scene file", file.string());
+    nlohmann::json document;
+    try {
+        document = nlohmann::json::parse(in);
+    } catch (const nlohmann::json::parse_error& e) {
+        fail("{}: invalid JSON: {}", file.string(), e.what());
+    }
+    return parse_scene(document, file);
+}
+
+}  // namespace glintlab
