@@ -83,10 +83,11 @@ glm::vec3 MicrofacetDistribution::sample_wm(glm::vec3 wo, glm::vec2 u) const {
     return sh::sample_vndf(ndf_id(ndf), face_up(wo), alpha_x, alpha_y, u);
 }
 float MicrofacetDistribution::pdf(glm::vec3 wo, glm::vec3 wm) const {
-    // D is even under (w, m) -> (-w, -m) only through G1/Lambda; flipping wo up
-    // and taking |wo.wm| matches pbrt-v4's D(w, wm) for both hemispheres.
+    // Observers below the surface (dielectric interiors) see the same
+    // microsurface from the other side: Lambda is even in w.z, so the visible
+    // density of the flipped observer is the density of sample_wm(wo).
     const glm::vec3 w = face_up(wo);
-    const float wdotm = std::abs(glm::dot(w, wm));
+    const float wdotm = std::max(0.0f, glm::dot(w, wm));
     if (w.z <= 0.0f) return 0.0f;
     return G1(w) * wdotm * D(wm) / w.z;
 }

@@ -33,7 +33,7 @@ struct MicrofacetDistribution {
     float G2(glm::vec3 wo, glm::vec3 wi) const;  // height-correlated Smith
     // Visible normal for an observer wo (either hemisphere: wo is flipped up).
     glm::vec3 sample_wm(glm::vec3 wo, glm::vec2 u) const;
-    // Density of sample_wm(wo) at wm: G1(wo) |wo.wm| D(wm) / |wo.z|.
+    // Density of sample_wm(wo) at wm: G1(wo) max(0, w.wm) D(wm) / w.z, w = wo flipped up.
     float pdf(glm::vec3 wo, glm::vec3 wm) const;
 };
 
