@@ -1,0 +1,130 @@
+// Approximate binomial laws b(N, p) of the real-time glint models. Each law is
+// a pure function of (N, p) and uniform numbers in [0, 1); the gated laws
+// cost the same for every N and p (no loop over trials).
+//
+// Papers: 000 = deliot2023, 003 = kneiphof2025 (see /work/shared/papers).
+// Counts are real-valued where the paper's law is (003 drops the floor of
+// Eq. 22 for N > 1); consumers that need integers round them.
+#ifndef GLINTLAB_COUNTING_BINOMIAL_LAWS_GLSL
+#define GLINTLAB_COUNTING_BINOMIAL_LAWS_GLSL
+
+#include "glintlab/counting/normal_quantile.glsl"
+
+// epsilon = 10^-3.54 of 003 §6 "Numeric Gating Issues", found optimal there
+// for fp32 over (N, p) in [1, 1e16] x [1e-16, 1].
+const float STABLE_POW_EPSILON = 2.8840315e-4f;
+
+// The naive fp32 evaluation of (1 - p)^N: for p below ~6e-8, 1 - p rounds
+// to 1 and the result is 1 whatever N (003 Fig. 5b).
+float pow_one_minus_naive(float p, float N) {
+    return N > 0.0f ? pow(max(1.0f - p, 0.0f), N) : 1.0f;
+}
+
+// The scale c = max(1, epsilon / p) of 003 Eq. 25. p is floored at 1e-30 so
+// that p = 0 gives a finite c (then c * p = 0 and the power is exactly 1).
+float stable_pow_scale(float p) {
+    return max(1.0f, STABLE_POW_EPSILON / max(p, 1e-30f));
+}
+
+// (1 - p)^N ~= (1 - c p)^(N / c), 003 Eq. 24-25: for p < epsilon the base is
+// 1 - epsilon, which fp32 represents to 2e-4 relative accuracy.
+float pow_one_minus_stable(float p, float N) {
+    float c = stable_pow_scale(p);
+    return N > 0.0f ? pow(max(1.0f - c * p, 0.0f), N / c) : 1.0f;
+}
+
+// A Gaussian deviate N(mean, variance) from one uniform number.
+float gaussian_deviate(float mean, float variance, float xi) {
+    return mean + sqrt(max(variance, 0.0f)) * normal_quantile(xi);
+}
+
+// Law 2: the plain Gaussian approximation with the binomial's first two
+// moments (000 §6.3 "Classical Binomial Approximation"), clamped to [0, N].
+float binomial_gaussian(float N, float p, float xi) {
+    float n = max(N, 0.0f);
+    return clamp(gaussian_deviate(n * p, n * p * (1.0f - p), xi), 0.0f, n);
+}
+
+// Law 3: zirr2016 as restated in 000 Eq. 15. Gaussian (floored, as written)
+// when N p > 5, else an explicit sum of Bernoulli trials, at most 16 as in
+// their implementation (000 §7.1). Eq. 15 writes H(theta_k - p); a trial
+// succeeds with probability p, so we count theta_k < p. For N > 16 the paper
+// does not say how 16 trials stand for N: we use ceil(N) <= 16 trials of
+// probability N p / ceil(N), which keeps the mean N p and is the exact law for
+// integer N <= 16. The loop length grows with N: this law is not constant-cost.
+float binomial_zirr2016(float N, float p, float xi_gauss, mat4 xi_trials) {
+    float n = max(N, 0.0f);
+    if (n * p > 5.0f) {
+        return clamp(floor(gaussian_deviate(n * p, n * p * (1.0f - p), xi_gauss)), 0.0f, n);
+    }
+    int trials = int(min(ceil(n), 16.0f));
+    float q = trials > 0 ? n * p / float(trials) : 0.0f;
+    float count = 0.0f;
+    for (int k = 0; k < trials; ++k) {
+        count += xi_trials[k / 4][k % 4] < q ? 1.0f : 0.0f;
+    }
+    return count;
+}
+
+// Law 4: deliot2023's gated Gaussian, 000 Eq. 16-18. Gate on
+// P(>=1) = 1 - (1 - p)^N (Eq. 16, in the stable form of 003 Eq. 25), then one
+// success plus a Gaussian for the N - 1 remaining trials (Eq. 17), floored
+// (Eq. 18). Eq. 18 writes H(theta_0 - P); the gate passes with probability P,
+// so we test theta_0 < P. The Gaussian is clamped to the N - 1 remaining
+// trials (a fix the authors' code lacked, see papers/README.md). Kept as
+// published for N < 1: the gate then overestimates P(count >= 1), since
+// 1 - (1 - p)^N > N p there (the defect 003 Appendix B fixes).
+float binomial_deliot2023(float N, float p, float xi0, float xi1) {
+    float n = max(N, 0.0f);
+    float p_any = 1.0f - pow_one_minus_stable(p, n);
+    float rest = max(n - 1.0f, 0.0f);
+    float g = clamp(gaussian_deviate(rest * p, rest * p * (1.0f - p), xi1), 0.0f, rest);
+    return xi0 < p_any ? floor(1.0f + g) : 0.0f;
+}
+
+// Law 5: kneiphof2025's single-gated Gaussian for real N >= 0, 003 Eq. 23:
+// gate probability min(N p, P(>=1)) (= N p for N < 1, Appendix B), then
+// Phi^-1(xi2; 1 + (N - 1) p, (N - 1) p (1 - p)) clamped to [1, max(N, 1)],
+// i.e. the Gaussian part is clamped to the N - 1 remaining trials.
+float binomial_single_gated(float N, float p, float xi1, float xi2) {
+    float n = max(N, 0.0f);
+    float p_gate = min(n * p, 1.0f - pow_one_minus_stable(p, n));
+    float rest = max(n - 1.0f, 0.0f);
+    float g = gaussian_deviate(1.0f + rest * p, rest * p * (1.0f - p), xi2);
+    return xi1 < p_gate ? clamp(g, 1.0f, max(n, 1.0f)) : 0.0f;
+}
+
+// Law 6: kneiphof2025's dual-gated Gaussian, 003 Algorithm 1. Returns
+// (n, nbar): positive and negative samples. One uniform (xi1) makes every
+// gating decision, xi2 drives the Gaussian. Line 6 is garbled in the text;
+// per papers/README.md it is P(nbar = N) = clamp(N - 1, 0, 1) (1 - c p)^(N>=2 / c).
+// For integer N the two counts sum to N; for real N < 2 the law is the
+// mixture of the neighbouring integer laws (003 Fig. 4), so they need not.
+// `integer_gaussian` rounds the Gaussian part so that integer N gives integer
+// counts (the multinomial needs this for its counts to sum to N exactly).
+vec2 binomial_dual_gated(float N, float p, float xi1, float xi2, bool integer_gaussian) {
+    float n = max(N, 0.0f);
+    float n2 = max(2.0f, n);                                   // line 2
+    float c = stable_pow_scale(p);                             // line 3
+    float w_many = clamp(n - 1.0f, 0.0f, 1.0f);
+    float p_all_pos = w_many * pow(p, n2);                     // line 5
+    float p_all_neg = w_many * pow(max(1.0f - c * p, 0.0f), n2 / c);  // line 6
+    float w_one = max(0.0f, 1.0f - abs(1.0f - n));
+    float p_one_pos = w_one * p;                               // line 7
+    float p_one_neg = w_one * (1.0f - p);                      // line 8
+    float b_all_pos = xi1 < p_all_pos ? 1.0f : 0.0f;           // line 10
+    float b_pos = xi1 < p_all_pos + p_one_pos ? 1.0f : 0.0f;   // line 11
+    float b_all_neg = 1.0f - p_all_neg <= xi1 ? 1.0f : 0.0f;   // line 12
+    float b_neg = 1.0f - p_all_neg - p_one_neg <= xi1 ? 1.0f : 0.0f;  // line 13
+    float b_gauss = (n > 1.0f ? 1.0f : 0.0f) * (1.0f - b_pos) * (1.0f - b_neg);  // line 14
+    float mean = 1.0f + (n2 - 2.0f) * p;                       // line 16
+    float variance = (n2 - 2.0f) * p * (1.0f - p);             // line 17
+    float g = gaussian_deviate(mean, variance, xi2);
+    if (integer_gaussian) g = floor(g + 0.5f);
+    g = clamp(g, 1.0f, n2 - 1.0f);                             // line 18
+    float g_bar = n2 - g;                                      // line 19
+    return vec2(b_all_pos * (n2 - 1.0f) + b_pos + b_gauss * g,            // line 21
+                b_all_neg * (n2 - 1.0f) + b_neg + b_gauss * g_bar);       // line 22
+}
+
+#endif
