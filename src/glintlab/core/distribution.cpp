@@ -35,8 +35,13 @@ float Distribution1D::sample(float u, float* pdf, int* index) const {
     double du = static_cast<double>(u) - cdf_[i];
     if (width > 0.0) du /= width;
     if (pdf) *pdf = integral_ > 0.0f ? func_[i] / integral_ : 1.0f;
-    const double x = (i + du) / static_cast<double>(size());
-    return std::min(static_cast<float>(x), 0.99999994f);
+    float x = std::min(static_cast<float>((i + du) / static_cast<double>(size())), 0.99999994f);
+    // Rounding to float can move x across a cell boundary; pdf(x) must see
+    // the cell that was sampled, so nudge x back inside it.
+    const float n = static_cast<float>(size());
+    while (x > 0.0f && static_cast<int>(x * n) > i) x = std::nextafter(x, 0.0f);
+    while (x < 1.0f && static_cast<int>(x * n) < i) x = std::nextafter(x, 1.0f);
+    return x;
 }
 
 float Distribution1D::pdf(float x) const {

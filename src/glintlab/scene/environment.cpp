@@ -16,14 +16,18 @@ EnvironmentMap::EnvironmentMap(Image image, float scale, float rotation_deg)
       rotation_rad_(glm::radians(rotation_deg)) {
     const int w = image_.width, h = image_.height;
     if (w <= 0 || h <= 0) fail("environment map has no pixels");
-    // Sampling weights: the largest luminance in each texel's 3x3
-    // neighbourhood (the support of bilinear lookups), times sinθ of the row
-    // (the lat-long area element). Taking the max keeps pdf > 0 wherever the
-    // bilinear radiance is > 0, so light sampling alone is unbiased.
-    std::vector<float> weights(static_cast<size_t>(w) * h);
-    for (int y = 0; y < h; ++y) {
-        const float sin_theta =
-            std::sin(glm::pi<float>() * (static_cast<float>(y) + 0.5f) / static_cast<float>(h));
+    // The sampling grid refines the image so that it has at least 64 rows:
+    // the density is piecewise constant per grid cell and the sinθ factor
+    // varies within a row, so coarse maps (down to a constant 1x1) would
+    // otherwise be sampled far from proportionally to their solid angle.
+    const int fy = std::max(1, (64 + h - 1) / h), fx = std::max(1, (128 + w - 1) / w);
+    const int gw = w * fx, gh = h * fy;
+    // Weight of a grid cell: the largest luminance in its texel's 3x3
+    // neighbourhood (the support of bilinear lookups), times sinθ of the cell
+    // row (the lat-long area element). Taking the max keeps pdf > 0 wherever
+    // the bilinear radiance is > 0, so light sampling alone is unbiased.
+    std::vector<float> texel_weight(static_cast<size_t>(w) * h);
+    for (int y = 0; y < h; ++y)
         for (int x = 0; x < w; ++x) {
             float m = 0.0f;
             for (int dy = -1; dy <= 1; ++dy)
@@ -32,10 +36,17 @@ EnvironmentMap::EnvironmentMap(Image image, float scale, float rotation_deg)
                     const int xx = (x + dx + w) % w;
                     m = std::max(m, luminance(image_.at(xx, yy)));
                 }
-            weights[static_cast<size_t>(y) * w + x] = m * sin_theta;
+            texel_weight[static_cast<size_t>(y) * w + x] = m;
         }
+    std::vector<float> weights(static_cast<size_t>(gw) * gh);
+    for (int y = 0; y < gh; ++y) {
+        const float sin_theta =
+            std::sin(glm::pi<float>() * (static_cast<float>(y) + 0.5f) / static_cast<float>(gh));
+        for (int x = 0; x < gw; ++x)
+            weights[static_cast<size_t>(y) * gw + x] =
+                texel_weight[static_cast<size_t>(y / fy) * w + x / fx] * sin_theta;
     }
-    distribution_ = Distribution2D(weights, w, h);
+    distribution_ = Distribution2D(weights, gw, gh);
 }
 
 EnvironmentMap EnvironmentMap::constant(glm::vec3 radiance) {
