@@ -49,7 +49,11 @@ int run_render(const RenderArgs& a) {
     std::filesystem::path exr = a.output;
     if (exr.empty()) exr = std::filesystem::path("out") / std::filesystem::path(a.scene).stem();
     if (exr.extension() != ".exr") exr += ".exr";
-    if (!exr.parent_path().empty()) std::filesystem::create_directories(exr.parent_path());
+    if (!exr.parent_path().empty()) {
+        std::error_code ec;
+        std::filesystem::create_directories(exr.parent_path(), ec);
+        if (ec) fail("-o {}: cannot create the output directory: {}", exr.string(), ec.message());
+    }
 
     const auto start = std::chrono::steady_clock::now();
     Image image = render_scene(scene, RenderOptions{a.threads, a.quiet});

@@ -121,3 +121,34 @@ TEST(Footprint, SphereUvDerivativesAreAnalytic) {
 
 }  // namespace
 }  // namespace glintlab
+
+namespace glintlab {
+namespace {
+
+TEST(Footprint, OrthographicFootprintIsConstantAcrossTheImage) {
+    // An orthographic view of height H at resolution R: every pixel spans H/R
+    // world units, whatever its position, so the uv footprint is constant.
+    nlohmann::json j = {
+        {"film", {{"width", 40}, {"height", 20}}},
+        {"camera", {{"type", "orthographic"}, {"eye", {0, 5, 0}}, {"target", {0, 0, 0}}, {"up", {0, 0, -1}}, {"height", 2.0}}},
+        {"materials", {{{"name", "m"}, {"type", "diffuse"}}}},
+        {"shapes", {{{"type", "quad"}, {"size", {8, 8}}, {"uv_scale", {2, 2}}, {"material", "m"}}}},
+    };
+    const Scene scene = parse_scene(j, "test.json");
+    const Accelerator accel(scene);
+    const float pixel = 2.0f / 20.0f;
+    for (glm::vec2 px : {glm::vec2(0.5f, 0.5f), glm::vec2(20.5f, 10.5f), glm::vec2(39.5f, 19.5f)}) {
+        const RayDifferential ray = scene.camera.generate(px);
+        const auto hit = accel.intersect(ray.ray, 1e30f);
+        ASSERT_TRUE(hit);
+        const SurfaceDifferentials d = compute_differentials(ray, *hit);
+        // uv_scale 2 over 8 world units: du/dx = pixel · 2/8.
+        EXPECT_NEAR(d.footprint.duvdx.x, pixel * 0.25f, 1e-6f);
+        EXPECT_NEAR(d.footprint.duvdy.y, -pixel * 0.25f, 1e-6f);
+        EXPECT_NEAR(d.footprint.duvdx.y, 0.0f, 1e-6f);
+        EXPECT_NEAR(d.footprint.duvdy.x, 0.0f, 1e-6f);
+    }
+}
+
+}  // namespace
+}  // namespace glintlab

@@ -1,0 +1,104 @@
+// End-to-end checks of the `glintlab` executable: bad input gives a clear
+// message and a non-zero exit status, never a crash; a render writes files.
+#include <gtest/gtest.h>
+
+#include <array>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <sys/wait.h>
+
+namespace {
+
+struct RunResult {
+    int status;
+    std::string output;
+};
+
+RunResult run_cli(const std::string& args) {
+    const std::string cmd = std::string(GLINTLAB_CLI_PATH) + " " + args + " 2>&1";
+    FILE* pipe = popen(cmd.c_str(), "r");
+    if (!pipe) return {-1, "popen failed"};
+    std::string out;
+    std::array<char, 4096> buf;
+    size_t n;
+    while ((n = fread(buf.data(), 1, buf.size(), pipe)) > 0) out.append(buf.data(), n);
+    const int raw = pclose(pipe);
+    return {WIFEXITED(raw) ? WEXITSTATUS(raw) : 128 + WTERMSIG(raw), out};
+}
+
+std::filesystem::path temp_dir() {
+    const auto dir = std::filesystem::temp_directory_path() / ("glintlab_cli_" + std::to_string(::getpid()));
+    std::filesystem::create_directories(dir);
+    return dir;
+}
+
+std::filesystem::path write_file(const std::string& name, const std::string& text) {
+    const auto p = temp_dir() / name;
+    std::ofstream(p) << text;
+    return p;
+}
+
+const char* kSmallScene = R"({
+  "film": {"width": 24, "height": 16},
+  "camera": {"eye": [0, 1, 4], "target": [0, 0.5, 0], "fov_deg": 40},
+  "render": {"integrator": "path", "spp": 2},
+  "materials": [{"name": "m", "type": "glint", "model": "smooth", "roughness": 0.3}],
+  "shapes": [{"type": "sphere", "center": [0, 0.5, 0], "radius": 0.5, "material": "m"}],
+  "lights": [{"type": "environment", "radiance": 0.5}, {"type": "point", "position": [1, 3, 2], "intensity": 5}]
+})";
+
+TEST(Cli, RenderWritesExrAndPng) {
+    const auto scene = write_file("small.json", kSmallScene);
+    const auto out = temp_dir() / "small.exr";
+    const RunResult r = run_cli("render " + scene.string() + " -o " + out.string() + " --quiet");
+    EXPECT_EQ(r.status, 0) << r.output;
+    EXPECT_TRUE(std::filesystem::exists(out));
+    EXPECT_TRUE(std::filesystem::exists(temp_dir() / "small.png"));
+    EXPECT_EQ(r.output, "");  // --quiet prints nothing
+}
+
+TEST(Cli, BadInputGivesClearErrors) {
+    const auto scene = write_file("ok.json", kSmallScene);
+    const auto bad_key = write_file("bad_key.json", R"({"camera": {"eye": [0,0,1]}, "cameras": 1})");
+    const auto bad_json = write_file("bad_json.json", "{ not json");
+    const auto bad_model = write_file(
+        "bad_model.json",
+        R"({"camera": {}, "materials": [{"name": "m", "type": "glint", "model": "nope"}]})");
+    struct Case {
+        std::string args;
+        std::vector<std::string> expected;
+    };
+    const std::vector<Case> cases = {
+        {"render /nonexistent/scene.json", {"scene.json"}},
+        {"render " + bad_key.string(), {"bad_key.json", "/cameras", "unknown key"}},
+        {"render " + bad_json.string(), {"bad_json.json", "invalid JSON"}},
+        {"render " + bad_model.string(), {"bad_model.json", "/materials/0/model", "smooth"}},
+        {"render " + scene.string() + " --res 0x5", {"--res", "[1, 16384]"}},
+        {"render " + scene.string() + " --res banana", {"--res", "WxH"}},
+        {"render " + scene.string() + " --spp 0", {"--spp"}},
+        {"render " + scene.string() + " --integrator bdpt", {"--integrator"}},
+        // The output's parent is a regular file, so no directory can be made there.
+        {"render " + scene.string() + " -o " + scene.string() + "/y.exr --quiet", {"cannot create the output directory"}},
+        {"frobnicate", {"frobnicate"}},
+        {"validate no_such_suite", {"no_such_suite"}},
+    };
+    for (const Case& c : cases) {
+        const RunResult r = run_cli(c.args);
+        EXPECT_NE(r.status, 0) << c.args << "\n" << r.output;
+        EXPECT_LT(r.status, 128) << "crashed: " << c.args << "\n" << r.output;
+        for (const std::string& e : c.expected)
+            EXPECT_NE(r.output.find(e), std::string::npos) << c.args << ": expected \"" << e << "\" in:\n" << r.output;
+    }
+}
+
+TEST(Cli, InfoListsModelsAndHelpWorks) {
+    const RunResult info = run_cli("info");
+    EXPECT_EQ(info.status, 0);
+    EXPECT_NE(info.output.find("smooth"), std::string::npos) << info.output;
+    const RunResult help = run_cli("render --help");
+    EXPECT_EQ(help.status, 0);
+    EXPECT_NE(help.output.find("--spp"), std::string::npos) << help.output;
+}
+
+}  // namespace
