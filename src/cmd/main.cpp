@@ -14,6 +14,18 @@ int main(int argc, char** argv) {
     glintlab::cmd::add_render_command(app, &status);
     glintlab::cmd::add_info_command(app, &status);
     glintlab::cmd::add_validate_command(app, &status);
+    if (argc > 1 && argv[1][0] != '-') {
+        bool known = false;
+        std::string names;
+        for (const CLI::App* sub : app.get_subcommands({})) {
+            known = known || sub->get_name() == argv[1];
+            names += (names.empty() ? "" : ", ") + sub->get_name();
+        }
+        if (!known) {
+            fmt::print(stderr, "glintlab: unknown command '{}' (commands: {}; see --help)\n", argv[1], names);
+            return 1;
+        }
+    }
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {

@@ -1,7 +1,7 @@
 #include <chrono>
 #include <filesystem>
 #include <optional>
-#include <regex>
+#include <charconv>
 
 #include <fmt/format.h>
 
@@ -35,11 +35,15 @@ int run_render(const RenderArgs& a) {
         scene.render.integrator = a.integrator == "path" ? RenderSettings::Integrator::Path
                                                          : RenderSettings::Integrator::Direct;
     if (!a.res.empty()) {
-        std::smatch m;
-        const std::regex re(R"((\d{1,5})x(\d{1,5}))");
-        if (!std::regex_match(a.res, m, re))
-            fail("--res: expected WxH with W and H in [1, 16384], got \"{}\"", a.res);
-        const int w = std::stoi(m[1]), h = std::stoi(m[2]);
+        // WxH, both integers in [1, 16384].
+        const size_t x = a.res.find('x');
+        int w = 0, h = 0;
+        const char* end = a.res.data() + a.res.size();
+        const bool ok = x != std::string::npos &&
+                        std::from_chars(a.res.data(), a.res.data() + x, w).ptr == a.res.data() + x &&
+                        std::from_chars(a.res.data() + x + 1, end, h).ptr == end && x > 0 &&
+                        x + 1 < a.res.size();
+        if (!ok) fail("--res: expected WxH with W and H in [1, 16384], got \"{}\"", a.res);
         if (w < 1 || h < 1 || w > 16384 || h > 16384)
             fail("--res: W and H must be in [1, 16384], got {}x{}", w, h);
         scene.camera.width = w, scene.camera.height = h;
