@@ -10,7 +10,7 @@
 #include "glintlab/microfacet/ndf.glsl"
 
 // 1 / a = alpha(phi) tan(theta) with alpha(phi)^2 = cos^2 phi ax^2 + sin^2 phi ay^2
-// (Heitz 2014 Eq. 80, anisotropic roughness projected on the direction's azimuth);
+// (Heitz 2014: the anisotropic roughness projected on the direction's azimuth);
 // returned squared: (ax^2 x^2 + ay^2 y^2) / z^2. Symmetric in the sign of w.z.
 float masking_alpha_tan2(vec3 w, float alpha_x, float alpha_y) {
     float ax = alpha_x * w.x;

@@ -1,7 +1,8 @@
 // Normal distribution functions D(m): Walter et al. 2007 "Microfacet Models for
 // Refraction through Rough Surfaces" (Eq. 25 Beckmann, Eq. 33 GGX), in the
 // anisotropic forms of Heitz 2014 "Understanding the Masking-Shadowing Function
-// in Microfacet-Based BRDFs" (Eq. 71 Beckmann, Eq. 85 GGX).
+// in Microfacet-Based BRDFs" (the ellipsoidal NDFs of its §5, whose Lambda are
+// its Eq. 72 and Eq. 86).
 // m is a unit vector in the local shading frame (z = normal); alpha_x and
 // alpha_y are the roughnesses along the tangent x and bitangent y axes.
 // Both are normalised as projected areas: integral of D(m) m.z dm = 1.
@@ -22,7 +23,7 @@ float ndf_stretched_xy2(vec3 m, float alpha_x, float alpha_y) {
     return sx * sx + sy * sy;
 }
 
-// Heitz 2014 Eq. 71: D = exp(-tan^2(theta) (cos^2 phi/ax^2 + sin^2 phi/ay^2))
+// Anisotropic Beckmann: D = exp(-tan^2(theta) (cos^2 phi/ax^2 + sin^2 phi/ay^2))
 //                        / (pi ax ay cos^4 theta).
 float D_Beckmann(vec3 m, float alpha_x, float alpha_y) {
     if (m.z <= 0.0f) return 0.0f;
@@ -31,7 +32,7 @@ float D_Beckmann(vec3 m, float alpha_x, float alpha_y) {
     return exp(-e) / (PI * alpha_x * alpha_y * cos2 * cos2);
 }
 
-// Heitz 2014 Eq. 85: D = 1 / (pi ax ay cos^4 theta (1 + tan^2 theta (cos^2 phi/ax^2
+// Anisotropic GGX: D = 1 / (pi ax ay cos^4 theta (1 + tan^2 theta (cos^2 phi/ax^2
 // + sin^2 phi/ay^2))^2); multiplying through by cos^4 gives the form below,
 // which has no tan and stays finite at grazing m.
 float D_GGX(vec3 m, float alpha_x, float alpha_y) {

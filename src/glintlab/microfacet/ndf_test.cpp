@@ -66,7 +66,7 @@ TEST(MicrofacetNdf, BelowHorizonIsZero) {
 }
 
 TEST(MicrofacetNdf, AnisotropicAxesMatchIsotropic) {
-    // Along the x axis only alpha_x matters (Heitz 2014 Eq. 71, 85 at phi = 0).
+    // Along the x axis only alpha_x matters (the anisotropic D at phi = 0).
     const glm::vec3 m = glm::normalize(glm::vec3(0.3f, 0.0f, 1.0f));
     for (int ndf : {NDF_BECKMANN, NDF_GGX}) {
         const float iso = D_Microfacet(ndf, m, 0.3f, 0.3f);
@@ -75,7 +75,7 @@ TEST(MicrofacetNdf, AnisotropicAxesMatchIsotropic) {
     }
 }
 
-// Weak white furnace (Heitz 2014 Eq. 32 / chermain2020 Eq. 17):
+// Weak white furnace (Heitz 2014 §3 / chermain2020 Eq. 17):
 //   integral of G1(o, m) max(0, o.m) D(m) dm / cos(theta_o) = 1.
 // Smith: true by construction of Lambda (Heitz 2014 §5). V-cavity: for every
 // NDF with D(m) = D(-m.x, -m.y, m.z) (Beckmann, GGX, also anisotropic) the

@@ -1,5 +1,5 @@
 // Sampling of the distribution of visible normals
-//   D_wo(m) = G1(wo) max(0, wo.m) D(m) / wo.z        (Heitz 2014 Eq. 38, Smith G1)
+//   D_wo(m) = G1(wo) max(0, wo.m) D(m) / wo.z        (Heitz 2014, Smith G1)
 // for an observer direction wo with wo.z > 0 (callers flip wo into the upper
 // hemisphere first). Both samplers map two uniforms in [0,1)^2 to a unit m.
 //  - GGX: Heitz 2018 "Sampling the GGX Distribution of Visible Normals" (JCGT 7(4)),
@@ -148,7 +148,7 @@ vec3 sample_vndf(int ndf, vec3 wo, float alpha_x, float alpha_y, vec2 u) {
     return sample_vndf_ggx(wo, alpha_x, alpha_y, u);
 }
 
-// Density of sample_vndf in solid angle of m (Heitz 2014 Eq. 38), for wo.z > 0.
+// Density of sample_vndf in solid angle of m (the visible NDF above), for wo.z > 0.
 float pdf_vndf(int ndf, vec3 wo, vec3 m, float alpha_x, float alpha_y) {
     if (wo.z <= 0.0f) return 0.0f;
     float wm = max(0.0f, dot(wo, m));
