@@ -8,6 +8,8 @@
 #include <fstream>
 #include <sys/wait.h>
 
+#include <nlohmann/json.hpp>
+
 namespace {
 
 struct RunResult {
@@ -89,6 +91,18 @@ TEST(Cli, BadInputGivesClearErrors) {
         EXPECT_LT(r.status, 128) << "crashed: " << c.args << "\n" << r.output;
         for (const std::string& e : c.expected)
             EXPECT_NE(r.output.find(e), std::string::npos) << c.args << ": expected \"" << e << "\" in:\n" << r.output;
+    }
+}
+
+TEST(Cli, ValidateCountingJsonFollowsTheContract) {
+    const RunResult r = run_cli("validate counting --json");
+    ASSERT_EQ(r.status, 0) << r.output;
+    const auto j = nlohmann::json::parse(r.output);
+    EXPECT_EQ(j.at("suite"), "counting");
+    ASSERT_TRUE(j.at("checks").is_array());
+    for (const auto& c : j.at("checks")) {
+        EXPECT_TRUE(c.contains("name") && c.contains("value") && c.contains("limit") && c.contains("pass")) << c;
+        EXPECT_TRUE(c.at("pass").get<bool>()) << c;
     }
 }
 

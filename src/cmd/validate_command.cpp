@@ -4,6 +4,7 @@
 #include <fmt/format.h>
 
 #include "commands.h"
+#include "glintlab/counting/validate_counting.h"
 #include "glintlab/validate/report.h"
 
 namespace glintlab::cmd {
@@ -19,7 +20,14 @@ using SuiteRunner = std::function<ValidationReport(const ValidateArgs&)>;
 
 // The validation suites, by name. Each model issue adds its own.
 const std::map<std::string, SuiteRunner>& suites() {
-    static const std::map<std::string, SuiteRunner> table = {};
+    static const std::map<std::string, SuiteRunner> table = {
+        {"counting",
+         [](const ValidateArgs& a) {
+             CountingValidationOptions o;
+             o.seed = static_cast<uint64_t>(a.seed);
+             return validate_counting(o);
+         }},
+    };
     return table;
 }
 
