@@ -20,6 +20,16 @@ float pow_one_minus_naive(float p, float N) {
     return N > 0.0f ? pow(max(1.0f - p, 0.0f), N) : 1.0f;
 }
 
+// x^y for x in [0, 1], y > 0, as GLSL defines pow (exp2(y log2 x)), with
+// results below 2^-126 flushed to 0 (x = 0 included: log2(0) = -inf). This
+// keeps the CPU path off libm's slow underflow branch, so the cost no longer
+// depends on N, and changes no gate: such probabilities are 0 next to the
+// 2^-24 resolution of a uniform.
+float pow_unit(float x, float y) {
+    float e = y * log2(x);
+    return e > -126.0f ? exp2(e) : 0.0f;
+}
+
 // The scale c = max(1, epsilon / p) of 003 Eq. 25. p is floored at 1e-30 so
 // that p = 0 gives a finite c (then c * p = 0 and the power is exactly 1).
 float stable_pow_scale(float p) {
@@ -30,7 +40,7 @@ float stable_pow_scale(float p) {
 // 1 - epsilon, which fp32 represents to 2e-4 relative accuracy.
 float pow_one_minus_stable(float p, float N) {
     float c = stable_pow_scale(p);
-    return N > 0.0f ? pow(max(1.0f - c * p, 0.0f), N / c) : 1.0f;
+    return N > 0.0f ? pow_unit(max(1.0f - c * p, 0.0f), N / c) : 1.0f;
 }
 
 // A Gaussian deviate N(mean, variance) from one uniform number.
@@ -107,8 +117,8 @@ vec2 binomial_dual_gated(float N, float p, float xi1, float xi2, bool integer_ga
     float n2 = max(2.0f, n);                                   // line 2
     float c = stable_pow_scale(p);                             // line 3
     float w_many = clamp(n - 1.0f, 0.0f, 1.0f);
-    float p_all_pos = w_many * pow(p, n2);                     // line 5
-    float p_all_neg = w_many * pow(max(1.0f - c * p, 0.0f), n2 / c);  // line 6
+    float p_all_pos = w_many * pow_unit(p, n2);                // line 5
+    float p_all_neg = w_many * pow_unit(max(1.0f - c * p, 0.0f), n2 / c);  // line 6
     float w_one = max(0.0f, 1.0f - abs(1.0f - n));
     float p_one_pos = w_one * p;                               // line 7
     float p_one_neg = w_one * (1.0f - p);                      // line 8

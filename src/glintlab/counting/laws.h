@@ -15,6 +15,7 @@ GLINTLAB_SHADER_BEGIN
 float normal_quantile(float u);
 // binomial_laws.glsl
 float pow_one_minus_naive(float p, float N);
+float pow_unit(float x, float y);
 float stable_pow_scale(float p);
 float pow_one_minus_stable(float p, float N);
 float gaussian_deviate(float mean, float variance, float xi);

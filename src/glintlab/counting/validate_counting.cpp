@@ -37,7 +37,7 @@ double mean_error(const CellStatistics& s) {
 // construction: given the gate, the Gaussian is centred on 1 + (N - 1) p
 // (single) or 1 + (N - 2) p (dual), not on the conditional mean
 // N p / P(>=1), and the clamp to >= 1 shifts it further; the bias is up to
-// ~30 % of N p around N p ~ 1 (e.g. single-gated, N = 10, p = 0.1: +24 %).
+// ~30 % of N p around N p ~ 1 (e.g. single-gated, N = 10, p = 0.1: +29 %).
 // 1 % is reachable only in the two asymptotic regimes:
 //  - N p >= 200: the bias is at most one count (<= 1 - p), i.e. <= 0.5 %,
 //    leaving the other half of the tolerance to sampling noise
