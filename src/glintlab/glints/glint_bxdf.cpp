@@ -11,8 +11,11 @@ int ndf_id(NdfType t) { return t == NdfType::GGX ? shader::NDF_GGX : shader::NDF
 }  // namespace
 
 float GlintBxdf::footprint_ndf(glm::vec3 h) const {
-    // Only `smooth` exists so far; the models of later issues dispatch here
-    // on desc->model (a closed set, ARCHITECTURE.md §5).
+    // A closed set of models (ARCHITECTURE.md §5): each case calls the
+    // model's own evaluation of its footprint NDF.
+    switch (desc->model_id) {
+        case GlintModelId::Smooth: break;
+    }
     return shader::D_Microfacet(ndf_id(desc->ndf), h, desc->alpha_x, desc->alpha_y);
 }
 

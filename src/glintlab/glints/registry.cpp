@@ -8,10 +8,13 @@ namespace {
 
 // `smooth`: the Cook–Torrance limit every glint model converges to; it has
 // no parameters of its own.
-void read_smooth_params(JsonObject& block, GlintDesc&) { block.finish(); }
+void read_smooth_params(JsonObject& block, GlintDesc& desc) {
+    desc.params = SmoothParams{};
+    block.finish();
+}
 
 const GlintModelInfo kModels[] = {
-    {"smooth", "smooth microfacet BRDF (Cook-Torrance / Walter et al. 2007), the limit of every glint model",
+    {GlintModelId::Smooth, "smooth", "smooth microfacet BRDF (Cook-Torrance / Walter et al. 2007), the limit of every glint model",
      true, true, true, true, read_smooth_params},
 };
 

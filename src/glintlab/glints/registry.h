@@ -12,7 +12,12 @@ namespace glintlab {
 class JsonObject;
 struct GlintDesc;
 
+// Models in registry order; GlintBxdf dispatches on it (static, no strings
+// in the hot path).
+enum class GlintModelId : int { Smooth = 0 };
+
 struct GlintModelInfo {
+    GlintModelId id;
     std::string_view name;
     std::string_view description;
     // Light types the model can shade; the scene loader rejects the others.
@@ -20,7 +25,8 @@ struct GlintModelInfo {
     bool directional_lights;
     bool sphere_lights;
     bool environment_lights;
-    // Reads (and range-checks) the model's parameter block into desc.model_params.
+    // Reads (and range-checks) the model's parameter block into desc.params
+    // and calls block.finish().
     void (*read_params)(JsonObject& block, GlintDesc& desc);
 };
 

@@ -12,6 +12,8 @@
 #include <nlohmann/json.hpp>
 
 #include "glintlab/core/bloom.h"
+#include "glintlab/glints/model_params.h"
+#include "glintlab/glints/registry.h"
 #include "glintlab/microfacet/bxdfs.h"
 #include "glintlab/scene/camera.h"
 #include "glintlab/scene/environment.h"
@@ -31,13 +33,15 @@ struct FresnelDesc {
 // The glint material of ARCHITECTURE.md §4: shared parameters + the model's own.
 struct GlintDesc {
     std::string model = "smooth";
+    GlintModelId model_id = GlintModelId::Smooth;
     NdfType ndf = NdfType::Beckmann;
     float alpha_x = 0.3f, alpha_y = 0.3f;
     float log_density = 20.0f;  // ln(microfacets per unit uv area)
     FresnelDesc fresnel;
     glm::vec3 color{1.0f};  // glint tint, multiplies the BRDF
     uint32_t seed = 0;
-    nlohmann::json model_params = nlohmann::json::object();  // the active model's block
+    nlohmann::json model_params = nlohmann::json::object();  // the active model's block, as written
+    GlintModelParams params;  // the active model's parameters, as read
 };
 
 struct MaterialDesc {

@@ -99,6 +99,7 @@ GlintDesc read_glint(JsonObject& o) {
         o.error("model", fmt::format("unknown glint model \"{}\": known models are {}", model,
                                      glint_model_names()));
     g.model = model;
+    g.model_id = info->id;
     g.ndf = read_ndf(o, NdfType::Beckmann);
     read_roughness(o, 1e-3f, &g.alpha_x, &g.alpha_y);
     g.log_density = static_cast<float>(o.number("log_density", 20.0, -20.0, 60.0));

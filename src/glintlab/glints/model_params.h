@@ -1,0 +1,14 @@
+// Each glint model's own parameters, read from its block of the glint
+// material (ARCHITECTURE.md §4) by the model's read_params (registry.cpp).
+// A closed set: add the model's parameter struct to the variant.
+#pragma once
+
+#include <variant>
+
+namespace glintlab {
+
+struct SmoothParams {};  // `smooth` has no parameters of its own
+
+using GlintModelParams = std::variant<SmoothParams>;
+
+}  // namespace glintlab
