@@ -5,6 +5,7 @@
 
 #include "commands.h"
 #include "glintlab/counting/validate_counting.h"
+#include "glintlab/glints/deliot2023/validate_deliot2023.h"
 #include "glintlab/validate/report.h"
 
 namespace glintlab::cmd {
@@ -26,6 +27,12 @@ const std::map<std::string, SuiteRunner>& suites() {
              CountingValidationOptions o;
              o.seed = static_cast<uint64_t>(a.seed);
              return validate_counting(o);
+         }},
+        {"deliot2023",
+         [](const ValidateArgs& a) {
+             Deliot2023ValidationOptions o;
+             o.seed = static_cast<uint64_t>(a.seed);
+             return validate_deliot2023(o);
          }},
     };
     return table;

@@ -1,5 +1,6 @@
 #include "glintlab/glints/glint_bxdf.h"
 
+#include "glintlab/glints/deliot2023/deliot2023.h"
 #include "glintlab/microfacet/microfacet.h"
 #include "glintlab/scene/scene.h"
 
@@ -15,6 +16,7 @@ float GlintBxdf::footprint_ndf(glm::vec3 h) const {
     // model's own evaluation of its footprint NDF.
     switch (desc->model_id) {
         case GlintModelId::Smooth: break;
+        case GlintModelId::Deliot2023: return deliot2023_footprint_ndf(h, footprint, *desc);
     }
     return shader::D_Microfacet(ndf_id(desc->ndf), h, desc->alpha_x, desc->alpha_y);
 }

@@ -5,10 +5,12 @@
 
 #include <variant>
 
+#include "glintlab/glints/deliot2023/deliot2023_params.h"
+
 namespace glintlab {
 
 struct SmoothParams {};  // `smooth` has no parameters of its own
 
-using GlintModelParams = std::variant<SmoothParams>;
+using GlintModelParams = std::variant<SmoothParams, Deliot2023Params>;
 
 }  // namespace glintlab

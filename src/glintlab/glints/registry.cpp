@@ -1,5 +1,6 @@
 #include "glintlab/glints/registry.h"
 
+#include "glintlab/glints/deliot2023/deliot2023.h"
 #include "glintlab/scene/json_reader.h"
 #include "glintlab/scene/scene.h"
 
@@ -16,6 +17,10 @@ void read_smooth_params(JsonObject& block, GlintDesc& desc) {
 const GlintModelInfo kModels[] = {
     {GlintModelId::Smooth, "smooth", "smooth microfacet BRDF (Cook-Torrance / Walter et al. 2007), the limit of every glint model",
      true, true, true, true, read_smooth_params},
+    // Point and directional lights only (000 §8: no extended lights).
+    {GlintModelId::Deliot2023, "deliot2023",
+     "distributed binomial laws on anisotropic grids (Deliot & Belcour 2023)", true, true, false,
+     false, read_deliot2023_params},
 };
 
 }  // namespace

@@ -1,0 +1,327 @@
+// deliot2023 footprint NDF D_P(h): Deliot & Belcour, "Real-Time Rendering of
+// Glinty Appearances using Distributed Binomial Laws on Anisotropic Grids",
+// HPG/CGF 2023 (papers/000). Equation numbers below are that paper's.
+//
+// Pipeline for one half vector h and one pixel footprint:
+//  1. footprint ellipse (§5.1): minor/major axis lengths and orientation;
+//  2. the (LOD, ratio, orientation) lattice of anisotropic virtual grids
+//     (Eq. 11-13, Fig. 5-6), split into tetrahedra (§6.1): 4 weighted grids,
+//     whose weights distribute the footprint's trials (Eq. 10);
+//  3. per grid, a simplex (triangle) spatial lattice (§6.2): 3 vertices blended
+//     barycentrically, each holding N = cell area x density x grid weight trials;
+//  4. per vertex, an angular grid over h.xy / R with a random offset, blended
+//     bilinearly (Eq. 14): 4 counts from the gated Gaussian law (§6.3);
+//  5. D_P = D(n) / R x (blended count) / (blended trials) (Eq. 3-4), whose
+//     mean is D(h) (Eq. 5-6).
+// 4 x 3 x 4 = 48 binomial evaluations, constant for every footprint.
+//
+// `original_defects` reproduces the authors' HLSL as described in
+// papers/README.md (cancelling ellipse eigenvalue, Gaussian clamped to N,
+// gate 1-(1-p)^N for N < 1, naive fp32 (1-p)^N, LOD truncated toward zero,
+// no anisotropy clamp); otherwise each of these is fixed (docs/MODELS.md).
+#ifndef GLINTLAB_GLINTS_DELIOT2023_GLSL
+#define GLINTLAB_GLINTS_DELIOT2023_GLSL
+
+#include "glintlab/core/constants.glsl"
+#include "glintlab/core/footprint.glsl"
+#include "glintlab/core/hash.glsl"
+#include "glintlab/counting/binomial_laws.glsl"
+#include "glintlab/microfacet/ndf.glsl"
+
+// LOD range: cells from 2^-24 (fp32 resolution of uv in [0, 1]) to 2^24 uv units.
+const float DELIOT2023_MAX_ABS_LOD = 24.0f;
+// Fixed mode: anisotropy ratio clamped to 2^6 = 64 (previous work clamps at 16,
+// 000 Fig. 11); beyond it the orientation bins (180 deg / 2^(k+1)) are finer
+// than the direction of a fp32 footprint at grazing angles.
+const int DELIOT2023_MAX_RATIO_LEVEL = 6;
+// Original mode has no clamp; 2^20 only keeps the integer bin arithmetic finite.
+const int DELIOT2023_MAX_RATIO_LEVEL_ORIGINAL = 20;
+// ln of the largest trial count (e^80 ~ 5.5e34 < FLT_MAX with room for sums).
+const float DELIOT2023_MAX_LOG_TRIALS = 80.0f;
+// Lattice cell indices wrap with this mask (period 2^20 cells) so that float to
+// int conversions stay in range for any uv and LOD.
+const int DELIOT2023_LATTICE_MASK = 1048575;
+const float DELIOT2023_LATTICE_PERIOD = 1048576.0f;
+const float DELIOT2023_LN2 = 0.69314718f;
+
+// The 4 grids of one lookup: id = (LOD, ratio level k, orientation bin j), and
+// each grid's share of the footprint's trials (barycentric, sums to 1).
+struct Deliot2023Grids {
+    ivec3 id[4];
+    float weight[4];
+};
+
+// §5.1: axes of the footprint ellipse. The pixel's uv Jacobian J = (dx dy)
+// maps the unit disk to an ellipse with matrix M = J J^T = [a b; b c]; its
+// axis lengths are the square roots of M's eigenvalues. Returns
+// (minor length, major length, major-axis angle in [0, pi)).
+// Fixed: lambda_min = det(J)^2 / lambda_max, no cancellation; inputs are
+// rescaled so the squares neither overflow nor underflow. Original:
+// lambda_min = (a + c) / 2 - sqrt(...), which cancels to 0 (or below) for
+// elongated footprints (floored at 0 here instead of producing NaN).
+vec3 deliot2023_footprint_ellipse(vec2 dx, vec2 dy, bool original_defects) {
+    float m = max(max(abs(dx.x), abs(dx.y)), max(abs(dy.x), abs(dy.y)));
+    if (!(m > 0.0f)) return vec3(0.0f);
+    dx = dx / m;
+    dy = dy / m;
+    float a = dx.x * dx.x + dy.x * dy.x;
+    float b = dx.x * dx.y + dy.x * dy.y;
+    float c = dx.y * dx.y + dy.y * dy.y;
+    float half_sum = 0.5f * (a + c);
+    float half_diff = 0.5f * (a - c);
+    float root = sqrt(half_diff * half_diff + b * b);
+    float lambda_max = half_sum + root;
+    float major = sqrt(lambda_max);
+    float minor;
+    if (original_defects) {
+        minor = sqrt(max(half_sum - root, 0.0f));
+    } else {
+        minor = abs(dx.x * dy.y - dx.y * dy.x) / major;
+    }
+    float angle = (b != 0.0f || half_diff != 0.0f) ? 0.5f * atan(2.0f * b, a - c) : 0.0f;
+    if (angle < 0.0f) angle += PI;
+    if (angle >= PI) angle -= PI;
+    return vec3(minor * m, major * m, angle);
+}
+
+// Number of orientation bins over 180 deg at ratio level k (ratio 2^k): bin
+// width 90 deg / max(2^k, 2), and a single orientation-free grid at k = 0
+// (Fig. 6: one more orientation per ratio level).
+int deliot2023_orientation_bins(int k) {
+    return k == 0 ? 1 : (2 << k);
+}
+
+// §5.2 + §6.1: the 4 grids around (LOD l, ratio r, angle) and their weights.
+// Ratio-orientation plane (Fig. 6-7): between ratio levels k and k+1 (k >= 1),
+// orientation bin b has 2 vertices at level k and 3 at level k+1 (bins halve),
+// a pentagon split into 3 triangles; for k = 0 it is one triangle. Along the
+// LOD axis each triangle becomes a prism split into 3 tetrahedra. Triangle
+// vertices are ordered (lower level first, then by angle) consistently for
+// neighbouring cells, so the weights are continuous everywhere.
+// LOD and ratio coordinates are linear in cell AREA, as Eq. 10 distributes the
+// footprint area P between P_bottom and P_top = 4 P_bottom (Eq. 13): t = (P/P_bottom - 1)/3.
+Deliot2023Grids deliot2023_select_grids(float lod, float ratio, float angle, bool original_defects) {
+    int l0;
+    float f;
+    if (original_defects) {
+        l0 = int(lod);  // truncates toward zero: disagrees with fract() for lod < 0
+        f = fract(lod);
+    } else {
+        l0 = int(floor(lod));
+        f = lod - floor(lod);
+    }
+    float t_lod = (exp2(2.0f * f) - 1.0f) / 3.0f;
+
+    int max_level = original_defects ? DELIOT2023_MAX_RATIO_LEVEL_ORIGINAL : DELIOT2023_MAX_RATIO_LEVEL;
+    float r = clamp(ratio, 1.0f, exp2(float(max_level)));
+    int k = min(int(floor(log2(r))), max_level);
+    float t_r = k >= max_level ? 0.0f : clamp(r / exp2(float(k)) - 1.0f, 0.0f, 1.0f);
+
+    // Triangle vertices (ratio level, orientation bin) and barycentrics.
+    ivec2 va;
+    ivec2 vb;
+    ivec2 vc;
+    float la;
+    float lb;
+    float lc;
+    if (k == 0) {
+        float x = angle / (PI / 4.0f);
+        int b = min(int(floor(x)), 3);
+        float u = clamp(x - float(b), 0.0f, 1.0f);
+        va = ivec2(0, 0);
+        vb = ivec2(1, b);
+        vc = ivec2(1, b + 1);
+        la = 1.0f - t_r;
+        lb = t_r * (1.0f - u);
+        lc = t_r * u;
+    } else {
+        int bins = deliot2023_orientation_bins(k);
+        float x = angle / (PI / float(bins));
+        int b = min(int(floor(x)), bins - 1);
+        float u = clamp(x - float(b), 0.0f, 1.0f);
+        if (u < 0.5f * t_r) {  // lower-left, upper-left, upper-middle
+            va = ivec2(k, b);
+            vb = ivec2(k + 1, 2 * b);
+            vc = ivec2(k + 1, 2 * b + 1);
+            la = 1.0f - t_r;
+            lb = t_r - 2.0f * u;
+            lc = 2.0f * u;
+        } else if (u > 1.0f - 0.5f * t_r) {  // lower-right, upper-middle, upper-right
+            va = ivec2(k, b + 1);
+            vb = ivec2(k + 1, 2 * b + 1);
+            vc = ivec2(k + 1, 2 * b + 2);
+            la = 1.0f - t_r;
+            lb = 2.0f * (1.0f - u);
+            lc = t_r - 2.0f * (1.0f - u);
+        } else {  // lower-left, lower-right, upper-middle
+            va = ivec2(k, b);
+            vb = ivec2(k, b + 1);
+            vc = ivec2(k + 1, 2 * b + 1);
+            la = 1.0f - u - 0.5f * t_r;
+            lb = u - 0.5f * t_r;
+            lc = t_r;
+        }
+    }
+    // Orientation bins are periodic over 180 deg.
+    va.y = va.y % deliot2023_orientation_bins(va.x);
+    vb.y = vb.y % deliot2023_orientation_bins(vb.x);
+    vc.y = vc.y % deliot2023_orientation_bins(vc.x);
+
+    // Prism (triangle x [l0, l0 + 1]) split into 3 tetrahedra.
+    Deliot2023Grids g;
+    if (t_lod <= la) {
+        g.id[0] = ivec3(l0, va.x, va.y);
+        g.id[1] = ivec3(l0, vb.x, vb.y);
+        g.id[2] = ivec3(l0, vc.x, vc.y);
+        g.id[3] = ivec3(l0 + 1, va.x, va.y);
+        g.weight[0] = la - t_lod;
+        g.weight[1] = lb;
+        g.weight[2] = lc;
+        g.weight[3] = t_lod;
+    } else if (t_lod <= la + lb) {
+        g.id[0] = ivec3(l0, vb.x, vb.y);
+        g.id[1] = ivec3(l0, vc.x, vc.y);
+        g.id[2] = ivec3(l0 + 1, va.x, va.y);
+        g.id[3] = ivec3(l0 + 1, vb.x, vb.y);
+        g.weight[0] = la + lb - t_lod;
+        g.weight[1] = lc;
+        g.weight[2] = la;
+        g.weight[3] = t_lod - la;
+    } else {
+        g.id[0] = ivec3(l0, vc.x, vc.y);
+        g.id[1] = ivec3(l0 + 1, va.x, va.y);
+        g.id[2] = ivec3(l0 + 1, vb.x, vb.y);
+        g.id[3] = ivec3(l0 + 1, vc.x, vc.y);
+        g.weight[0] = 1.0f - t_lod;
+        g.weight[1] = la;
+        g.weight[2] = lb;
+        g.weight[3] = t_lod - la - lb;
+    }
+    return g;
+}
+
+// The original HLSL's gated Gaussian (Eq. 16-18 as shipped): naive fp32
+// (1 - p)^N, the gate 1 - (1 - p)^N also for N < 1, and the Gaussian for the
+// N - 1 remaining trials clamped to N instead of N - 1.
+float deliot2023_original_law(float N, float p, float xi0, float xi1) {
+    float p_any = 1.0f - pow_one_minus_naive(p, N);  // Eq. 16
+    float rest = max(N - 1.0f, 0.0f);               // Eq. 17
+    float g = clamp(gaussian_deviate(rest * p, rest * p * (1.0f - p), xi1), 0.0f, N);
+    return xi0 < p_any ? floor(1.0f + g) : 0.0f;  // Eq. 18, gate passes with probability P>=1
+}
+
+// Counts of one grid (Eq. 14 per simplex vertex), accumulated into
+// acc = (sum of blended counts, sum of blended trials).
+vec2 deliot2023_grid_counts(ivec3 id, float weight, vec2 uv, vec2 slope, float p, float log_density,
+                            uint seed, float density_randomization, bool original_defects) {
+    int l = id.x;
+    int k = id.y;
+    float phi = float(id.z) * PI / float(deliot2023_orientation_bins(k));
+    uint grid_seed = hash_combine(hash_combine(hash_combine(seed, uint(l)), uint(k)), uint(id.z));
+    // Eq. 12: uv' = R_phi(S_(1,r)(S_s(uv))): rotate into the grid's frame, then
+    // scale the major axis by 1 / (2^k 2^l) and the minor axis by 1 / 2^l.
+    float inv_s = exp2(-float(l));
+    float inv_r = exp2(-float(k));
+    vec2 major_dir = vec2(cos(phi), sin(phi));
+    vec2 q = vec2(dot(uv, major_dir) * inv_r * inv_s, (uv.y * major_dir.x - uv.x * major_dir.y) * inv_s);
+    // §6.2: unit-area triangular lattice with basis (a, 0), (a/2, a sqrt(3)/2),
+    // a = sqrt(2/sqrt(3)); g = lattice coordinates, plus a per-grid offset so
+    // that vertices of different grids do not line up.
+    uint st = grid_seed;
+    vec2 g;
+    g.y = q.y / 0.93060486f;  // q.y / (a sqrt(3)/2)
+    g.x = q.x / 1.07456993f - 0.5f * g.y;
+    g = g + vec2(hash_random(st), hash_random(st));
+    g = mod(g, DELIOT2023_LATTICE_PERIOD);
+    vec2 gf = floor(g);
+    ivec2 cell = ivec2(gf);
+    vec2 fr = clamp(g - gf, 0.0f, 1.0f);
+    ivec2 v0;
+    ivec2 v1;
+    ivec2 v2;
+    vec3 beta;
+    if (fr.x + fr.y < 1.0f) {
+        v0 = cell;
+        v1 = cell + ivec2(1, 0);
+        v2 = cell + ivec2(0, 1);
+        beta = vec3(1.0f - fr.x - fr.y, fr.x, fr.y);
+    } else {
+        v0 = cell + ivec2(1, 1);
+        v1 = cell + ivec2(0, 1);
+        v2 = cell + ivec2(1, 0);
+        beta = vec3(fr.x + fr.y - 1.0f, 1.0f - fr.x, 1.0f - fr.y);
+    }
+    // Trials per vertex: each lattice vertex owns one cell of area 2^(2l) 2^k uv
+    // units; the grid holds `weight` of the footprint's trials (Eq. 10).
+    float log_trials = log_density + log(weight) + float(2 * l + k) * DELIOT2023_LN2;
+
+    vec2 acc = vec2(0.0f);
+    for (int v = 0; v < 3; ++v) {
+        ivec2 vert = v == 0 ? v0 : (v == 1 ? v1 : v2);
+        float bv = v == 0 ? beta.x : (v == 1 ? beta.y : beta.z);
+        if (bv <= 0.0f) continue;
+        uint vs = hash_cell(vert & ivec2(DELIOT2023_LATTICE_MASK), grid_seed);
+        // Per-cell jitter of the log density (std-dev density_randomization).
+        float z = normal_quantile(hash_random(vs));
+        float N = exp(clamp(log_trials + density_randomization * z, -DELIOT2023_MAX_LOG_TRIALS,
+                            DELIOT2023_MAX_LOG_TRIALS));
+        // Eq. 14: angular grid over the projected half vector in units of R,
+        // offset per vertex so that angular cells do not align across space.
+        vec2 a = slope + vec2(hash_random(vs), hash_random(vs));
+        a = mod(a, DELIOT2023_LATTICE_PERIOD);
+        vec2 af = floor(a);
+        ivec2 ac = ivec2(af);
+        vec2 at = clamp(a - af, 0.0f, 1.0f);
+        float count = 0.0f;
+        for (int c = 0; c < 4; ++c) {
+            ivec2 corner = ac + ivec2(c & 1, c >> 1);
+            float wc = ((c & 1) == 1 ? at.x : 1.0f - at.x) * ((c >> 1) == 1 ? at.y : 1.0f - at.y);
+            uint cs = hash_cell(corner & ivec2(DELIOT2023_LATTICE_MASK), vs);
+            float xi0 = uint_to_unit_float(pcg_hash(cs));
+            float xi1 = uint_to_unit_float(pcg_hash(cs ^ 0x9e3779b9u));
+            float b = original_defects ? deliot2023_original_law(N, p, xi0, xi1)
+                                       : binomial_single_gated(N, p, xi0, xi1);
+            count += wc * b;
+        }
+        acc += bv * vec2(count, N);
+    }
+    return acc;
+}
+
+// D_P(h) of Eq. 3-4 for a local half vector h (z = normal) and a uv footprint.
+// ndf, alpha_x, alpha_y: target NDF D; log_density: ln(facets per unit uv area);
+// seed: the material's seed. microfacet_roughness = R in (0, 1];
+// screen_space_scale: minimum glint size in pixels.
+float deliot2023_ndf(vec3 h, Footprint fp, int ndf, float alpha_x, float alpha_y, float log_density,
+                     uint seed, float microfacet_roughness, float screen_space_scale,
+                     float density_randomization, bool original_defects) {
+    float d_h = D_Microfacet(ndf, h, alpha_x, alpha_y);
+    if (!(d_h > 0.0f)) return 0.0f;
+    float d_n = D_Microfacet(ndf, vec3(0.0f, 0.0f, 1.0f), alpha_x, alpha_y);  // max of D
+    float R = microfacet_roughness;
+    float p = clamp(R * d_h / d_n, 0.0f, 1.0f);  // Eq. 4 success probability
+
+    vec3 ellipse = deliot2023_footprint_ellipse(fp.duvdx, fp.duvdy, original_defects);
+    float major = max(ellipse.y, 1e-30f);
+    float minor = max(ellipse.x, major * 1e-30f);
+    if (!original_defects) minor = max(minor, major * exp2(-float(DELIOT2023_MAX_RATIO_LEVEL)));
+    float ratio = major / minor;
+    // LOD = log2(minor * S / 2): with barycentric blending a glint spans two
+    // cells, so cells of half the minor width times S give glints S pixels wide.
+    float lod = clamp(log2(max(minor * screen_space_scale * 0.5f, 1e-30f)), -DELIOT2023_MAX_ABS_LOD,
+                      DELIOT2023_MAX_ABS_LOD);
+    Deliot2023Grids grids = deliot2023_select_grids(lod, ratio, ellipse.z, original_defects);
+
+    vec2 slope = vec2(h.x, h.y) / R;
+    vec2 acc = vec2(0.0f);
+    for (int i = 0; i < 4; ++i) {
+        if (grids.weight[i] <= 0.0f) continue;
+        acc += deliot2023_grid_counts(grids.id[i], grids.weight[i], fp.uv, slope, p, log_density, seed,
+                                      density_randomization, original_defects);
+    }
+    // Eq. 4 with the footprint's trial count: D(n)/R x count/N, E = D(h) (Eq. 5-6).
+    // (count/trials first: both reach 1e35 at the largest densities.)
+    return acc.y > 0.0f ? d_n / R * (acc.x / acc.y) : d_h;
+}
+
+#endif

@@ -1,0 +1,42 @@
+// C++ host side of the deliot2023 glint model (papers/000): the evaluation of
+// the shared deliot2023.glsl and the reader of its parameter block.
+#pragma once
+
+#include <cstdint>
+
+#include <glm/glm.hpp>
+
+#include "glintlab/core/footprint.h"
+#include "glintlab/glints/deliot2023/deliot2023_params.h"
+
+namespace glintlab {
+
+class JsonObject;
+struct GlintDesc;
+
+// The target NDF and the shared glint parameters, as plain values.
+struct Deliot2023Target {
+    int ndf = 0;  // shader::NDF_BECKMANN or shader::NDF_GGX
+    float alpha_x = 0.3f;
+    float alpha_y = 0.3f;
+    float log_density = 20.0f;  // ln(facets per unit uv area)
+    uint32_t seed = 0;
+};
+
+// D_P(h) (000 Eq. 3-4) of shader::deliot2023_ndf, h in the local frame.
+float deliot2023_ndf(glm::vec3 h, const Footprint& footprint, const Deliot2023Target& target,
+                     const Deliot2023Params& params);
+
+// The smooth target D(h) the model converges to (000 Eq. 5-6).
+float deliot2023_target_ndf(glm::vec3 h, const Deliot2023Target& target);
+
+// Footprint ellipse (minor length, major length, angle) of deliot2023.glsl.
+glm::vec3 deliot2023_footprint_ellipse(glm::vec2 duvdx, glm::vec2 duvdy, bool original_defects);
+
+// The material's D_P: desc.params must hold Deliot2023Params.
+float deliot2023_footprint_ndf(glm::vec3 h, const Footprint& footprint, const GlintDesc& desc);
+
+// Reads the "deliot2023" block into desc.params with range checks.
+void read_deliot2023_params(JsonObject& block, GlintDesc& desc);
+
+}  // namespace glintlab

@@ -1,0 +1,122 @@
+// Properties of the deliot2023 footprint NDF (fixed seeds; tolerances argued
+// from the sampling error of each estimate).
+#include "glintlab/glints/deliot2023/deliot2023.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "glintlab/core/error.h"
+#include "glintlab/glints/deliot2023/deliot2023_experiments.h"
+#include "glintlab/scene/json_reader.h"
+#include "glintlab/scene/scene.h"
+
+namespace glintlab {
+namespace {
+
+// 000 Eq. 5-6: with ~1e7 facets per footprint the per-footprint relative
+// noise is about 1/sqrt(N p) <= 2 % (p >= 1e-4 over the cases), so the mean
+// of 60 footprints has a standard error <= 0.3 %; the gated law's bias (one
+// facet when the gate passes) is < 1e-3 relative. 2 % is >= 6 sigma.
+TEST(Deliot2023, ConvergesToSmoothNdfAtHighDensity) {
+    for (const ConvergenceCase& c : deliot2023_convergence(60, 7, false)) {
+        EXPECT_LE(c.rel_err, 0.02)
+            << "ndf " << c.ndf << " alpha " << c.alpha << " tan " << c.tan_theta;
+    }
+}
+
+// 000 §4: the expected count is preserved across a LOD boundary. 1000
+// expected facets per footprint; D_P / D(h) has a relative std-dev of ~5-10 %
+// (measured by `validate deliot2023`), so the mean of 400 footprints has a
+// standard error <= 0.5 %; the gated law's bias is ~0.2 %. Any popping from a
+// wrong trial distribution (e.g. area-unweighted LOD blending: up to 33 %
+// fewer trials mid-transition does not bias the mean, but a jump in T or a
+// lost grid does) shows as a step far above 3 %.
+TEST(Deliot2023, ExpectedCountIsPreservedAcrossLodBoundary) {
+    for (const LodTransitionStep& s : deliot2023_lod_transition(9, 400, 11)) {
+        EXPECT_NEAR(s.mean_ratio, 1.0, 0.03) << "lod " << s.lod;
+        EXPECT_GT(s.count_variance_ratio, 0.0);
+    }
+}
+
+// Every evaluation finite and non-negative over degenerate/huge/grazing
+// inputs and parameters at their range edges (validate runs 1e7).
+TEST(Deliot2023, NoNanOrNegativeOverWholeDomain) {
+    const RobustnessResult r = deliot2023_robustness(100000, 3);
+    EXPECT_EQ(r.bad_fixed, 0);
+}
+
+// Same inputs, same bits; uv moved by 1e-5 minor widths changes the simplex
+// and angular weights by ~3e-5, so D_P (piecewise linear in uv) changes by
+// ~1e-4 of its scale; 1e-2 fails on any discontinuity. A 1e-5 footprint
+// change can flip a gate with probability ~48 x 1e-5 per evaluation.
+TEST(Deliot2023, DeterministicAndContinuous) {
+    const CoherenceResult r = deliot2023_coherence(2000, 1e-5, 1e-5, 5);
+    EXPECT_EQ(r.mismatches, 0);
+    EXPECT_LE(r.uv_max_rel_change, 0.01);
+    EXPECT_LE(r.footprint_jump_fraction, 0.01);
+}
+
+// The fixed ellipse decomposition keeps the minor axis of a 1:1e4 footprint
+// (fp32: ~1e-7 relative after a division); the original's
+// lambda_min = (a + c)/2 - sqrt(...) cancels (lambda_min / lambda_max = 1e-8
+// is below fp32 epsilon), which is the defect papers/README.md lists.
+TEST(Deliot2023, EllipseDecompositionIsStable) {
+    const float angle = 0.3f;
+    const glm::vec2 major(std::cos(angle), std::sin(angle));
+    const glm::vec2 minor(-major.y, major.x);
+    const glm::vec2 dx = major * 1e-1f, dy = minor * 1e-5f;
+    const glm::vec3 fixed = deliot2023_footprint_ellipse(dx, dy, false);
+    EXPECT_NEAR(fixed.x, 1e-5f, 1e-5f * 1e-5f);
+    EXPECT_NEAR(fixed.y, 1e-1f, 1e-1f * 1e-5f);
+    EXPECT_NEAR(fixed.z, angle, 1e-5f);
+    const glm::vec3 original = deliot2023_footprint_ellipse(dx, dy, true);
+    EXPECT_GT(std::abs(original.x - 1e-5f), 0.1f * 1e-5f);
+    // Zero footprint: no NaN.
+    const glm::vec3 zero = deliot2023_footprint_ellipse(glm::vec2(0.0f), glm::vec2(0.0f), false);
+    EXPECT_EQ(zero.x, 0.0f);
+}
+
+// Different seeds give different glint patterns; below the horizon D_P = 0.
+TEST(Deliot2023, SeedChangesPatternAndBackFacingIsZero) {
+    Deliot2023Target t;
+    t.log_density = 25.0f;  // ~1e4 facets per footprint: counts differ between seeds
+    Deliot2023Params p;
+    Footprint fp{glm::vec2(0.3f, 0.7f), glm::vec2(1e-3f, 0.0f), glm::vec2(0.0f, 1e-3f)};
+    const glm::vec3 h = glm::normalize(glm::vec3(0.05f, 0.02f, 1.0f));
+    int differ = 0;
+    for (uint32_t s = 0; s < 16; ++s) {
+        t.seed = s;
+        const float a = deliot2023_ndf(h, fp, t, p);
+        t.seed = s + 1000u;
+        differ += a != deliot2023_ndf(h, fp, t, p) ? 1 : 0;
+    }
+    EXPECT_GE(differ, 12);
+    EXPECT_EQ(deliot2023_ndf(glm::vec3(0.0f, 0.6f, -0.8f), fp, t, p), 0.0f);
+}
+
+// JsonObject keeps a reference to its json value: the values are named locals.
+TEST(Deliot2023, ReadsParametersWithRangeChecks) {
+    GlintDesc desc;
+    const nlohmann::json ok_json =
+        nlohmann::json::parse(R"({"microfacet_roughness": 0.03, "original_defects": true})");
+    JsonObject ok(ok_json, "/deliot2023", "scene.json");
+    read_deliot2023_params(ok, desc);
+    const auto& p = std::get<Deliot2023Params>(desc.params);
+    EXPECT_FLOAT_EQ(p.microfacet_roughness, 0.03f);
+    EXPECT_FLOAT_EQ(p.screen_space_scale, 1.5f);
+    EXPECT_FLOAT_EQ(p.density_randomization, 0.0f);
+    EXPECT_TRUE(p.original_defects);
+    const nlohmann::json bad_json = nlohmann::json::parse(R"({"density_randomization": 51})");
+    JsonObject bad(bad_json, "/deliot2023", "scene.json");
+    EXPECT_THROW(read_deliot2023_params(bad, desc), Error);
+    const nlohmann::json zero_r_json = nlohmann::json::parse(R"({"microfacet_roughness": 0})");
+    JsonObject zero_r(zero_r_json, "/deliot2023", "scene.json");
+    EXPECT_THROW(read_deliot2023_params(zero_r, desc), Error);
+    const nlohmann::json unknown_json = nlohmann::json::parse(R"({"roughness": 0.1})");
+    JsonObject unknown(unknown_json, "/deliot2023", "scene.json");
+    EXPECT_THROW(read_deliot2023_params(unknown, desc), Error);
+}
+
+}  // namespace
+}  // namespace glintlab
