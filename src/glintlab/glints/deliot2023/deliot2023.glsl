@@ -200,6 +200,18 @@ Deliot2023Grids deliot2023_select_grids(float lod, float ratio, float angle, boo
     return g;
 }
 
+// The two uniforms of one gated-Gaussian evaluation (§6.3): from a hash of
+// the angular cell, or, when the back end defines
+// GLINTLAB_DELIOT2023_NOISE_TEXTURE, from a precomputed noise texture through
+// its fetch function `vec2 deliot2023_noise_fetch(uint cell_hash)`.
+vec2 deliot2023_uniform_pair(uint cell_hash) {
+#ifdef GLINTLAB_DELIOT2023_NOISE_TEXTURE
+    return deliot2023_noise_fetch(cell_hash);
+#else
+    return vec2(uint_to_unit_float(pcg_hash(cell_hash)), uint_to_unit_float(pcg_hash(cell_hash ^ 0x9e3779b9u)));
+#endif
+}
+
 // The original HLSL's gated Gaussian (Eq. 16-18 as shipped): naive fp32
 // (1 - p)^N, the gate 1 - (1 - p)^N also for N < 1, and the Gaussian for the
 // N - 1 remaining trials clamped to N instead of N - 1.
@@ -276,11 +288,9 @@ vec2 deliot2023_grid_counts(ivec3 id, float weight, vec2 uv, vec2 slope, float p
         for (int c = 0; c < 4; ++c) {
             ivec2 corner = ac + ivec2(c & 1, c >> 1);
             float wc = ((c & 1) == 1 ? at.x : 1.0f - at.x) * ((c >> 1) == 1 ? at.y : 1.0f - at.y);
-            uint cs = hash_cell(corner & ivec2(DELIOT2023_LATTICE_MASK), vs);
-            float xi0 = uint_to_unit_float(pcg_hash(cs));
-            float xi1 = uint_to_unit_float(pcg_hash(cs ^ 0x9e3779b9u));
-            float b = original_defects ? deliot2023_original_law(N, p, xi0, xi1)
-                                       : binomial_single_gated(N, p, xi0, xi1);
+            vec2 xi = deliot2023_uniform_pair(hash_cell(corner & ivec2(DELIOT2023_LATTICE_MASK), vs));
+            float b = original_defects ? deliot2023_original_law(N, p, xi.x, xi.y)
+                                       : binomial_single_gated(N, p, xi.x, xi.y);
             count += wc * b;
         }
         acc += bv * vec2(count, N);

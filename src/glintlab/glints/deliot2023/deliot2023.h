@@ -27,6 +27,11 @@ struct Deliot2023Target {
 float deliot2023_ndf(glm::vec3 h, const Footprint& footprint, const Deliot2023Target& target,
                      const Deliot2023Params& params);
 
+// The same with the uniforms from a precomputed 64 x 64 noise table instead of
+// a hash (000 §6.3; deliot2023_noise_table.cpp), for speed comparisons.
+float deliot2023_ndf_noise_table(glm::vec3 h, const Footprint& footprint,
+                                 const Deliot2023Target& target, const Deliot2023Params& params);
+
 // The smooth target D(h) the model converges to (000 Eq. 5-6).
 float deliot2023_target_ndf(glm::vec3 h, const Deliot2023Target& target);
 
