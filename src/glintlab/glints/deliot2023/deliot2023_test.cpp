@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "glintlab/core/error.h"
@@ -46,18 +47,23 @@ TEST(Deliot2023, NoiseTableVariantConverges) {
     EXPECT_NEAR(sum / n / deliot2023_target_ndf(h, t), 1.0, 0.02);
 }
 
-// 000 §4: the expected count is preserved across a LOD boundary. 1000
-// expected facets per footprint; D_P / D(h) has a relative std-dev of ~5-10 %
-// (measured by `validate deliot2023`), so the mean of 400 footprints has a
-// standard error <= 0.5 %; the gated law's bias is ~0.2 %. Any popping from a
-// wrong trial distribution (e.g. area-unweighted LOD blending: up to 33 %
-// fewer trials mid-transition does not bias the mean, but a jump in T or a
-// lost grid does) shows as a step far above 3 %.
-TEST(Deliot2023, ExpectedCountIsPreservedAcrossLodBoundary) {
+// 000 §4 / Fig. 4: across a LOD boundary the expected count and its spread
+// are preserved. 1000 expected facets per footprint; D_P / D(h) has a
+// relative std-dev of ~0.07 (measured by `validate deliot2023`), so the mean
+// of 400 footprints has a standard error of ~0.4 %, and the gated law adds
+// ~+0.3 % bias: 3 % is > 6 sigma. Var(C) / binomial is estimated to ~9 %
+// (sqrt((kurtosis - 1) / 400), kurtosis <= 4), so max/min over 9 steps stays
+// below 1.6 (3 sigma each side); blending the counts of the two levels
+// instead (zirr2016, Eq. 7) lowers it to about half mid-transition.
+TEST(Deliot2023, CountStatisticsArePreservedAcrossLodBoundary) {
+    double vmin = 1e30, vmax = 0.0;
     for (const LodTransitionStep& s : deliot2023_lod_transition(9, 400, 11)) {
         EXPECT_NEAR(s.mean_ratio, 1.0, 0.03) << "lod " << s.lod;
-        EXPECT_GT(s.count_variance_ratio, 0.0);
+        vmin = std::min(vmin, s.count_variance_ratio);
+        vmax = std::max(vmax, s.count_variance_ratio);
     }
+    EXPECT_GT(vmin, 0.0);
+    EXPECT_LT(vmax / vmin, 1.6);
 }
 
 // Every evaluation finite and non-negative over degenerate/huge/grazing
