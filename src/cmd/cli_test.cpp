@@ -106,6 +106,24 @@ TEST(Cli, ValidateCountingJsonFollowsTheContract) {
     }
 }
 
+TEST(Cli, BenchJsonListsMinMaxPerSceneAndModel) {
+    const RunResult r = run_cli("bench --scene PLANE_25 SPHERE --model smooth --res 16x12 --frames 1 --json");
+    ASSERT_EQ(r.status, 0) << r.output;
+    const auto j = nlohmann::json::parse(r.output);
+    ASSERT_EQ(j.at("results").size(), 2u);
+    for (const auto& row : j.at("results")) {
+        EXPECT_EQ(row.at("model"), "smooth");
+        EXPECT_GT(row.at("min_ms").get<double>(), 0.0);
+        EXPECT_GE(row.at("max_ms").get<double>(), row.at("min_ms").get<double>());
+        EXPECT_EQ(row.at("ms_per_density").size(), j.at("log_densities").size());
+    }
+    const RunResult bad = run_cli("bench --scene NOPE --frames 1");
+    EXPECT_NE(bad.status, 0);
+    EXPECT_NE(bad.output.find("unknown scene \"NOPE\""), std::string::npos) << bad.output;
+    const RunResult bad_model = run_cli("bench --model nope --frames 1");
+    EXPECT_NE(bad_model.output.find("unknown model \"nope\""), std::string::npos) << bad_model.output;
+}
+
 TEST(Cli, InfoListsModelsAndHelpWorks) {
     const RunResult info = run_cli("info");
     EXPECT_EQ(info.status, 0);

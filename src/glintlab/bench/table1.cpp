@@ -1,0 +1,145 @@
+#include "glintlab/bench/table1.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+
+#include "glintlab/core/error.h"
+#include "glintlab/glints/registry.h"
+#include "glintlab/render/renderer.h"
+#include "glintlab/scene/scene_loader.h"
+
+namespace glintlab {
+namespace {
+
+// Camera at `elevation_deg` above a plane (90° = straight down), as the
+// PLANE / HEIGHTMAP rows of 000 Table 1.
+nlohmann::json camera_at(float elevation_deg, float distance) {
+    const float e = glm::radians(elevation_deg);
+    nlohmann::json c = {{"eye", {0.0f, distance * std::sin(e), distance * std::cos(e)}},
+                        {"target", {0, 0, 0}},
+                        {"fov_deg", 45}};
+    if (elevation_deg > 89.0f) c["up"] = {0, 0, -1};
+    return c;
+}
+
+nlohmann::json scene_json(const std::string& name) {
+    nlohmann::json j;
+    j["lights"] = {{{"type", "directional"}, {"direction", {0.3, 0.8, 0.5}}, {"irradiance", 2.0}}};
+    j["render"] = {{"integrator", "direct"}, {"spp", 1}, {"seed", 1}};
+    const nlohmann::json quad = {{"type", "quad"}, {"size", {8, 8}}, {"uv_scale", {8, 8}}, {"material", "g"}};
+    const nlohmann::json heightfield = {{"type", "heightfield"}, {"size", {8, 8}}, {"uv_scale", {8, 8}},
+                                        {"resolution", 512}, {"amplitude", 0.05}, {"frequency", 24},
+                                        {"octaves", 4}, {"material", "g"}};
+    if (name == "PLANE_90" || name == "PLANE_25") {
+        j["camera"] = camera_at(name == "PLANE_90" ? 90.0f : 25.0f, 3.0f);
+        j["shapes"] = {quad};
+    } else if (name == "HEIGHTMAP_90" || name == "HEIGHTMAP_25") {
+        j["camera"] = camera_at(name == "HEIGHTMAP_90" ? 90.0f : 25.0f, 3.0f);
+        j["shapes"] = {heightfield};
+    } else if (name == "SPHERE") {
+        j["camera"] = {{"eye", {0, 0, 3.2}}, {"target", {0, 0, 0}}, {"fov_deg", 45}};
+        j["shapes"] = {{{"type", "sphere"}, {"radius", 1.0}, {"material", "g"}}};
+    } else if (name == "TORUS") {
+        j["camera"] = {{"eye", {0, 1.6, 2.4}}, {"target", {0, 0, 0}}, {"fov_deg", 45}};
+        j["shapes"] = {{{"type", "torus"}, {"major_radius", 0.9}, {"minor_radius", 0.35},
+                        {"uv_scale", {4, 2}}, {"material", "g"}}};
+    } else if (name == "MANY") {
+        j["camera"] = {{"eye", {0, 9, 9}}, {"target", {0, 0, 0}}, {"fov_deg", 50}};
+        nlohmann::json shapes = {quad};
+        for (int z = 0; z < 8; ++z)
+            for (int x = 0; x < 8; ++x)
+                shapes.push_back({{"type", "sphere"}, {"center", {x - 3.5, 0.4, z - 3.5}},
+                                  {"radius", 0.4}, {"material", "g"}});
+        j["shapes"] = shapes;
+    } else {
+        fail("bench: unknown scene \"{}\" (known: {})", name, fmt::join(table1_scene_names(), ", "));
+    }
+    return j;
+}
+
+double median(std::vector<double> v) {
+    std::sort(v.begin(), v.end());
+    return v[v.size() / 2];
+}
+
+}  // namespace
+
+std::vector<std::string> table1_scene_names() {
+    return {"PLANE_90", "PLANE_25", "HEIGHTMAP_90", "HEIGHTMAP_25", "SPHERE", "TORUS", "MANY"};
+}
+
+std::vector<Table1Row> run_table1(const Table1Options& options) {
+    std::vector<std::string> scenes = options.scenes.empty() ? table1_scene_names() : options.scenes;
+    std::vector<std::string> models = options.models;
+    if (models.empty())
+        for (const GlintModelInfo& m : glint_models()) models.emplace_back(m.name);
+    for (const std::string& m : models)
+        if (!find_glint_model(m))
+            fail("bench: unknown model \"{}\" (known: {})", m, glint_model_names());
+    std::vector<Table1Row> rows;
+    for (const std::string& scene_name : scenes) {
+        for (const std::string& model : models) {
+            Table1Row row{scene_name, model, {}, 0.0, 0.0};
+            for (float log_density : options.log_densities) {
+                nlohmann::json j = scene_json(scene_name);
+                j["film"] = {{"width", options.width}, {"height", options.height}};
+                j["materials"] = {{{"name", "g"}, {"type", "glint"}, {"model", model},
+                                   {"ndf", "beckmann"}, {"roughness", 0.3}, {"log_density", log_density},
+                                   {"fresnel", {{"type", "conductor"}, {"metal", "silver"}}}}};
+                const Scene scene = parse_scene(j, "bench:" + scene_name);
+                std::vector<double> times;
+                render_scene(scene, RenderOptions{options.threads, true});  // warm-up
+                for (int f = 0; f < options.frames; ++f) {
+                    const auto t0 = std::chrono::steady_clock::now();
+                    render_scene(scene, RenderOptions{options.threads, true});
+                    times.push_back(std::chrono::duration<double, std::milli>(
+                                        std::chrono::steady_clock::now() - t0)
+                                        .count());
+                }
+                row.ms_per_density.push_back(median(times));
+            }
+            row.min_ms = *std::min_element(row.ms_per_density.begin(), row.ms_per_density.end());
+            row.max_ms = *std::max_element(row.ms_per_density.begin(), row.ms_per_density.end());
+            rows.push_back(std::move(row));
+        }
+    }
+    return rows;
+}
+
+nlohmann::json table1_to_json(const Table1Options& o, const std::vector<Table1Row>& rows) {
+    nlohmann::json j;
+    j["benchmark"] = "table1_cpu";
+    j["integrator"] = "direct";
+    j["resolution"] = {o.width, o.height};
+    j["frames"] = o.frames;
+    j["log_densities"] = o.log_densities;
+    nlohmann::json arr = nlohmann::json::array();
+    for (const Table1Row& r : rows)
+        arr.push_back({{"scene", r.scene}, {"model", r.model}, {"min_ms", r.min_ms},
+                       {"max_ms", r.max_ms}, {"ms_per_density", r.ms_per_density}});
+    j["results"] = arr;
+    return j;
+}
+
+std::string table1_to_text(const Table1Options& o, const std::vector<Table1Row>& rows) {
+    std::string s = fmt::format(
+        "000 Table 1 on the CPU: direct integrator, {}x{}, median of {} frames, min-max over "
+        "log_density {}\n",
+        o.width, o.height, o.frames, fmt::join(o.log_densities, ", "));
+    s += fmt::format("{:<14} {:<14} {:>10} {:>10} {:>14}\n", "scene", "model", "min ms", "max ms",
+                     "max/smooth min");
+    for (const Table1Row& r : rows) {
+        double smooth_ms = 0.0;
+        for (const Table1Row& q : rows)
+            if (q.scene == r.scene && q.model == "smooth") smooth_ms = q.min_ms;
+        s += fmt::format("{:<14} {:<14} {:>10.1f} {:>10.1f} {:>14}\n", r.scene, r.model, r.min_ms,
+                         r.max_ms, smooth_ms > 0.0 ? fmt::format("{:.2f}", r.max_ms / smooth_ms) : "-");
+    }
+    return s;
+}
+
+}  // namespace glintlab

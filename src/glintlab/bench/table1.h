@@ -1,0 +1,40 @@
+// The CPU reproduction of 000 Table 1 (deliot2023's timing table): each
+// benchmark scene × each glint model, rendered by the `direct` integrator
+// (one evaluation per pixel per light, what a real-time shader computes) over
+// a density sweep; reports the min and max time per frame over the sweep.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+namespace glintlab {
+
+struct Table1Options {
+    std::vector<std::string> scenes;  // empty: all of table1_scene_names()
+    std::vector<std::string> models;  // empty: every registered glint model
+    int width = 320, height = 180;
+    int frames = 3;     // timed frames per (scene, model, density); the median is kept
+    int threads = 0;    // 0: all cores
+    std::vector<float> log_densities = {8.0f, 12.0f, 16.0f, 20.0f};
+};
+
+struct Table1Row {
+    std::string scene, model;
+    std::vector<double> ms_per_density;  // median ms per frame, one per density
+    double min_ms = 0.0, max_ms = 0.0;
+};
+
+// PLANE_90, PLANE_25, HEIGHTMAP_90, HEIGHTMAP_25, SPHERE, TORUS (the
+// MONKEY-like mesh scene: no CC0 mesh with uvs is available offline, so a
+// finely tessellated torus stands in), MANY (a grid of 64 spheres).
+std::vector<std::string> table1_scene_names();
+
+// Throws glintlab::Error naming an unknown scene or model.
+std::vector<Table1Row> run_table1(const Table1Options& options);
+
+nlohmann::json table1_to_json(const Table1Options& options, const std::vector<Table1Row>& rows);
+std::string table1_to_text(const Table1Options& options, const std::vector<Table1Row>& rows);
+
+}  // namespace glintlab
