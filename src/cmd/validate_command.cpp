@@ -6,6 +6,7 @@
 #include "commands.h"
 #include "glintlab/counting/validate_counting.h"
 #include "glintlab/glints/deliot2023/validate_deliot2023.h"
+#include "glintlab/glints/zirr2016/validate_zirr2016.h"
 #include "glintlab/validate/report.h"
 
 namespace glintlab::cmd {
@@ -33,6 +34,12 @@ const std::map<std::string, SuiteRunner>& suites() {
              Deliot2023ValidationOptions o;
              o.seed = static_cast<uint64_t>(a.seed);
              return validate_deliot2023(o);
+         }},
+        {"zirr2016",
+         [](const ValidateArgs& a) {
+             Zirr2016ValidationOptions o;
+             o.seed = static_cast<uint64_t>(a.seed);
+             return validate_zirr2016(o);
          }},
     };
     return table;

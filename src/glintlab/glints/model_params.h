@@ -5,12 +5,15 @@
 
 #include <variant>
 
+#include "glintlab/glints/chermain2020/chermain2020_params.h"
 #include "glintlab/glints/deliot2023/deliot2023_params.h"
+#include "glintlab/glints/zirr2016/zirr2016_params.h"
 
 namespace glintlab {
 
 struct SmoothParams {};  // `smooth` has no parameters of its own
 
-using GlintModelParams = std::variant<SmoothParams, Deliot2023Params>;
+using GlintModelParams =
+    std::variant<SmoothParams, Deliot2023Params, Zirr2016Params, Chermain2020Params>;
 
 }  // namespace glintlab

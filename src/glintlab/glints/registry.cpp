@@ -1,6 +1,8 @@
 #include "glintlab/glints/registry.h"
 
+#include "glintlab/glints/chermain2020/chermain2020.h"
 #include "glintlab/glints/deliot2023/deliot2023.h"
+#include "glintlab/glints/zirr2016/zirr2016.h"
 #include "glintlab/scene/json_reader.h"
 #include "glintlab/scene/scene.h"
 
@@ -21,6 +23,14 @@ const GlintModelInfo kModels[] = {
     {GlintModelId::Deliot2023, "deliot2023",
      "distributed binomial laws on anisotropic grids (Deliot & Belcour 2023)", true, true, false,
      false, read_deliot2023_params},
+    // Point and directional lights only (000 §3: counts for one half vector).
+    {GlintModelId::Zirr2016, "zirr2016",
+     "MIP-grid binomial counting with output blending (Zirr & Kaplanyan 2016)", true, true, false,
+     false, read_zirr2016_params},
+    // Point and directional lights only (004 §7.4: no area lights).
+    {GlintModelId::Chermain2020, "chermain2020",
+     "multiscale SDF dictionary over a MIP hierarchy (Chermain et al. 2020)", true, true, false,
+     false, read_chermain2020_params},
 };
 
 }  // namespace

@@ -1,0 +1,176 @@
+#include "glintlab/glints/zirr2016/zirr2016_experiments.h"
+
+#include <algorithm>
+#include <atomic>
+#include <cmath>
+
+#include <tbb/parallel_for.h>
+
+#include "glintlab/core/rng.h"
+
+namespace glintlab {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+constexpr int kBeckmann = 0;  // shader::NDF_BECKMANN
+constexpr int kGgx = 1;       // shader::NDF_GGX
+
+// A footprint whose ellipse has the given minor width, ratio and major-axis
+// angle: orthogonal pixel steps along the major and minor axes.
+Footprint oriented_footprint(glm::vec2 uv, double minor, double ratio, double angle) {
+    const glm::vec2 major_dir(static_cast<float>(std::cos(angle)),
+                              static_cast<float>(std::sin(angle)));
+    Footprint fp;
+    fp.uv = uv;
+    fp.duvdx = major_dir * static_cast<float>(minor * ratio);
+    fp.duvdy = glm::vec2(-major_dir.y, major_dir.x) * static_cast<float>(minor);
+    return fp;
+}
+
+glm::vec3 half_vector_at(double tan_theta, double phi) {
+    const double c = 1.0 / std::sqrt(1.0 + tan_theta * tan_theta);
+    const double s = tan_theta * c;
+    return glm::vec3(static_cast<float>(s * std::cos(phi)), static_cast<float>(s * std::sin(phi)),
+                     static_cast<float>(c));
+}
+
+double pow10_uniform(Pcg32& rng, double lo_exp10, double hi_exp10) {
+    return std::pow(10.0, lo_exp10 + (hi_exp10 - lo_exp10) * rng.next_double());
+}
+
+}  // namespace
+
+std::vector<Zirr2016ConvergenceCase> zirr2016_convergence(float log_density,
+                                                          int footprints_per_case, uint64_t seed) {
+    std::vector<Zirr2016ConvergenceCase> cases;
+    for (int ndf : {kBeckmann, kGgx})
+        for (float alpha : {0.1f, 0.3f, 0.7f})
+            for (float t : {0.0f, 0.5f, 1.0f, 2.0f}) {
+                Zirr2016ConvergenceCase c;
+                c.ndf = ndf;
+                c.alpha = alpha;
+                c.tan_theta = t * alpha;
+                c.log_density = log_density;
+                cases.push_back(c);
+            }
+    const Zirr2016Params params;
+    tbb::parallel_for(size_t{0}, cases.size(), [&](size_t i) {
+        Zirr2016ConvergenceCase& k = cases[i];
+        Zirr2016Target target;
+        target.ndf = k.ndf;
+        target.alpha_x = target.alpha_y = k.alpha;
+        target.log_density = log_density;
+        Pcg32 rng(i, seed);
+        const glm::vec3 h = half_vector_at(k.tan_theta, 0.7);
+        double sum = 0.0;
+        for (int f = 0; f < footprints_per_case; ++f) {
+            target.seed = rng.next_uint();
+            const glm::vec2 uv(rng.next_float() * 16.0f, rng.next_float() * 16.0f);
+            const Footprint fp = oriented_footprint(
+                uv, 1e-3, pow10_uniform(rng, 0.0, std::log10(8.0)), rng.next_double() * kPi);
+            sum += zirr2016_ndf(h, fp, target, params);
+        }
+        k.target = zirr2016_target_ndf(h, target);
+        k.mean_dp = sum / footprints_per_case;
+        k.rel_err = std::abs(k.mean_dp / k.target - 1.0);
+    });
+    return cases;
+}
+
+Zirr2016CountStats zirr2016_count_stats(double lod, double bottom_trials, float R, int footprints,
+                                        uint64_t seed) {
+    // Bottom level l0 = floor(lod) holds `bottom_trials` per texel: ln density
+    // = ln(bottom_trials) - 2 l0 ln 2. Isotropic footprint of minor width 2^lod (S = 1).
+    const double l0 = std::floor(lod), w = lod - l0;
+    Zirr2016Target target;
+    target.log_density = static_cast<float>(std::log(bottom_trials) - 2.0 * l0 * std::log(2.0));
+    Zirr2016Params params;
+    params.microfacet_roughness = R;
+    params.screen_space_scale = 1.0f;
+    const double trials = (1.0 - w) * bottom_trials + w * 4.0 * bottom_trials;  // Eq. 7 mix of N(P)
+    const double expected = trials * R;
+    const double d_n = zirr2016_target_ndf(glm::vec3(0, 0, 1), target);
+    Pcg32 rng(0, seed);
+    double sum = 0.0, sum2 = 0.0;
+    const double minor = std::exp2(lod);
+    for (int f = 0; f < footprints; ++f) {
+        target.seed = rng.next_uint();
+        const glm::vec2 uv(rng.next_float() * 64.0f, rng.next_float() * 64.0f);
+        const Footprint fp = oriented_footprint(uv, minor, 1.0, rng.next_double() * kPi);
+        // h = normal: p = R D(n) / D(n) = R (Eq. 4), and the count is D_P R / D(n) x trials.
+        const double c = zirr2016_ndf(glm::vec3(0, 0, 1), fp, target, params) * R / d_n * trials;
+        sum += c;
+        sum2 += c * c;
+    }
+    const double mean = sum / footprints;
+    const double var = (sum2 - sum * mean) / (footprints - 1);
+    Zirr2016CountStats s;
+    s.lod = lod;
+    s.mean_ratio = mean / expected;
+    s.variance_over_mean = var / mean;
+    return s;
+}
+
+Zirr2016RobustnessResult zirr2016_robustness(int64_t evaluations, uint64_t seed) {
+    constexpr int64_t kBlock = 1 << 14;
+    const int64_t blocks = (evaluations + kBlock - 1) / kBlock;
+    std::atomic<int64_t> bad{0};
+    tbb::parallel_for(int64_t{0}, blocks, [&](int64_t b) {
+        Pcg32 rng(static_cast<uint64_t>(b), seed);
+        int64_t local_bad = 0;
+        const int64_t end = std::min(evaluations, (b + 1) * kBlock);
+        for (int64_t i = b * kBlock; i < end; ++i) {
+            // Half vector: the normal, grazing, or uniform on the sphere.
+            glm::vec3 h;
+            const uint32_t hk = rng.next_uint(8);
+            if (hk == 0) {
+                h = glm::vec3(0.0f, 0.0f, 1.0f);
+            } else if (hk == 1) {
+                h = glm::normalize(glm::vec3(rng.next_float() - 0.5f, rng.next_float() - 0.5f,
+                                             static_cast<float>(pow10_uniform(rng, -30, -3))));
+            } else {
+                const double z = 2.0 * rng.next_double() - 1.0, phi = 2.0 * kPi * rng.next_double();
+                const double r = std::sqrt(std::max(0.0, 1.0 - z * z));
+                h = glm::vec3(static_cast<float>(r * std::cos(phi)),
+                              static_cast<float>(r * std::sin(phi)), static_cast<float>(z));
+            }
+            // Footprint: any minor width / ratio over 40 decades, or degenerate.
+            const float su = rng.next_float() < 0.5f ? -1.0f : 1.0f;
+            const glm::vec2 uv(su * static_cast<float>(pow10_uniform(rng, -4, 7)),
+                               static_cast<float>(pow10_uniform(rng, -4, 7)));
+            Footprint fp =
+                oriented_footprint(uv, pow10_uniform(rng, -25, 15), pow10_uniform(rng, 0, 12),
+                                   rng.next_double() * 2.0 * kPi);
+            const uint32_t fk = rng.next_uint(10);
+            if (fk == 0)
+                fp.duvdx = fp.duvdy = glm::vec2(0.0f);
+            else if (fk == 1)
+                fp.duvdy = fp.duvdx * (rng.next_float() - 0.5f);
+            else if (fk == 2)
+                fp.duvdy = glm::vec2(0.0f);
+            Zirr2016Target t;
+            t.ndf = static_cast<int>(rng.next_uint(2));
+            t.alpha_x = static_cast<float>(pow10_uniform(rng, -3, 0));
+            t.alpha_y =
+                rng.next_float() < 0.5f ? t.alpha_x : static_cast<float>(pow10_uniform(rng, -3, 0));
+            const uint32_t dk = rng.next_uint(4);
+            t.log_density = dk == 0 ? -20.0f : dk == 1 ? 60.0f : -20.0f + 80.0f * rng.next_float();
+            t.seed = rng.next_uint();
+            Zirr2016Params p;
+            const uint32_t rk = rng.next_uint(3);
+            p.microfacet_roughness = rk == 0   ? 1e-4f
+                                     : rk == 1 ? 1.0f
+                                               : static_cast<float>(pow10_uniform(rng, -4, 0));
+            const uint32_t ak = rng.next_uint(3);
+            p.max_anisotropy = ak == 0 ? 1.0f : ak == 1 ? 64.0f : 1.0f + 63.0f * rng.next_float();
+            const uint32_t sk = rng.next_uint(3);
+            p.screen_space_scale = sk == 0 ? 0.5f : sk == 1 ? 8.0f : 0.5f + 7.5f * rng.next_float();
+            const float d = zirr2016_ndf(h, fp, t, p);
+            if (!std::isfinite(d) || d < 0.0f) ++local_bad;
+        }
+        bad += local_bad;
+    });
+    return {evaluations, bad.load()};
+}
+
+}  // namespace glintlab
