@@ -11,5 +11,6 @@ void add_render_command(CLI::App& app, int* status);
 void add_info_command(CLI::App& app, int* status);
 void add_validate_command(CLI::App& app, int* status);
 void add_bench_command(CLI::App& app, int* status);
+void add_dict_command(CLI::App& app, int* status);
 
 }  // namespace glintlab::cmd

@@ -15,6 +15,7 @@ int main(int argc, char** argv) {
     glintlab::cmd::add_info_command(app, &status);
     glintlab::cmd::add_validate_command(app, &status);
     glintlab::cmd::add_bench_command(app, &status);
+    glintlab::cmd::add_dict_command(app, &status);
     if (argc > 1 && argv[1][0] != '-') {
         bool known = false;
         std::string names;

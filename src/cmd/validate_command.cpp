@@ -5,6 +5,7 @@
 
 #include "commands.h"
 #include "glintlab/counting/validate_counting.h"
+#include "glintlab/glints/chermain2020/validate_chermain2020.h"
 #include "glintlab/glints/deliot2023/validate_deliot2023.h"
 #include "glintlab/glints/zirr2016/validate_zirr2016.h"
 #include "glintlab/validate/report.h"
@@ -23,6 +24,12 @@ using SuiteRunner = std::function<ValidationReport(const ValidateArgs&)>;
 // The validation suites, by name. Each model issue adds its own.
 const std::map<std::string, SuiteRunner>& suites() {
     static const std::map<std::string, SuiteRunner> table = {
+        {"chermain2020",
+         [](const ValidateArgs& a) {
+             Chermain2020ValidationOptions o;
+             o.seed = static_cast<uint64_t>(a.seed);
+             return validate_chermain2020(o);
+         }},
         {"counting",
          [](const ValidateArgs& a) {
              CountingValidationOptions o;

@@ -1,5 +1,6 @@
 #include "glintlab/glints/glint_bxdf.h"
 
+#include "glintlab/glints/chermain2020/chermain2020.h"
 #include "glintlab/glints/deliot2023/deliot2023.h"
 #include "glintlab/glints/zirr2016/zirr2016.h"
 #include "glintlab/microfacet/microfacet.h"
@@ -10,6 +11,13 @@ namespace {
 
 int ndf_id(NdfType t) { return t == NdfType::GGX ? shader::NDF_GGX : shader::NDF_BECKMANN; }
 
+// G2 of the model: chermain2020's P-NDF has no Smith masking, it uses the
+// V-cavity one (004 Eq. 14-16); the others the height-correlated Smith G2.
+float masking(const GlintDesc& desc, glm::vec3 wo, glm::vec3 wi, glm::vec3 h) {
+    if (desc.model_id == GlintModelId::Chermain2020) return shader::G2_VCavity(wo, wi, h);
+    return shader::G2_SmithCorrelated(ndf_id(desc.ndf), wo, wi, desc.alpha_x, desc.alpha_y);
+}
+
 }  // namespace
 
 float GlintBxdf::footprint_ndf(glm::vec3 h) const {
@@ -18,6 +26,7 @@ float GlintBxdf::footprint_ndf(glm::vec3 h) const {
     switch (desc->model_id) {
         case GlintModelId::Smooth: break;
         case GlintModelId::Deliot2023: return deliot2023_footprint_ndf(h, footprint, *desc);
+        case GlintModelId::Chermain2020: return chermain2020_footprint_ndf(h, footprint, *desc);
         case GlintModelId::Zirr2016: return zirr2016_footprint_ndf(h, footprint, *desc);
     }
     return shader::D_Microfacet(ndf_id(desc->ndf), h, desc->alpha_x, desc->alpha_y);
@@ -41,7 +50,7 @@ glm::vec3 GlintBxdf::f(glm::vec3 wo, glm::vec3 wi) const {
     h = glm::normalize(h);
     const float d = has_footprint ? footprint_ndf(h)
                                   : shader::D_Microfacet(ndf_id(desc->ndf), h, desc->alpha_x, desc->alpha_y);
-    const float g = shader::G2_SmithCorrelated(ndf_id(desc->ndf), wo, wi, desc->alpha_x, desc->alpha_y);
+    const float g = masking(*desc, wo, wi, h);
     return desc->color * fresnel(glm::dot(wo, h)) * (d * g / (4.0f * wo.z * wi.z));
 }
 

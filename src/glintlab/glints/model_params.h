@@ -5,6 +5,7 @@
 
 #include <variant>
 
+#include "glintlab/glints/chermain2020/chermain2020_params.h"
 #include "glintlab/glints/deliot2023/deliot2023_params.h"
 #include "glintlab/glints/zirr2016/zirr2016_params.h"
 
@@ -12,6 +13,7 @@ namespace glintlab {
 
 struct SmoothParams {};  // `smooth` has no parameters of its own
 
-using GlintModelParams = std::variant<SmoothParams, Deliot2023Params, Zirr2016Params>;
+using GlintModelParams =
+    std::variant<SmoothParams, Deliot2023Params, Zirr2016Params, Chermain2020Params>;
 
 }  // namespace glintlab

@@ -1,5 +1,6 @@
 #include "glintlab/glints/registry.h"
 
+#include "glintlab/glints/chermain2020/chermain2020.h"
 #include "glintlab/glints/deliot2023/deliot2023.h"
 #include "glintlab/glints/zirr2016/zirr2016.h"
 #include "glintlab/scene/json_reader.h"
@@ -26,6 +27,10 @@ const GlintModelInfo kModels[] = {
     {GlintModelId::Zirr2016, "zirr2016",
      "MIP-grid binomial counting with output blending (Zirr & Kaplanyan 2016)", true, true, false,
      false, read_zirr2016_params},
+    // Point and directional lights only: D_P is evaluated at one half vector.
+    {GlintModelId::Chermain2020, "chermain2020",
+     "multiscale SDF dictionary over a MIP hierarchy (Chermain et al. 2020)", true, true, false,
+     false, read_chermain2020_params},
 };
 
 }  // namespace

@@ -14,7 +14,7 @@ struct GlintDesc;
 
 // Models in registry order; GlintBxdf dispatches on it (static, no strings
 // in the hot path).
-enum class GlintModelId : int { Smooth = 0, Deliot2023, Zirr2016 };
+enum class GlintModelId : int { Smooth = 0, Deliot2023, Zirr2016, Chermain2020 };
 
 struct GlintModelInfo {
     GlintModelId id;

@@ -1,0 +1,114 @@
+#include "glintlab/glints/chermain2020/chermain2020.h"
+
+#include <variant>
+
+#include "glintlab/core/error.h"
+#include "glintlab/core/glsl.h"
+#include "glintlab/glints/chermain2020/dictionary.h"
+#include "glintlab/scene/json_reader.h"
+#include "glintlab/scene/scene.h"
+
+// The only translation unit that compiles chermain2020.glsl as C++. Its
+// dictionary fetch reads the in-memory default dictionary (ARCHITECTURE.md
+// §2: resources through fetch functions each back end defines).
+GLINTLAB_SHADER_FUNCTIONS_BEGIN
+float chermain2020_dict_fetch(int row, int bin) {
+    const Dictionary& d = default_dictionary();
+    return d.values[static_cast<size_t>(row) * d.params.table_size + bin];
+}
+#include "glintlab/glints/chermain2020/chermain2020.glsl"
+#include "glintlab/microfacet/ndf.glsl"
+GLINTLAB_SHADER_FUNCTIONS_END
+
+namespace glintlab {
+namespace {
+
+shader::Chermain2020Dict dict_shape() {
+    const Dictionary& d = default_dictionary();
+    shader::Chermain2020Dict s;
+    s.n_levels = d.params.n_levels;
+    s.n_dists = d.params.n_dists;
+    s.table_size = d.params.table_size;
+    s.alpha_dict = d.params.alpha_dict;
+    s.slope_max = d.slope_max;
+    return s;
+}
+
+const shader::Chermain2020Dict& shape() {
+    static const shader::Chermain2020Dict s = dict_shape();
+    return s;
+}
+
+shader::Chermain2020Cell to_shader(const Chermain2020CellInfo& c) {
+    shader::Chermain2020Cell s;
+    s.kept = c.active;
+    s.dist_level = c.dist_level;
+    s.dist_x = c.dist_x;
+    s.dist_y = c.dist_y;
+    s.theta = c.theta;
+    s.colour_u = 0.0f;
+    return s;
+}
+
+}  // namespace
+
+float chermain2020_ndf(glm::vec3 h, const Footprint& footprint, const Chermain2020Target& target,
+                       const Chermain2020Params& params) {
+    return shader::chermain2020_ndf(h, footprint, shape(), target.alpha_x, target.alpha_y,
+                                    target.log_density, target.seed, params.relative_area,
+                                    params.max_anisotropy, params.density_randomization);
+}
+
+float chermain2020_target_ndf(glm::vec3 h, const Chermain2020Target& target) {
+    return shader::D_Beckmann(h, target.alpha_x, target.alpha_y);
+}
+
+Chermain2020CellInfo chermain2020_cell(glm::ivec2 cell, int level, const Chermain2020Target& target,
+                                       const Chermain2020Params& params) {
+    const shader::Chermain2020Cell s =
+        shader::chermain2020_cell(cell, level, shape(), target.log_density, params.relative_area,
+                                  params.density_randomization, target.seed);
+    return {s.kept, s.dist_level, s.dist_x, s.dist_y, s.theta};
+}
+
+float chermain2020_cell_p22(const Chermain2020CellInfo& cell, glm::vec2 slope,
+                            const Chermain2020Target& target) {
+    return shader::chermain2020_cell_p22(to_shader(cell), slope, shape(), target.alpha_x,
+                                         target.alpha_y);
+}
+
+glm::vec2 chermain2020_dict_slope(const Chermain2020CellInfo& cell, glm::vec2 slope,
+                                  const Chermain2020Target& target) {
+    return shader::chermain2020_dict_slope(to_shader(cell), slope, shape(), target.alpha_x,
+                                           target.alpha_y);
+}
+
+float chermain2020_footprint_ndf(glm::vec3 h, const Footprint& footprint, const GlintDesc& desc) {
+    Chermain2020Target t;
+    t.alpha_x = desc.alpha_x;
+    t.alpha_y = desc.alpha_y;
+    t.log_density = desc.log_density;
+    t.seed = desc.seed;
+    return chermain2020_ndf(h, footprint, t, std::get<Chermain2020Params>(desc.params));
+}
+
+void read_chermain2020_params(JsonObject& block, GlintDesc& desc) {
+    if (desc.ndf != NdfType::Beckmann)
+        fail(
+            "{}: {}: chermain2020 supports only \"ndf\": \"beckmann\" (its multiscale SDF is a "
+            "product of two marginals, 004 §4.3; GGX is not separable)",
+            block.file(), block.path());
+    Chermain2020Params p;
+    p.relative_area = static_cast<float>(block.number("relative_area", p.relative_area, 0.0, 1.0));
+    // gamma < 1 is meaningless (major >= minor); above 32 the per-level cell
+    // walk is capped at 64 cells per axis.
+    p.max_anisotropy =
+        static_cast<float>(block.number("max_anisotropy", p.max_anisotropy, 1.0, 32.0));
+    // zeta in dictionary levels; 8 levels is a factor 4^8 in density already.
+    p.density_randomization = static_cast<float>(
+        block.number("density_randomization", p.density_randomization, 0.0, 8.0));
+    desc.params = p;
+    block.finish();
+}
+
+}  // namespace glintlab

@@ -1,0 +1,197 @@
+// chermain2020 (papers/004): a P-SDF built from a dictionary of multiscale
+// marginal slope distributions over a MIP hierarchy of surface cells.
+//   Eq. 5-7   separable, even, multiscale SDF per cell: P_i(x, l) P_j(y, l)
+//   Eq. 8     coherent cell index s0 = floor(s / 2^l) 2^l (seeds the cell)
+//   Eq. 9-11  random rotation and anisotropic roughness scaling
+//   Eq. 12-13 Gaussian-weighted sum over the footprint's cells at the two
+//             LODs around l_P, then slope → normal (Algorithms 1-3)
+// The dictionary (dictionary.h) is reached through the fetch function
+// `float chermain2020_dict_fetch(int row, int bin)`, row = dist * n_levels +
+// level: the C++ back end defines it over the in-memory table before
+// including this file, GLSL reads a texture bound by the GPU back end.
+#ifndef GLINTLAB_GLINTS_CHERMAIN2020_GLSL
+#define GLINTLAB_GLINTS_CHERMAIN2020_GLSL
+
+#include "glintlab/core/constants.glsl"
+#include "glintlab/core/footprint.glsl"
+#include "glintlab/core/hash.glsl"
+#include "glintlab/counting/normal_quantile.glsl"
+
+#ifndef GLINTLAB_CPP
+// R32F texture, width table_size, height n_dists * n_levels.
+uniform sampler2D chermain2020_dictionary;
+float chermain2020_dict_fetch(int row, int bin) {
+    return texelFetch(chermain2020_dictionary, ivec2(bin, row), 0).r;
+}
+#endif
+
+// The dictionary's shape (DictionaryParams of the table behind the fetch).
+struct Chermain2020Dict {
+    int n_levels;
+    int n_dists;
+    int table_size;
+    float alpha_dict;
+    float slope_max;  // the tables cover |x| in [0, slope_max)
+};
+
+// The random choices of one cell of the hierarchy (Algorithm 3).
+struct Chermain2020Cell {
+    bool kept;       // kept by the relative area test (line 4)
+    int dist_level;  // l_dist in [0, n_levels]; n_levels means the analytic target (line 10)
+    int dist_x;      // marginal i for x (line 18)
+    int dist_y;      // marginal j for y
+    float theta;     // rotation angle (Eq. 9, line 14)
+    float colour_u;  // U_c of the colour table (line 11)
+};
+
+// Cell at integer coordinates `cell` of hierarchy level `level`: seeded by
+// its coherent index (Eq. 8) only, so the parent at level + 1 draws the same
+// numbers as one of its four children (Fig. 7) and keeps its marginals and
+// rotation, with one more dictionary level (four times the facets).
+Chermain2020Cell chermain2020_cell(ivec2 cell, int level, Chermain2020Dict d, float log_density,
+                                   float relative_area, float density_randomization, uint seed) {
+    uint sx = uint(cell.x) << uint(level);  // Eq. 8: s0 = floor(s / 2^l) 2^l
+    uint sy = uint(cell.y) << uint(level);
+    uint state = hash_combine(hash_combine(seed, sx), sy);
+    Chermain2020Cell c;
+    c.kept = hash_random(state) < relative_area;  // line 3-4: discard if U_beta > beta
+    // Lines 5-6: n = 4^l / 4^(nLevels-1) rho facets in the cell, l_dist = log(n) / (2 log 2).
+    float l_dist = 0.5f * (log_density * 1.44269504f + 2.0f * float(level) - 2.0f * float(d.n_levels - 1));
+    // Line 8: density randomisation, l_dist ~ N(l_dist, zeta^2).
+    l_dist += density_randomization * normal_quantile(hash_random(state));
+    // Line 9: round (half up, identical in GLSL and C++) and clamp.
+    c.dist_level = int(clamp(floor(l_dist + 0.5f), 0.0f, float(d.n_levels)));
+    c.colour_u = hash_random(state);
+    c.theta = TWO_PI * hash_random(state);
+    c.dist_x = min(int(float(d.n_dists) * hash_random(state)), d.n_dists - 1);
+    c.dist_y = min(int(float(d.n_dists) * hash_random(state)), d.n_dists - 1);
+    return c;
+}
+
+// P_i(x, l): even, linear between the table samples, zero from slope_max on.
+float chermain2020_marginal(Chermain2020Dict d, int dist, int level, float x) {
+    float t = abs(x) / d.slope_max * float(d.table_size);
+    if (t >= float(d.table_size)) return 0.0f;
+    int k = int(t);
+    int row = dist * d.n_levels + level;
+    float a = chermain2020_dict_fetch(row, k);
+    float b = k + 1 < d.table_size ? chermain2020_dict_fetch(row, k + 1) : 0.0f;
+    return mix(a, b, t - float(k));
+}
+
+// The anisotropic Beckmann SDF the hierarchy converges to (004 §4.3).
+float chermain2020_target_p22(vec2 slope, float alpha_x, float alpha_y) {
+    float x = slope.x / alpha_x;
+    float y = slope.y / alpha_y;
+    return exp(-(x * x + y * y)) / (PI * alpha_x * alpha_y);
+}
+
+// Slope-space coordinates of `slope` in the dictionary frame of cell c:
+// s' = R^-1 S^-1 s (Eq. 9-11, scale undone first, then the rotation; see
+// docs/MODELS.md: this order keeps anisotropic alpha converging to the
+// anisotropic target, the printed S^-1 R^-1 only does for alpha_x = alpha_y).
+vec2 chermain2020_dict_slope(Chermain2020Cell c, vec2 slope, Chermain2020Dict d, float alpha_x,
+                             float alpha_y) {
+    vec2 q = vec2(slope.x * d.alpha_dict / alpha_x, slope.y * d.alpha_dict / alpha_y);
+    float cs = cos(c.theta);
+    float sn = sin(c.theta);
+    return vec2(cs * q.x + sn * q.y, -sn * q.x + cs * q.y);
+}
+
+// P^22_theta,alpha(slope, l, s0) of one cell (Eq. 11, Algorithm 3).
+float chermain2020_cell_p22(Chermain2020Cell c, vec2 slope, Chermain2020Dict d, float alpha_x,
+                            float alpha_y) {
+    if (!c.kept) return 0.0f;
+    if (c.dist_level >= d.n_levels) return chermain2020_target_p22(slope, alpha_x, alpha_y);
+    vec2 q = chermain2020_dict_slope(c, slope, d, alpha_x, alpha_y);
+    float jac = d.alpha_dict * d.alpha_dict / (alpha_x * alpha_y);  // Jacobian of S_alpha
+    return chermain2020_marginal(d, c.dist_x, c.dist_level, q.x) *
+           chermain2020_marginal(d, c.dist_y, c.dist_level, q.y) * jac;
+}
+
+// The clamped footprint ellipse in uv: (major, minor, angle of the major
+// axis). Semi-axes are the square roots of the eigenvalues of
+// J J^T, J = [duvdx duvdy]; the minor axis is widened to major / gamma
+// (Algorithm 1 line 4: eccentricity clamp).
+vec3 chermain2020_footprint_ellipse(vec2 duvdx, vec2 duvdy, float max_anisotropy) {
+    float A = duvdx.x * duvdx.x + duvdy.x * duvdy.x;
+    float B = duvdx.x * duvdx.y + duvdy.x * duvdy.y;
+    float C = duvdx.y * duvdx.y + duvdy.y * duvdy.y;
+    float mid = 0.5f * (A + C);
+    float rad = sqrt(0.25f * (A - C) * (A - C) + B * B);
+    float major = sqrt(max(mid + rad, 0.0f));
+    float minor = sqrt(max(mid - rad, 0.0f));
+    major = max(major, 1e-20f);
+    minor = max(minor, major / max_anisotropy);
+    float angle = 0.5f * atan(2.0f * B, A - C);
+    return vec3(major, minor, angle);
+}
+
+// Algorithm 2: sum over the cells of level `level` whose centres fall in the
+// ellipse, weighted by the truncated Gaussian exp(-2 r^2) - exp(-2) and
+// normalised (sum of W_P = 1, Eq. 12).
+float chermain2020_level_p22(vec2 slope, vec2 uv, vec3 ellipse, int level, Chermain2020Dict d,
+                             float alpha_x, float alpha_y, float log_density, float relative_area,
+                             float density_randomization, uint seed) {
+    float scale = exp2(float(d.n_levels - 1 - level));  // cells per uv unit at this level
+    vec2 centre = uv * scale;
+    float major = ellipse.x * scale;
+    float minor = ellipse.y * scale;
+    float ca = cos(ellipse.z);
+    float sa = sin(ellipse.z);
+    float ex = sqrt(major * major * ca * ca + minor * minor * sa * sa);
+    float ey = sqrt(major * major * sa * sa + minor * minor * ca * ca);
+    // At most 64 cells per axis (gamma = 32 at 2 cells of minor axis).
+    ex = min(ex, 32.0f);
+    ey = min(ey, 32.0f);
+    int x0 = int(floor(centre.x - ex));
+    int x1 = int(floor(centre.x + ex));
+    int y0 = int(floor(centre.y - ey));
+    int y1 = int(floor(centre.y + ey));
+    float sum_p = 0.0f;
+    float sum_w = 0.0f;
+    for (int y = y0; y <= y1; ++y) {
+        for (int x = x0; x <= x1; ++x) {
+            vec2 p = vec2(float(x) + 0.5f, float(y) + 0.5f) - centre;
+            float a = (p.x * ca + p.y * sa) / major;
+            float b = (-p.x * sa + p.y * ca) / minor;
+            float r2 = a * a + b * b;
+            if (r2 >= 1.0f) continue;
+            float w = exp(-2.0f * r2) - 0.13533528f;  // exp(-2)
+            Chermain2020Cell c = chermain2020_cell(ivec2(x, y), level, d, log_density, relative_area,
+                                                   density_randomization, seed);
+            sum_p += w * chermain2020_cell_p22(c, slope, d, alpha_x, alpha_y);
+            sum_w += w;
+        }
+    }
+    if (sum_w > 0.0f) return sum_p / sum_w;
+    // Footprint smaller than a cell (only at level 0): the cell under its centre.
+    Chermain2020Cell c = chermain2020_cell(ivec2(floor(centre)), level, d, log_density, relative_area,
+                                           density_randomization, seed);
+    return chermain2020_cell_p22(c, slope, d, alpha_x, alpha_y);
+}
+
+// D_P(h) of Eq. 13 over the footprint (Algorithm 1), h in the local frame.
+float chermain2020_ndf(vec3 h, Footprint fp, Chermain2020Dict d, float alpha_x, float alpha_y,
+                       float log_density, uint seed, float relative_area, float max_anisotropy,
+                       float density_randomization) {
+    if (h.z <= 0.0f) return 0.0f;
+    vec2 slope = vec2(-h.x / h.z, -h.y / h.z);  // normalToSlope (Eq. 1)
+    vec3 ellipse = chermain2020_footprint_ellipse(fp.duvdx, fp.duvdy, max_anisotropy);
+    // Line 6: l = max(0, nLevels - 1 + log2(minor)); levels above 28 would
+    // overflow the coherent index and hold far more facets than any density.
+    float lod = clamp(float(d.n_levels - 1) + log2(ellipse.y), 0.0f, 28.0f);
+    int l0 = int(floor(lod));
+    float w = lod - float(l0);
+    float p = chermain2020_level_p22(slope, fp.uv, ellipse, l0, d, alpha_x, alpha_y, log_density,
+                                     relative_area, density_randomization, seed);
+    if (w > 0.0f) {  // line 8: lerp of the two discrete P-SDFs (Eq. 12)
+        float p1 = chermain2020_level_p22(slope, fp.uv, ellipse, l0 + 1, d, alpha_x, alpha_y,
+                                          log_density, relative_area, density_randomization, seed);
+        p = mix(p, p1, w);
+    }
+    float c2 = h.z * h.z;
+    return p / (c2 * c2);  // Eq. 13
+}
+
+#endif

@@ -1,0 +1,60 @@
+// C++ host side of the chermain2020 glint model (papers/004): evaluation of
+// the shared chermain2020.glsl over the default dictionary, and the reader of
+// its parameter block.
+#pragma once
+
+#include <cstdint>
+
+#include <glm/glm.hpp>
+
+#include "glintlab/core/footprint.h"
+#include "glintlab/glints/chermain2020/chermain2020_params.h"
+
+namespace glintlab {
+
+class JsonObject;
+struct GlintDesc;
+
+// The shared glint parameters the model reads, as plain values.
+struct Chermain2020Target {
+    float alpha_x = 0.5f;
+    float alpha_y = 0.5f;
+    float log_density = 27.0f;  // ln(facets per unit uv area); authors' UI default
+    uint32_t seed = 0;
+};
+
+// The random choices of one cell (Algorithm 3) of the default dictionary.
+struct Chermain2020CellInfo {
+    bool active = false;
+    int dist_level = 0;  // == n_levels: the analytic Beckmann target
+    int dist_x = 0, dist_y = 0;
+    float theta = 0.0f;
+};
+
+// D_P(h) (004 Eq. 13), h in the local frame.
+float chermain2020_ndf(glm::vec3 h, const Footprint& footprint, const Chermain2020Target& target,
+                       const Chermain2020Params& params);
+
+// The smooth Beckmann D(h) the model converges to (004 §4.3).
+float chermain2020_target_ndf(glm::vec3 h, const Chermain2020Target& target);
+
+// Cell `cell` of hierarchy level `level` (Eq. 8 seeding, Algorithm 3).
+Chermain2020CellInfo chermain2020_cell(glm::ivec2 cell, int level, const Chermain2020Target& target,
+                                       const Chermain2020Params& params);
+
+// P^22_theta,alpha of one cell at a slope (Eq. 11).
+float chermain2020_cell_p22(const Chermain2020CellInfo& cell, glm::vec2 slope,
+                            const Chermain2020Target& target);
+
+// The slope in the cell's dictionary frame, s' = R^-1 S^-1 s (Eq. 9-11).
+glm::vec2 chermain2020_dict_slope(const Chermain2020CellInfo& cell, glm::vec2 slope,
+                                  const Chermain2020Target& target);
+
+// The material's D_P: desc.params must hold Chermain2020Params.
+float chermain2020_footprint_ndf(glm::vec3 h, const Footprint& footprint, const GlintDesc& desc);
+
+// Reads the "chermain2020" block into desc.params with range checks; rejects
+// a material whose ndf is not Beckmann (004 §4.3: the SDF must be separable).
+void read_chermain2020_params(JsonObject& block, GlintDesc& desc);
+
+}  // namespace glintlab

@@ -1,0 +1,18 @@
+// Parameters of the chermain2020 glint model (its block "chermain2020": {...}
+// of a glint material; ranges and defaults justified in docs/MODELS.md). The
+// roughness, the NDF (Beckmann only) and the density rho = exp(log_density)
+// are the glint material's shared parameters.
+#pragma once
+
+namespace glintlab {
+
+struct Chermain2020Params {
+    // beta (004 §7.1): fraction of cells that carry facets, [0, 1].
+    float relative_area = 1.0f;
+    // gamma (004 §7.1): largest major/minor ratio of the footprint, [1, 32].
+    float max_anisotropy = 8.0f;
+    // zeta (004 §7.1, Alg. 3 line 8): std-dev of the distribution LOD, [0, 8].
+    float density_randomization = 0.0f;
+};
+
+}  // namespace glintlab

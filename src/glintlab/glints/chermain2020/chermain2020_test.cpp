@@ -1,0 +1,162 @@
+#include "glintlab/glints/chermain2020/chermain2020.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "glintlab/core/error.h"
+#include "glintlab/core/rng.h"
+#include "glintlab/glints/chermain2020/chermain2020_experiments.h"
+#include "glintlab/scene/json_reader.h"
+#include "glintlab/scene/scene.h"
+
+namespace glintlab {
+namespace {
+
+Footprint footprint_at(glm::vec2 uv, float minor, float aniso, float angle) {
+    const glm::vec2 e1(std::cos(angle), std::sin(angle)), e2(-e1.y, e1.x);
+    return Footprint{uv, e1 * (minor * aniso), e2 * minor};
+}
+
+TEST(Chermain2020, ConvergesToBeckmann) {
+    // Mean of D_P over 300 footprints (LOD 4-5, l_dist 14-15). Per footprint
+    // the relative spread of D_P is ~4 % / sqrt(cells) (two marginals of
+    // 1.6e4-3.3e4 lobes, kernel noise ~2.8 % each), ~1.5 % for the smallest
+    // footprints, so the mean is within 0.3 % (3 sigma over 300); the
+    // dictionary's own bias (kernel smoothing, 192 marginals) is < 0.5 %.
+    // 2 % is the bound.
+    for (const auto& c : chermain2020_convergence(300, 7))
+        EXPECT_LE(c.rel_err, 0.02) << c.alpha_x << " " << c.alpha_y << " " << c.tan_theta << " "
+                                   << c.phi << " mean " << c.mean_dp << " target " << c.target;
+}
+
+TEST(Chermain2020, WeakWhiteFurnace) {
+    // 004 Eq. 17: exactly 1 for every cell, since each cell's SDF is
+    // normalised and even (V-cavity furnace, Heitz 2014); the quadrature
+    // integrates the piecewise-linear lobes exactly, so what is left is the
+    // Gauss-Legendre error on the smooth masking weight, ~1e-4.
+    Chermain2020FurnaceSweep s;
+    s.alphas = {0.1f, 0.5f};
+    s.log_densities = {20.0f, 40.0f};
+    s.zetas = {0.0f, 2.0f};
+    s.theta_os = {0.0f, 0.7854f, 1.3f};
+    s.cells_per_case = 1;
+    for (const auto& c : chermain2020_furnace(s, 3))
+        EXPECT_LE(c.rel_err, 0.003)
+            << "alpha " << c.alpha << " log rho " << c.log_density << " zeta " << c.zeta
+            << " theta_o " << c.theta_o << " l_dist " << c.dist_level << " value " << c.value;
+}
+
+TEST(Chermain2020, Reciprocal) {
+    // Only F(wo.h) and F(wi.h) are computed from different fp32 dot products.
+    EXPECT_LE(chermain2020_reciprocity(3000, 5), 1e-5);
+}
+
+TEST(Chermain2020, NoNanOrNegative) {
+    EXPECT_EQ(chermain2020_robustness(20000, 11), 0);
+}
+
+TEST(Chermain2020, CoherentIndexingKeepsParentChoices) {
+    // Eq. 8 / Fig. 7: the cell (x, y) of level l+1 is seeded like its child
+    // (2x, 2y) of level l: same marginals and rotation, one dictionary level
+    // more (the facet count quadruples, Alg. 3 line 5).
+    Chermain2020Target t;
+    t.log_density = 20.0f;  // l_dist well inside [0, 15] at levels 3-9
+    Chermain2020Params p;
+    int differing_siblings = 0;
+    Pcg32 rng(1, 2);
+    for (int k = 0; k < 200; ++k) {
+        const glm::ivec2 parent(static_cast<int>(rng.next_uint(4096)) - 2048,
+                                static_cast<int>(rng.next_uint(4096)) - 2048);
+        const int level = 3 + static_cast<int>(rng.next_uint(6));
+        const auto up = chermain2020_cell(parent, level + 1, t, p);
+        const auto child = chermain2020_cell(parent * 2, level, t, p);
+        const auto sibling = chermain2020_cell(parent * 2 + glm::ivec2(1, 0), level, t, p);
+        EXPECT_EQ(up.dist_x, child.dist_x);
+        EXPECT_EQ(up.dist_y, child.dist_y);
+        EXPECT_EQ(up.theta, child.theta);
+        EXPECT_EQ(up.dist_level, child.dist_level + 1);
+        differing_siblings += sibling.dist_x != child.dist_x || sibling.dist_y != child.dist_y;
+    }
+    // Independent siblings coincide with probability 1/192^2 per cell.
+    EXPECT_GE(differing_siblings, 198);
+}
+
+TEST(Chermain2020, RelativeAreaScalesTheMean) {
+    // E[D_P] = beta D (Alg. 3 line 4 keeps a cell with probability beta).
+    // ~20 cells per footprint: relative std-dev of one footprint's D_P is
+    // ~sqrt((1 - beta) / (beta * 20)) = 22 %, 1.3 % over 300; 3 sigma = 4 %.
+    Chermain2020Target t;
+    t.alpha_x = t.alpha_y = 0.3f;
+    t.log_density = 40.0f;  // analytic cells: only beta varies
+    Chermain2020Params p;
+    p.relative_area = 0.5f;
+    const glm::vec3 h = glm::normalize(glm::vec3(0.1f, -0.05f, 1.0f));
+    Pcg32 rng(3, 4);
+    double sum = 0.0;
+    const int n = 300;
+    for (int k = 0; k < n; ++k) {
+        const Footprint fp =
+            footprint_at(glm::vec2(rng.next_float(), rng.next_float()) * 8.0f,
+                         std::exp2(5.0f - 15.0f), 4.0f, 6.2832f * rng.next_float());
+        sum += chermain2020_ndf(h, fp, t, p);
+    }
+    EXPECT_NEAR(sum / n / chermain2020_target_ndf(h, t), 0.5, 0.04 * 0.5);
+}
+
+TEST(Chermain2020, ContinuousAcrossLodBoundary) {
+    // Alg. 1 line 8: at an integer LOD the lerp weight of the finer level
+    // vanishes from above and that of the coarser one is 1 from below, and
+    // the cell weights move continuously with the footprint: a 1e-4 LOD step
+    // changes D_P by ~1e-4 of its scale. 1e-2 fails on any jump.
+    Chermain2020Target t;
+    t.alpha_x = t.alpha_y = 0.4f;
+    t.log_density = 30.0f;
+    Chermain2020Params p;
+    Pcg32 rng(5, 6);
+    int compared = 0;
+    for (int k = 0; k < 100; ++k) {
+        const glm::vec2 uv(rng.next_float(), rng.next_float());
+        const float angle = 6.2832f * rng.next_float();
+        const glm::vec3 h = glm::normalize(
+            glm::vec3(0.4f * (rng.next_float() - 0.5f), 0.4f * (rng.next_float() - 0.5f), 1.0f));
+        const float lod = 3.0f + static_cast<float>(rng.next_uint(5));
+        const float a = chermain2020_ndf(
+            h, footprint_at(uv, std::exp2(lod - 1e-4f - 15.0f), 3.0f, angle), t, p);
+        const float b = chermain2020_ndf(
+            h, footprint_at(uv, std::exp2(lod + 1e-4f - 15.0f), 3.0f, angle), t, p);
+        const float scale = std::max(a, b);
+        if (scale <= 0.0f) continue;
+        ++compared;
+        EXPECT_LE(std::abs(a - b) / scale, 1e-2f) << "lod " << lod << ": " << a << " vs " << b;
+    }
+    EXPECT_GE(compared, 50);
+}
+
+TEST(Chermain2020, ReadsParametersAndRejectsGgx) {
+    // JsonObject keeps a reference to its json value: the values are named locals.
+    GlintDesc desc;
+    desc.ndf = NdfType::Beckmann;
+    const nlohmann::json ok_json = {{"relative_area", 0.25}, {"max_anisotropy", 4}};
+    JsonObject ok(ok_json, "/materials/0/chermain2020", "scene.json");
+    read_chermain2020_params(ok, desc);
+    const auto& p = std::get<Chermain2020Params>(desc.params);
+    EXPECT_EQ(p.relative_area, 0.25f);
+    EXPECT_EQ(p.max_anisotropy, 4.0f);
+    EXPECT_EQ(p.density_randomization, 0.0f);
+    const nlohmann::json bad_json = {{"max_anisotropy", 0.5}};
+    JsonObject bad(bad_json, "/materials/0/chermain2020", "scene.json");
+    EXPECT_THROW(read_chermain2020_params(bad, desc), Error);
+    desc.ndf = NdfType::GGX;
+    const nlohmann::json empty = nlohmann::json::object();
+    JsonObject ggx(empty, "/materials/0/chermain2020", "scene.json");
+    try {
+        read_chermain2020_params(ggx, desc);
+        ADD_FAILURE() << "ggx accepted";
+    } catch (const Error& e) {
+        EXPECT_NE(std::string(e.what()).find("beckmann"), std::string::npos) << e.what();
+    }
+}
+
+}  // namespace
+}  // namespace glintlab

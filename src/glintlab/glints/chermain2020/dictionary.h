@@ -1,0 +1,55 @@
+// The chermain2020 dictionary of multiscale marginal slope distributions
+// (papers/004 §4.4-4.5): N even 1-D densities P_i(x, l), tabulated over
+// |x| in [0, 4 sigma) for every level l in [0, nLevels), each converging to
+// the Beckmann marginal of roughness alpha_dict as l grows.
+// Generated deterministically in memory (never committed as a binary);
+// `glintlab dict` writes it to a file.
+#pragma once
+
+#include <cstdint>
+#include <filesystem>
+#include <vector>
+
+namespace glintlab {
+
+struct DictionaryParams {
+    int n_levels = 16;            // nLevels (004 §4.4)
+    int n_dists = 192;            // N marginal distributions (004 §4.5)
+    float alpha_dict = 0.5f;      // roughness of the target Beckmann SDF
+    float lobe_sigma = 0.02f;     // std-dev of each Gaussian lobe
+    int table_size = 64;          // samples per 1-D table
+    uint64_t seed = 0x43686572u;  // PCG32 seed of the lobe means
+};
+
+// Throws glintlab::Error naming the parameter and its allowed range.
+void check_dictionary_params(const DictionaryParams& p);
+
+struct Dictionary {
+    DictionaryParams params;
+    // Table values, index ((dist * n_levels) + level) * table_size + bin;
+    // bin k holds P(x_k) at x_k = k * slope_max / table_size.
+    std::vector<float> values;
+    float slope_max = 0.0f;  // 4 sigma, sigma = alpha_dict / sqrt(2)
+
+    float at(int dist, int level, int bin) const {
+        return values[(static_cast<size_t>(dist) * params.n_levels + level) * params.table_size +
+                      bin];
+    }
+};
+
+// 004 §4.4: level l of marginal i is the mean of 2^l mirrored Gaussian lobes
+// whose means are the first 2^l draws of N(0, sigma) of that marginal
+// (levels are nested), renormalised so that the piecewise-linear
+// interpolant (zero at slope_max) integrates to 1 over the real line.
+Dictionary generate_dictionary(const DictionaryParams& params);
+
+// The dictionary with the default parameters, generated on first use
+// (thread-safe function-local static) and shared by all evaluations.
+const Dictionary& default_dictionary();
+
+// Binary file: "GLDICT01", int32 n_levels, n_dists, table_size, float32
+// alpha_dict, lobe_sigma, slope_max, uint64 seed, then the float32 values
+// (little-endian, the layout of Dictionary::values).
+void write_dictionary(const Dictionary& dict, const std::filesystem::path& path);
+
+}  // namespace glintlab
