@@ -48,8 +48,10 @@ TEST(Chermain2020, WeakWhiteFurnace) {
 }
 
 TEST(Chermain2020, Reciprocal) {
-    // Only F(wo.h) and F(wi.h) are computed from different fp32 dot products.
-    EXPECT_LE(chermain2020_reciprocity(3000, 5), 1e-5);
+    // Only F(wo.h) and F(wi.h) are computed from different fp32 dot products
+    // of a rounded half vector: <= ~3e-5 relative for wo.h >= 0.05 (bound in
+    // validate_chermain2020.cpp).
+    EXPECT_LE(chermain2020_reciprocity(3000, 5), 1e-4);
 }
 
 TEST(Chermain2020, NoNanOrNegative) {

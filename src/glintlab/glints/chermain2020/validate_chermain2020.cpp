@@ -64,9 +64,11 @@ ValidationReport validate_chermain2020(const Chermain2020ValidationOptions& o) {
     const double recip = chermain2020_reciprocity(o.reciprocity_pairs, o.seed);
     report.text += fmt::format("reciprocity: max |f(o,i) - f(i,o)| / f = {:.2e} over {} pairs\n",
                                recip, o.reciprocity_pairs);
-    // Only F(wo.h) vs F(wi.h) differ, by fp32 rounding of the two dot
-    // products (~1e-7 relative each, amplified ~5x by Schlick's fifth power).
-    report.check("reciprocity_err_max", recip, "<=", 1e-5);
+    // Only F(wo.h) vs F(wi.h) differ: the fp32 half vector's direction is off
+    // by ~2 eps / |wo + wi| = eps / (wo.h), so wo.h and wi.h differ by up to
+    // ~2.4e-6 for wo.h >= 0.05, and dF/F = 5 (1 - f0) dc / F <= 12 dc for
+    // f0 = 0.3: <= 3e-5. Limit 1e-4.
+    report.check("reciprocity_err_max", recip, "<=", 1e-4);
 
     const int64_t bad = chermain2020_robustness(o.robustness_evaluations, o.seed);
     report.text += fmt::format("robustness: {} evaluations, {} not finite or negative\n",
