@@ -9,7 +9,9 @@
 namespace glintlab {
 namespace {
 
-int ndf_id(NdfType t) { return t == NdfType::GGX ? shader::NDF_GGX : shader::NDF_BECKMANN; }
+int ndf_id(NdfType t) {
+    return t == NdfType::GGX ? shader::NDF_GGX : shader::NDF_BECKMANN;
+}
 
 // G2 of the model: chermain2020's P-NDF has no Smith masking, it uses the
 // V-cavity one (004 Eq. 14-16); the others the height-correlated Smith G2.
@@ -20,14 +22,28 @@ float masking(const GlintDesc& desc, glm::vec3 wo, glm::vec3 wi, glm::vec3 h) {
 
 }  // namespace
 
-float GlintBxdf::footprint_ndf(glm::vec3 h) const {
+float GlintBxdf::footprint_ndf(glm::vec3 wo, glm::vec3 wi, glm::vec3 h) const {
     // A closed set of models (ARCHITECTURE.md §5): each case calls the
-    // model's own evaluation of its footprint NDF.
+    // model's own evaluation of its footprint NDF. Models whose query depends
+    // on both directions (jakob2014's spherical conic, 002 Eq. 7) use wo, wi.
+    (void)wo;
+    (void)wi;
     switch (desc->model_id) {
-        case GlintModelId::Smooth: break;
-        case GlintModelId::Deliot2023: return deliot2023_footprint_ndf(h, footprint, *desc);
-        case GlintModelId::Chermain2020: return chermain2020_footprint_ndf(h, footprint, *desc);
-        case GlintModelId::Zirr2016: return zirr2016_footprint_ndf(h, footprint, *desc);
+        case GlintModelId::Smooth:
+            break;
+        // Models still being built render their smooth limit until their
+        // registry row exists (the scene loader cannot select them before).
+        case GlintModelId::Explicit:
+        case GlintModelId::Jakob2014:
+        case GlintModelId::Kneiphof2025:
+        case GlintModelId::Wang2020:
+            break;
+        case GlintModelId::Deliot2023:
+            return deliot2023_footprint_ndf(h, footprint, *desc);
+        case GlintModelId::Chermain2020:
+            return chermain2020_footprint_ndf(h, footprint, *desc);
+        case GlintModelId::Zirr2016:
+            return zirr2016_footprint_ndf(h, footprint, *desc);
     }
     return shader::D_Microfacet(ndf_id(desc->ndf), h, desc->alpha_x, desc->alpha_y);
 }
@@ -35,10 +51,14 @@ float GlintBxdf::footprint_ndf(glm::vec3 h) const {
 glm::vec3 GlintBxdf::fresnel(float cos_oh) const {
     const FresnelDesc& f = desc->fresnel;
     switch (f.mode) {
-        case FresnelDesc::Mode::None: return glm::vec3(1.0f);
-        case FresnelDesc::Mode::Schlick: return shader::F_Schlick(f.f0, cos_oh);
-        case FresnelDesc::Mode::Conductor: return shader::F_Conductor(cos_oh, f.eta, f.k);
-        case FresnelDesc::Mode::Dielectric: return glm::vec3(shader::F_Dielectric(cos_oh, f.eta.x));
+        case FresnelDesc::Mode::None:
+            return glm::vec3(1.0f);
+        case FresnelDesc::Mode::Schlick:
+            return shader::F_Schlick(f.f0, cos_oh);
+        case FresnelDesc::Mode::Conductor:
+            return shader::F_Conductor(cos_oh, f.eta, f.k);
+        case FresnelDesc::Mode::Dielectric:
+            return glm::vec3(shader::F_Dielectric(cos_oh, f.eta.x));
     }
     return glm::vec3(1.0f);
 }
@@ -48,8 +68,9 @@ glm::vec3 GlintBxdf::f(glm::vec3 wo, glm::vec3 wi) const {
     glm::vec3 h = wo + wi;
     if (glm::dot(h, h) == 0.0f) return glm::vec3(0.0f);
     h = glm::normalize(h);
-    const float d = has_footprint ? footprint_ndf(h)
-                                  : shader::D_Microfacet(ndf_id(desc->ndf), h, desc->alpha_x, desc->alpha_y);
+    const float d = has_footprint
+                        ? footprint_ndf(wo, wi, h)
+                        : shader::D_Microfacet(ndf_id(desc->ndf), h, desc->alpha_x, desc->alpha_y);
     const float g = masking(*desc, wo, wi, h);
     return desc->color * fresnel(glm::dot(wo, h)) * (d * g / (4.0f * wo.z * wi.z));
 }

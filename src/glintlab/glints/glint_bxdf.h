@@ -23,8 +23,8 @@ struct GlintBxdf {
     bool has_footprint = false;
     Footprint footprint{};
 
-    // D_P(h) for the material's model over the footprint.
-    float footprint_ndf(glm::vec3 h) const;
+    // D_P(h) for the material's model over the footprint, h = normalize(wo + wi).
+    float footprint_ndf(glm::vec3 wo, glm::vec3 wi, glm::vec3 h) const;
     glm::vec3 fresnel(float cos_oh) const;
 
     glm::vec3 f(glm::vec3 wo, glm::vec3 wi) const;

@@ -17,7 +17,8 @@ void read_smooth_params(JsonObject& block, GlintDesc& desc) {
 }
 
 const GlintModelInfo kModels[] = {
-    {GlintModelId::Smooth, "smooth", "smooth microfacet BRDF (Cook-Torrance / Walter et al. 2007), the limit of every glint model",
+    {GlintModelId::Smooth, "smooth",
+     "smooth microfacet BRDF (Cook-Torrance / Walter et al. 2007), the limit of every glint model",
      true, true, true, true, read_smooth_params},
     // Point and directional lights only (000 §8: no extended lights).
     {GlintModelId::Deliot2023, "deliot2023",
@@ -35,11 +36,19 @@ const GlintModelInfo kModels[] = {
 
 }  // namespace
 
-std::span<const GlintModelInfo> glint_models() { return kModels; }
+std::span<const GlintModelInfo> glint_models() {
+    return kModels;
+}
 
 const GlintModelInfo* find_glint_model(std::string_view name) {
     for (const GlintModelInfo& m : kModels)
         if (m.name == name) return &m;
+    return nullptr;
+}
+
+const GlintModelInfo* find_glint_model(GlintModelId id) {
+    for (const GlintModelInfo& m : kModels)
+        if (m.id == id) return &m;
     return nullptr;
 }
 

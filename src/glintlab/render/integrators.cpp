@@ -3,6 +3,8 @@
 #include <cmath>
 #include <limits>
 
+#include "glintlab/glints/glint_lighting.h"
+#include "glintlab/glints/registry.h"
 #include "glintlab/render/differentials.h"
 #include "glintlab/render/light_sampling.h"
 #include "glintlab/render/surface_bsdf.h"
@@ -42,13 +44,61 @@ glm::vec3 emitted(const Scene& scene, const SurfaceHit& hit, glm::vec3 dir) {
     return std::get<SphereLight>(scene.lights[shape.area_light]).radiance;
 }
 
-// Next-event estimation from a surface point: one sample per light, MIS
-// weighted against BSDF sampling for lights that BSDF rays can hit.
-glm::vec3 sample_lights(const IntegratorContext& ctx, const SurfaceHit& hit,
-                        const SurfaceBsdf& bsdf, glm::vec3 wo, Pcg32& rng) {
+// The lights a glint model shades itself at the camera's first hit
+// (glints/glint_lighting.h); empty for every other hit.
+struct OwnLights {
+    const GlintModelInfo* model = nullptr;
+    const GlintDesc* desc = nullptr;
+    bool has(const Scene& scene, int light) const {
+        return model != nullptr && light >= 0 && model->shades_light(*desc, scene, light);
+    }
+};
+
+OwnLights own_lights(const Scene& scene, const Shape& shape) {
+    if (shape.material < 0) return {};
+    const MaterialDesc& m = scene.materials[shape.material];
+    if (m.type != MaterialDesc::Type::Glint) return {};
+    const GlintModelInfo* info = find_glint_model(m.glint.model_id);
+    if (info == nullptr || info->shades_light == nullptr || info->light_radiance == nullptr)
+        return {};
+    return {info, &m.glint};
+}
+
+// The radiance the model computes itself for its own lights.
+glm::vec3 own_light_radiance(const IntegratorContext& ctx, const OwnLights& own,
+                             const SurfaceHit& hit, const SurfaceBsdf& bsdf, glm::vec3 wo,
+                             const Footprint& footprint, Pcg32& rng) {
+    GlintLightingContext lc;
+    lc.scene = &ctx.scene;
+    lc.desc = own.desc;
+    lc.p = hit.p;
+    lc.t = bsdf.frame().t;
+    lc.b = bsdf.frame().b;
+    lc.n = bsdf.frame().n;
+    lc.wo = bsdf.frame().to_local(wo);
+    lc.footprint = footprint;
+    lc.visible = [&](glm::vec3 wi, float t_max) {
+        return !ctx.accel.occluded(offset_ray_origin(hit, wi), wi, t_max);
+    };
+    lc.rng = &rng;
+    if (lc.wo.z <= 0.0f) return glm::vec3(0.0f);
     glm::vec3 L(0.0f);
-    for (const Light& light : ctx.scene.lights) {
+    for (int i = 0; i < static_cast<int>(ctx.scene.lights.size()); ++i)
+        if (own.has(ctx.scene, i)) L += own.model->light_radiance(lc, i);
+    return L;
+}
+
+// Next-event estimation from a surface point: one sample per light, MIS
+// weighted against BSDF sampling for lights that BSDF rays can hit. Lights
+// in `own` are skipped (the glint model shaded them).
+glm::vec3 sample_lights(const IntegratorContext& ctx, const SurfaceHit& hit,
+                        const SurfaceBsdf& bsdf, glm::vec3 wo, Pcg32& rng,
+                        const OwnLights& own = {}) {
+    glm::vec3 L(0.0f);
+    for (int i = 0; i < static_cast<int>(ctx.scene.lights.size()); ++i) {
+        const Light& light = ctx.scene.lights[i];
         const glm::vec2 u = next2(rng);
+        if (own.has(ctx.scene, i)) continue;
         const auto ls = sample_light(light, hit.p, u);
         if (!ls || ls->pdf <= 0.0f || ls->radiance == glm::vec3(0.0f)) continue;
         const glm::vec3 f = bsdf.f(wo, ls->wi);
@@ -81,7 +131,10 @@ glm::vec3 integrate_direct(const IntegratorContext& ctx, const RayDifferential& 
     const glm::vec3 wo = -ray.ray.d;
     const SurfaceBsdf bsdf =
         make_surface_bsdf(scene.materials[shape.material], *hit, wo, &diff.footprint);
-    if (!bsdf.is_specular()) L += sample_lights(ctx, *hit, bsdf, wo, rng);
+    const OwnLights own = own_lights(scene, shape);
+    if (!bsdf.is_specular()) L += sample_lights(ctx, *hit, bsdf, wo, rng, own);
+    if (own.model != nullptr)
+        L += own_light_radiance(ctx, own, *hit, bsdf, wo, diff.footprint, rng);
 
     // One BSDF sample: MIS partner of light sampling for lights with area,
     // the only estimator for specular lobes.
@@ -94,16 +147,19 @@ glm::vec3 integrate_direct(const IntegratorContext& ctx, const RayDifferential& 
     const auto hit2 = ctx.accel.intersect(next, kInfinity);
     if (!hit2) {
         L += beta * escaped(scene, bs->wi, [&](int i) {
-                 return bs->is_delta ? 1.0f
-                                     : power_heuristic(bs->pdf, light_pdf(scene.lights[i], hit->p, bs->wi));
+                 if (own.has(scene, i)) return 0.0f;
+                 return bs->is_delta
+                            ? 1.0f
+                            : power_heuristic(bs->pdf, light_pdf(scene.lights[i], hit->p, bs->wi));
              });
     } else {
         const Shape& s2 = scene.shapes[hit2->shape];
         const glm::vec3 le = emitted(scene, *hit2, bs->wi);
-        if (le != glm::vec3(0.0f)) {
-            const float w = bs->is_delta ? 1.0f
-                                         : power_heuristic(bs->pdf, light_pdf(scene.lights[s2.area_light],
-                                                                              hit->p, bs->wi));
+        if (le != glm::vec3(0.0f) && !own.has(scene, s2.area_light)) {
+            const float w =
+                bs->is_delta ? 1.0f
+                             : power_heuristic(
+                                   bs->pdf, light_pdf(scene.lights[s2.area_light], hit->p, bs->wi));
             L += beta * le * w;
         }
     }
@@ -118,21 +174,26 @@ glm::vec3 integrate_path(const IntegratorContext& ctx, const RayDifferential& ca
     bool specular_bounce = true;  // the camera ray counts as specular for MIS
     float prev_pdf = 1.0f;
     glm::vec3 prev_p(0.0f);
+    OwnLights prev_own;  // lights the first hit's glint model already shaded
     for (int depth = 0;; ++depth) {
         const auto hit = ctx.accel.intersect(ray, kInfinity);
         if (!hit) {
             L += beta * escaped(scene, ray.d, [&](int i) {
+                     if (prev_own.has(scene, i)) return 0.0f;
                      return specular_bounce ? 1.0f
-                                            : power_heuristic(prev_pdf, light_pdf(scene.lights[i], prev_p, ray.d));
+                                            : power_heuristic(prev_pdf, light_pdf(scene.lights[i],
+                                                                                  prev_p, ray.d));
                  });
             break;
         }
         const Shape& shape = scene.shapes[hit->shape];
         const glm::vec3 le = emitted(scene, *hit, ray.d);
-        if (le != glm::vec3(0.0f)) {
-            const float w = specular_bounce
-                                ? 1.0f
-                                : power_heuristic(prev_pdf, light_pdf(scene.lights[shape.area_light], prev_p, ray.d));
+        if (le != glm::vec3(0.0f) && !prev_own.has(scene, shape.area_light)) {
+            const float w =
+                specular_bounce
+                    ? 1.0f
+                    : power_heuristic(prev_pdf,
+                                      light_pdf(scene.lights[shape.area_light], prev_p, ray.d));
             L += beta * le * w;
         }
         // max_depth counts scattering events (pbrt-v4): emission found after the
@@ -147,8 +208,13 @@ glm::vec3 integrate_path(const IntegratorContext& ctx, const RayDifferential& ca
             diff = compute_differentials(camera_ray, *hit, ctx.differential_scale);
             footprint = &diff.footprint;
         }
-        const SurfaceBsdf bsdf = make_surface_bsdf(scene.materials[shape.material], *hit, wo, footprint);
-        if (!bsdf.is_specular()) L += beta * sample_lights(ctx, *hit, bsdf, wo, rng);
+        const SurfaceBsdf bsdf =
+            make_surface_bsdf(scene.materials[shape.material], *hit, wo, footprint);
+        const OwnLights own = depth == 0 ? own_lights(scene, shape) : OwnLights{};
+        if (!bsdf.is_specular()) L += beta * sample_lights(ctx, *hit, bsdf, wo, rng, own);
+        if (own.model != nullptr)
+            L += beta * own_light_radiance(ctx, own, *hit, bsdf, wo, *footprint, rng);
+        prev_own = own;
 
         const float uc = rng.next_float();
         const glm::vec2 u = next2(rng);
