@@ -48,6 +48,12 @@ float GlintBxdf::footprint_ndf(glm::vec3 wo, glm::vec3 wi, glm::vec3 h) const {
     return shader::D_Microfacet(ndf_id(desc->ndf), h, desc->alpha_x, desc->alpha_y);
 }
 
+glm::vec3 GlintBxdf::footprint_ndf_rgb(glm::vec3 wo, glm::vec3 wi, glm::vec3 h) const {
+    if (desc->model_id == GlintModelId::Chermain2020)
+        return chermain2020_footprint_ndf_rgb(h, footprint, *desc);
+    return glm::vec3(footprint_ndf(wo, wi, h));
+}
+
 glm::vec3 GlintBxdf::fresnel(float cos_oh) const {
     const FresnelDesc& f = desc->fresnel;
     switch (f.mode) {
@@ -68,11 +74,12 @@ glm::vec3 GlintBxdf::f(glm::vec3 wo, glm::vec3 wi) const {
     glm::vec3 h = wo + wi;
     if (glm::dot(h, h) == 0.0f) return glm::vec3(0.0f);
     h = glm::normalize(h);
-    const float d = has_footprint
-                        ? footprint_ndf(wo, wi, h)
-                        : shader::D_Microfacet(ndf_id(desc->ndf), h, desc->alpha_x, desc->alpha_y);
+    const glm::vec3 d =
+        has_footprint
+            ? footprint_ndf_rgb(wo, wi, h)
+            : glm::vec3(shader::D_Microfacet(ndf_id(desc->ndf), h, desc->alpha_x, desc->alpha_y));
     const float g = masking(*desc, wo, wi, h);
-    return desc->color * fresnel(glm::dot(wo, h)) * (d * g / (4.0f * wo.z * wi.z));
+    return desc->color * fresnel(glm::dot(wo, h)) * d * (g / (4.0f * wo.z * wi.z));
 }
 
 float GlintBxdf::pdf(glm::vec3 wo, glm::vec3 wi) const {

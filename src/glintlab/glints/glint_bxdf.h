@@ -25,6 +25,10 @@ struct GlintBxdf {
 
     // D_P(h) for the material's model over the footprint, h = normalize(wo + wi).
     float footprint_ndf(glm::vec3 wo, glm::vec3 wi, glm::vec3 h) const;
+    // Per-channel D_P for models with chromatic glints (chermain2020's colour
+    // table, 004 §7.1; jakob2014's per-particle areas, 002 §3.5); the scalar
+    // D_P in every channel otherwise.
+    glm::vec3 footprint_ndf_rgb(glm::vec3 wo, glm::vec3 wi, glm::vec3 h) const;
     glm::vec3 fresnel(float cos_oh) const;
 
     glm::vec3 f(glm::vec3 wo, glm::vec3 wi) const;

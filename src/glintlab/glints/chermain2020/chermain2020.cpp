@@ -1,6 +1,11 @@
 #include "glintlab/glints/chermain2020/chermain2020.h"
 
+#include <string>
+#include <tuple>
 #include <variant>
+
+#include <fmt/format.h>
+#include <nlohmann/json.hpp>
 
 #include "glintlab/core/error.h"
 #include "glintlab/core/glsl.h"
@@ -50,7 +55,35 @@ shader::Chermain2020Cell to_shader(const Chermain2020CellInfo& c) {
     return s;
 }
 
+shader::Chermain2020Colours to_shader(const Chermain2020Params& p) {
+    shader::Chermain2020Colours c;
+    c.count = p.colour_count;
+    for (int i = 0; i < CHERMAIN2020_MAX_COLOURS; ++i)
+        c.table[i] = p.colour_table[static_cast<size_t>(i)];
+    return c;
+}
+
+static_assert(CHERMAIN2020_MAX_COLOURS ==
+              std::tuple_size_v<decltype(Chermain2020Params::colour_table)>);
+
+Chermain2020Target target_of(const GlintDesc& desc) {
+    Chermain2020Target t;
+    t.alpha_x = desc.alpha_x;
+    t.alpha_y = desc.alpha_y;
+    t.log_density = desc.log_density;
+    t.seed = desc.seed;
+    return t;
+}
+
 }  // namespace
+
+glm::vec3 chermain2020_ndf_rgb(glm::vec3 h, const Footprint& footprint,
+                               const Chermain2020Target& target, const Chermain2020Params& params) {
+    return shader::chermain2020_ndf_rgb(h, footprint, shape(), target.alpha_x, target.alpha_y,
+                                        target.log_density, target.seed, params.relative_area,
+                                        params.max_anisotropy, params.density_randomization,
+                                        to_shader(params));
+}
 
 float chermain2020_ndf(glm::vec3 h, const Footprint& footprint, const Chermain2020Target& target,
                        const Chermain2020Params& params) {
@@ -84,12 +117,14 @@ glm::vec2 chermain2020_dict_slope(const Chermain2020CellInfo& cell, glm::vec2 sl
 }
 
 float chermain2020_footprint_ndf(glm::vec3 h, const Footprint& footprint, const GlintDesc& desc) {
-    Chermain2020Target t;
-    t.alpha_x = desc.alpha_x;
-    t.alpha_y = desc.alpha_y;
-    t.log_density = desc.log_density;
-    t.seed = desc.seed;
-    return chermain2020_ndf(h, footprint, t, std::get<Chermain2020Params>(desc.params));
+    return chermain2020_ndf(h, footprint, target_of(desc),
+                            std::get<Chermain2020Params>(desc.params));
+}
+
+glm::vec3 chermain2020_footprint_ndf_rgb(glm::vec3 h, const Footprint& footprint,
+                                         const GlintDesc& desc) {
+    return chermain2020_ndf_rgb(h, footprint, target_of(desc),
+                                std::get<Chermain2020Params>(desc.params));
 }
 
 void read_chermain2020_params(JsonObject& block, GlintDesc& desc) {
@@ -107,6 +142,17 @@ void read_chermain2020_params(JsonObject& block, GlintDesc& desc) {
     // zeta in dictionary levels; 8 levels is a factor 4^8 in density already.
     p.density_randomization = static_cast<float>(
         block.number("density_randomization", p.density_randomization, 0.0, 8.0));
+    // "colours": [[r, g, b], ...], 1 to 8 tints in [0, 1] (004 §7.1 colour table).
+    if (const nlohmann::json* colours = block.raw("colours")) {
+        const std::string where = fmt::format("{}: {}/colours", block.file(), block.path());
+        if (!colours->is_array() || colours->empty() || colours->size() > p.colour_table.size())
+            fail("{}: expected an array of 1 to {} RGB colours [r, g, b] with components in [0, 1]",
+                 where, p.colour_table.size());
+        p.colour_count = static_cast<int>(colours->size());
+        for (size_t i = 0; i < colours->size(); ++i)
+            p.colour_table[i] =
+                json_to_vec3((*colours)[i], fmt::format("{}/{}", where, i), 0.0f, 1.0f);
+    }
     desc.params = p;
     block.finish();
 }

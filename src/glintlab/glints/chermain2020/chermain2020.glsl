@@ -34,6 +34,15 @@ struct Chermain2020Dict {
     float slope_max;  // the tables cover |x| in [0, slope_max)
 };
 
+// The user colour table of coloured glints (004 §7.1 "2 CV", Alg. 3 lines
+// 11-12, 19): each cell multiplies its SDF by table[floor(count * U_c)].
+// count = 0 means no table (white, the scalar model).
+#define CHERMAIN2020_MAX_COLOURS 8
+struct Chermain2020Colours {
+    int count;
+    vec3 table[CHERMAIN2020_MAX_COLOURS];
+};
+
 // The random choices of one cell of the hierarchy (Algorithm 3).
 struct Chermain2020Cell {
     bool kept;       // kept by the relative area test (line 4)
@@ -127,12 +136,22 @@ vec3 chermain2020_footprint_ellipse(vec2 duvdx, vec2 duvdy, float max_anisotropy
     return vec3(major, minor, angle);
 }
 
+// Colour C of cell c (Alg. 3 lines 11-12).
+vec3 chermain2020_cell_colour(Chermain2020Cell c, Chermain2020Colours colours) {
+    if (colours.count <= 0) return vec3(1.0f);
+    int k = min(int(float(colours.count) * c.colour_u), colours.count - 1);
+    return colours.table[k];
+}
+
 // Algorithm 2: sum over the cells of level `level` whose centres fall in the
 // ellipse, weighted by the truncated Gaussian exp(-2 r^2) - exp(-2) and
-// normalised (sum of W_P = 1, Eq. 12).
-float chermain2020_level_p22(vec2 slope, vec2 uv, vec3 ellipse, int level, Chermain2020Dict d,
-                             float alpha_x, float alpha_y, float log_density, float relative_area,
-                             float density_randomization, uint seed) {
+// normalised (sum of W_P = 1, Eq. 12). Each cell's SDF is tinted by its
+// colour (Alg. 3 line 19); decision (docs/MODELS.md): cells that fall back to
+// the analytic target (line 10) keep their colour too, so the tint does not
+// vanish when the density passes the dictionary's last level.
+vec3 chermain2020_level_p22(vec2 slope, vec2 uv, vec3 ellipse, int level, Chermain2020Dict d,
+                            float alpha_x, float alpha_y, float log_density, float relative_area,
+                            float density_randomization, uint seed, Chermain2020Colours colours) {
     float scale = exp2(float(d.n_levels - 1 - level));  // cells per uv unit at this level
     vec2 centre = uv * scale;
     float major = ellipse.x * scale;
@@ -148,7 +167,7 @@ float chermain2020_level_p22(vec2 slope, vec2 uv, vec3 ellipse, int level, Cherm
     int x1 = int(floor(centre.x + ex));
     int y0 = int(floor(centre.y - ey));
     int y1 = int(floor(centre.y + ey));
-    float sum_p = 0.0f;
+    vec3 sum_p = vec3(0.0f);
     float sum_w = 0.0f;
     for (int y = y0; y <= y1; ++y) {
         for (int x = x0; x <= x1; ++x) {
@@ -160,7 +179,8 @@ float chermain2020_level_p22(vec2 slope, vec2 uv, vec3 ellipse, int level, Cherm
             float w = exp(-2.0f * r2) - 0.13533528f;  // exp(-2)
             Chermain2020Cell c = chermain2020_cell(ivec2(x, y), level, d, log_density, relative_area,
                                                    density_randomization, seed);
-            sum_p += w * chermain2020_cell_p22(c, slope, d, alpha_x, alpha_y);
+            float p22 = chermain2020_cell_p22(c, slope, d, alpha_x, alpha_y);
+            if (p22 > 0.0f) sum_p += (w * p22) * chermain2020_cell_colour(c, colours);
             sum_w += w;
         }
     }
@@ -168,14 +188,15 @@ float chermain2020_level_p22(vec2 slope, vec2 uv, vec3 ellipse, int level, Cherm
     // Footprint smaller than a cell (only at level 0): the cell under its centre.
     Chermain2020Cell c = chermain2020_cell(ivec2(floor(centre)), level, d, log_density, relative_area,
                                            density_randomization, seed);
-    return chermain2020_cell_p22(c, slope, d, alpha_x, alpha_y);
+    return chermain2020_cell_p22(c, slope, d, alpha_x, alpha_y) * chermain2020_cell_colour(c, colours);
 }
 
-// D_P(h) of Eq. 13 over the footprint (Algorithm 1), h in the local frame.
-float chermain2020_ndf(vec3 h, Footprint fp, Chermain2020Dict d, float alpha_x, float alpha_y,
-                       float log_density, uint seed, float relative_area, float max_anisotropy,
-                       float density_randomization) {
-    if (h.z <= 0.0f) return 0.0f;
+// RGB D_P(h) of Eq. 13 over the footprint (Algorithm 1) with coloured glints,
+// h in the local frame.
+vec3 chermain2020_ndf_rgb(vec3 h, Footprint fp, Chermain2020Dict d, float alpha_x, float alpha_y,
+                          float log_density, uint seed, float relative_area, float max_anisotropy,
+                          float density_randomization, Chermain2020Colours colours) {
+    if (h.z <= 0.0f) return vec3(0.0f);
     vec2 slope = vec2(-h.x / h.z, -h.y / h.z);  // normalToSlope (Eq. 1)
     vec3 ellipse = chermain2020_footprint_ellipse(fp.duvdx, fp.duvdy, max_anisotropy);
     // Line 6: l = max(0, nLevels - 1 + log2(minor)); levels above 28 would
@@ -183,15 +204,28 @@ float chermain2020_ndf(vec3 h, Footprint fp, Chermain2020Dict d, float alpha_x, 
     float lod = clamp(float(d.n_levels - 1) + log2(ellipse.y), 0.0f, 28.0f);
     int l0 = int(floor(lod));
     float w = lod - float(l0);
-    float p = chermain2020_level_p22(slope, fp.uv, ellipse, l0, d, alpha_x, alpha_y, log_density,
-                                     relative_area, density_randomization, seed);
+    vec3 p = chermain2020_level_p22(slope, fp.uv, ellipse, l0, d, alpha_x, alpha_y, log_density,
+                                    relative_area, density_randomization, seed, colours);
     if (w > 0.0f) {  // line 8: lerp of the two discrete P-SDFs (Eq. 12)
-        float p1 = chermain2020_level_p22(slope, fp.uv, ellipse, l0 + 1, d, alpha_x, alpha_y,
-                                          log_density, relative_area, density_randomization, seed);
+        vec3 p1 = chermain2020_level_p22(slope, fp.uv, ellipse, l0 + 1, d, alpha_x, alpha_y,
+                                         log_density, relative_area, density_randomization, seed,
+                                         colours);
         p = mix(p, p1, w);
     }
     float c2 = h.z * h.z;
     return p / (c2 * c2);  // Eq. 13
+}
+
+// Scalar D_P(h) of Eq. 13 (no colour table), h in the local frame.
+float chermain2020_ndf(vec3 h, Footprint fp, Chermain2020Dict d, float alpha_x, float alpha_y,
+                       float log_density, uint seed, float relative_area, float max_anisotropy,
+                       float density_randomization) {
+    Chermain2020Colours none;
+    none.count = 0;
+    for (int i = 0; i < CHERMAIN2020_MAX_COLOURS; ++i) none.table[i] = vec3(1.0f);
+    return chermain2020_ndf_rgb(h, fp, d, alpha_x, alpha_y, log_density, seed, relative_area,
+                                max_anisotropy, density_randomization, none)
+        .x;
 }
 
 #endif

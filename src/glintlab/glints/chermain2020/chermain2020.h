@@ -35,6 +35,11 @@ struct Chermain2020CellInfo {
 float chermain2020_ndf(glm::vec3 h, const Footprint& footprint, const Chermain2020Target& target,
                        const Chermain2020Params& params);
 
+// RGB D_P(h) with the colour table of params (coloured glints); equal to
+// chermain2020_ndf in every channel when params.colour_count = 0.
+glm::vec3 chermain2020_ndf_rgb(glm::vec3 h, const Footprint& footprint,
+                               const Chermain2020Target& target, const Chermain2020Params& params);
+
 // The smooth Beckmann D(h) the model converges to (004 §4.3).
 float chermain2020_target_ndf(glm::vec3 h, const Chermain2020Target& target);
 
@@ -52,6 +57,8 @@ glm::vec2 chermain2020_dict_slope(const Chermain2020CellInfo& cell, glm::vec2 sl
 
 // The material's D_P: desc.params must hold Chermain2020Params.
 float chermain2020_footprint_ndf(glm::vec3 h, const Footprint& footprint, const GlintDesc& desc);
+glm::vec3 chermain2020_footprint_ndf_rgb(glm::vec3 h, const Footprint& footprint,
+                                         const GlintDesc& desc);
 
 // Reads the "chermain2020" block into desc.params with range checks; rejects
 // a material whose ndf is not Beckmann (004 §4.3: the SDF must be separable).

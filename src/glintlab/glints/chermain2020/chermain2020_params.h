@@ -4,6 +4,10 @@
 // are the glint material's shared parameters.
 #pragma once
 
+#include <array>
+
+#include <glm/glm.hpp>
+
 namespace glintlab {
 
 struct Chermain2020Params {
@@ -13,6 +17,10 @@ struct Chermain2020Params {
     float max_anisotropy = 8.0f;
     // zeta (004 §7.1, Alg. 3 line 8): std-dev of the distribution LOD, [0, 8].
     float density_randomization = 0.0f;
+    // Coloured glints (004 §7.1, Alg. 3 lines 11-12, 19): each cell tints its
+    // SDF with colour_table[floor(colour_count * U_c)]; 0 colours = white.
+    int colour_count = 0;
+    std::array<glm::vec3, 8> colour_table{};  // CHERMAIN2020_MAX_COLOURS
 };
 
 }  // namespace glintlab

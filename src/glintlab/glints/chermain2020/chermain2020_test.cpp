@@ -160,5 +160,68 @@ TEST(Chermain2020, ReadsParametersAndRejectsGgx) {
     }
 }
 
+TEST(Chermain2020, ColouredGlintsSplitTheScalarSdf) {
+    // Alg. 3 lines 11-12, 19: each cell multiplies its SDF by one table colour.
+    // With the table {red, blue} every cell's contribution goes to exactly one
+    // of R and B, so R + B equals the scalar D_P (up to fp32 rounding of the
+    // sums) and G is 0; a one-colour table scales D_P by that colour.
+    Chermain2020Target t;
+    t.alpha_x = t.alpha_y = 0.4f;
+    t.log_density = 22.0f;
+    Chermain2020Params two;
+    two.colour_count = 2;
+    two.colour_table[0] = glm::vec3(1, 0, 0);
+    two.colour_table[1] = glm::vec3(0, 0, 1);
+    Chermain2020Params one;
+    one.colour_count = 1;
+    one.colour_table[0] = glm::vec3(0.25f, 0.5f, 1.0f);
+    Pcg32 rng(5, 11);
+    double red = 0.0, total = 0.0;
+    for (int i = 0; i < 400; ++i) {
+        const glm::vec2 uv(rng.next_float(), rng.next_float());
+        const Footprint fp =
+            footprint_at(uv, 2e-4f, 1.0f + 3.0f * rng.next_float(), 6.28f * rng.next_float());
+        const glm::vec3 h = glm::normalize(
+            glm::vec3(0.4f * (rng.next_float() - 0.5f), 0.4f * (rng.next_float() - 0.5f), 1.0f));
+        const float d = chermain2020_ndf(h, fp, t, Chermain2020Params{});
+        const glm::vec3 rb = chermain2020_ndf_rgb(h, fp, t, two);
+        EXPECT_EQ(rb.y, 0.0f);
+        EXPECT_NEAR(rb.x + rb.z, d, 1e-5f * d + 1e-30f);
+        const glm::vec3 c = chermain2020_ndf_rgb(h, fp, t, one);
+        EXPECT_NEAR(c.x, 0.25f * d, 1e-6f * d + 1e-30f);
+        EXPECT_NEAR(c.z, d, 1e-6f * d + 1e-30f);
+        red += rb.x;
+        total += d;
+    }
+    // Colours are drawn uniformly per cell: the red share of the summed D_P is
+    // 1/2 up to the spread of the per-cell weights; with ~400 footprints of
+    // tens of cells each the share's std-dev is < 2 %, so 0.5 +- 0.08 is > 4 sigma.
+    ASSERT_GT(total, 0.0);
+    EXPECT_NEAR(red / total, 0.5, 0.08);
+}
+
+TEST(Chermain2020, ReadsColourTable) {
+    GlintDesc desc;
+    desc.ndf = NdfType::Beckmann;
+    const nlohmann::json ok_json = {{"colours", {{1, 0.5, 0}, {0, 0, 1}}}};
+    JsonObject ok(ok_json, "/materials/0/chermain2020", "scene.json");
+    read_chermain2020_params(ok, desc);
+    const auto& p = std::get<Chermain2020Params>(desc.params);
+    EXPECT_EQ(p.colour_count, 2);
+    EXPECT_EQ(p.colour_table[0], glm::vec3(1, 0.5f, 0));
+    for (const nlohmann::json& bad_json :
+         {nlohmann::json{{"colours", nlohmann::json::array()}},
+          nlohmann::json{{"colours", {{1, 2, 0}}}},
+          nlohmann::json{{"colours", nlohmann::json(9, {0.5, 0.5, 0.5})}}}) {
+        JsonObject bad(bad_json, "/materials/0/chermain2020", "scene.json");
+        try {
+            read_chermain2020_params(bad, desc);
+            ADD_FAILURE() << "accepted " << bad_json.dump();
+        } catch (const Error& e) {
+            EXPECT_NE(std::string(e.what()).find("colours"), std::string::npos) << e.what();
+        }
+    }
+}
+
 }  // namespace
 }  // namespace glintlab
