@@ -12,26 +12,31 @@ void add_bench_command(CLI::App& app, int* status) {
     auto json = std::make_shared<bool>(false);
     CLI::App* sub = app.add_subcommand(
         "bench", "Time every glint model on the 000 Table 1 scenes (CPU direct integrator)");
-    sub->add_option("--scene", o->scenes, "Scenes (default: all): PLANE_90 PLANE_25 HEIGHTMAP_90 "
-                                          "HEIGHTMAP_25 SPHERE TORUS MANY");
-    sub->add_option("--model", o->models, "Glint models (default: all registered)");
+    sub->add_option("--scene", o->scenes,
+                    "Scenes (default: all): PLANE_90 PLANE_25 HEIGHTMAP_90 "
+                    "HEIGHTMAP_25 SPHERE MONKEY MANY (and TORUS)");
+    sub->add_option("--model", o->models,
+                    "Glint models (default: smooth deliot2023 zirr2016 chermain2020)");
     sub->add_option("--res", *res, "Resolution WxH (default 320x180)");
     sub->add_option("--frames", o->frames, "Timed frames per point (median kept)")
         ->check(CLI::Range(1, 1000));
-    sub->add_option("--threads", o->threads, "Worker threads (0 = all cores)")->check(CLI::Range(0, 1024));
+    sub->add_option("--threads", o->threads, "Worker threads (0 = all cores)")
+        ->check(CLI::Range(0, 1024));
     sub->add_flag("--json", *json, "Print one JSON object");
     sub->callback([o, res, json, status] {
         if (!res->empty()) {
             int w = 0, h = 0;
             char x = 0, extra = 0;
-            if (std::sscanf(res->c_str(), "%d%c%d%c", &w, &x, &h, &extra) != 3 || x != 'x' || w < 1 ||
-                h < 1 || w > 16384 || h > 16384)
+            if (std::sscanf(res->c_str(), "%d%c%d%c", &w, &x, &h, &extra) != 3 || x != 'x' ||
+                w < 1 || h < 1 || w > 16384 || h > 16384)
                 fail("--res: expected WxH with W and H in [1, 16384], got \"{}\"", *res);
             o->width = w, o->height = h;
         }
         const auto rows = run_table1(*o);
-        if (*json) fmt::print("{}\n", table1_to_json(*o, rows).dump(2));
-        else fmt::print("{}", table1_to_text(*o, rows));
+        if (*json)
+            fmt::print("{}\n", table1_to_json(*o, rows).dump(2));
+        else
+            fmt::print("{}", table1_to_text(*o, rows));
         *status = 0;
     });
 }

@@ -15,8 +15,8 @@ struct Table1Options {
     std::vector<std::string> scenes;  // empty: all of table1_scene_names()
     std::vector<std::string> models;  // empty: every registered glint model
     int width = 320, height = 180;
-    int frames = 3;     // timed frames per (scene, model, density); the median is kept
-    int threads = 0;    // 0: all cores
+    int frames = 3;   // timed frames per (scene, model, density); the median is kept
+    int threads = 0;  // 0: all cores
     std::vector<float> log_densities = {8.0f, 12.0f, 16.0f, 20.0f};
 };
 
@@ -26,9 +26,10 @@ struct Table1Row {
     double min_ms = 0.0, max_ms = 0.0;
 };
 
-// PLANE_90, PLANE_25, HEIGHTMAP_90, HEIGHTMAP_25, SPHERE, TORUS (the
-// MONKEY-like mesh scene: no CC0 mesh with uvs is available offline, so a
-// finely tessellated torus stands in), MANY (a grid of 64 spheres).
+// PLANE_90, PLANE_25, HEIGHTMAP_90, HEIGHTMAP_25, SPHERE, MONKEY (the
+// MONKEY-like mesh: the procedural head of scene/shapes.h, 64k triangles with
+// uvs; no CC0 Suzanne is available offline), MANY (a grid of 64 spheres).
+// TORUS (a tessellated torus) is accepted too.
 std::vector<std::string> table1_scene_names();
 
 // Throws glintlab::Error naming an unknown scene or model.

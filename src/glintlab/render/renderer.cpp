@@ -19,11 +19,15 @@ constexpr int kTileSize = 16;
 }  // namespace
 
 Image render_scene(const Scene& scene, const RenderOptions& options) {
+    const Accelerator accel(scene);
+    return render_scene(scene, accel, options);
+}
+
+Image render_scene(const Scene& scene, const Accelerator& accel, const RenderOptions& options) {
     const Camera& camera = scene.camera;
     const int width = camera.width, height = camera.height;
     const int spp = scene.render.spp;
     const bool path = scene.render.integrator == RenderSettings::Integrator::Path;
-    const Accelerator accel(scene);
     // One sample per pixel looks at the pixel centre with the whole pixel's
     // footprint, like a real-time shader. With several samples, positions are
     // jittered over the pixel; the path integrator then shrinks footprints by
@@ -41,26 +45,28 @@ Image render_scene(const Scene& scene, const RenderOptions& options) {
     if (options.threads > 0)
         limit = std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism,
                                                       static_cast<size_t>(options.threads));
-    tbb::parallel_for(tbb::blocked_range<int>(0, tiles_x * tiles_y, 1), [&](const tbb::blocked_range<int>& r) {
-        for (int tile = r.begin(); tile != r.end(); ++tile) {
-            const int x0 = (tile % tiles_x) * kTileSize, y0 = (tile / tiles_x) * kTileSize;
-            for (int y = y0; y < std::min(y0 + kTileSize, height); ++y)
-                for (int x = x0; x < std::min(x0 + kTileSize, width); ++x) {
-                    Pcg32 rng = pixel_stream(x, y, scene.render.seed);
-                    glm::dvec3 sum(0.0);
-                    for (int s = 0; s < spp; ++s) {
-                        glm::vec2 jitter(0.5f);
-                        if (spp > 1) jitter = {rng.next_float(), rng.next_float()};
-                        const RayDifferential ray =
-                            camera.generate(glm::vec2(static_cast<float>(x), static_cast<float>(y)) + jitter);
-                        const glm::vec3 L = path ? integrate_path(ctx, ray, rng) : integrate_direct(ctx, ray, rng);
-                        sum += glm::dvec3(L);
+    tbb::parallel_for(
+        tbb::blocked_range<int>(0, tiles_x * tiles_y, 1), [&](const tbb::blocked_range<int>& r) {
+            for (int tile = r.begin(); tile != r.end(); ++tile) {
+                const int x0 = (tile % tiles_x) * kTileSize, y0 = (tile / tiles_x) * kTileSize;
+                for (int y = y0; y < std::min(y0 + kTileSize, height); ++y)
+                    for (int x = x0; x < std::min(x0 + kTileSize, width); ++x) {
+                        Pcg32 rng = pixel_stream(x, y, scene.render.seed);
+                        glm::dvec3 sum(0.0);
+                        for (int s = 0; s < spp; ++s) {
+                            glm::vec2 jitter(0.5f);
+                            if (spp > 1) jitter = {rng.next_float(), rng.next_float()};
+                            const RayDifferential ray = camera.generate(
+                                glm::vec2(static_cast<float>(x), static_cast<float>(y)) + jitter);
+                            const glm::vec3 L = path ? integrate_path(ctx, ray, rng)
+                                                     : integrate_direct(ctx, ray, rng);
+                            sum += glm::dvec3(L);
+                        }
+                        image.at(x, y) = glm::vec3(sum / static_cast<double>(spp));
                     }
-                    image.at(x, y) = glm::vec3(sum / static_cast<double>(spp));
-                }
-            progress.update();
-        }
-    });
+                progress.update();
+            }
+        });
     progress.done();
     return image;
 }

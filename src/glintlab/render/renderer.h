@@ -13,6 +13,12 @@ struct RenderOptions {
     bool quiet = false;  // no progress bar
 };
 
+class Accelerator;
+
+// Builds the scene's Embree BVH, then renders.
 Image render_scene(const Scene& scene, const RenderOptions& options);
+// Renders with a BVH built beforehand from the same scene's shapes (benchmarks
+// time frames without the build; materials and lights may differ).
+Image render_scene(const Scene& scene, const Accelerator& accel, const RenderOptions& options);
 
 }  // namespace glintlab

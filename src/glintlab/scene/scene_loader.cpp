@@ -59,7 +59,8 @@ std::vector<std::string> metal_names() {
 
 void read_conductor_ior(JsonObject& o, glm::vec3* eta, glm::vec3* k) {
     if (o.has("metal")) {
-        if (o.has("eta") || o.has("k")) o.error("metal", "give either \"metal\" or \"eta\"/\"k\", not both");
+        if (o.has("eta") || o.has("k"))
+            o.error("metal", "give either \"metal\" or \"eta\"/\"k\", not both");
         const std::string name = o.string("metal", "", metal_names());
         for (const MetalPreset& m : kMetals)
             if (name == m.name) *eta = m.eta, *k = m.k;
@@ -165,8 +166,9 @@ Transform read_transform(JsonObject& parent) {
     Transform t;
     if (o.has("scale")) {
         const nlohmann::json* s = o.raw("scale");
-        glm::vec3 f = s->is_number() ? glm::vec3(static_cast<float>(o.number("scale", 1.0, 1e-6, 1e6)))
-                                      : o.vec3("scale", glm::vec3(1.0f), -1e6f, 1e6f);
+        glm::vec3 f = s->is_number()
+                          ? glm::vec3(static_cast<float>(o.number("scale", 1.0, 1e-6, 1e6)))
+                          : o.vec3("scale", glm::vec3(1.0f), -1e6f, 1e6f);
         for (int i = 0; i < 3; ++i)
             if (std::abs(f[i]) < 1e-6f) o.error("scale", "scale factors must be non-zero");
         t = Transform::scale(f) * t;
@@ -207,8 +209,10 @@ TriangleMesh read_heightfield(JsonObject& o) {
             const int x0 = static_cast<int>(fx), y0 = static_cast<int>(fy);
             const int x1 = std::min(x0 + 1, w - 1), y1 = std::min(y0 + 1, h - 1);
             const float tx = fx - static_cast<float>(x0), ty = fy - static_cast<float>(y0);
-            const float a = glm::mix(luminance(image->at(x0, y0)), luminance(image->at(x1, y0)), tx);
-            const float b = glm::mix(luminance(image->at(x0, y1)), luminance(image->at(x1, y1)), tx);
+            const float a =
+                glm::mix(luminance(image->at(x0, y0)), luminance(image->at(x1, y0)), tx);
+            const float b =
+                glm::mix(luminance(image->at(x0, y1)), luminance(image->at(x1, y1)), tx);
             return 2.0f * glm::mix(a, b, ty) - 1.0f;
         });
     }
@@ -218,12 +222,13 @@ TriangleMesh read_heightfield(JsonObject& o) {
 void read_shape(JsonObject& o, LoadContext& ctx) {
     Shape shape;
     const std::string type = o.required_string(
-        "type", {"quad", "sphere", "torus", "heightfield", "obj", "gltf"});
+        "type", {"quad", "sphere", "torus", "head", "heightfield", "obj", "gltf"});
     shape.name = o.string("name", fmt::format("{}", o.path()));
     const std::string material = o.required_string("material");
     const auto it = ctx.material_index.find(material);
     if (it == ctx.material_index.end())
-        o.error("material", fmt::format("unknown material \"{}\" (define it under /materials)", material));
+        o.error("material",
+                fmt::format("unknown material \"{}\" (define it under /materials)", material));
     shape.material = it->second;
     const Transform transform = read_transform(o);
     const std::string where = fmt::format("{}: {}", o.file(), o.path());
@@ -238,10 +243,12 @@ void read_shape(JsonObject& o, LoadContext& ctx) {
         const float sx = glm::length(m[0]), sy = glm::length(m[1]), sz = glm::length(m[2]);
         const float tol = 1e-4f * sx;
         if (std::abs(sx - sy) > tol || std::abs(sx - sz) > tol ||
-            std::abs(glm::dot(m[0], m[1])) > tol * sx || std::abs(glm::dot(m[0], m[2])) > tol * sx ||
+            std::abs(glm::dot(m[0], m[1])) > tol * sx ||
+            std::abs(glm::dot(m[0], m[2])) > tol * sx ||
             std::abs(glm::dot(m[1], m[2])) > tol * sx || glm::determinant(m) <= 0.0f)
-            o.error("transform", "a sphere's transform must be a rotation, a uniform positive "
-                                 "scale and a translation (use a mesh for ellipsoids)");
+            o.error("transform",
+                    "a sphere's transform must be a rotation, a uniform positive "
+                    "scale and a translation (use a mesh for ellipsoids)");
         s.center = transform.apply_point(center);
         s.radius = radius * sx;
         s.rotation = m / sx;
@@ -254,11 +261,16 @@ void read_shape(JsonObject& o, LoadContext& ctx) {
         } else if (type == "torus") {
             const float major = static_cast<float>(o.number("major_radius", 1.0, 1e-6, kMaxCoord));
             const float minor = static_cast<float>(o.number("minor_radius", 0.3, 1e-6, kMaxCoord));
-            if (minor >= major) o.error("minor_radius", fmt::format("must be < major_radius = {}", major));
+            if (minor >= major)
+                o.error("minor_radius", fmt::format("must be < major_radius = {}", major));
             const int seg_major = o.integer("segments_major", 256, 3, 8192);
             const int seg_minor = o.integer("segments_minor", 128, 3, 8192);
             mesh = make_torus(major, minor, seg_major, seg_minor,
                               o.vec2("uv_scale", glm::vec2(1.0f), 1e-6f, 1e6f));
+        } else if (type == "head") {
+            mesh = make_head(o.integer("segments_phi", 256, 3, 8192),
+                             o.integer("rings_theta", 128, 2, 8192),
+                             o.vec2("uv_scale", glm::vec2(1.0f), 1e-6f, 1e6f));
         } else if (type == "heightfield") {
             mesh = read_heightfield(o);
         } else if (type == "obj") {
@@ -318,7 +330,9 @@ void read_light(JsonObject& o, Scene& scene) {
         const float scale = static_cast<float>(o.number("scale", 1.0, 0.0, 1e6));
         const float rotation = static_cast<float>(o.number("rotation_deg", 0.0, -360.0, 360.0));
         if (o.has("file") == o.has("radiance"))
-            o.error("file", "an environment light needs exactly one of \"file\" (lat-long .exr/.hdr) or \"radiance\"");
+            o.error("file",
+                    "an environment light needs exactly one of \"file\" (lat-long .exr/.hdr) or "
+                    "\"radiance\"");
         if (o.has("file")) {
             l.file = o.file_path("file");
             Image image = read_image(l.file);
@@ -343,8 +357,10 @@ Camera read_camera(JsonObject& o) {
     if (glm::length(c.target - c.eye) < 1e-6f) o.error("target", "target must differ from eye");
     if (glm::length(glm::cross(glm::normalize(c.target - c.eye), c.up)) < 1e-4f)
         o.error("up", "up must not be parallel to the viewing direction");
-    if (c.type == Camera::Type::Perspective) c.fov_deg = static_cast<float>(o.number("fov_deg", 40.0, 0.01, 179.0));
-    else c.ortho_height = static_cast<float>(o.number("height", 2.0, 1e-6, kMaxCoord));
+    if (c.type == Camera::Type::Perspective)
+        c.fov_deg = static_cast<float>(o.number("fov_deg", 40.0, 0.01, 179.0));
+    else
+        c.ortho_height = static_cast<float>(o.number("height", 2.0, 1e-6, kMaxCoord));
     o.finish();
     return c;
 }
@@ -356,12 +372,15 @@ void check_model_lights(const Scene& scene) {
         for (const Light& l : scene.lights) {
             const char* unsupported = nullptr;
             if (std::holds_alternative<PointLight>(l) && !info->point_lights) unsupported = "point";
-            if (std::holds_alternative<DirectionalLight>(l) && !info->directional_lights) unsupported = "directional";
-            if (std::holds_alternative<SphereLight>(l) && !info->sphere_lights) unsupported = "sphere";
-            if (std::holds_alternative<EnvironmentLight>(l) && !info->environment_lights) unsupported = "environment";
+            if (std::holds_alternative<DirectionalLight>(l) && !info->directional_lights)
+                unsupported = "directional";
+            if (std::holds_alternative<SphereLight>(l) && !info->sphere_lights)
+                unsupported = "sphere";
+            if (std::holds_alternative<EnvironmentLight>(l) && !info->environment_lights)
+                unsupported = "environment";
             if (unsupported)
-                fail("{}: material \"{}\": glint model \"{}\" cannot shade {} lights", scene.file.string(),
-                     m.name, m.glint.model, unsupported);
+                fail("{}: material \"{}\": glint model \"{}\" cannot shade {} lights",
+                     scene.file.string(), m.name, m.glint.model, unsupported);
         }
     }
 }
@@ -378,9 +397,12 @@ Scene parse_scene(const nlohmann::json& document, const std::filesystem::path& f
         scene.camera.height = film->integer("height", 512, 1, 16384);
         scene.film.exposure = static_cast<float>(film->number("exposure", 0.0, -20.0, 20.0));
         if (auto bloom = film->object("bloom")) {
-            scene.film.bloom.strength = static_cast<float>(bloom->number("strength", 0.1, 0.0, 1.0));
-            scene.film.bloom.radius_px = static_cast<float>(bloom->number("radius_px", 8.0, 0.5, 1024.0));
-            scene.film.bloom.threshold = static_cast<float>(bloom->number("threshold", 1.0, 0.0, 1e9));
+            scene.film.bloom.strength =
+                static_cast<float>(bloom->number("strength", 0.1, 0.0, 1.0));
+            scene.film.bloom.radius_px =
+                static_cast<float>(bloom->number("radius_px", 8.0, 0.5, 1024.0));
+            scene.film.bloom.threshold =
+                static_cast<float>(bloom->number("threshold", 1.0, 0.0, 1e9));
             scene.film.bloom_exr = bloom->boolean("apply_to_exr", false);
             bloom->finish();
         }

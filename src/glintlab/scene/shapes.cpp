@@ -1,5 +1,6 @@
 #include "glintlab/scene/shapes.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include <glm/gtc/constants.hpp>
@@ -110,6 +111,64 @@ TriangleMesh make_torus(float major_radius, float minor_radius, int segments_maj
     }
     // cross(dp/da, dp/db) points away from the tube axis.
     add_grid_triangles(mesh, segments_major, segments_minor, /*pole_rows=*/false);
+    return mesh;
+}
+
+namespace {
+
+// Radius of the head along the unit direction d: a unit sphere plus bumps
+// exp((d·c − 1) / w) centred on feature directions c (w: angular width²/2).
+float head_radius(glm::vec3 d) {
+    auto bump = [&](glm::vec3 c, float height, float width) {
+        return height * std::exp((glm::dot(d, glm::normalize(c)) - 1.0f) / width);
+    };
+    float r = 1.0f;
+    r += bump({0.0f, -0.35f, 1.0f}, 0.28f, 0.06f);   // muzzle
+    r += bump({0.0f, 0.32f, 1.0f}, 0.10f, 0.04f);    // brow ridge
+    r += bump({0.0f, -0.2f, -1.0f}, 0.06f, 0.3f);    // back of the skull
+    r -= bump({0.36f, 0.15f, 1.0f}, 0.10f, 0.008f);  // eye sockets
+    r -= bump({-0.36f, 0.15f, 1.0f}, 0.10f, 0.008f);
+    r += bump({1.0f, 0.12f, -0.08f}, 0.55f, 0.010f);  // ears
+    r += bump({-1.0f, 0.12f, -0.08f}, 0.55f, 0.010f);
+    return r;
+}
+
+glm::vec3 head_point(float theta, float phi) {
+    // phi = 0 looks along -z, so the uv seam sits at the back of the head.
+    const float a = phi - glm::half_pi<float>();
+    const glm::vec3 d(std::sin(theta) * std::cos(a), std::cos(theta),
+                      std::sin(theta) * std::sin(a));
+    return head_radius(d) * d * glm::vec3(0.95f, 1.05f, 0.92f);
+}
+
+}  // namespace
+
+TriangleMesh make_head(int segments_phi, int rings_theta, glm::vec2 uv_scale) {
+    require_at_least("head", "segments_phi", segments_phi, 3);
+    require_at_least("head", "rings_theta", rings_theta, 2);
+    TriangleMesh mesh;
+    const size_t count = static_cast<size_t>(segments_phi + 1) * (rings_theta + 1);
+    mesh.positions.reserve(count);
+    mesh.normals.reserve(count);
+    mesh.uvs.reserve(count);
+    constexpr float kStep = 1e-3f;  // central differences for the tangents
+    for (int j = 0; j <= rings_theta; ++j) {
+        const float v = static_cast<float>(j) / static_cast<float>(rings_theta);
+        const float theta = v * glm::pi<float>();
+        // Tangents at the poles from a ring just off the pole (dp/dphi = 0 there).
+        const float tc = std::clamp(theta, 2.0f * kStep, glm::pi<float>() - 2.0f * kStep);
+        for (int i = 0; i <= segments_phi; ++i) {
+            const float u = static_cast<float>(i) / static_cast<float>(segments_phi);
+            const float phi = u * glm::two_pi<float>();
+            const glm::vec3 dphi = head_point(tc, phi + kStep) - head_point(tc, phi - kStep);
+            const glm::vec3 dtheta = head_point(tc + kStep, phi) - head_point(tc - kStep, phi);
+            // Same orientation as make_sphere: cross(dp/dphi, dp/dtheta) points outward.
+            mesh.positions.push_back(head_point(theta, phi));
+            mesh.normals.push_back(glm::normalize(glm::cross(dphi, dtheta)));
+            mesh.uvs.push_back(glm::vec2(u, v) * uv_scale);
+        }
+    }
+    add_grid_triangles(mesh, segments_phi, rings_theta, /*pole_rows=*/true);
     return mesh;
 }
 

@@ -29,4 +29,14 @@ TriangleMesh make_sphere(float radius, int segments_phi, int rings_theta);
 TriangleMesh make_torus(float major_radius, float minor_radius, int segments_major,
                         int segments_minor, glm::vec2 uv_scale);
 
+// A monkey-like head, glintlab's procedural stand-in for 000's MONKEY scene
+// (no CC0 Suzanne with uvs is available offline): a sphere of radius ~1
+// (facing +z, y up) deformed by smooth bumps into a skull with muzzle, brow,
+// eye sockets and ears, so it has the curvature range of a character mesh.
+// Same uv and grid layout as make_sphere (u = phi / 2pi with the seam at the
+// back, v = theta / pi from the +y pole), scaled by uv_scale; normals are the
+// normalised cross product of the parametric tangents. Released as CC0 with
+// glintlab (it is generated, not copied).
+TriangleMesh make_head(int segments_phi, int rings_theta, glm::vec2 uv_scale);
+
 }  // namespace glintlab

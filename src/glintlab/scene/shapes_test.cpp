@@ -149,6 +149,27 @@ TEST(MeshShapes, TorusNormalsUvsAndWinding) {
     expect_uvs_continuous(torus, uv_scale / glm::vec2(sm, sn));
 }
 
+TEST(MeshShapes, HeadNormalsUvsWindingAndFeatures) {
+    const int sp = 96, rt = 48;
+    const TriangleMesh head = make_head(sp, rt, glm::vec2(1.0f));
+    head.validate("head");
+    glm::vec3 lo(1e9f), hi(-1e9f);
+    for (size_t i = 0; i < head.positions.size(); ++i) {
+        EXPECT_NEAR(glm::length(head.normals[i]), 1.0f, 1e-5f);
+        // Star-shaped about the origin: normals never point inwards.
+        EXPECT_GT(glm::dot(head.normals[i], glm::normalize(head.positions[i])), 0.0f) << i;
+        lo = glm::min(lo, head.positions[i]);
+        hi = glm::max(hi, head.positions[i]);
+    }
+    expect_winding_matches_normals(head);
+    expect_uvs_continuous(head, glm::vec2(1.0f / sp, 1.0f / rt));
+    // Ears stick out sideways (radius 1 + 0.55, x scale 0.95) and the muzzle
+    // forwards (1 + ~0.28, z scale 0.92) beyond the unit sphere.
+    EXPECT_GT(hi.x, 1.35f);
+    EXPECT_LT(lo.x, -1.35f);
+    EXPECT_GT(hi.z, 1.05f);
+}
+
 TEST(MeshShapes, RejectsInvalidParameters) {
     EXPECT_THROW(make_quad({0.0f, 1.0f}, {1, 1}), Error);
     EXPECT_THROW(make_sphere(-1.0f, 8, 4), Error);
