@@ -7,6 +7,7 @@
 #include <tbb/parallel_for.h>
 
 #include "glintlab/core/rng.h"
+#include "glintlab/validate/random_queries.h"
 
 namespace glintlab {
 namespace {
@@ -14,30 +15,6 @@ namespace {
 constexpr double kPi = 3.14159265358979323846;
 constexpr int kBeckmann = 0;  // shader::NDF_BECKMANN
 constexpr int kGgx = 1;       // shader::NDF_GGX
-
-// A footprint whose ellipse has the given minor width, ratio and major-axis
-// angle: orthogonal pixel steps along the major and minor axes.
-Footprint make_footprint(glm::vec2 uv, double minor, double ratio, double angle) {
-    const glm::vec2 major_dir(static_cast<float>(std::cos(angle)),
-                              static_cast<float>(std::sin(angle)));
-    const glm::vec2 minor_dir(-major_dir.y, major_dir.x);
-    Footprint fp;
-    fp.uv = uv;
-    fp.duvdx = major_dir * static_cast<float>(minor * ratio);
-    fp.duvdy = minor_dir * static_cast<float>(minor);
-    return fp;
-}
-
-glm::vec3 half_vector(double tan_theta, double phi) {
-    const double c = 1.0 / std::sqrt(1.0 + tan_theta * tan_theta);
-    const double s = tan_theta * c;
-    return glm::vec3(static_cast<float>(s * std::cos(phi)), static_cast<float>(s * std::sin(phi)),
-                     static_cast<float>(c));
-}
-
-double log_uniform(Pcg32& rng, double lo_exp10, double hi_exp10) {
-    return std::pow(10.0, lo_exp10 + (hi_exp10 - lo_exp10) * rng.next_double());
-}
 
 }  // namespace
 
@@ -57,13 +34,13 @@ std::vector<ConvergenceCase> deliot2023_convergence(int footprints_per_case, uin
         // Footprints of minor width 1e-3 uv hold ~1e7 facets at ln density 30.
         target.log_density = 30.0f;
         Pcg32 rng(c, seed);
-        const glm::vec3 h = half_vector(k.tan_theta, 0.7);
+        const glm::vec3 h = half_vector_at(k.tan_theta, 0.7);
         double sum = 0.0;
         for (int i = 0; i < footprints_per_case; ++i) {
             target.seed = rng.next_uint();
             const glm::vec2 uv(rng.next_float() * 16.0f, rng.next_float() * 16.0f);
-            const Footprint fp = make_footprint(uv, 1e-3, log_uniform(rng, 0.0, std::log10(8.0)),
-                                                rng.next_double() * kPi);
+            const Footprint fp = oriented_footprint(
+                uv, 1e-3, pow10_uniform(rng, 0.0, std::log10(8.0)), rng.next_double() * kPi);
             sum += deliot2023_ndf(h, fp, target, params);
         }
         k.target = deliot2023_target_ndf(h, target);
@@ -103,7 +80,7 @@ std::vector<LodTransitionStep> deliot2023_lod_transition(int steps, int footprin
             target.seed = rng.next_uint();
             const glm::vec2 uv(rng.next_float() * 4.0f, rng.next_float() * 4.0f);
             const double ratio =
-                deliot2023_ndf(h, make_footprint(uv, minor, 1.0, 0.0), target, params) / d_h;
+                deliot2023_ndf(h, oriented_footprint(uv, minor, 1.0, 0.0), target, params) / d_h;
             sum += ratio;
             sum2 += ratio * ratio;
         }
@@ -126,47 +103,20 @@ RobustnessResult deliot2023_robustness(int64_t evaluations, uint64_t seed) {
         int64_t bf = 0, bo = 0;
         const int64_t end = std::min(evaluations, (b + 1) * kBlock);
         for (int64_t i = b * kBlock; i < end; ++i) {
-            // Half vector: uniform sphere (half of it below the horizon),
-            // grazing, or exactly the normal.
-            glm::vec3 h;
-            const uint32_t hk = rng.next_uint(8);
-            if (hk == 0)
-                h = glm::vec3(0.0f, 0.0f, 1.0f);
-            else if (hk == 1)
-                h = glm::normalize(glm::vec3(rng.next_float() - 0.5f, rng.next_float() - 0.5f,
-                                             static_cast<float>(log_uniform(rng, -30, -3))));
-            else {
-                const double z = 2.0 * rng.next_double() - 1.0, phi = 2.0 * kPi * rng.next_double();
-                const double r = std::sqrt(std::max(0.0, 1.0 - z * z));
-                h = glm::vec3(static_cast<float>(r * std::cos(phi)),
-                              static_cast<float>(r * std::sin(phi)), static_cast<float>(z));
-            }
-            // Footprint: zero, collinear, or any minor width / ratio over 40 decades.
-            const float su = rng.next_float() < 0.5f ? -1.0f : 1.0f;
-            const glm::vec2 uv(su * static_cast<float>(log_uniform(rng, -4, 7)),
-                               static_cast<float>(log_uniform(rng, -4, 7)));
-            Footprint fp = make_footprint(uv, log_uniform(rng, -25, 15), log_uniform(rng, 0, 12),
-                                          rng.next_double() * 2.0 * kPi);
-            const uint32_t fk = rng.next_uint(10);
-            if (fk == 0)
-                fp.duvdx = fp.duvdy = glm::vec2(0.0f);
-            else if (fk == 1)
-                fp.duvdy = fp.duvdx * (rng.next_float() - 0.5f);
-            else if (fk == 2)
-                fp.duvdy = glm::vec2(0.0f);
+            const RobustnessQuery q = draw_robustness_query(rng);
+            const glm::vec3 h = q.h;
+            const Footprint fp = q.footprint;
             Deliot2023Target t;
-            t.ndf = static_cast<int>(rng.next_uint(2));
-            t.alpha_x = static_cast<float>(log_uniform(rng, -3, 0));
-            t.alpha_y =
-                rng.next_float() < 0.5f ? t.alpha_x : static_cast<float>(log_uniform(rng, -3, 0));
-            const uint32_t dk = rng.next_uint(4);
-            t.log_density = dk == 0 ? -20.0f : dk == 1 ? 60.0f : -20.0f + 80.0f * rng.next_float();
-            t.seed = rng.next_uint();
+            t.ndf = q.ndf;
+            t.alpha_x = q.alpha_x;
+            t.alpha_y = q.alpha_y;
+            t.log_density = q.log_density;
+            t.seed = q.seed;
             Deliot2023Params p;
             const uint32_t rk = rng.next_uint(3);
             p.microfacet_roughness = rk == 0   ? 1e-4f
                                      : rk == 1 ? 1.0f
-                                               : static_cast<float>(log_uniform(rng, -4, 0));
+                                               : static_cast<float>(pow10_uniform(rng, -4, 0));
             const uint32_t sk = rng.next_uint(3);
             p.screen_space_scale = sk == 0 ? 0.5f : sk == 1 ? 8.0f : 0.5f + 7.5f * rng.next_float();
             const uint32_t ck = rng.next_uint(3);
@@ -198,19 +148,19 @@ CoherenceResult deliot2023_coherence(int pairs, double uv_step, double footprint
         t.seed = rng.next_uint();
         Deliot2023Params p;
         const glm::vec3 h =
-            half_vector(t.alpha_x * rng.next_double(), 2.0 * kPi * rng.next_double());
-        const double minor = log_uniform(rng, -4, -2);
+            half_vector_at(t.alpha_x * rng.next_double(), 2.0 * kPi * rng.next_double());
+        const double minor = pow10_uniform(rng, -4, -2);
         // Density for 10-1000 expected facets per simplex vertex (cell area
         // ~(minor S/2)^2): sparser vertices make D_P's relative change under
         // a uv move unbounded near a zero barycentric weight, though continuous.
         const double pr = p.microfacet_roughness * deliot2023_target_ndf(h, t) /
                           deliot2023_target_ndf(glm::vec3(0.0f, 0.0f, 1.0f), t);
         const double cell = minor * p.screen_space_scale * 0.5;
-        t.log_density = static_cast<float>(std::log(log_uniform(rng, 1, 3) / (pr * cell * cell)));
+        t.log_density = static_cast<float>(std::log(pow10_uniform(rng, 1, 3) / (pr * cell * cell)));
         const double angle = rng.next_double() * kPi;
-        const double ratio = log_uniform(rng, 0, 1.5);
+        const double ratio = pow10_uniform(rng, 0, 1.5);
         const glm::vec2 uv(rng.next_float(), rng.next_float());
-        const Footprint fp = make_footprint(uv, minor, ratio, angle);
+        const Footprint fp = oriented_footprint(uv, minor, ratio, angle);
         const float a = deliot2023_ndf(h, fp, t, p);
         const float a2 = deliot2023_ndf(h, fp, t, p);
         if (std::memcmp(&a, &a2, sizeof a) != 0) ++r.mismatches;

@@ -7,6 +7,7 @@
 #include <tbb/parallel_for.h>
 
 #include "glintlab/core/rng.h"
+#include "glintlab/validate/random_queries.h"
 
 namespace glintlab {
 namespace {
@@ -14,29 +15,6 @@ namespace {
 constexpr double kPi = 3.14159265358979323846;
 constexpr int kBeckmann = 0;  // shader::NDF_BECKMANN
 constexpr int kGgx = 1;       // shader::NDF_GGX
-
-// A footprint whose ellipse has the given minor width, ratio and major-axis
-// angle: orthogonal pixel steps along the major and minor axes.
-Footprint oriented_footprint(glm::vec2 uv, double minor, double ratio, double angle) {
-    const glm::vec2 major_dir(static_cast<float>(std::cos(angle)),
-                              static_cast<float>(std::sin(angle)));
-    Footprint fp;
-    fp.uv = uv;
-    fp.duvdx = major_dir * static_cast<float>(minor * ratio);
-    fp.duvdy = glm::vec2(-major_dir.y, major_dir.x) * static_cast<float>(minor);
-    return fp;
-}
-
-glm::vec3 half_vector_at(double tan_theta, double phi) {
-    const double c = 1.0 / std::sqrt(1.0 + tan_theta * tan_theta);
-    const double s = tan_theta * c;
-    return glm::vec3(static_cast<float>(s * std::cos(phi)), static_cast<float>(s * std::sin(phi)),
-                     static_cast<float>(c));
-}
-
-double pow10_uniform(Pcg32& rng, double lo_exp10, double hi_exp10) {
-    return std::pow(10.0, lo_exp10 + (hi_exp10 - lo_exp10) * rng.next_double());
-}
 
 }  // namespace
 
@@ -120,42 +98,15 @@ Zirr2016RobustnessResult zirr2016_robustness(int64_t evaluations, uint64_t seed)
         int64_t local_bad = 0;
         const int64_t end = std::min(evaluations, (b + 1) * kBlock);
         for (int64_t i = b * kBlock; i < end; ++i) {
-            // Half vector: the normal, grazing, or uniform on the sphere.
-            glm::vec3 h;
-            const uint32_t hk = rng.next_uint(8);
-            if (hk == 0) {
-                h = glm::vec3(0.0f, 0.0f, 1.0f);
-            } else if (hk == 1) {
-                h = glm::normalize(glm::vec3(rng.next_float() - 0.5f, rng.next_float() - 0.5f,
-                                             static_cast<float>(pow10_uniform(rng, -30, -3))));
-            } else {
-                const double z = 2.0 * rng.next_double() - 1.0, phi = 2.0 * kPi * rng.next_double();
-                const double r = std::sqrt(std::max(0.0, 1.0 - z * z));
-                h = glm::vec3(static_cast<float>(r * std::cos(phi)),
-                              static_cast<float>(r * std::sin(phi)), static_cast<float>(z));
-            }
-            // Footprint: any minor width / ratio over 40 decades, or degenerate.
-            const float su = rng.next_float() < 0.5f ? -1.0f : 1.0f;
-            const glm::vec2 uv(su * static_cast<float>(pow10_uniform(rng, -4, 7)),
-                               static_cast<float>(pow10_uniform(rng, -4, 7)));
-            Footprint fp =
-                oriented_footprint(uv, pow10_uniform(rng, -25, 15), pow10_uniform(rng, 0, 12),
-                                   rng.next_double() * 2.0 * kPi);
-            const uint32_t fk = rng.next_uint(10);
-            if (fk == 0)
-                fp.duvdx = fp.duvdy = glm::vec2(0.0f);
-            else if (fk == 1)
-                fp.duvdy = fp.duvdx * (rng.next_float() - 0.5f);
-            else if (fk == 2)
-                fp.duvdy = glm::vec2(0.0f);
+            const RobustnessQuery q = draw_robustness_query(rng);
+            const glm::vec3 h = q.h;
+            const Footprint fp = q.footprint;
             Zirr2016Target t;
-            t.ndf = static_cast<int>(rng.next_uint(2));
-            t.alpha_x = static_cast<float>(pow10_uniform(rng, -3, 0));
-            t.alpha_y =
-                rng.next_float() < 0.5f ? t.alpha_x : static_cast<float>(pow10_uniform(rng, -3, 0));
-            const uint32_t dk = rng.next_uint(4);
-            t.log_density = dk == 0 ? -20.0f : dk == 1 ? 60.0f : -20.0f + 80.0f * rng.next_float();
-            t.seed = rng.next_uint();
+            t.ndf = q.ndf;
+            t.alpha_x = q.alpha_x;
+            t.alpha_y = q.alpha_y;
+            t.log_density = q.log_density;
+            t.seed = q.seed;
             Zirr2016Params p;
             const uint32_t rk = rng.next_uint(3);
             p.microfacet_roughness = rk == 0   ? 1e-4f
