@@ -1,0 +1,295 @@
+#include "glintlab/realtime/forward_shaders.h"
+
+#include <fmt/format.h>
+
+#include "glintlab/realtime/glint_programs.h"
+
+namespace glintlab::gl {
+namespace {
+
+constexpr const char* kForwardVertex = R"(
+// Forward pass, vertex stage: world-space vertices (the scene's meshes are
+// stored in world space; spheres are tessellated in world space on upload).
+layout(location = 0) in vec3 a_position;
+layout(location = 1) in vec3 a_normal;
+layout(location = 2) in vec2 a_uv;
+layout(location = 3) in vec3 a_dpdu;
+uniform mat4 u_view_projection;
+out vec3 v_position;
+out vec3 v_normal;
+out vec2 v_uv;
+out vec3 v_dpdu;
+void main() {
+    v_position = a_position;
+    v_normal = a_normal;
+    v_uv = a_uv;
+    v_dpdu = a_dpdu;
+    gl_Position = u_view_projection * vec4(a_position, 1.0f);
+}
+)";
+
+// Declarations every forward variant shares, ahead of the model's glue.
+constexpr const char* kForwardHeader = R"(
+#include "glintlab/core/constants.glsl"
+#include "glintlab/core/footprint.glsl"
+#include "glintlab/microfacet/ndf.glsl"
+#include "glintlab/microfacet/masking.glsl"
+#include "glintlab/microfacet/fresnel.glsl"
+// The glint material's shared parameters (scene.h GlintDesc).
+uniform int u_glint_ndf;
+uniform vec2 u_glint_alpha;
+uniform float u_glint_log_density;
+uniform uint u_glint_seed;
+)";
+
+// The forward fragment stage after the glue: shading frame, footprint,
+// material BRDFs and the light loops.
+constexpr const char* kForwardBody = R"(
+in vec3 v_position;
+in vec3 v_normal;
+in vec2 v_uv;
+in vec3 v_dpdu;
+out vec4 o_radiance;
+
+// Per-triangle data of meshes (pbrt-v4 Triangle, as render/accel.cpp):
+// dp/du of the triangle's uv mapping and the geometric normal.
+struct TriangleFrame {
+    vec4 dpdu;
+    vec4 ng;
+};
+layout(std430, binding = 0) readonly buffer Triangles { TriangleFrame u_triangles[]; };
+uniform bool u_per_triangle_frame;  // meshes: SSBO; spheres: analytic vertex attributes
+uniform bool u_has_normals;         // meshes without normals shade with ng (faceted)
+
+uniform vec3 u_eye;
+uniform bool u_orthographic;
+uniform vec3 u_view_forward;
+
+uniform int u_material_type;  // GpuMaterialType
+uniform vec3 u_albedo;        // diffuse, plastic
+uniform int u_ndf;            // conductor, dielectric, plastic
+uniform vec2 u_alpha;
+uniform vec3 u_eta;
+uniform vec3 u_k;
+uniform vec3 u_emission;  // sphere-light shapes (outer side)
+// Glint material: colour and Fresnel (FresnelDesc: 0 none, 1 Schlick,
+// 2 conductor, 3 dielectric).
+uniform vec3 u_glint_color;
+uniform int u_fresnel_mode;
+uniform vec3 u_fresnel_f0;
+uniform vec3 u_fresnel_eta;
+uniform vec3 u_fresnel_k;
+
+#if GLINTLAB_POINT_LIGHTS > 0
+uniform vec3 u_point_position[GLINTLAB_POINT_LIGHTS];
+uniform vec3 u_point_intensity[GLINTLAB_POINT_LIGHTS];
+#endif
+#if GLINTLAB_DIRECTIONAL_LIGHTS > 0
+uniform vec3 u_directional_direction[GLINTLAB_DIRECTIONAL_LIGHTS];  // towards the light
+uniform vec3 u_directional_irradiance[GLINTLAB_DIRECTIONAL_LIGHTS];
+#endif
+
+// render/light_sampling.cpp orthonormal_basis (Duff et al. 2017).
+void orthonormal_basis(vec3 n, out vec3 t, out vec3 b) {
+    float s = n.z >= 0.0f ? 1.0f : -1.0f;
+    float a = -1.0f / (s + n.z);
+    float c = n.x * n.y * a;
+    t = vec3(1.0f + s * n.x * n.x * a, s * c, -s * n.x);
+    b = vec3(c, s + n.y * n.y * a, -n.y);
+}
+
+vec3 glint_fresnel(float cos_oh) {
+    if (u_fresnel_mode == 1) return F_Schlick(u_fresnel_f0, cos_oh);
+    if (u_fresnel_mode == 2) return F_Conductor(cos_oh, u_fresnel_eta, u_fresnel_k);
+    if (u_fresnel_mode == 3) return vec3(F_Dielectric(cos_oh, u_fresnel_eta.x));
+    return vec3(1.0f);
+}
+
+// f(wo, wi) without the cosine, local frame, both directions above the
+// surface (microfacet/bxdfs.cpp, glints/glint_bxdf.cpp).
+vec3 eval_bsdf(vec3 wo, vec3 wi, Footprint fp) {
+    if (wo.z <= 0.0f || wi.z <= 0.0f) return vec3(0.0f);
+    vec3 h = normalize(wo + wi);
+    if (u_material_type == 0) return u_albedo * INV_PI;
+    if (u_material_type == 4) {
+        // f = color F(wo.h) G2 D_P(h) / (4 cos_o cos_i), D_P over the footprint.
+        vec3 d = glint_ndf(h, fp);
+        float g = glint_masking(wo, wi, h);
+        return u_glint_color * glint_fresnel(dot(wo, h)) * d * (g / (4.0f * wo.z * wi.z));
+    }
+    bool smooth_lobe = max(u_alpha.x, u_alpha.y) < 1e-3f;  // kSmoothAlpha: a delta lobe
+    float dg = smooth_lobe ? 0.0f
+                           : D_Microfacet(u_ndf, h, u_alpha.x, u_alpha.y) *
+                                 G2_SmithCorrelated(u_ndf, wo, wi, u_alpha.x, u_alpha.y) /
+                                 (4.0f * wo.z * wi.z);
+    float cos_oh = abs(dot(wo, h));
+    if (u_material_type == 1) return F_Conductor(cos_oh, u_eta, u_k) * dg;
+    if (u_material_type == 2) return vec3(F_Dielectric(cos_oh, u_eta.x) * dg);  // reflection only
+    // Plastic: diffuse base under a dielectric coat.
+    float fo = F_Dielectric(wo.z, u_eta.x);
+    float fi = F_Dielectric(wi.z, u_eta.x);
+    return u_albedo * INV_PI * (1.0f - fo) * (1.0f - fi) + vec3(F_Dielectric(cos_oh, u_eta.x) * dg);
+}
+
+void main() {
+    vec3 p = v_position;
+    vec3 wo_world = u_orthographic ? -u_view_forward : normalize(u_eye - p);
+    vec3 radiance = vec3(0.0f);
+
+    vec3 ng;
+    vec3 dpdu;
+    if (u_per_triangle_frame) {
+        TriangleFrame tri = u_triangles[gl_PrimitiveID];
+        ng = tri.ng.xyz;
+        dpdu = tri.dpdu.xyz;
+    } else {
+        ng = normalize(v_normal);
+        dpdu = v_dpdu;
+    }
+    vec3 n = u_has_normals ? normalize(v_normal) : ng;
+    if (u_has_normals && dot(ng, n) < 0.0f) ng = -ng;
+    // Emitters: sphere lights shine from their outer side (integrators.cpp emitted()).
+    if (dot(ng, wo_world) > 0.0f) radiance += u_emission;
+
+    // Footprint (ARCHITECTURE.md §3): uv derivatives per pixel step. The image
+    // is read back with row 0 at the top, so +y on the CPU film is -y in
+    // window coordinates. Fine derivatives: per-pixel differences, not one
+    // per 2x2 quad.
+    Footprint fp;
+    fp.uv = v_uv;
+    fp.duvdx = dFdxFine(v_uv);
+    fp.duvdy = -dFdyFine(v_uv);
+
+    if (u_material_type >= 0) {
+        // Shading frame (render/surface_bsdf.cpp): tangent along dp/du,
+        // two-sided (flipped towards wo).
+        vec3 t = dpdu - n * dot(n, dpdu);
+        float len = length(t);
+        vec3 b;
+        if (len > 1e-12f && !isinf(len) && !isnan(len)) {
+            t = t / len;
+            b = cross(n, t);
+        } else {
+            orthonormal_basis(n, t, b);
+        }
+        if (u_material_type != 2 && dot(wo_world, n) < 0.0f) {
+            n = -n;
+            b = -b;
+        }
+        vec3 wo = vec3(dot(wo_world, t), dot(wo_world, b), dot(wo_world, n));
+#if GLINTLAB_POINT_LIGHTS > 0
+        for (int i = 0; i < GLINTLAB_POINT_LIGHTS; ++i) {
+            vec3 d = u_point_position[i] - p;
+            float r2 = dot(d, d);
+            vec3 w = d * inversesqrt(r2);
+            vec3 wi = vec3(dot(w, t), dot(w, b), dot(w, n));
+            if (wi.z <= 0.0f) continue;
+            radiance += eval_bsdf(wo, wi, fp) * u_point_intensity[i] * (wi.z / r2);
+        }
+#endif
+#if GLINTLAB_DIRECTIONAL_LIGHTS > 0
+        for (int i = 0; i < GLINTLAB_DIRECTIONAL_LIGHTS; ++i) {
+            vec3 w = u_directional_direction[i];
+            vec3 wi = vec3(dot(w, t), dot(w, b), dot(w, n));
+            if (wi.z <= 0.0f) continue;
+            radiance += eval_bsdf(wo, wi, fp) * u_directional_irradiance[i] * wi.z;
+        }
+#endif
+    }
+    // Non-finite results are dropped as the CPU integrators do.
+    if (any(isnan(radiance)) || any(isinf(radiance))) radiance = vec3(0.0f);
+    o_radiance = vec4(radiance, 1.0f);
+}
+)";
+
+constexpr const char* kFullscreenVertex = R"(
+// One triangle covering the viewport; v_ndc in [-1, 1]^2.
+out vec2 v_ndc;
+void main() {
+    vec2 p = vec2(float((gl_VertexID << 1) & 2), float(gl_VertexID & 2));
+    v_ndc = p * 2.0f - 1.0f;
+    gl_Position = vec4(v_ndc, 1.0f, 1.0f);
+}
+)";
+
+// Background: the environment (or black) seen along each camera ray through
+// the pixel centre; scene/environment.cpp direction_to_uv and bilinear eval
+// (texel centres at (i + 0.5) / W, u wraps, v clamps: GL_REPEAT /
+// GL_CLAMP_TO_EDGE with GL_LINEAR and no mipmaps do the same).
+constexpr const char* kBackgroundFragment = R"(
+#include "glintlab/core/constants.glsl"
+in vec2 v_ndc;
+out vec4 o_radiance;
+uniform mat4 u_inverse_view_projection;
+uniform bool u_orthographic;
+uniform vec3 u_view_forward;
+uniform bool u_has_environment;
+uniform float u_environment_scale;
+uniform float u_environment_rotation;  // radians about +y
+layout(binding = 0) uniform sampler2D u_environment;
+void main() {
+    if (!u_has_environment) {
+        o_radiance = vec4(0.0f, 0.0f, 0.0f, 1.0f);
+        return;
+    }
+    vec4 a = u_inverse_view_projection * vec4(v_ndc, -1.0f, 1.0f);
+    vec4 c = u_inverse_view_projection * vec4(v_ndc, 1.0f, 1.0f);
+    vec3 d = u_orthographic ? u_view_forward : normalize(c.xyz / c.w - a.xyz / a.w);
+    float theta = acos(clamp(d.y, -1.0f, 1.0f));
+    float phi = atan(d.x, -d.z) - u_environment_rotation;
+    float u = 0.5f + phi * INV_TWO_PI;
+    u -= floor(u);
+    vec3 env = textureLod(u_environment, vec2(u, theta * INV_PI), 0.0f).rgb;
+    o_radiance = vec4(u_environment_scale * env, 1.0f);
+}
+)";
+
+constexpr const char* kTonemapFragment = R"(
+in vec2 v_ndc;
+out vec4 o_color;
+layout(binding = 0) uniform sampler2D u_hdr;
+uniform float u_exposure_scale;  // 2^stops
+// core/image.cpp srgb_encode (IEC 61966-2-1).
+float srgb_encode(float x) {
+    return x <= 0.0031308f ? 12.92f * x : 1.055f * pow(x, 1.0f / 2.4f) - 0.055f;
+}
+void main() {
+    vec3 c = texelFetch(u_hdr, ivec2(gl_FragCoord.xy), 0).rgb * u_exposure_scale;
+    o_color = vec4(clamp(srgb_encode(c.r), 0.0f, 1.0f), clamp(srgb_encode(c.g), 0.0f, 1.0f),
+                   clamp(srgb_encode(c.b), 0.0f, 1.0f), 1.0f);
+}
+)";
+
+}  // namespace
+
+std::string ProgramKey::name() const {
+    const GlintModelInfo* info = find_glint_model(model);
+    return fmt::format("forward[{}, {} point, {} directional]", info ? info->name : "?",
+                       point_lights, directional_lights);
+}
+
+AssembledShader forward_vertex_shader() {
+    return assemble_shader(kForwardVertex, true);
+}
+
+AssembledShader forward_fragment_shader(const ProgramKey& key) {
+    std::string text =
+        fmt::format("#define GLINTLAB_POINT_LIGHTS {}\n#define GLINTLAB_DIRECTIONAL_LIGHTS {}\n",
+                    key.point_lights, key.directional_lights);
+    text += kForwardHeader;
+    text += glint_model_glsl(key.model);
+    text += kForwardBody;
+    return assemble_shader(text, true);
+}
+
+AssembledShader background_vertex_shader() {
+    return assemble_shader(kFullscreenVertex, true);
+}
+AssembledShader background_fragment_shader() {
+    return assemble_shader(kBackgroundFragment, true);
+}
+AssembledShader tonemap_fragment_shader() {
+    return assemble_shader(kTonemapFragment, true);
+}
+
+}  // namespace glintlab::gl

@@ -1,0 +1,45 @@
+// GLSL of the forward renderer: one program per (glint model, light set)
+// variant (the light counts are compile-time constants so loops unroll and
+// uniform arrays have their exact size). Assembled from the shared .glsl
+// files by core/shader_assembly: includes resolved, #line directives, so a
+// driver error names the shared file and line.
+#pragma once
+
+#include <compare>
+#include <string>
+
+#include "glintlab/core/shader_assembly.h"
+#include "glintlab/glints/registry.h"
+
+namespace glintlab::gl {
+
+struct ProgramKey {
+    GlintModelId model = GlintModelId::Smooth;
+    int point_lights = 0;        // point lights and sphere lights (as points, see .cpp)
+    int directional_lights = 0;  // delta or cone (cone shaded at its axis)
+    auto operator<=>(const ProgramKey&) const = default;
+    std::string name() const;  // "forward[deliot2023, 1 point, 0 directional]"
+};
+
+// Texture units of the forward shader.
+inline constexpr int kEnvironmentUnit = 0;
+
+AssembledShader forward_vertex_shader();
+AssembledShader forward_fragment_shader(const ProgramKey& key);
+AssembledShader background_vertex_shader();
+AssembledShader background_fragment_shader();
+// Full-screen tonemap (viewer display): 2^exposure, sRGB encode, clamp —
+// the convention of core/image.h write_png.
+AssembledShader tonemap_fragment_shader();
+
+// Material type codes of the forward shader (u_material_type).
+enum class GpuMaterialType : int {
+    EmissionOnly = -1,
+    Diffuse = 0,
+    Conductor,
+    Dielectric,
+    Plastic,
+    Glint
+};
+
+}  // namespace glintlab::gl

@@ -1,0 +1,231 @@
+#include "glintlab/realtime/glint_programs.h"
+
+#include <variant>
+
+#include <epoxy/gl.h>
+
+#include "glintlab/core/error.h"
+#include "glintlab/glints/chermain2020/dictionary.h"
+#include "glintlab/realtime/uniform_cache.h"
+#include "glintlab/scene/scene.h"
+
+namespace glintlab::gl {
+namespace {
+
+// The forward shader declares the shared glint uniforms used below:
+// u_glint_ndf (NDF_BECKMANN / NDF_GGX), u_glint_alpha (alpha_x, alpha_y),
+// u_glint_log_density, u_glint_seed.
+constexpr const char* kSmoothGlue = R"(
+vec3 glint_ndf(vec3 h, Footprint fp) {
+    return vec3(D_Microfacet(u_glint_ndf, h, u_glint_alpha.x, u_glint_alpha.y));
+}
+float glint_masking(vec3 wo, vec3 wi, vec3 h) {
+    return G2_SmithCorrelated(u_glint_ndf, wo, wi, u_glint_alpha.x, u_glint_alpha.y);
+}
+)";
+
+// deliot2023 (papers/000): D_P of Eq. 3-4 with the hash uniforms (the CPU
+// default; the 64x64 noise-table variant is a CPU speed experiment).
+constexpr const char* kDeliot2023Glue = R"(
+#include "glintlab/glints/deliot2023/deliot2023.glsl"
+uniform float u_deliot2023_microfacet_roughness;
+uniform float u_deliot2023_screen_space_scale;
+uniform float u_deliot2023_density_randomization;
+uniform bool u_deliot2023_original_defects;
+vec3 glint_ndf(vec3 h, Footprint fp) {
+    return vec3(deliot2023_ndf(h, fp, u_glint_ndf, u_glint_alpha.x, u_glint_alpha.y,
+                               u_glint_log_density, u_glint_seed,
+                               u_deliot2023_microfacet_roughness, u_deliot2023_screen_space_scale,
+                               u_deliot2023_density_randomization, u_deliot2023_original_defects));
+}
+float glint_masking(vec3 wo, vec3 wi, vec3 h) {
+    return G2_SmithCorrelated(u_glint_ndf, wo, wi, u_glint_alpha.x, u_glint_alpha.y);
+}
+)";
+
+// zirr2016 (000's baseline [ZK16]).
+constexpr const char* kZirr2016Glue = R"(
+#include "glintlab/glints/zirr2016/zirr2016.glsl"
+uniform float u_zirr2016_microfacet_roughness;
+uniform float u_zirr2016_max_anisotropy;
+uniform float u_zirr2016_screen_space_scale;
+vec3 glint_ndf(vec3 h, Footprint fp) {
+    return vec3(zirr2016_ndf(h, fp, u_glint_ndf, u_glint_alpha.x, u_glint_alpha.y,
+                             u_glint_log_density, u_glint_seed, u_zirr2016_microfacet_roughness,
+                             u_zirr2016_max_anisotropy, u_zirr2016_screen_space_scale));
+}
+float glint_masking(vec3 wo, vec3 wi, vec3 h) {
+    return G2_SmithCorrelated(u_glint_ndf, wo, wi, u_glint_alpha.x, u_glint_alpha.y);
+}
+)";
+
+// chermain2020 (papers/004): RGB D_P of Eq. 13 with the colour table, the
+// dictionary through chermain2020.glsl's own sampler `chermain2020_dictionary`,
+// V-cavity masking (004 Eq. 14-16) as GlintBxdf uses.
+constexpr const char* kChermain2020Glue = R"(
+#include "glintlab/glints/chermain2020/chermain2020.glsl"
+uniform ivec3 u_chermain2020_dict_shape;  // n_levels, n_dists, table_size
+uniform vec2 u_chermain2020_dict_range;   // alpha_dict, slope_max
+uniform float u_chermain2020_relative_area;
+uniform float u_chermain2020_max_anisotropy;
+uniform float u_chermain2020_density_randomization;
+uniform int u_chermain2020_colour_count;
+uniform vec3 u_chermain2020_colours[CHERMAIN2020_MAX_COLOURS];
+vec3 glint_ndf(vec3 h, Footprint fp) {
+    Chermain2020Dict d;
+    d.n_levels = u_chermain2020_dict_shape.x;
+    d.n_dists = u_chermain2020_dict_shape.y;
+    d.table_size = u_chermain2020_dict_shape.z;
+    d.alpha_dict = u_chermain2020_dict_range.x;
+    d.slope_max = u_chermain2020_dict_range.y;
+    Chermain2020Colours colours;
+    colours.count = u_chermain2020_colour_count;
+    for (int i = 0; i < CHERMAIN2020_MAX_COLOURS; ++i) colours.table[i] = u_chermain2020_colours[i];
+    return chermain2020_ndf_rgb(h, fp, d, u_glint_alpha.x, u_glint_alpha.y, u_glint_log_density,
+                                u_glint_seed, u_chermain2020_relative_area,
+                                u_chermain2020_max_anisotropy,
+                                u_chermain2020_density_randomization, colours);
+}
+float glint_masking(vec3 wo, vec3 wi, vec3 h) { return G2_VCavity(wo, wi, h); }
+)";
+
+constexpr int kChermain2020DictionaryUnit = kFirstModelTextureUnit;
+
+}  // namespace
+
+bool gpu_supports_model(GlintModelId model) {
+    switch (model) {
+        case GlintModelId::Smooth:
+        case GlintModelId::Deliot2023:
+        case GlintModelId::Zirr2016:
+        case GlintModelId::Chermain2020:
+            return true;
+        default:
+            return false;
+    }
+}
+
+std::string glint_model_glsl(GlintModelId model) {
+    switch (model) {
+        case GlintModelId::Smooth:
+            return kSmoothGlue;
+        case GlintModelId::Deliot2023:
+            return kDeliot2023Glue;
+        case GlintModelId::Zirr2016:
+            return kZirr2016Glue;
+        case GlintModelId::Chermain2020:
+            return kChermain2020Glue;
+        default:
+            break;
+    }
+    const GlintModelInfo* info = find_glint_model(model);
+    fail(
+        "OpenGL renderer: glint model \"{}\" has no GPU implementation (GPU models: smooth, "
+        "deliot2023, zirr2016, chermain2020)",
+        info != nullptr ? info->name : "?");
+}
+
+GlintResources::GlintResources() = default;
+
+GlintResources::~GlintResources() {
+    if (chermain2020_dictionary_ != 0) glDeleteTextures(1, &chermain2020_dictionary_);
+}
+
+void GlintResources::bind(GlintModelId model) {
+    if (model != GlintModelId::Chermain2020) return;
+    if (chermain2020_dictionary_ == 0) {
+        // 004 §4.4-4.5: one row per (marginal, level), one texel per table
+        // sample; read with texelFetch (the shared code interpolates itself).
+        const Dictionary& d = default_dictionary();
+        const int width = d.params.table_size;
+        const int height = d.params.n_dists * d.params.n_levels;
+        GLint max_size = 0;
+        glGetIntegerv(GL_MAX_TEXTURE_SIZE, &max_size);
+        if (width > max_size || height > max_size)
+            fail(
+                "OpenGL renderer: the chermain2020 dictionary ({}x{} texels) exceeds "
+                "GL_MAX_TEXTURE_SIZE = {}",
+                width, height, max_size);
+        glCreateTextures(GL_TEXTURE_2D, 1, &chermain2020_dictionary_);
+        glTextureStorage2D(chermain2020_dictionary_, 1, GL_R32F, width, height);
+        glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+        glTextureSubImage2D(chermain2020_dictionary_, 0, 0, 0, width, height, GL_RED, GL_FLOAT,
+                            d.values.data());
+        glTextureParameteri(chermain2020_dictionary_, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+        glTextureParameteri(chermain2020_dictionary_, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    }
+    glBindTextureUnit(kChermain2020DictionaryUnit, chermain2020_dictionary_);
+}
+
+void set_glint_uniforms(unsigned program, UniformCache& u, const GlintDesc& desc) {
+    auto loc = [&](const char* name) { return u.location(program, name); };
+    switch (desc.model_id) {
+        case GlintModelId::Deliot2023: {
+            const auto& p = std::get<Deliot2023Params>(desc.params);
+            glProgramUniform1f(program, loc("u_deliot2023_microfacet_roughness"),
+                               p.microfacet_roughness);
+            glProgramUniform1f(program, loc("u_deliot2023_screen_space_scale"),
+                               p.screen_space_scale);
+            glProgramUniform1f(program, loc("u_deliot2023_density_randomization"),
+                               p.density_randomization);
+            glProgramUniform1i(program, loc("u_deliot2023_original_defects"),
+                               p.original_defects ? 1 : 0);
+            break;
+        }
+        case GlintModelId::Zirr2016: {
+            const auto& p = std::get<Zirr2016Params>(desc.params);
+            glProgramUniform1f(program, loc("u_zirr2016_microfacet_roughness"),
+                               p.microfacet_roughness);
+            glProgramUniform1f(program, loc("u_zirr2016_max_anisotropy"), p.max_anisotropy);
+            glProgramUniform1f(program, loc("u_zirr2016_screen_space_scale"), p.screen_space_scale);
+            break;
+        }
+        case GlintModelId::Chermain2020: {
+            const auto& p = std::get<Chermain2020Params>(desc.params);
+            const Dictionary& d = default_dictionary();
+            glProgramUniform3i(program, loc("u_chermain2020_dict_shape"), d.params.n_levels,
+                               d.params.n_dists, d.params.table_size);
+            glProgramUniform2f(program, loc("u_chermain2020_dict_range"), d.params.alpha_dict,
+                               d.slope_max);
+            glProgramUniform1f(program, loc("u_chermain2020_relative_area"), p.relative_area);
+            glProgramUniform1f(program, loc("u_chermain2020_max_anisotropy"), p.max_anisotropy);
+            glProgramUniform1f(program, loc("u_chermain2020_density_randomization"),
+                               p.density_randomization);
+            glProgramUniform1i(program, loc("u_chermain2020_colour_count"), p.colour_count);
+            glProgramUniform3fv(program, loc("u_chermain2020_colours"),
+                                static_cast<GLsizei>(p.colour_table.size()), &p.colour_table[0].x);
+            glProgramUniform1i(program, loc("chermain2020_dictionary"),
+                               kChermain2020DictionaryUnit);
+            break;
+        }
+        default:
+            break;
+    }
+}
+
+void reset_model_params(GlintDesc& desc, GlintModelId model) {
+    const GlintModelInfo* info = find_glint_model(model);
+    if (info == nullptr) fail("unknown glint model id {}", static_cast<int>(model));
+    desc.model_id = model;
+    desc.model = std::string(info->name);
+    desc.model_params = nlohmann::json::object();
+    switch (model) {
+        case GlintModelId::Deliot2023:
+            desc.params = Deliot2023Params{};
+            break;
+        case GlintModelId::Zirr2016:
+            desc.params = Zirr2016Params{};
+            break;
+        case GlintModelId::Chermain2020:
+            // 004 §4.3: the multiscale SDF is separable only for Beckmann
+            // (the scene loader rejects chermain2020 with GGX).
+            desc.ndf = NdfType::Beckmann;
+            desc.params = Chermain2020Params{};
+            break;
+        default:
+            desc.params = SmoothParams{};
+            break;
+    }
+}
+
+}  // namespace glintlab::gl

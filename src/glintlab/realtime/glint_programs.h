@@ -1,0 +1,56 @@
+// The GPU host part of each glint model: the GLSL glue that includes the
+// model's shared .glsl (never a GPU-only copy) and exposes it to the forward
+// shader as
+//     vec3  glint_ndf(vec3 h, Footprint fp);          // D_P(h), RGB
+//     float glint_masking(vec3 wo, vec3 wi, vec3 h);   // the model's G2
+// and the C++ that feeds its uniforms and resources (chermain2020's
+// dictionary texture) from a GlintDesc. These mirror, term for term, what
+// glints/glint_bxdf.cpp evaluates on the CPU.
+#pragma once
+
+#include <string>
+
+#include "glintlab/glints/registry.h"
+
+namespace glintlab {
+
+struct GlintDesc;
+
+namespace gl {
+
+class UniformCache;
+
+// GLSL text of the model's glue (includes resolved by assemble_shader).
+// Throws glintlab::Error for a model the GPU renderer does not implement.
+std::string glint_model_glsl(GlintModelId model);
+
+// Whether the GPU renderer implements `model`.
+bool gpu_supports_model(GlintModelId model);
+
+// Texture units 0..3 are the forward shader's (see forward_shaders.cpp);
+// models use units from 4 on.
+inline constexpr int kFirstModelTextureUnit = 4;
+
+// Per-process GPU resources of the models (created on first use in the
+// current context, freed by release_glint_resources()).
+class GlintResources {
+  public:
+    GlintResources();
+    ~GlintResources();
+    GlintResources(const GlintResources&) = delete;
+    GlintResources& operator=(const GlintResources&) = delete;
+    // Binds what `model` needs to its texture units.
+    void bind(GlintModelId model);
+
+  private:
+    unsigned chermain2020_dictionary_ = 0;  // R32F texture, uploaded lazily
+};
+
+// Sets the model's uniforms of `program` from the material.
+void set_glint_uniforms(unsigned program, UniformCache& uniforms, const GlintDesc& desc);
+
+// Default parameters of `model` (the viewer's model switcher).
+void reset_model_params(GlintDesc& desc, GlintModelId model);
+
+}  // namespace gl
+}  // namespace glintlab

@@ -1,0 +1,54 @@
+// CPU-side preparation of the shapes for the OpenGL renderer (no GL calls,
+// unit-testable): interleaved world-space vertices, indices and the
+// per-triangle frames the forward shader reads by gl_PrimitiveID.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "glintlab/scene/scene.h"
+
+namespace glintlab {
+
+struct GpuVertex {
+    glm::vec3 position{0.0f};
+    glm::vec3 normal{0.0f};
+    glm::vec2 uv{0.0f};
+    glm::vec3 dpdu{0.0f};  // spheres only (analytic); meshes use GpuTriangleFrame
+};
+static_assert(sizeof(GpuVertex) == 11 * sizeof(float));
+
+// std430 layout of the shader's TriangleFrame.
+struct GpuTriangleFrame {
+    glm::vec4 dpdu{0.0f};  // xyz: dp/du of the triangle's uv mapping (pbrt-v4 Triangle)
+    glm::vec4 ng{0.0f};    // xyz: unit geometric normal cross(p1 - p0, p2 - p0)
+};
+
+struct GpuMeshData {
+    std::vector<GpuVertex> vertices;
+    std::vector<uint32_t> indices;
+    std::vector<GpuTriangleFrame> triangles;  // empty for spheres
+    bool per_triangle_frame = false;
+    bool has_normals = true;
+};
+
+// Tessellation of analytic spheres: segments in phi and rings in theta of
+// scene/shapes.cpp make_sphere (its uv = (phi / 2pi, theta / pi) is the
+// parameterisation of the CPU's analytic sphere, render/accel.cpp). 192 x 96
+// keeps the chord error below 1.4e-4 r.
+inline constexpr int kSphereSegments = 192;
+inline constexpr int kSphereRings = 96;
+
+GpuMeshData gpu_mesh_data(const Shape& shape);
+
+// dp/du of triangle (p0, p1, p2) with uvs (uv0, uv1, uv2) exactly as
+// render/accel.cpp triangle_hit, including its fallback for degenerate uvs.
+glm::vec3 triangle_dpdu(glm::vec3 p0, glm::vec3 p1, glm::vec3 p2, glm::vec2 uv0, glm::vec2 uv1,
+                        glm::vec2 uv2);
+
+// Bounding sphere (centre, radius) of every shape, for the depth range.
+glm::vec4 scene_bounds(const Scene& scene);
+
+}  // namespace glintlab

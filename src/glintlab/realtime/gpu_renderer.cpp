@@ -1,0 +1,387 @@
+#include "glintlab/realtime/gpu_renderer.h"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+
+#include <epoxy/gl.h>
+#include <glm/gtc/matrix_transform.hpp>
+#include <glm/gtc/type_ptr.hpp>
+
+#include "glintlab/core/error.h"
+#include "glintlab/realtime/forward_shaders.h"
+#include "glintlab/realtime/gl_context.h"
+#include "glintlab/realtime/gl_handles.h"
+#include "glintlab/realtime/gl_program.h"
+#include "glintlab/realtime/glint_programs.h"
+#include "glintlab/realtime/gpu_geometry.h"
+#include "glintlab/realtime/gpu_timer.h"
+#include "glintlab/realtime/uniform_cache.h"
+
+namespace glintlab {
+namespace {
+
+struct GpuShape {
+    gl::VertexArray vao;
+    gl::Buffer vertices, indices, triangles;
+    GLsizei index_count = 0;
+    bool per_triangle_frame = false;
+    bool has_normals = true;
+};
+
+GpuShape upload_shape(const Shape& shape) {
+    const GpuMeshData data = gpu_mesh_data(shape);
+    GpuShape g;
+    g.vao = gl::make_vertex_array();
+    g.vertices = gl::make_buffer();
+    g.indices = gl::make_buffer();
+    glNamedBufferStorage(g.vertices.get(),
+                         static_cast<GLsizeiptr>(data.vertices.size() * sizeof(GpuVertex)),
+                         data.vertices.data(), 0);
+    glNamedBufferStorage(g.indices.get(),
+                         static_cast<GLsizeiptr>(data.indices.size() * sizeof(uint32_t)),
+                         data.indices.data(), 0);
+    const GLuint vao = g.vao.get();
+    glVertexArrayVertexBuffer(vao, 0, g.vertices.get(), 0, sizeof(GpuVertex));
+    glVertexArrayElementBuffer(vao, g.indices.get());
+    const GLuint offsets[4] = {offsetof(GpuVertex, position), offsetof(GpuVertex, normal),
+                               offsetof(GpuVertex, uv), offsetof(GpuVertex, dpdu)};
+    const GLint sizes[4] = {3, 3, 2, 3};
+    for (GLuint a = 0; a < 4; ++a) {
+        glEnableVertexArrayAttrib(vao, a);
+        glVertexArrayAttribFormat(vao, a, sizes[a], GL_FLOAT, GL_FALSE, offsets[a]);
+        glVertexArrayAttribBinding(vao, a, 0);
+    }
+    if (!data.triangles.empty()) {
+        g.triangles = gl::make_buffer();
+        glNamedBufferStorage(
+            g.triangles.get(),
+            static_cast<GLsizeiptr>(data.triangles.size() * sizeof(GpuTriangleFrame)),
+            data.triangles.data(), 0);
+    }
+    g.index_count = static_cast<GLsizei>(data.indices.size());
+    g.per_triangle_frame = data.per_triangle_frame;
+    g.has_normals = data.has_normals;
+    return g;
+}
+
+gl::ProgramKey program_key(const Scene& scene, const Shape& shape) {
+    gl::ProgramKey key;
+    if (shape.material >= 0) {
+        const MaterialDesc& m = scene.materials[static_cast<size_t>(shape.material)];
+        if (m.type == MaterialDesc::Type::Glint) key.model = m.glint.model_id;
+    }
+    for (const Light& light : scene.lights) {
+        if (std::holds_alternative<PointLight>(light) || std::holds_alternative<SphereLight>(light))
+            ++key.point_lights;
+        if (std::holds_alternative<DirectionalLight>(light)) ++key.directional_lights;
+    }
+    return key;
+}
+
+int ndf_code(NdfType t) {
+    return t == NdfType::GGX ? 1 : 0;
+}  // ndf.glsl NDF_GGX / NDF_BECKMANN
+
+}  // namespace
+
+struct GpuRenderer::Impl {
+    std::vector<GpuShape> shapes;
+    glm::vec4 bounds{0.0f};
+    gl::Texture environment;
+    float environment_scale = 1.0f, environment_rotation = 0.0f;
+    std::map<gl::ProgramKey, gl::Program> programs;
+    gl::Program background;
+    gl::UniformCache uniforms;
+    gl::GlintResources glint_resources;
+    gl::Framebuffer fbo;
+    gl::Texture color, depth;
+    int width = 0, height = 0;
+    gl::PassTimer background_timer, forward_timer;
+    gl::VertexArray empty_vao;
+
+    GLuint program(const gl::ProgramKey& key) {
+        auto it = programs.find(key);
+        if (it != programs.end()) return it->second.get();
+        const GLuint p = gl::link_program(gl::forward_vertex_shader(),
+                                          gl::forward_fragment_shader(key), key.name());
+        programs.emplace(key, gl::Program(p));
+        return p;
+    }
+
+    void resize(int w, int h) {
+        if (w == width && h == height && fbo) return;
+        GLint max_size = 0;
+        glGetIntegerv(GL_MAX_RENDERBUFFER_SIZE, &max_size);
+        if (w < 1 || h < 1 || w > max_size || h > max_size)
+            fail("OpenGL renderer: resolution {}x{} outside [1, {}] (GL_MAX_RENDERBUFFER_SIZE)", w,
+                 h, max_size);
+        color = gl::make_texture(GL_TEXTURE_2D);
+        glTextureStorage2D(color.get(), 1, GL_RGBA32F, w, h);
+        glTextureParameteri(color.get(), GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+        glTextureParameteri(color.get(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+        depth = gl::make_texture(GL_TEXTURE_2D);
+        glTextureStorage2D(depth.get(), 1, GL_DEPTH_COMPONENT32F, w, h);
+        fbo = gl::make_framebuffer();
+        glNamedFramebufferTexture(fbo.get(), GL_COLOR_ATTACHMENT0, color.get(), 0);
+        glNamedFramebufferTexture(fbo.get(), GL_DEPTH_ATTACHMENT, depth.get(), 0);
+        const GLenum status = glCheckNamedFramebufferStatus(fbo.get(), GL_FRAMEBUFFER);
+        if (status != GL_FRAMEBUFFER_COMPLETE)
+            fail("OpenGL renderer: RGBA32F + depth framebuffer incomplete (status 0x{:x})",
+                 static_cast<unsigned>(status));
+        width = w;
+        height = h;
+    }
+
+    void set_material(GLuint p, const Scene& scene, const Shape& shape) {
+        auto loc = [&](const char* name) { return uniforms.location(p, name); };
+        glm::vec3 emission(0.0f);
+        if (shape.area_light >= 0)
+            if (const auto* l =
+                    std::get_if<SphereLight>(&scene.lights[static_cast<size_t>(shape.area_light)]))
+                emission = l->radiance;
+        glProgramUniform3fv(p, loc("u_emission"), 1, glm::value_ptr(emission));
+        if (shape.material < 0) {
+            glProgramUniform1i(p, loc("u_material_type"),
+                               static_cast<int>(gl::GpuMaterialType::EmissionOnly));
+            return;
+        }
+        const MaterialDesc& m = scene.materials[static_cast<size_t>(shape.material)];
+        int type = 0;
+        switch (m.type) {
+            case MaterialDesc::Type::Diffuse:
+                type = static_cast<int>(gl::GpuMaterialType::Diffuse);
+                break;
+            case MaterialDesc::Type::Conductor:
+                type = static_cast<int>(gl::GpuMaterialType::Conductor);
+                break;
+            case MaterialDesc::Type::Dielectric:
+                type = static_cast<int>(gl::GpuMaterialType::Dielectric);
+                break;
+            case MaterialDesc::Type::Plastic:
+                type = static_cast<int>(gl::GpuMaterialType::Plastic);
+                break;
+            case MaterialDesc::Type::Glint:
+                type = static_cast<int>(gl::GpuMaterialType::Glint);
+                break;
+        }
+        glProgramUniform1i(p, loc("u_material_type"), type);
+        glProgramUniform3fv(p, loc("u_albedo"), 1, glm::value_ptr(m.albedo));
+        glProgramUniform1i(p, loc("u_ndf"), ndf_code(m.ndf));
+        glProgramUniform2f(p, loc("u_alpha"), m.alpha_x, m.alpha_y);
+        glProgramUniform3fv(p, loc("u_eta"), 1, glm::value_ptr(m.eta));
+        glProgramUniform3fv(p, loc("u_k"), 1, glm::value_ptr(m.k));
+        if (m.type != MaterialDesc::Type::Glint) return;
+        const GlintDesc& g = m.glint;
+        glProgramUniform1i(p, loc("u_glint_ndf"), ndf_code(g.ndf));
+        glProgramUniform2f(p, loc("u_glint_alpha"), g.alpha_x, g.alpha_y);
+        glProgramUniform1f(p, loc("u_glint_log_density"), g.log_density);
+        glProgramUniform1ui(p, loc("u_glint_seed"), g.seed);
+        glProgramUniform3fv(p, loc("u_glint_color"), 1, glm::value_ptr(g.color));
+        glProgramUniform1i(p, loc("u_fresnel_mode"), static_cast<int>(g.fresnel.mode));
+        glProgramUniform3fv(p, loc("u_fresnel_f0"), 1, glm::value_ptr(g.fresnel.f0));
+        glProgramUniform3fv(p, loc("u_fresnel_eta"), 1, glm::value_ptr(g.fresnel.eta));
+        glProgramUniform3fv(p, loc("u_fresnel_k"), 1, glm::value_ptr(g.fresnel.k));
+        gl::set_glint_uniforms(p, uniforms, g);
+        glint_resources.bind(g.model_id);
+    }
+
+    void set_lights(GLuint p, const Scene& scene) {
+        std::vector<glm::vec3> point_position, point_intensity, dir_direction, dir_irradiance;
+        for (const Light& light : scene.lights) {
+            if (const auto* l = std::get_if<PointLight>(&light)) {
+                point_position.push_back(l->position);
+                point_intensity.push_back(l->intensity);
+            } else if (const auto* l = std::get_if<SphereLight>(&light)) {
+                // A sphere of radiance L seen whole from distance d gives the
+                // irradiance pi L r^2 / d^2 cos: a point of intensity pi r^2 L.
+                point_position.push_back(l->center);
+                point_intensity.push_back(glm::pi<float>() * l->radius * l->radius * l->radiance);
+            } else if (const auto* l = std::get_if<DirectionalLight>(&light)) {
+                dir_direction.push_back(l->direction);
+                dir_irradiance.push_back(l->irradiance);
+            }
+        }
+        auto loc = [&](const char* name) { return uniforms.location(p, name); };
+        auto set = [&](const char* name, const std::vector<glm::vec3>& v) {
+            if (!v.empty())
+                glProgramUniform3fv(p, loc(name), static_cast<GLsizei>(v.size()),
+                                    glm::value_ptr(v[0]));
+        };
+        set("u_point_position", point_position);
+        set("u_point_intensity", point_intensity);
+        set("u_directional_direction", dir_direction);
+        set("u_directional_irradiance", dir_irradiance);
+    }
+};
+
+GpuRenderer::GpuRenderer(const Scene& scene) : impl_(std::make_unique<Impl>()) {
+    require_gl45("OpenGL renderer");
+    Impl& r = *impl_;
+    for (const Shape& shape : scene.shapes) r.shapes.push_back(upload_shape(shape));
+    r.bounds = scene_bounds(scene);
+    if (scene.environment >= 0) {
+        const auto& env =
+            std::get<EnvironmentLight>(scene.lights[static_cast<size_t>(scene.environment)]);
+        if (!env.map)
+            fail("{}: OpenGL renderer: the environment light has no map loaded",
+                 scene.file.string());
+        const Image& image = env.map->image();
+        if (image.width < 1 || image.height < 1 || image.pixels.empty())
+            fail("{}: OpenGL renderer: the environment map {} is empty", scene.file.string(),
+                 env.file.string());
+        r.environment = gl::make_texture(GL_TEXTURE_2D);
+        glTextureStorage2D(r.environment.get(), 1, GL_RGB32F, image.width, image.height);
+        glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+        glTextureSubImage2D(r.environment.get(), 0, 0, 0, image.width, image.height, GL_RGB,
+                            GL_FLOAT, image.pixels.data());
+        glTextureParameteri(r.environment.get(), GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+        glTextureParameteri(r.environment.get(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+        glTextureParameteri(r.environment.get(), GL_TEXTURE_WRAP_S, GL_REPEAT);
+        glTextureParameteri(r.environment.get(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+        r.environment_scale = env.map->scale();
+        r.environment_rotation = glm::radians(env.map->rotation_deg());
+    }
+    r.background = gl::Program(gl::link_program(gl::background_vertex_shader(),
+                                                gl::background_fragment_shader(), "background"));
+    r.empty_vao = gl::make_vertex_array();
+    for (const Shape& shape : scene.shapes) {
+        const gl::ProgramKey key = program_key(scene, shape);
+        if (!gl::gpu_supports_model(key.model)) (void)gl::glint_model_glsl(key.model);  // throws
+        r.program(key);
+    }
+}
+
+GpuRenderer::~GpuRenderer() = default;
+
+void GpuRenderer::compile_all_models(const Scene& scene) {
+    Shape probe;
+    for (const GlintModelInfo& m : glint_models()) {
+        if (!gl::gpu_supports_model(m.id)) continue;
+        gl::ProgramKey key = program_key(scene, probe);
+        key.model = m.id;
+        impl_->program(key);
+    }
+}
+
+void GpuRenderer::render(const Scene& scene) {
+    Impl& r = *impl_;
+    if (scene.shapes.size() != r.shapes.size())
+        fail("OpenGL renderer: the scene's shapes changed after upload ({} != {})",
+             scene.shapes.size(), r.shapes.size());
+    r.resize(scene.camera.width, scene.camera.height);
+    const Camera& c = scene.camera;
+    const float aspect = static_cast<float>(c.width) / static_cast<float>(c.height);
+    // Depth range from the scene's bounding sphere.
+    const glm::vec3 centre(r.bounds);
+    const float radius = r.bounds.w;
+    const glm::vec3 forward = glm::normalize(c.target - c.eye);
+    const float along = glm::dot(centre - c.eye, forward);
+    const float far_plane = std::max(along + radius * 1.01f, 1e-3f);
+    const glm::mat4 view = glm::lookAt(c.eye, c.target, c.up);
+    glm::mat4 projection;
+    if (c.type == Camera::Type::Perspective) {
+        const float near_plane = std::max(along - radius * 1.01f, far_plane * 1e-5f);
+        projection = glm::perspective(glm::radians(c.fov_deg), aspect, near_plane, far_plane);
+    } else {
+        const float h = 0.5f * c.ortho_height;
+        projection = glm::ortho(-h * aspect, h * aspect, -h, h, along - radius * 1.01f, far_plane);
+    }
+    const glm::mat4 view_projection = projection * view;
+    const bool ortho = c.type == Camera::Type::Orthographic;
+
+    glBindFramebuffer(GL_FRAMEBUFFER, r.fbo.get());
+    glViewport(0, 0, r.width, r.height);
+    glDisable(GL_BLEND);
+    glDisable(GL_CULL_FACE);  // two-sided materials
+
+    // Pass 1: background (environment or black).
+    r.background_timer.begin();
+    glDisable(GL_DEPTH_TEST);
+    const GLuint bg = r.background.get();
+    const glm::mat4 inverse = glm::inverse(view_projection);
+    glProgramUniformMatrix4fv(bg, r.uniforms.location(bg, "u_inverse_view_projection"), 1, GL_FALSE,
+                              glm::value_ptr(inverse));
+    glProgramUniform1i(bg, r.uniforms.location(bg, "u_orthographic"), ortho ? 1 : 0);
+    glProgramUniform3fv(bg, r.uniforms.location(bg, "u_view_forward"), 1, glm::value_ptr(forward));
+    glProgramUniform1i(bg, r.uniforms.location(bg, "u_has_environment"), r.environment ? 1 : 0);
+    glProgramUniform1f(bg, r.uniforms.location(bg, "u_environment_scale"), r.environment_scale);
+    glProgramUniform1f(bg, r.uniforms.location(bg, "u_environment_rotation"),
+                       r.environment_rotation);
+    if (r.environment) glBindTextureUnit(gl::kEnvironmentUnit, r.environment.get());
+    glUseProgram(bg);
+    glBindVertexArray(r.empty_vao.get());
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+    r.background_timer.end();
+
+    // Pass 2: forward shading of every shape.
+    r.forward_timer.begin();
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_LESS);
+    glClearDepth(1.0);
+    glClear(GL_DEPTH_BUFFER_BIT);
+    for (size_t i = 0; i < r.shapes.size(); ++i) {
+        const Shape& shape = scene.shapes[i];
+        const GpuShape& g = r.shapes[i];
+        const GLuint p = r.program(program_key(scene, shape));
+        auto loc = [&](const char* name) { return r.uniforms.location(p, name); };
+        glProgramUniformMatrix4fv(p, loc("u_view_projection"), 1, GL_FALSE,
+                                  glm::value_ptr(view_projection));
+        glProgramUniform3fv(p, loc("u_eye"), 1, glm::value_ptr(c.eye));
+        glProgramUniform1i(p, loc("u_orthographic"), ortho ? 1 : 0);
+        glProgramUniform3fv(p, loc("u_view_forward"), 1, glm::value_ptr(forward));
+        glProgramUniform1i(p, loc("u_per_triangle_frame"), g.per_triangle_frame ? 1 : 0);
+        glProgramUniform1i(p, loc("u_has_normals"), g.has_normals ? 1 : 0);
+        r.set_material(p, scene, shape);
+        r.set_lights(p, scene);
+        if (g.triangles) glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, g.triangles.get());
+        glUseProgram(p);
+        glBindVertexArray(g.vao.get());
+        glDrawElements(GL_TRIANGLES, g.index_count, GL_UNSIGNED_INT, nullptr);
+    }
+    r.forward_timer.end();
+    glBindVertexArray(0);
+    glUseProgram(0);
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+}
+
+Image GpuRenderer::read_image() const {
+    const Impl& r = *impl_;
+    if (!r.color) fail("OpenGL renderer: read_image() before render()");
+    std::vector<float> rgba(static_cast<size_t>(r.width) * r.height * 4);
+    glPixelStorei(GL_PACK_ALIGNMENT, 4);
+    glGetTextureImage(r.color.get(), 0, GL_RGBA, GL_FLOAT,
+                      static_cast<GLsizei>(rgba.size() * sizeof(float)), rgba.data());
+    Image image(r.width, r.height);
+    for (int y = 0; y < r.height; ++y) {
+        const size_t row = static_cast<size_t>(r.height - 1 - y) * r.width;  // GL rows go up
+        for (int x = 0; x < r.width; ++x) {
+            const float* px = &rgba[(row + static_cast<size_t>(x)) * 4];
+            image.at(x, y) = glm::vec3(px[0], px[1], px[2]);
+        }
+    }
+    return image;
+}
+
+unsigned GpuRenderer::hdr_texture() const {
+    return impl_->color.get();
+}
+int GpuRenderer::width() const {
+    return impl_->width;
+}
+int GpuRenderer::height() const {
+    return impl_->height;
+}
+
+GpuPassTimes GpuRenderer::pass_times() {
+    return {impl_->background_timer.elapsed_ms(), impl_->forward_timer.elapsed_ms()};
+}
+
+Image render_scene_gpu(const Scene& scene) {
+    HeadlessContext context;
+    GpuRenderer renderer(scene);
+    renderer.render(scene);
+    return renderer.read_image();
+}
+
+}  // namespace glintlab

@@ -1,0 +1,67 @@
+// The OpenGL 4.5 forward renderer (ARCHITECTURE.md §7): draws the JSON scenes
+// of the CPU renderer (meshes, analytic spheres tessellated with the CPU's uv
+// parameterisation, camera, point/directional/sphere lights, environment
+// background) with every material, glints through each model's shared .glsl
+// (realtime/glint_programs.h). Output: linear radiance in an RGBA32F
+// framebuffer, read back as a glintlab::Image (row 0 at the top), so the EXR,
+// PNG (exposure) and bloom of the CPU path apply unchanged.
+//
+// Differences from the CPU `direct` integrator, by design of a forward
+// shader (docs/ARCHITECTURE.md "realtime/"): no shadows; sphere lights are
+// shaded as point lights of intensity pi r^2 L at their centre (exact for the
+// irradiance of a fully visible sphere); cone (sun) lights at their axis; the
+// environment is drawn as background but does not light surfaces; the
+// dielectric shows its reflection only.
+#pragma once
+
+#include <memory>
+
+#include "glintlab/core/image.h"
+#include "glintlab/scene/scene.h"
+
+namespace glintlab {
+
+struct GpuPassTimes {
+    double background_ms = 0.0;  // environment / clear pass
+    double forward_ms = 0.0;     // geometry + shading (the glint evaluation)
+};
+
+class GpuRenderer {
+  public:
+    // Needs a current OpenGL 4.5 core context (HeadlessContext or a GLFW
+    // window). Uploads the shapes and the environment of `scene` and compiles
+    // the programs it needs; throws glintlab::Error (with the shader log
+    // mapped to file:line) when a program does not compile.
+    explicit GpuRenderer(const Scene& scene);
+    ~GpuRenderer();
+    GpuRenderer(const GpuRenderer&) = delete;
+    GpuRenderer& operator=(const GpuRenderer&) = delete;
+
+    // Renders `scene` at its camera resolution. Camera, materials (including
+    // the glint model) and light parameters may change between calls; the
+    // shapes and the environment are those given to the constructor.
+    void render(const Scene& scene);
+
+    // The last frame: linear RGB, top row first.
+    Image read_image() const;
+    unsigned hdr_texture() const;  // GL name of the RGBA32F colour attachment
+    int width() const;
+    int height() const;
+
+    // GPU time of each pass of the last render() (waits for the queries).
+    GpuPassTimes pass_times();
+
+    // Compiles (once) the program of every glint model the GPU supports with
+    // the light set of `scene`; used by tests and by the viewer's switcher.
+    void compile_all_models(const Scene& scene);
+
+  private:
+    struct Impl;
+    std::unique_ptr<Impl> impl_;
+};
+
+// Renders `scene` headless (EGL) and returns the linear image: the GPU
+// counterpart of render_scene().
+Image render_scene_gpu(const Scene& scene);
+
+}  // namespace glintlab
