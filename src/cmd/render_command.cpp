@@ -1,7 +1,7 @@
+#include <charconv>
 #include <chrono>
 #include <filesystem>
 #include <optional>
-#include <charconv>
 
 #include <fmt/format.h>
 
@@ -10,6 +10,9 @@
 #include "glintlab/core/error.h"
 #include "glintlab/core/image.h"
 #include "glintlab/render/renderer.h"
+#if GLINTLAB_WITH_GL
+#include "glintlab/realtime/gpu_renderer.h"
+#endif
 #include "glintlab/scene/scene_loader.h"
 
 namespace glintlab::cmd {
@@ -25,6 +28,7 @@ struct RenderArgs {
     std::string integrator;
     std::optional<float> exposure;
     bool quiet = false;
+    bool gpu = false;
 };
 
 int run_render(const RenderArgs& a) {
@@ -39,10 +43,11 @@ int run_render(const RenderArgs& a) {
         const size_t x = a.res.find('x');
         int w = 0, h = 0;
         const char* end = a.res.data() + a.res.size();
-        const bool ok = x != std::string::npos &&
-                        std::from_chars(a.res.data(), a.res.data() + x, w).ptr == a.res.data() + x &&
-                        std::from_chars(a.res.data() + x + 1, end, h).ptr == end && x > 0 &&
-                        x + 1 < a.res.size();
+        const bool ok =
+            x != std::string::npos &&
+            std::from_chars(a.res.data(), a.res.data() + x, w).ptr == a.res.data() + x &&
+            std::from_chars(a.res.data() + x + 1, end, h).ptr == end && x > 0 &&
+            x + 1 < a.res.size();
         if (!ok) fail("--res: expected WxH with W and H in [1, 16384], got \"{}\"", a.res);
         if (w < 1 || h < 1 || w > 16384 || h > 16384)
             fail("--res: W and H must be in [1, 16384], got {}x{}", w, h);
@@ -60,7 +65,13 @@ int run_render(const RenderArgs& a) {
     }
 
     const auto start = std::chrono::steady_clock::now();
+#if GLINTLAB_WITH_GL
+    Image image =
+        a.gpu ? render_scene_gpu(scene) : render_scene(scene, RenderOptions{a.threads, a.quiet});
+#else
+    if (a.gpu) fail("--gpu: this glintlab was built without OpenGL (GLINTLAB_WITH_GL=OFF)");
     Image image = render_scene(scene, RenderOptions{a.threads, a.quiet});
+#endif
     const double seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     const bool bloom = scene.film.bloom.strength > 0.0f;
@@ -72,7 +83,9 @@ int run_render(const RenderArgs& a) {
     if (!a.quiet)
         fmt::print("rendered {} ({}x{}, {} spp, {}) in {:.2f} s -> {}, {}\n", a.scene,
                    scene.camera.width, scene.camera.height, scene.render.spp,
-                   scene.render.integrator == RenderSettings::Integrator::Path ? "path" : "direct",
+                   a.gpu                                                         ? "OpenGL forward"
+                   : scene.render.integrator == RenderSettings::Integrator::Path ? "path"
+                                                                                 : "direct",
                    seconds, exr.string(), png.string());
     return 0;
 }
@@ -100,6 +113,9 @@ void add_render_command(CLI::App& app, int* status) {
     sub->add_option("--exposure", args->exposure, "PNG exposure in stops (overrides the scene)")
         ->check(CLI::Range(-20.0f, 20.0f));
     sub->add_flag("-q,--quiet", args->quiet, "No progress bar or summary");
+    sub->add_flag("--gpu", args->gpu,
+                  "Render with the OpenGL 4.5 forward renderer, headless through EGL (one shading "
+                  "sample at each pixel centre; --spp and --integrator do not apply)");
     sub->callback([args, status] { *status = run_render(*args); });
 }
 
