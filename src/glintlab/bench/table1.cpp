@@ -12,6 +12,9 @@
 #include "glintlab/render/accel.h"
 #include "glintlab/render/renderer.h"
 #include "glintlab/scene/scene_loader.h"
+#if GLINTLAB_WITH_GL
+#include "glintlab/realtime/gpu_table1.h"
+#endif
 
 namespace glintlab {
 namespace {
@@ -80,6 +83,16 @@ double median(std::vector<double> v) {
 
 }  // namespace
 
+nlohmann::json table1_scene_json(const std::string& scene_name, const std::string& model,
+                                 float log_density, int width, int height) {
+    nlohmann::json j = scene_json(scene_name);
+    j["film"] = {{"width", width}, {"height", height}};
+    j["materials"] = {{{"name", "g"}, {"type", "glint"}, {"model", model},
+                       {"ndf", "beckmann"}, {"roughness", 0.3}, {"log_density", log_density},
+                       {"fresnel", {{"type", "conductor"}, {"metal", "silver"}}}}};
+    return j;
+}
+
 std::vector<std::string> table1_scene_names() {
     return {"PLANE_90", "PLANE_25", "HEIGHTMAP_90", "HEIGHTMAP_25", "SPHERE", "MONKEY", "MANY"};
 }
@@ -94,10 +107,17 @@ std::vector<Table1Row> run_table1(const Table1Options& options) {
     for (const std::string& m : models)
         if (!find_glint_model(m))
             fail("bench: unknown model \"{}\" (known: {})", m, glint_model_names());
+    if (options.gpu) {
+#if GLINTLAB_WITH_GL
+        return run_table1_gpu(options, scenes, models);
+#else
+        fail("bench --gpu: this glintlab was built without OpenGL (GLINTLAB_WITH_GL=OFF)");
+#endif
+    }
     std::vector<Table1Row> rows;
     for (const std::string& scene_name : scenes) {
         for (const std::string& model : models) {
-            Table1Row row{scene_name, model, {}, 0.0, 0.0};
+            Table1Row row{scene_name, model, {}, 0.0, 0.0, {}};
             for (float log_density : options.log_densities) {
                 nlohmann::json j = scene_json(scene_name);
                 j["film"] = {{"width", options.width}, {"height", options.height}};
@@ -134,26 +154,34 @@ std::vector<Table1Row> run_table1(const Table1Options& options) {
 
 nlohmann::json table1_to_json(const Table1Options& o, const std::vector<Table1Row>& rows) {
     nlohmann::json j;
-    j["benchmark"] = "table1_cpu";
-    j["integrator"] = "direct";
+    j["benchmark"] = o.gpu ? "table1_gpu" : "table1_cpu";
+    j["integrator"] = o.gpu ? "opengl_forward" : "direct";
+#if GLINTLAB_WITH_GL
+    if (o.gpu) j["device"] = gpu_bench_device();
+#endif
     j["resolution"] = {o.width, o.height};
     j["frames"] = o.frames;
     j["log_densities"] = o.log_densities;
     nlohmann::json arr = nlohmann::json::array();
     for (const Table1Row& r : rows)
-        arr.push_back({{"scene", r.scene},
-                       {"model", r.model},
-                       {"min_ms", r.min_ms},
-                       {"max_ms", r.max_ms},
-                       {"ms_per_density", r.ms_per_density}});
+    {
+        nlohmann::json row = {{"scene", r.scene},
+                              {"model", r.model},
+                              {"min_ms", r.min_ms},
+                              {"max_ms", r.max_ms},
+                              {"ms_per_density", r.ms_per_density}};
+        if (o.gpu) row["p90_ms_per_density"] = r.p90_ms_per_density;
+        arr.push_back(row);
+    }
     j["results"] = arr;
     return j;
 }
 
 std::string table1_to_text(const Table1Options& o, const std::vector<Table1Row>& rows) {
     std::string s = fmt::format(
-        "000 Table 1 on the CPU: direct integrator, {}x{}, median of {} frames, min-max over "
+        "000 Table 1 {}, {}x{}, median of {} frames, min-max over "
         "log_density {}\n",
+        o.gpu ? "on the GPU: OpenGL forward pass (GL_TIME_ELAPSED)" : "on the CPU: direct integrator",
         o.width, o.height, o.frames, fmt::join(o.log_densities, ", "));
     s += fmt::format("{:<14} {:<14} {:>10} {:>10} {:>14}\n", "scene", "model", "min ms", "max ms",
                      "max/smooth min");

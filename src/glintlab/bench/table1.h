@@ -18,12 +18,18 @@ struct Table1Options {
     int frames = 3;   // timed frames per (scene, model, density); the median is kept
     int threads = 0;  // 0: all cores
     std::vector<float> log_densities = {8.0f, 12.0f, 16.0f, 20.0f};
+    // OpenGL forward renderer instead of the CPU: each point is the median
+    // GL_TIME_ELAPSED of the forward pass over `frames` frames after
+    // `gpu_warmup` frames (realtime/gpu_bench.h).
+    bool gpu = false;
+    int gpu_warmup = 5;
 };
 
 struct Table1Row {
     std::string scene, model;
     std::vector<double> ms_per_density;  // median ms per frame, one per density
     double min_ms = 0.0, max_ms = 0.0;
+    std::vector<double> p90_ms_per_density;  // GPU only: 90th percentile per density
 };
 
 // PLANE_90, PLANE_25, HEIGHTMAP_90, HEIGHTMAP_25, SPHERE, MONKEY (the
@@ -31,6 +37,11 @@ struct Table1Row {
 // uvs; no CC0 Suzanne is available offline), MANY (a grid of 64 spheres).
 // TORUS (a tessellated torus) is accepted too.
 std::vector<std::string> table1_scene_names();
+
+// The scene file (JSON) of a Table 1 scene with a glint material "g" of
+// `model` at `log_density`, rendered at width x height.
+nlohmann::json table1_scene_json(const std::string& scene, const std::string& model,
+                                 float log_density, int width, int height);
 
 // Throws glintlab::Error naming an unknown scene or model.
 std::vector<Table1Row> run_table1(const Table1Options& options);

@@ -1,0 +1,61 @@
+#include "glintlab/realtime/gpu_table1.h"
+
+#include <algorithm>
+
+#include "glintlab/realtime/gl_context.h"
+#include "glintlab/realtime/gpu_renderer.h"
+#include "glintlab/realtime/gpu_timer.h"
+#include "glintlab/scene/scene_loader.h"
+
+namespace glintlab {
+namespace {
+
+std::string& device_name() {
+    static std::string name;
+    return name;
+}
+
+}  // namespace
+
+std::vector<Table1Row> run_table1_gpu(const Table1Options& options,
+                                      const std::vector<std::string>& scenes,
+                                      const std::vector<std::string>& models) {
+    HeadlessContext context;
+    device_name() = gl_description() + " (EGL " + context.platform() + ")";
+    std::vector<Table1Row> rows;
+    for (const std::string& scene_name : scenes) {
+        for (const std::string& model : models) {
+            Table1Row row;
+            row.scene = scene_name;
+            row.model = model;
+            for (float log_density : options.log_densities) {
+                const Scene scene = parse_scene(table1_scene_json(scene_name, model, log_density,
+                                                                  options.width, options.height),
+                                                "bench:" + scene_name);
+                GpuRenderer renderer(scene);
+                for (int f = 0; f < options.gpu_warmup; ++f) {
+                    renderer.render(scene);
+                    (void)renderer.pass_times();
+                }
+                std::vector<double> ms;
+                for (int f = 0; f < options.frames; ++f) {
+                    renderer.render(scene);
+                    ms.push_back(renderer.pass_times().forward_ms);
+                }
+                const gl::TimingStats s = gl::timing_stats(ms);
+                row.ms_per_density.push_back(s.median_ms);
+                row.p90_ms_per_density.push_back(s.p90_ms);
+            }
+            row.min_ms = *std::min_element(row.ms_per_density.begin(), row.ms_per_density.end());
+            row.max_ms = *std::max_element(row.ms_per_density.begin(), row.ms_per_density.end());
+            rows.push_back(std::move(row));
+        }
+    }
+    return rows;
+}
+
+std::string gpu_bench_device() {
+    return device_name();
+}
+
+}  // namespace glintlab

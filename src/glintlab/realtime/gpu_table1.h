@@ -1,0 +1,21 @@
+// `glintlab bench --gpu`: the 000 Table 1 scenes (bench/table1.h) timed on
+// the OpenGL forward renderer with GL_TIME_ELAPSED queries of the forward
+// pass: `gpu_warmup` frames first, then the median (and 90th percentile) of
+// `frames` frames per (scene, model, density).
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "glintlab/bench/table1.h"
+
+namespace glintlab {
+
+std::vector<Table1Row> run_table1_gpu(const Table1Options& options,
+                                      const std::vector<std::string>& scenes,
+                                      const std::vector<std::string>& models);
+
+// "OpenGL ... | renderer" of the EGL context the GPU bench uses.
+std::string gpu_bench_device();
+
+}  // namespace glintlab
