@@ -12,5 +12,8 @@ void add_info_command(CLI::App& app, int* status);
 void add_validate_command(CLI::App& app, int* status);
 void add_bench_command(CLI::App& app, int* status);
 void add_dict_command(CLI::App& app, int* status);
+#if GLINTLAB_WITH_GL
+void add_view_command(CLI::App& app, int* status);
+#endif
 
 }  // namespace glintlab::cmd

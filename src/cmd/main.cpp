@@ -16,6 +16,9 @@ int main(int argc, char** argv) {
     glintlab::cmd::add_validate_command(app, &status);
     glintlab::cmd::add_bench_command(app, &status);
     glintlab::cmd::add_dict_command(app, &status);
+#if GLINTLAB_WITH_GL
+    glintlab::cmd::add_view_command(app, &status);
+#endif
     if (argc > 1 && argv[1][0] != '-') {
         bool known = false;
         std::string names;

@@ -188,16 +188,19 @@ void HeadlessContext::make_current() const {
             static_cast<unsigned>(eglGetError()));
 }
 
+void check_gl45(const std::string& where, int version, bool desktop, int profile_mask,
+                const char* version_string) {
+    if (version < 45 || !desktop || (profile_mask & GL_CONTEXT_CORE_PROFILE_BIT) == 0)
+        fail("{}: OpenGL 4.5 core profile required, the driver gives \"{}\"", where,
+             version_string != nullptr ? version_string : "no version");
+}
+
 void require_gl45(const std::string& where) {
     const int version = epoxy_gl_version();  // 10 * major + minor
     GLint profile = 0;
     if (version >= 32) glGetIntegerv(GL_CONTEXT_PROFILE_MASK, &profile);
-    if (version < 45 || epoxy_is_desktop_gl() == 0 ||
-        (profile & GL_CONTEXT_CORE_PROFILE_BIT) == 0) {
-        const char* v = reinterpret_cast<const char*>(glGetString(GL_VERSION));
-        fail("{}: OpenGL 4.5 core profile required, the driver gives \"{}\"", where,
-             v != nullptr ? v : "no version");
-    }
+    check_gl45(where, version, epoxy_is_desktop_gl() != 0, profile,
+               reinterpret_cast<const char*>(glGetString(GL_VERSION)));
 }
 
 std::string gl_description() {

@@ -43,6 +43,12 @@ class HeadlessContext {
 // profile; `where` names the front end in the message.
 void require_gl45(const std::string& where);
 
+// The check of require_gl45 on explicit values (testable without a driver):
+// version = 10 * major + minor (epoxy_gl_version), desktop = not OpenGL ES,
+// profile_mask = GL_CONTEXT_PROFILE_MASK, version_string = GL_VERSION.
+void check_gl45(const std::string& where, int version, bool desktop, int profile_mask,
+                const char* version_string);
+
 // "OpenGL 4.5 (Core Profile) Mesa ... | llvmpipe (...)" of the current context.
 std::string gl_description();
 

@@ -373,6 +373,15 @@ int GpuRenderer::height() const {
     return impl_->height;
 }
 
+void GpuRenderer::set_environment(float scale, float rotation_deg) {
+    impl_->environment_scale = scale;
+    impl_->environment_rotation = glm::radians(rotation_deg);
+}
+
+bool GpuRenderer::has_environment() const {
+    return static_cast<bool>(impl_->environment);
+}
+
 GpuPassTimes GpuRenderer::pass_times() {
     return {impl_->background_timer.elapsed_ms(), impl_->forward_timer.elapsed_ms()};
 }

@@ -51,6 +51,11 @@ class GpuRenderer {
     // GPU time of each pass of the last render() (waits for the queries).
     GpuPassTimes pass_times();
 
+    // Environment radiance scale and rotation about +y (viewer controls);
+    // initially those of the scene's map.
+    void set_environment(float scale, float rotation_deg);
+    bool has_environment() const;
+
     // Compiles (once) the program of every glint model the GPU supports with
     // the light set of `scene`; used by tests and by the viewer's switcher.
     void compile_all_models(const Scene& scene);

@@ -1,0 +1,60 @@
+#include <charconv>
+#include <optional>
+
+#include "commands.h"
+#include "glintlab/core/error.h"
+#include "glintlab/realtime/viewer.h"
+#include "glintlab/scene/scene_loader.h"
+
+namespace glintlab::cmd {
+
+void add_view_command(CLI::App& app, int* status) {
+    struct Args {
+        std::string scene;
+        int frames = 0;
+        std::string screenshot;
+        std::string res;
+        std::optional<float> exposure;
+        bool no_ui = false;
+    };
+    auto a = std::make_shared<Args>();
+    CLI::App* sub = app.add_subcommand(
+        "view", "Interactive OpenGL viewer: orbit camera, model switcher, live parameters, GPU ms");
+    sub->add_option("scene", a->scene, "Scene file (JSON, see docs/SCENE_FORMAT.md)")
+        ->required()
+        ->check(CLI::ExistingFile);
+    sub->add_option("--frames", a->frames, "Close after N frames (scripted use; 0 = until closed)")
+        ->check(CLI::Range(0, 1000000));
+    sub->add_option("--screenshot", a->screenshot,
+                    "PNG written after the last of --frames (and the target of the P key)");
+    sub->add_option("--res", a->res, "Window size WxH (overrides the scene's film)");
+    sub->add_option("--exposure", a->exposure, "Exposure in stops (overrides the scene)")
+        ->check(CLI::Range(-20.0f, 20.0f));
+    sub->add_flag("--no-ui", a->no_ui, "Hide the Dear ImGui panel");
+    sub->callback([a, status] {
+        Scene scene = load_scene(a->scene);
+        if (!a->res.empty()) {
+            const size_t x = a->res.find('x');
+            int w = 0, h = 0;
+            const char* end = a->res.data() + a->res.size();
+            const bool ok =
+                x != std::string::npos && x > 0 &&
+                std::from_chars(a->res.data(), a->res.data() + x, w).ptr == a->res.data() + x &&
+                std::from_chars(a->res.data() + x + 1, end, h).ptr == end;
+            if (!ok || w < 1 || h < 1 || w > 16384 || h > 16384)
+                fail("--res: expected WxH with W and H in [1, 16384], got \"{}\"", a->res);
+            scene.camera.width = w, scene.camera.height = h;
+        }
+        if (a->exposure) scene.film.exposure = *a->exposure;
+        if (!a->screenshot.empty() && a->frames == 0)
+            fail("--screenshot needs --frames N (the screenshot is taken after frame N)");
+        ViewerOptions o;
+        o.frames = a->frames;
+        o.screenshot = a->screenshot;
+        o.show_ui = !a->no_ui;
+        run_viewer(std::move(scene), o);
+        *status = 0;
+    });
+}
+
+}  // namespace glintlab::cmd

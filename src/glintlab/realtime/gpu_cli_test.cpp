@@ -1,0 +1,148 @@
+// End-to-end checks of the GPU front ends: `glintlab render --gpu` writes
+// EXR + PNG, bad input to the GPU path is a clear message with a non-zero
+// exit, and `glintlab view` under Xvfb renders frames whose screenshot
+// matches the headless render of the same view.
+#include <gtest/gtest.h>
+
+#include <sys/wait.h>
+#include <array>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+
+#include <nlohmann/json.hpp>
+
+#include "glintlab/core/error.h"
+#include "glintlab/core/image.h"
+#include "glintlab/core/image_test_util.h"
+#include "glintlab/realtime/gl_context.h"
+#include "glintlab/realtime/gpu_test_util.h"
+#include "glintlab/realtime/image_compare.h"
+
+namespace glintlab {
+namespace {
+
+struct RunResult {
+    int status;
+    std::string output;
+};
+
+RunResult run(const std::string& command) {
+    FILE* pipe = popen((command + " 2>&1").c_str(), "r");
+    if (!pipe) return {-1, "popen failed"};
+    std::string out;
+    std::array<char, 4096> buf;
+    size_t n;
+    while ((n = fread(buf.data(), 1, buf.size(), pipe)) > 0) out.append(buf.data(), n);
+    const int raw = pclose(pipe);
+    return {WIFEXITED(raw) ? WEXITSTATUS(raw) : 128 + WTERMSIG(raw), out};
+}
+
+std::string cli() {
+    return std::string(GLINTLAB_CLI_PATH);
+}
+
+// A small deliot2023 sphere under a point and a directional light.
+nlohmann::json small_scene() {
+    return {{"film", {{"width", 96}, {"height", 80}, {"exposure", -1.0}}},
+            {"camera", {{"eye", {0, 0.4, 3.2}}, {"target", {0, 0, 0}}, {"fov_deg", 45}}},
+            {"render", {{"integrator", "direct"}, {"spp", 1}}},
+            {"materials",
+             {{{"name", "g"},
+               {"type", "glint"},
+               {"model", "deliot2023"},
+               {"roughness", 0.3},
+               {"log_density", 14},
+               {"fresnel", {{"type", "conductor"}, {"metal", "silver"}}}}}},
+            {"shapes", {{{"type", "sphere"}, {"radius", 1.0}, {"material", "g"}}}},
+            {"lights",
+             {{{"type", "directional"}, {"direction", {0.0, 0.55, 1.0}}, {"irradiance", 1.0}},
+              {{"type", "point"}, {"position", {0.6, 1.2, 1.8}}, {"intensity", 2.0}}}}};
+}
+
+TEST(GpuCheck, Gl45CheckRejectsOlderEsAndCompatibilityContexts) {
+    constexpr int core = 0x1, compat = 0x2;  // GL_CONTEXT_{CORE,COMPATIBILITY}_PROFILE_BIT
+    EXPECT_NO_THROW(check_gl45("t", 45, true, core, "4.5 core"));
+    EXPECT_NO_THROW(check_gl45("t", 46, true, core, "4.6 core"));
+    try {
+        check_gl45("glintlab view", 43, true, core, "4.3 (Core Profile) Mesa");
+        FAIL() << "4.3 accepted";
+    } catch (const Error& e) {
+        EXPECT_NE(std::string(e.what()).find("OpenGL 4.5 core profile required"),
+                  std::string::npos);
+        EXPECT_NE(std::string(e.what()).find("4.3 (Core Profile) Mesa"), std::string::npos);
+    }
+    EXPECT_THROW(check_gl45("t", 45, false, core, "OpenGL ES 3.2"), Error);
+    EXPECT_THROW(check_gl45("t", 45, true, compat, "4.5 compatibility"), Error);
+}
+
+TEST(GpuCli, RenderGpuWritesExrAndPng) {
+    GLINTLAB_REQUIRE_GL();
+    testing::ScratchDir dir;
+    std::ofstream(dir / "s.json") << small_scene().dump();
+    const RunResult r = run(cli() + " render --gpu -q " + (dir / "s.json").string() + " -o " +
+                            (dir / "out.exr").string());
+    ASSERT_EQ(r.status, 0) << r.output;
+    const Image exr = read_image(dir / "out.exr");
+    EXPECT_EQ(exr.width, 96);
+    EXPECT_EQ(exr.height, 80);
+    EXPECT_TRUE(std::filesystem::exists(dir / "out.png"));
+}
+
+TEST(GpuCli, MissingEnvironmentMapIsAClearError) {
+    testing::ScratchDir dir;
+    nlohmann::json s = small_scene();
+    s["lights"].push_back({{"type", "environment"}, {"file", "no_such_sky.exr"}});
+    std::ofstream(dir / "s.json") << s.dump();
+    const RunResult r = run(cli() + " render --gpu -q " + (dir / "s.json").string() + " -o " +
+                            (dir / "out.exr").string());
+    EXPECT_EQ(r.status, 1) << r.output;
+    EXPECT_NE(r.output.find("no_such_sky.exr"), std::string::npos) << r.output;
+}
+
+TEST(GpuCli, UnknownEglPlatformIsAClearError) {
+    testing::ScratchDir dir;
+    std::ofstream(dir / "s.json") << small_scene().dump();
+    const RunResult r = run("GLINTLAB_EGL_PLATFORM=vulkan " + cli() + " render --gpu -q " +
+                            (dir / "s.json").string() + " -o " + (dir / "out.exr").string());
+    EXPECT_EQ(r.status, 1) << r.output;
+    EXPECT_NE(
+        r.output.find("GLINTLAB_EGL_PLATFORM=\"vulkan\": expected surfaceless, device or auto"),
+        std::string::npos)
+        << r.output;
+}
+
+// The viewer under Xvfb (GLX, llvmpipe) renders --frames 3 and writes its
+// screenshot through the same readback + write_png as `render --gpu` (EGL):
+// same driver and shaders, so the two PNGs agree to 8-bit rounding. Limits:
+// mean luminance within 0.5%, at most 0.5% of the pixels off by more than
+// 2/255 (the sRGB quantum near mid-grey is ~1/255 in linear luminance terms
+// of these bright glints; 0.5% allows a flipped glint or two of 7680 pixels).
+TEST(GpuViewer, ScreenshotUnderXvfbMatchesTheHeadlessRender) {
+    GLINTLAB_REQUIRE_GL();
+    if (run("command -v xvfb-run").status != 0) GTEST_SKIP() << "xvfb-run is not installed";
+    testing::ScratchDir dir;
+    std::ofstream(dir / "s.json") << small_scene().dump();
+    const RunResult headless = run(cli() + " render --gpu -q " + (dir / "s.json").string() +
+                                   " -o " + (dir / "headless.exr").string());
+    ASSERT_EQ(headless.status, 0) << headless.output;
+    const RunResult viewer = run("xvfb-run -a -s \"-screen 0 640x480x24\" " + cli() + " view " +
+                                 (dir / "s.json").string() + " --frames 3 --screenshot " +
+                                 (dir / "viewer.png").string());
+    if (viewer.output.find("cannot create a window") != std::string::npos ||
+        viewer.output.find("cannot initialise GLFW") != std::string::npos)
+        GTEST_SKIP() << "no OpenGL 4.5 window under Xvfb: " << viewer.output;
+    ASSERT_EQ(viewer.status, 0) << viewer.output;
+    const Image a = read_image(dir / "viewer.png");
+    const Image b = read_image(dir / "headless.png");
+    ASSERT_EQ(a.width, b.width);
+    ASSERT_EQ(a.height, b.height);
+    const ImageAgreement m = compare_images(a, b, 8, 2.0f / 255.0f, 0.0f);
+    EXPECT_GT(m.mean_b, 0.01);
+    EXPECT_LT(m.mean_relative_error, 0.005);
+    EXPECT_LT(m.mismatch_fraction, 0.005);
+}
+
+}  // namespace
+}  // namespace glintlab

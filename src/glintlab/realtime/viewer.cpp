@@ -1,0 +1,349 @@
+#include "glintlab/realtime/viewer.h"
+
+#include <algorithm>
+#include <cmath>
+#include <deque>
+#include <string>
+#include <vector>
+
+#include <epoxy/gl.h>
+#define GLFW_INCLUDE_NONE
+#include <GLFW/glfw3.h>
+#include <backends/imgui_impl_glfw.h>
+#include <backends/imgui_impl_opengl3.h>
+#include <fmt/format.h>
+#include <imgui.h>
+#include <glm/gtc/quaternion.hpp>
+
+#include "glintlab/core/bloom.h"
+#include "glintlab/core/error.h"
+#include "glintlab/core/image.h"
+#include "glintlab/realtime/forward_shaders.h"
+#include "glintlab/realtime/gl_context.h"
+#include "glintlab/realtime/gl_handles.h"
+#include "glintlab/realtime/gl_program.h"
+#include "glintlab/realtime/glint_programs.h"
+#include "glintlab/realtime/gpu_renderer.h"
+#include "glintlab/realtime/gpu_timer.h"
+
+namespace glintlab {
+namespace {
+
+// Owns glfwInit/glfwTerminate and the window.
+struct Glfw {
+    GLFWwindow* window = nullptr;
+    Glfw() {
+        glfwSetErrorCallback(nullptr);
+        if (!glfwInit())
+            fail(
+                "glintlab view: cannot initialise GLFW (no display? set DISPLAY, or run under "
+                "xvfb-run -a -s \"-screen 0 1280x1024x24\")");
+    }
+    ~Glfw() {
+        if (window != nullptr) glfwDestroyWindow(window);
+        glfwTerminate();
+    }
+};
+
+struct ImGuiScope {
+    bool glfw = false, opengl = false;
+    ImGuiScope() { ImGui::CreateContext(); }
+    ~ImGuiScope() {
+        if (opengl) ImGui_ImplOpenGL3_Shutdown();
+        if (glfw) ImGui_ImplGlfw_Shutdown();
+        ImGui::DestroyContext();
+    }
+};
+
+// Running median of a pass's GPU time over the last 60 frames.
+struct PassHistory {
+    std::deque<double> ms;
+    void add(double v) {
+        ms.push_back(v);
+        if (ms.size() > 60) ms.pop_front();
+    }
+    double median() const { return gl::timing_stats({ms.begin(), ms.end()}).median_ms; }
+};
+
+struct OrbitState {
+    double scroll = 0.0;  // accumulated wheel steps since the last frame
+};
+
+void scroll_callback(GLFWwindow* window, double, double dy) {
+    static_cast<OrbitState*>(glfwGetWindowUserPointer(window))->scroll += dy;
+}
+
+// Orbit camera about camera.target: left drag rotates (about camera.up, then
+// about the right axis, never across the poles), right drag pans, the wheel
+// dollies.
+void orbit(Camera& c, glm::vec2 drag_left, glm::vec2 drag_right, double scroll) {
+    glm::vec3 offset = c.eye - c.target;
+    const float radius = glm::length(offset);
+    if (!(radius > 0.0f)) return;
+    const glm::vec3 up = glm::normalize(c.up);
+    if (drag_left != glm::vec2(0.0f)) {
+        offset = glm::angleAxis(-0.01f * drag_left.x, up) * offset;
+        const glm::vec3 right = glm::normalize(glm::cross(-offset, up));
+        const glm::vec3 tilted = glm::angleAxis(-0.01f * drag_left.y, right) * offset;
+        const float cos_pole = glm::dot(glm::normalize(tilted), up);
+        if (std::abs(cos_pole) < 0.995f) offset = tilted;
+    }
+    if (drag_right != glm::vec2(0.0f)) {
+        const glm::vec3 forward = -glm::normalize(offset);
+        const glm::vec3 right = glm::normalize(glm::cross(forward, up));
+        const glm::vec3 cam_up = glm::cross(right, forward);
+        const glm::vec3 pan = (-drag_right.x * right + drag_right.y * cam_up) * (0.0015f * radius);
+        c.target += pan;
+    }
+    if (scroll != 0.0) offset *= static_cast<float>(std::pow(0.9, scroll));
+    c.eye = c.target + offset;
+}
+
+std::string light_label(const Light& light, size_t i) {
+    if (std::holds_alternative<PointLight>(light)) return fmt::format("light {}: point", i);
+    if (std::holds_alternative<DirectionalLight>(light))
+        return fmt::format("light {}: directional", i);
+    if (std::holds_alternative<SphereLight>(light)) return fmt::format("light {}: sphere", i);
+    return fmt::format("light {}: environment", i);
+}
+
+void slider(const char* label, float* v, float lo, float hi, bool log_scale = false) {
+    ImGui::SliderFloat(label, v, lo, hi, "%.4g",
+                       log_scale ? ImGuiSliderFlags_Logarithmic : ImGuiSliderFlags_None);
+    *v = std::clamp(*v, lo, hi);  // the scene loader's ranges
+}
+
+// Material controls; returns nothing, edits in place within the loader's ranges.
+void material_panel(MaterialDesc& m) {
+    if (m.type != MaterialDesc::Type::Glint) {
+        ImGui::ColorEdit3("albedo", &m.albedo.x);
+        slider("alpha x", &m.alpha_x, 1e-3f, 1.0f, true);
+        slider("alpha y", &m.alpha_y, 1e-3f, 1.0f, true);
+        return;
+    }
+    GlintDesc& g = m.glint;
+    // Model switcher: same material, any model the GPU implements.
+    std::vector<const GlintModelInfo*> models;
+    int current = 0;
+    for (const GlintModelInfo& info : glint_models())
+        if (gl::gpu_supports_model(info.id)) {
+            if (info.id == g.model_id) current = static_cast<int>(models.size());
+            models.push_back(&info);
+        }
+    if (ImGui::BeginCombo("model",
+                          std::string(models[static_cast<size_t>(current)]->name).c_str())) {
+        for (size_t i = 0; i < models.size(); ++i)
+            if (ImGui::Selectable(std::string(models[i]->name).c_str(),
+                                  static_cast<int>(i) == current))
+                gl::reset_model_params(g, models[i]->id);
+        ImGui::EndCombo();
+    }
+    int ndf = g.ndf == NdfType::GGX ? 1 : 0;
+    if (g.model_id != GlintModelId::Chermain2020 && ImGui::Combo("ndf", &ndf, "beckmann\0ggx\0"))
+        g.ndf = ndf == 1 ? NdfType::GGX : NdfType::Beckmann;
+    slider("alpha x", &g.alpha_x, 1e-3f, 1.0f, true);
+    slider("alpha y", &g.alpha_y, 1e-3f, 1.0f, true);
+    slider("log density", &g.log_density, -20.0f, 60.0f);
+    int seed = static_cast<int>(g.seed & 0x7fffffffu);
+    if (ImGui::InputInt("seed", &seed)) g.seed = static_cast<uint32_t>(std::max(seed, 0));
+    ImGui::ColorEdit3("colour", &g.color.x);
+    int fresnel = static_cast<int>(g.fresnel.mode);
+    if (ImGui::Combo("fresnel", &fresnel, "none\0schlick\0conductor\0dielectric\0"))
+        g.fresnel.mode = static_cast<FresnelDesc::Mode>(fresnel);
+    if (g.fresnel.mode == FresnelDesc::Mode::Schlick) ImGui::ColorEdit3("F0", &g.fresnel.f0.x);
+    if (g.fresnel.mode == FresnelDesc::Mode::Conductor) {
+        ImGui::DragFloat3("eta", &g.fresnel.eta.x, 0.01f, 0.01f, 10.0f);
+        ImGui::DragFloat3("k", &g.fresnel.k.x, 0.01f, 0.0f, 20.0f);
+    }
+    if (g.fresnel.mode == FresnelDesc::Mode::Dielectric)
+        slider("eta", &g.fresnel.eta.x, 1.0f, 3.0f);
+    // The model's own block, with the ranges of its read_params.
+    if (auto* p = std::get_if<Deliot2023Params>(&g.params)) {
+        slider("microfacet roughness R", &p->microfacet_roughness, 1e-4f, 1.0f, true);
+        slider("screen-space scale", &p->screen_space_scale, 0.5f, 8.0f);
+        slider("density randomization", &p->density_randomization, 0.0f, 50.0f);
+        ImGui::Checkbox("original defects", &p->original_defects);
+    } else if (auto* p = std::get_if<Zirr2016Params>(&g.params)) {
+        slider("microfacet roughness R", &p->microfacet_roughness, 1e-4f, 1.0f, true);
+        slider("max anisotropy", &p->max_anisotropy, 1.0f, 64.0f);
+        slider("screen-space scale", &p->screen_space_scale, 0.5f, 8.0f);
+    } else if (auto* p = std::get_if<Chermain2020Params>(&g.params)) {
+        slider("relative area", &p->relative_area, 0.0f, 1.0f);
+        slider("max anisotropy", &p->max_anisotropy, 1.0f, 32.0f);
+        slider("density randomization", &p->density_randomization, 0.0f, 8.0f);
+        ImGui::SliderInt("colours", &p->colour_count, 0, static_cast<int>(p->colour_table.size()));
+        for (int i = 0; i < p->colour_count; ++i)
+            ImGui::ColorEdit3(fmt::format("colour {}", i).c_str(),
+                              &p->colour_table[static_cast<size_t>(i)].x);
+    }
+}
+
+void write_screenshot(const GpuRenderer& renderer, const Scene& scene,
+                      const std::filesystem::path& path) {
+    const Image image = renderer.read_image();
+    const Image preview =
+        scene.film.bloom.strength > 0.0f ? apply_bloom(image, scene.film.bloom) : image;
+    write_png(preview, path, scene.film.exposure);
+}
+
+}  // namespace
+
+void run_viewer(Scene scene, const ViewerOptions& options) {
+    Glfw glfw;
+    glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 4);
+    glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 5);
+    glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
+    glfwWindowHint(GLFW_OPENGL_FORWARD_COMPAT, GLFW_TRUE);
+    glfwWindowHint(GLFW_SCALE_TO_MONITOR, GLFW_FALSE);
+    const std::string title = fmt::format("glintlab view: {}", scene.file.filename().string());
+    glfw.window =
+        glfwCreateWindow(scene.camera.width, scene.camera.height, title.c_str(), nullptr, nullptr);
+    if (glfw.window == nullptr)
+        fail(
+            "glintlab view: cannot create a window with an OpenGL 4.5 core context (the display's "
+            "driver lacks OpenGL 4.5?)");
+    glfwMakeContextCurrent(glfw.window);
+    glfwSwapInterval(options.frames > 0 ? 0 : 1);
+    require_gl45("glintlab view");
+
+    OrbitState orbit_state;
+    glfwSetWindowUserPointer(glfw.window, &orbit_state);
+    glfwSetScrollCallback(glfw.window, scroll_callback);  // before ImGui, which chains to it
+
+    GpuRenderer renderer(scene);
+    gl::Program tonemap(
+        gl::link_program(gl::background_vertex_shader(), gl::tonemap_fragment_shader(), "tonemap"));
+    const GLint exposure_location = glGetUniformLocation(tonemap.get(), "u_exposure_scale");
+    gl::VertexArray empty_vao = gl::make_vertex_array();
+    gl::PassTimer display_timer;
+
+    ImGuiScope imgui;
+    ImGui::GetIO().IniFilename = nullptr;  // no imgui.ini beside the user's files
+    imgui.glfw = ImGui_ImplGlfw_InitForOpenGL(glfw.window, true);
+    imgui.opengl = ImGui_ImplOpenGL3_Init("#version 450 core");
+    if (!imgui.glfw || !imgui.opengl)
+        fail("glintlab view: Dear ImGui back ends failed to initialise");
+
+    float env_scale = 1.0f, env_rotation = 0.0f;
+    if (scene.environment >= 0) {
+        const auto& env =
+            std::get<EnvironmentLight>(scene.lights[static_cast<size_t>(scene.environment)]);
+        env_scale = env.map->scale();
+        env_rotation = env.map->rotation_deg();
+    }
+    const std::filesystem::path shot_path = options.screenshot.empty()
+                                                ? std::filesystem::path("glintlab_screenshot.png")
+                                                : options.screenshot;
+    PassHistory background_ms, forward_ms, display_ms;
+    std::string status;
+    int selected_material = 0;
+    bool p_was_down = false;
+    glm::dvec2 last_cursor(0.0);
+    glfwGetCursorPos(glfw.window, &last_cursor.x, &last_cursor.y);
+
+    for (int frame = 0; !glfwWindowShouldClose(glfw.window); ++frame) {
+        glfwPollEvents();
+        int fb_w = 0, fb_h = 0;
+        glfwGetFramebufferSize(glfw.window, &fb_w, &fb_h);
+        if (fb_w < 1 || fb_h < 1) continue;  // minimised
+        scene.camera.width = fb_w;
+        scene.camera.height = fb_h;
+
+        ImGuiIO& io = ImGui::GetIO();
+        glm::dvec2 cursor;
+        glfwGetCursorPos(glfw.window, &cursor.x, &cursor.y);
+        const glm::vec2 delta(cursor - last_cursor);
+        last_cursor = cursor;
+        if (!io.WantCaptureMouse) {
+            const bool left = glfwGetMouseButton(glfw.window, GLFW_MOUSE_BUTTON_LEFT) == GLFW_PRESS;
+            const bool right =
+                glfwGetMouseButton(glfw.window, GLFW_MOUSE_BUTTON_RIGHT) == GLFW_PRESS;
+            orbit(scene.camera, left ? delta : glm::vec2(0.0f), right ? delta : glm::vec2(0.0f),
+                  orbit_state.scroll);
+        }
+        orbit_state.scroll = 0.0;
+        const bool p_down = glfwGetKey(glfw.window, GLFW_KEY_P) == GLFW_PRESS;
+        bool take_shot = p_down && !p_was_down && !io.WantCaptureKeyboard;
+        p_was_down = p_down;
+
+        renderer.set_environment(env_scale, env_rotation);
+        renderer.render(scene);
+
+        // Display: tonemap the HDR frame to the window, then the panel.
+        display_timer.begin();
+        glBindFramebuffer(GL_FRAMEBUFFER, 0);
+        glViewport(0, 0, fb_w, fb_h);
+        glDisable(GL_DEPTH_TEST);
+        glUseProgram(tonemap.get());
+        glProgramUniform1f(tonemap.get(), exposure_location, std::exp2(scene.film.exposure));
+        glBindTextureUnit(0, renderer.hdr_texture());
+        glBindVertexArray(empty_vao.get());
+        glDrawArrays(GL_TRIANGLES, 0, 3);
+        glBindVertexArray(0);
+        glUseProgram(0);
+        if (options.show_ui) {
+            ImGui_ImplOpenGL3_NewFrame();
+            ImGui_ImplGlfw_NewFrame();
+            ImGui::NewFrame();
+            ImGui::SetNextWindowPos(ImVec2(8, 8), ImGuiCond_FirstUseEver);
+            ImGui::Begin("glintlab");
+            ImGui::TextUnformatted(gl_description().c_str());
+            ImGui::Text("GPU ms (median of 60): background %.3f  forward %.3f  display %.3f",
+                        background_ms.median(), forward_ms.median(), display_ms.median());
+            ImGui::SliderFloat("exposure (stops)", &scene.film.exposure, -10.0f, 10.0f);
+            if (ImGui::Button("screenshot (P)")) take_shot = true;
+            if (!status.empty()) ImGui::TextUnformatted(status.c_str());
+            if (!scene.materials.empty() &&
+                ImGui::CollapsingHeader("material", ImGuiTreeNodeFlags_DefaultOpen)) {
+                selected_material =
+                    std::clamp(selected_material, 0, static_cast<int>(scene.materials.size()) - 1);
+                if (scene.materials.size() > 1)
+                    ImGui::SliderInt("material", &selected_material, 0,
+                                     static_cast<int>(scene.materials.size()) - 1);
+                MaterialDesc& m = scene.materials[static_cast<size_t>(selected_material)];
+                ImGui::Text("%s", m.name.c_str());
+                material_panel(m);
+            }
+            if (ImGui::CollapsingHeader("lights")) {
+                for (size_t i = 0; i < scene.lights.size(); ++i) {
+                    ImGui::PushID(static_cast<int>(i));
+                    ImGui::TextUnformatted(light_label(scene.lights[i], i).c_str());
+                    if (auto* l = std::get_if<PointLight>(&scene.lights[i])) {
+                        ImGui::DragFloat3("position", &l->position.x, 0.01f);
+                        ImGui::DragFloat3("intensity W/sr", &l->intensity.x, 0.01f, 0.0f, 1e6f);
+                    } else if (auto* l = std::get_if<DirectionalLight>(&scene.lights[i])) {
+                        if (ImGui::DragFloat3("direction", &l->direction.x, 0.01f, -1.0f, 1.0f) &&
+                            glm::dot(l->direction, l->direction) > 1e-8f)
+                            l->direction = glm::normalize(l->direction);
+                        ImGui::DragFloat3("irradiance W/m2", &l->irradiance.x, 0.01f, 0.0f, 1e6f);
+                    } else if (auto* l = std::get_if<SphereLight>(&scene.lights[i])) {
+                        ImGui::DragFloat3("radiance", &l->radiance.x, 0.01f, 0.0f, 1e6f);
+                    } else if (renderer.has_environment()) {
+                        slider("scale", &env_scale, 0.0f, 100.0f);
+                        slider("rotation (deg)", &env_rotation, -180.0f, 180.0f);
+                    }
+                    ImGui::PopID();
+                }
+            }
+            ImGui::End();
+            ImGui::Render();
+            ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+        }
+        display_timer.end();
+
+        const GpuPassTimes t = renderer.pass_times();
+        background_ms.add(t.background_ms);
+        forward_ms.add(t.forward_ms);
+        display_ms.add(display_timer.elapsed_ms());
+
+        const bool last = options.frames > 0 && frame + 1 >= options.frames;
+        if (take_shot || (last && !options.screenshot.empty())) {
+            write_screenshot(renderer, scene, shot_path);
+            status = "saved " + shot_path.string();
+        }
+        glfwSwapBuffers(glfw.window);
+        if (last) break;
+    }
+}
+
+}  // namespace glintlab
