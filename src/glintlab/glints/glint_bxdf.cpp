@@ -2,6 +2,7 @@
 
 #include "glintlab/glints/chermain2020/chermain2020.h"
 #include "glintlab/glints/deliot2023/deliot2023.h"
+#include "glintlab/glints/kneiphof2025/kneiphof2025.h"
 #include "glintlab/glints/zirr2016/zirr2016.h"
 #include "glintlab/microfacet/microfacet.h"
 #include "glintlab/scene/scene.h"
@@ -35,9 +36,10 @@ float GlintBxdf::footprint_ndf(glm::vec3 wo, glm::vec3 wi, glm::vec3 h) const {
         // registry row exists (the scene loader cannot select them before).
         case GlintModelId::Explicit:
         case GlintModelId::Jakob2014:
-        case GlintModelId::Kneiphof2025:
         case GlintModelId::Wang2020:
             break;
+        case GlintModelId::Kneiphof2025:
+            return kneiphof2025_footprint_ndf(h, footprint, *desc);
         case GlintModelId::Deliot2023:
             return deliot2023_footprint_ndf(h, footprint, *desc);
         case GlintModelId::Chermain2020:

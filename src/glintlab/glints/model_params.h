@@ -8,6 +8,7 @@
 #include "glintlab/glints/chermain2020/chermain2020_params.h"
 #include "glintlab/glints/deliot2023/deliot2023_params.h"
 #include "glintlab/glints/jakob2014/jakob2014_params.h"
+#include "glintlab/glints/kneiphof2025/kneiphof2025_params.h"
 #include "glintlab/glints/zirr2016/zirr2016_params.h"
 
 namespace glintlab {
@@ -16,6 +17,6 @@ struct SmoothParams {};  // `smooth` has no parameters of its own
 
 using GlintModelParams =
     std::variant<SmoothParams, Deliot2023Params, Zirr2016Params, Chermain2020Params,
-                 Jakob2014Params>;
+                 Jakob2014Params, Kneiphof2025Params>;
 
 }  // namespace glintlab

@@ -2,6 +2,7 @@
 
 #include "glintlab/glints/chermain2020/chermain2020.h"
 #include "glintlab/glints/deliot2023/deliot2023.h"
+#include "glintlab/glints/kneiphof2025/kneiphof2025.h"
 #include "glintlab/glints/zirr2016/zirr2016.h"
 #include "glintlab/scene/json_reader.h"
 #include "glintlab/scene/scene.h"
@@ -32,6 +33,13 @@ const GlintModelInfo kModels[] = {
     {GlintModelId::Chermain2020, "chermain2020",
      "multiscale SDF dictionary over a MIP hierarchy (Chermain et al. 2020)", true, true, false,
      false, read_chermain2020_params},
+    // Environment, sphere and sun-like directional lights by its own counting
+    // (003 Eq. 17; K = 1 area lights, 003 Eq. 6-9); point and delta
+    // directional lights through deliot2023's D_P (003 Table 1).
+    {GlintModelId::Kneiphof2025, "kneiphof2025",
+     "image-based lighting of glints, multinomial over K radiance levels (Kneiphof & Klein 2025)",
+     true, true, true, true, read_kneiphof2025_params, kneiphof2025_shades_light,
+     kneiphof2025_light_radiance},
 };
 
 }  // namespace

@@ -222,10 +222,18 @@ float deliot2023_original_law(float N, float p, float xi0, float xi1) {
     return xi0 < p_any ? floor(1.0f + g) : 0.0f;  // Eq. 18, gate passes with probability P>=1
 }
 
-// Counts of one grid (Eq. 14 per simplex vertex), accumulated into
-// acc = (sum of blended counts, sum of blended trials).
-vec2 deliot2023_grid_counts(ivec3 id, float weight, vec2 uv, vec2 slope, float p, float log_density,
-                            uint seed, float density_randomization, bool original_defects) {
+// The spatial part of one grid (§6.2), shared with kneiphof2025 (003 §3.3:
+// the same grid, without the half-vector dimension under image-based
+// lighting): the 3 simplex vertices around uv, as their cell seeds and
+// barycentric weights, and ln of the trials a vertex holds before the
+// per-cell density jitter.
+struct Deliot2023Simplex {
+    uint vertex_seed[3];
+    float beta[3];
+    float log_trials;
+};
+
+Deliot2023Simplex deliot2023_simplex(ivec3 id, float weight, vec2 uv, float log_density, uint seed) {
     int l = id.x;
     int k = id.y;
     float phi = float(id.z) * PI / float(deliot2023_orientation_bins(k));
@@ -251,32 +259,50 @@ vec2 deliot2023_grid_counts(ivec3 id, float weight, vec2 uv, vec2 slope, float p
     ivec2 v0;
     ivec2 v1;
     ivec2 v2;
-    vec3 beta;
+    Deliot2023Simplex s;
     if (fr.x + fr.y < 1.0f) {
         v0 = cell;
         v1 = cell + ivec2(1, 0);
         v2 = cell + ivec2(0, 1);
-        beta = vec3(1.0f - fr.x - fr.y, fr.x, fr.y);
+        s.beta[0] = 1.0f - fr.x - fr.y;
+        s.beta[1] = fr.x;
+        s.beta[2] = fr.y;
     } else {
         v0 = cell + ivec2(1, 1);
         v1 = cell + ivec2(0, 1);
         v2 = cell + ivec2(1, 0);
-        beta = vec3(fr.x + fr.y - 1.0f, 1.0f - fr.x, 1.0f - fr.y);
+        s.beta[0] = fr.x + fr.y - 1.0f;
+        s.beta[1] = 1.0f - fr.x;
+        s.beta[2] = 1.0f - fr.y;
     }
+    s.vertex_seed[0] = hash_cell(v0 & ivec2(DELIOT2023_LATTICE_MASK), grid_seed);
+    s.vertex_seed[1] = hash_cell(v1 & ivec2(DELIOT2023_LATTICE_MASK), grid_seed);
+    s.vertex_seed[2] = hash_cell(v2 & ivec2(DELIOT2023_LATTICE_MASK), grid_seed);
     // Trials per vertex: each lattice vertex owns one cell of area 2^(2l) 2^k uv
     // units; the grid holds `weight` of the footprint's trials (Eq. 10).
-    float log_trials = log_density + log(weight) + float(2 * l + k) * DELIOT2023_LN2;
+    s.log_trials = log_density + log(weight) + float(2 * l + k) * DELIOT2023_LN2;
+    return s;
+}
 
+// Trials of one vertex: the per-cell jitter of the log density (std-dev
+// density_randomization) draws the first number of the vertex's stream `vs`.
+float deliot2023_vertex_trials(float log_trials, float density_randomization, INOUT(uint) vs) {
+    float z = normal_quantile(hash_random(vs));
+    return exp(clamp(log_trials + density_randomization * z, -DELIOT2023_MAX_LOG_TRIALS,
+                     DELIOT2023_MAX_LOG_TRIALS));
+}
+
+// Counts of one grid (Eq. 14 per simplex vertex), accumulated into
+// acc = (sum of blended counts, sum of blended trials).
+vec2 deliot2023_grid_counts(ivec3 id, float weight, vec2 uv, vec2 slope, float p, float log_density,
+                            uint seed, float density_randomization, bool original_defects) {
+    Deliot2023Simplex s = deliot2023_simplex(id, weight, uv, log_density, seed);
     vec2 acc = vec2(0.0f);
     for (int v = 0; v < 3; ++v) {
-        ivec2 vert = v == 0 ? v0 : (v == 1 ? v1 : v2);
-        float bv = v == 0 ? beta.x : (v == 1 ? beta.y : beta.z);
+        float bv = s.beta[v];
         if (bv <= 0.0f) continue;
-        uint vs = hash_cell(vert & ivec2(DELIOT2023_LATTICE_MASK), grid_seed);
-        // Per-cell jitter of the log density (std-dev density_randomization).
-        float z = normal_quantile(hash_random(vs));
-        float N = exp(clamp(log_trials + density_randomization * z, -DELIOT2023_MAX_LOG_TRIALS,
-                            DELIOT2023_MAX_LOG_TRIALS));
+        uint vs = s.vertex_seed[v];
+        float N = deliot2023_vertex_trials(s.log_trials, density_randomization, vs);
         // Eq. 14: angular grid over the projected half vector in units of R,
         // offset per vertex so that angular cells do not align across space.
         vec2 a = slope + vec2(hash_random(vs), hash_random(vs));
@@ -298,6 +324,21 @@ vec2 deliot2023_grid_counts(ivec3 id, float weight, vec2 uv, vec2 slope, float p
     return acc;
 }
 
+// The 4 grids of a pixel footprint (§5.1-5.2): ellipse axes, anisotropy
+// ratio and LOD, then deliot2023_select_grids. Shared with kneiphof2025.
+Deliot2023Grids deliot2023_footprint_grids(Footprint fp, float screen_space_scale, bool original_defects) {
+    vec3 ellipse = deliot2023_footprint_ellipse(fp.duvdx, fp.duvdy, original_defects);
+    float major = max(ellipse.y, 1e-30f);
+    float minor = max(ellipse.x, major * 1e-30f);
+    if (!original_defects) minor = max(minor, major * exp2(-float(DELIOT2023_MAX_RATIO_LEVEL)));
+    float ratio = major / minor;
+    // LOD = log2(minor * S / 2): with barycentric blending a glint spans two
+    // cells, so cells of half the minor width times S give glints S pixels wide.
+    float lod = clamp(log2(max(minor * screen_space_scale * 0.5f, 1e-30f)), -DELIOT2023_MAX_ABS_LOD,
+                      DELIOT2023_MAX_ABS_LOD);
+    return deliot2023_select_grids(lod, ratio, ellipse.z, original_defects);
+}
+
 // D_P(h) of Eq. 3-4 for a local half vector h (z = normal) and a uv footprint.
 // ndf, alpha_x, alpha_y: target NDF D; log_density: ln(facets per unit uv area);
 // seed: the material's seed. microfacet_roughness = R in (0, 1];
@@ -311,16 +352,7 @@ float deliot2023_ndf(vec3 h, Footprint fp, int ndf, float alpha_x, float alpha_y
     float R = microfacet_roughness;
     float p = clamp(R * d_h / d_n, 0.0f, 1.0f);  // Eq. 4 success probability
 
-    vec3 ellipse = deliot2023_footprint_ellipse(fp.duvdx, fp.duvdy, original_defects);
-    float major = max(ellipse.y, 1e-30f);
-    float minor = max(ellipse.x, major * 1e-30f);
-    if (!original_defects) minor = max(minor, major * exp2(-float(DELIOT2023_MAX_RATIO_LEVEL)));
-    float ratio = major / minor;
-    // LOD = log2(minor * S / 2): with barycentric blending a glint spans two
-    // cells, so cells of half the minor width times S give glints S pixels wide.
-    float lod = clamp(log2(max(minor * screen_space_scale * 0.5f, 1e-30f)), -DELIOT2023_MAX_ABS_LOD,
-                      DELIOT2023_MAX_ABS_LOD);
-    Deliot2023Grids grids = deliot2023_select_grids(lod, ratio, ellipse.z, original_defects);
+    Deliot2023Grids grids = deliot2023_footprint_grids(fp, screen_space_scale, original_defects);
 
     vec2 slope = vec2(h.x, h.y) / R;
     vec2 acc = vec2(0.0f);

@@ -1,0 +1,298 @@
+#include "glintlab/glints/kneiphof2025/kneiphof2025.h"
+
+#include <algorithm>
+#include <cmath>
+#include <variant>
+
+#include <glm/gtc/constants.hpp>
+
+#include "glintlab/core/error.h"
+#include "glintlab/core/glsl.h"
+#include "glintlab/glints/deliot2023/deliot2023.h"
+#include "glintlab/glints/glint_lighting.h"
+#include "glintlab/glints/kneiphof2025/kneiphof2025_prefilter.h"
+#include "glintlab/scene/json_reader.h"
+#include "glintlab/scene/scene.h"
+
+namespace glintlab {
+namespace {
+
+// The prefiltered environment the GLSL fetch functions read: set by the host
+// for the duration of one shading call on this thread (the C++ stand-in for
+// the textures a GPU back end binds).
+thread_local const Kneiphof2025Environment* t_env = nullptr;
+
+// The last fetch on this thread: one shading call reads the radiance and the
+// weight groups at the same (dir, roughness), one bilinear fetch serves them.
+struct FetchCache {
+    const Kneiphof2025Environment* env = nullptr;
+    glm::vec3 dir{0.0f};
+    float roughness = -1.0f;
+    float values[11] = {};
+};
+thread_local FetchCache t_fetch;
+
+const float* fetch_all(glm::vec3 dir, float roughness) {
+    FetchCache& c = t_fetch;
+    if (c.env != t_env || c.dir != dir || c.roughness != roughness) {
+        t_env->fetch(dir, roughness, c.values);
+        c.env = t_env;
+        c.dir = dir;
+        c.roughness = roughness;
+    }
+    return c.values;
+}
+
+}  // namespace
+}  // namespace glintlab
+
+// The only translation unit that compiles kneiphof2025.glsl as C++; its fetch
+// functions read the CPU prefiltered maps (ARCHITECTURE.md §2: resources
+// through fetch functions each back end defines).
+GLINTLAB_SHADER_FUNCTIONS_BEGIN
+vec3 kneiphof2025_radiance_fetch(vec3 dir, float roughness) {
+    const float* c = fetch_all(dir, roughness);
+    return vec3(c[0], c[1], c[2]);
+}
+vec4 kneiphof2025_weights_fetch(vec3 dir, float roughness, int group) {
+    const float* c = fetch_all(dir, roughness);
+    const int K = t_env->levels();
+    vec4 w(0.0f);
+    for (int i = 0; i < 4; ++i) {
+        const int k = 4 * group + i;
+        w[i] = k < K ? c[3 + k] : 0.0f;
+    }
+    return w;
+}
+vec3 kneiphof2025_dfg_fetch(float cos_o, float roughness) {
+    return Kneiphof2025DfgLut::get().lookup(cos_o, roughness);
+}
+#include "glintlab/glints/kneiphof2025/kneiphof2025.glsl"
+#include "glintlab/microfacet/fresnel.glsl"
+#include "glintlab/microfacet/masking.glsl"
+GLINTLAB_SHADER_FUNCTIONS_END
+
+namespace glintlab {
+namespace {
+
+const Kneiphof2025Params& params_of(const GlintDesc& desc) {
+    return std::get<Kneiphof2025Params>(desc.params);
+}
+
+float alpha_of(const GlintDesc& desc) {
+    return std::clamp(desc.alpha_x, 1e-4f, 1.0f);
+}
+
+// Solid angle of the wang2020-style cone of half-angle gamma.
+float gamma_solid_angle(const Kneiphof2025Params& p) {
+    return 2.0f * glm::pi<float>() * (1.0f - std::cos(glm::radians(p.gamma_deg)));
+}
+
+// An area light seen from the hit: a cone (axis, cos of its half-angle) of
+// constant radiance, at distance t_max (infinity for the sun).
+struct Cone {
+    glm::vec3 axis;
+    float cos_max;
+    glm::vec3 radiance;
+    float t_max;
+};
+
+// Eq. 8-9 and the smooth reflected radiance of one cone, by a stratified
+// (n_r x n_phi, jittered from the pixel's stream) quadrature uniform in solid
+// angle: p = int_cone D / (4 <h, wi>) dwi / D_H and
+// L = int_cone F G2 D / (4 cos_o) L_i dwi. Returns L, sets p and the local
+// half vector towards the cone's axis.
+glm::vec3 integrate_cone(const GlintLightingContext& ctx, const Cone& cone, float* p,
+                         glm::vec3* h_center) {
+    constexpr int kRings = 8, kSectors = 8;
+    const GlintDesc& desc = *ctx.desc;
+    const float alpha = alpha_of(desc);
+    const glm::vec3 wo = ctx.wo;
+    const glm::vec3 n = cone.axis;
+    const float sign = std::copysign(1.0f, n.z);
+    const float a = -1.0f / (sign + n.z);
+    const float b = n.x * n.y * a;
+    const glm::vec3 t(1.0f + sign * n.x * n.x * a, sign * b, -sign * n.x);
+    const glm::vec3 bt(b, sign + n.y * n.y * a, -n.y);
+    const float omega = 2.0f * glm::pi<float>() * (1.0f - cone.cos_max);
+    const float d_omega = omega / static_cast<float>(kRings * kSectors);
+    const glm::vec3 f0 = kneiphof2025_f0(desc);
+    float p_sum = 0.0f;
+    glm::vec3 L(0.0f);
+    for (int i = 0; i < kRings; ++i)
+        for (int j = 0; j < kSectors; ++j) {
+            const float u1 = (static_cast<float>(i) + ctx.rng->next_float()) / kRings;
+            const float u2 = (static_cast<float>(j) + ctx.rng->next_float()) / kSectors;
+            const float cos_t = 1.0f - u1 * (1.0f - cone.cos_max);
+            const float sin_t = std::sqrt(std::max(0.0f, 1.0f - cos_t * cos_t));
+            const float phi = 2.0f * glm::pi<float>() * u2;
+            const glm::vec3 w = sin_t * std::cos(phi) * t + sin_t * std::sin(phi) * bt + cos_t * n;
+            const glm::vec3 wi = ctx.to_local(w);
+            if (wi.z <= 0.0f) continue;
+            const glm::vec3 h = glm::normalize(wo + wi);
+            const float d = shader::D_Microfacet(shader::NDF_GGX, h, alpha, alpha);
+            const float hi = std::max(glm::dot(h, wi), 1e-6f);
+            p_sum += d / (4.0f * hi) * d_omega;
+            const float g = shader::G2_SmithCorrelated(shader::NDF_GGX, wo, wi, alpha, alpha);
+            const glm::vec3 f = shader::F_Schlick(f0, hi);
+            L += f * (g * d / (4.0f * wo.z) * d_omega) * cone.radiance;
+        }
+    *p = std::clamp(p_sum / kneiphof2025_total_facet_area(alpha), 0.0f, 1.0f);
+    *h_center = glm::normalize(wo + ctx.to_local(cone.axis));
+    return desc.color * L;
+}
+
+glm::vec3 area_light_radiance(const GlintLightingContext& ctx, const Cone& cone) {
+    if (!ctx.visible(cone.axis, cone.t_max)) return glm::vec3(0.0f);
+    float p = 0.0f;
+    glm::vec3 h_center;
+    const glm::vec3 L = integrate_cone(ctx, cone, &p, &h_center);
+    if (L == glm::vec3(0.0f) || h_center.z <= 0.0f) return glm::vec3(0.0f);
+    return L * kneiphof2025_area_factor(h_center, ctx.footprint, p, *ctx.desc);
+}
+
+}  // namespace
+
+float kneiphof2025_total_facet_area(float alpha) {
+    return shader::kneiphof2025_total_facet_area(alpha);
+}
+
+glm::vec3 kneiphof2025_f0(const GlintDesc& desc) {
+    const FresnelDesc& f = desc.fresnel;
+    switch (f.mode) {
+        case FresnelDesc::Mode::None:
+            return glm::vec3(1.0f);
+        case FresnelDesc::Mode::Schlick:
+            return f.f0;
+        case FresnelDesc::Mode::Conductor:
+            return shader::F_Conductor(1.0f, f.eta, f.k);
+        case FresnelDesc::Mode::Dielectric:
+            return glm::vec3(shader::F_Dielectric(1.0f, f.eta.x));
+    }
+    return glm::vec3(1.0f);
+}
+
+glm::vec3 kneiphof2025_environment_radiance(const Kneiphof2025Environment& env, glm::vec3 wr,
+                                            float cos_o, const Footprint& footprint,
+                                            const GlintDesc& desc) {
+    const Kneiphof2025Params& p = params_of(desc);
+    if (env.levels() != p.levels) fail("kneiphof2025: environment prefiltered for another K");
+    const auto& L = env.radiance_levels();
+    t_env = &env;
+    const glm::vec3 r = shader::kneiphof2025_environment(
+        wr, cos_o, alpha_of(desc), kneiphof2025_f0(desc), desc.color, footprint, desc.log_density,
+        desc.seed, p.screen_space_scale, p.density_randomization, p.levels,
+        glm::vec4(L[0], L[1], L[2], L[3]), glm::vec4(L[4], L[5], L[6], L[7]),
+        p.variant == Kneiphof2025Params::Variant::Wang2020Style
+            ? shader::KNEIPHOF2025_VARIANT_WANG2020
+            : shader::KNEIPHOF2025_VARIANT_OURS,
+        gamma_solid_angle(p));
+    t_env = nullptr;
+    return r;
+}
+
+glm::vec3 kneiphof2025_environment_smooth(const Kneiphof2025Environment& env, glm::vec3 wr,
+                                          float cos_o, const GlintDesc& desc) {
+    const float roughness = std::sqrt(alpha_of(desc));
+    const glm::vec3 dfg = Kneiphof2025DfgLut::get().lookup(cos_o, roughness);
+    float c[11];
+    env.fetch(wr, roughness, c);
+    return desc.color * (kneiphof2025_f0(desc) * dfg.x + glm::vec3(dfg.y)) *
+           glm::vec3(c[0], c[1], c[2]);
+}
+
+float kneiphof2025_area_factor(glm::vec3 h_center, const Footprint& footprint, float p,
+                               const GlintDesc& desc) {
+    const Kneiphof2025Params& k = params_of(desc);
+    return shader::kneiphof2025_area_factor(h_center, footprint, p, desc.log_density, desc.seed,
+                                            k.microfacet_roughness, k.screen_space_scale,
+                                            k.density_randomization);
+}
+
+float kneiphof2025_binomial_factor(const Footprint& footprint, float p, const GlintDesc& desc) {
+    const Kneiphof2025Params& k = params_of(desc);
+    return shader::kneiphof2025_binomial_factor_no_h(footprint, p, desc.log_density, desc.seed,
+                                                     k.screen_space_scale, k.density_randomization);
+}
+
+float kneiphof2025_footprint_ndf(glm::vec3 h, const Footprint& footprint, const GlintDesc& desc) {
+    const Kneiphof2025Params& k = params_of(desc);
+    Deliot2023Target t;
+    t.ndf = shader::NDF_GGX;
+    t.alpha_x = desc.alpha_x;
+    t.alpha_y = desc.alpha_y;
+    t.log_density = desc.log_density;
+    t.seed = desc.seed;
+    Deliot2023Params d;
+    d.microfacet_roughness = k.microfacet_roughness;
+    d.screen_space_scale = k.screen_space_scale;
+    d.density_randomization = k.density_randomization;
+    d.original_defects = false;
+    return deliot2023_ndf(h, footprint, t, d);
+}
+
+bool kneiphof2025_shades_light(const GlintDesc&, const Scene& scene, int light) {
+    const Light& l = scene.lights[static_cast<size_t>(light)];
+    if (std::holds_alternative<EnvironmentLight>(l) || std::holds_alternative<SphereLight>(l))
+        return true;
+    if (const auto* d = std::get_if<DirectionalLight>(&l)) return d->solid_angle > 0.0f;
+    return false;  // point lights: GlintBxdf (deliot2023's D_P)
+}
+
+glm::vec3 kneiphof2025_light_radiance(const GlintLightingContext& ctx, int light) {
+    const Light& l = ctx.scene->lights[static_cast<size_t>(light)];
+    const GlintDesc& desc = *ctx.desc;
+    if (ctx.wo.z <= 0.0f) return glm::vec3(0.0f);
+    if (const auto* e = std::get_if<EnvironmentLight>(&l)) {
+        // 003 §7: unshadowed (occlusion of the environment is future work, §8).
+        const Kneiphof2025Params& p = params_of(desc);
+        const auto env = kneiphof2025_environment_for(e->map, p.levels, p.black_level);
+        const glm::vec3 wr = ctx.to_world(glm::vec3(-ctx.wo.x, -ctx.wo.y, ctx.wo.z));
+        return kneiphof2025_environment_radiance(*env, wr, ctx.wo.z, ctx.footprint, desc);
+    }
+    if (const auto* s = std::get_if<SphereLight>(&l)) {
+        const glm::vec3 d = s->center - ctx.p;
+        const float dist = glm::length(d);
+        if (!(dist > s->radius)) return glm::vec3(0.0f);
+        const float sin_max = s->radius / dist;
+        Cone c{d / dist, std::sqrt(std::max(0.0f, 1.0f - sin_max * sin_max)), s->radiance,
+               dist - s->radius};
+        return area_light_radiance(ctx, c);
+    }
+    if (const auto* dl = std::get_if<DirectionalLight>(&l)) {
+        if (!(dl->solid_angle > 0.0f)) return glm::vec3(0.0f);
+        Cone c{glm::normalize(dl->direction), dl->cos_max, dl->radiance,
+               std::numeric_limits<float>::infinity()};
+        return area_light_radiance(ctx, c);
+    }
+    return glm::vec3(0.0f);
+}
+
+void read_kneiphof2025_params(JsonObject& block, GlintDesc& desc) {
+    if (desc.ndf != NdfType::GGX || desc.alpha_x != desc.alpha_y || desc.alpha_x > 1.0f)
+        block.error("",
+                    "kneiphof2025 needs an isotropic GGX material with roughness <= 1 "
+                    "(\"ndf\": \"ggx\", one roughness value; 003 §7-8: the split-sum "
+                    "tables are isotropic GGX)");
+    Kneiphof2025Params p;
+    p.levels = block.integer("levels", p.levels, 4, 8);
+    if (p.levels != 4 && p.levels != 8) block.error("levels", "must be 4 or 8 (003 §4)");
+    p.black_level = static_cast<float>(block.number("black_level", p.black_level, 1e-8, 1.0));
+    const std::string variant =
+        block.string("variant", "kneiphof2025", {"kneiphof2025", "wang2020_style"});
+    p.variant = variant == "wang2020_style" ? Kneiphof2025Params::Variant::Wang2020Style
+                                            : Kneiphof2025Params::Variant::Kneiphof2025;
+    // Cone half-angle of the wang2020-style probability: 0.01-45 deg.
+    p.gamma_deg = static_cast<float>(block.number("gamma_deg", p.gamma_deg, 0.01, 45.0));
+    // Same ranges as deliot2023's block (deliot2023.cpp).
+    p.microfacet_roughness =
+        static_cast<float>(block.number("microfacet_roughness", p.microfacet_roughness, 1e-4, 1.0));
+    p.screen_space_scale =
+        static_cast<float>(block.number("screen_space_scale", p.screen_space_scale, 0.5, 8.0));
+    p.density_randomization = static_cast<float>(
+        block.number("density_randomization", p.density_randomization, 0.0, 50.0));
+    desc.params = p;
+    block.finish();
+}
+
+}  // namespace glintlab

@@ -1,0 +1,249 @@
+// kneiphof2025: Kneiphof & Klein, "Real-Time Image-based Lighting of Glints",
+// EGSR/CGF 2025 (papers/003), with its area-light special case K = 1
+// (kneiphof2024, restated in 003 Eq. 4-9). Equation numbers are 003's.
+//
+// The glint model only modulates the radiance of the equivalent smooth
+// surface (003 §1 "core assumptions"):
+//   L_P(wo) = L_o(wo) * sum_k L^(k) M_k(N_P, p) / (E[N_P] sum_k L^(k) p^(k))   (Eq. 17)
+// with L_o the split-sum smooth radiance (Eq. 11), L^(k) the K radiance levels
+// of the environment (Eq. 18), p^(k) the probability that a facet reflects
+// level k (Eq. 15, 20-21: E_D(wo)/D_H times the prefiltered fuzzy indicator
+// w^(k), Eq. 19), and M the multinomial counts of the N_P facets of the
+// footprint (§6: hierarchical dual-gated binomials, Algorithm 1) distributed
+// over deliot2023's anisotropic grid without the half-vector dimension (Eq. 10).
+//
+// Prefiltered inputs come through fetch functions the back end defines:
+//   vec3 kneiphof2025_radiance_fetch(vec3 dir, float roughness)
+//        prefiltered radiance (second integral of Eq. 11) at a world direction,
+//        roughness = sqrt(alpha) in [0, 1];
+//   vec4 kneiphof2025_weights_fetch(vec3 dir, float roughness, int group)
+//        prefiltered fuzzy indicators w^(4 group + 1 .. 4 group + 4) (the
+//        integral of Eq. 21), group 0 or 1;
+//   vec3 kneiphof2025_dfg_fetch(float cos_o, float roughness)
+//        (A, B, E_D / D_H): split-sum albedo E_rho = F0 A + B (Eq. 11) and the
+//        visible reflecting facet area over the total facet area (Eq. 21, 8).
+// The C++ back end (kneiphof2025.cpp) defines them over its CPU prefiltered
+// maps before including this file; the GLSL defaults below read lat-long
+// textures whose mip level i holds roughness i / (mip count - 1).
+#ifndef GLINTLAB_GLINTS_KNEIPHOF2025_GLSL
+#define GLINTLAB_GLINTS_KNEIPHOF2025_GLSL
+
+#include "glintlab/core/constants.glsl"
+#include "glintlab/core/footprint.glsl"
+#include "glintlab/core/hash.glsl"
+#include "glintlab/counting/binomial_laws.glsl"
+#include "glintlab/counting/multinomial.glsl"
+#include "glintlab/glints/deliot2023/deliot2023.glsl"
+
+#ifndef GLINTLAB_CPP
+// RGB radiance and the weights of levels 1-4 and 5-8, lat-long (the
+// EnvironmentMap convention, v = 0 at the zenith), one roughness per mip.
+uniform sampler2D kneiphof2025_radiance_map;
+uniform sampler2D kneiphof2025_weights_map_a;
+uniform sampler2D kneiphof2025_weights_map_b;
+// RGB = (A, B, E_D / D_H) at (cos_o, roughness) texel centres.
+uniform sampler2D kneiphof2025_dfg_lut;
+uniform float kneiphof2025_env_rotation;  // radians about +y
+uniform float kneiphof2025_max_lod;       // mip count - 1
+
+vec2 kneiphof2025_latlong_uv(vec3 d) {
+    float theta = acos(clamp(d.y, -1.0f, 1.0f));
+    float phi = atan(d.x, -d.z) - kneiphof2025_env_rotation;
+    float u = 0.5f + phi / TWO_PI;
+    return vec2(u - floor(u), theta / PI);
+}
+vec3 kneiphof2025_radiance_fetch(vec3 dir, float roughness) {
+    vec4 t = textureLod(kneiphof2025_radiance_map, kneiphof2025_latlong_uv(dir),
+                        roughness * kneiphof2025_max_lod);
+    return vec3(t.x, t.y, t.z);
+}
+vec4 kneiphof2025_weights_fetch(vec3 dir, float roughness, int group) {
+    vec2 uv = kneiphof2025_latlong_uv(dir);
+    float lod = roughness * kneiphof2025_max_lod;
+    return group == 0 ? textureLod(kneiphof2025_weights_map_a, uv, lod)
+                      : textureLod(kneiphof2025_weights_map_b, uv, lod);
+}
+vec3 kneiphof2025_dfg_fetch(float cos_o, float roughness) {
+    vec4 t = textureLod(kneiphof2025_dfg_lut, vec2(cos_o, roughness), 0.0f);
+    return vec3(t.x, t.y, t.z);
+}
+#endif
+
+const int KNEIPHOF2025_VARIANT_OURS = 0;
+const int KNEIPHOF2025_VARIANT_WANG2020 = 1;
+
+// D_H = integral of D over all facet orientations (003 §3.2) for isotropic
+// GGX, in closed form: with t = tan^2(theta), D_H = alpha^2 int_0^inf
+// sqrt(1 + t) / (alpha^2 + t)^2 dt = 1 + alpha^2 atanh(b) / b, b = sqrt(1 - alpha^2)
+// (atan(b') / b' with b' = sqrt(alpha^2 - 1) for alpha > 1); 2 at alpha = 1.
+// (The authors' code approximates it by 1 + alpha^1.41, papers/README.md.)
+float kneiphof2025_total_facet_area(float alpha) {
+    float a2 = alpha * alpha;
+    float d = 1.0f - a2;
+    float f;
+    if (abs(d) < 1e-4f) {
+        f = 1.0f + d / 3.0f;  // atanh(b)/b = 1 + b^2/3 + O(b^4), same for atan with b^2 < 0
+    } else if (d > 0.0f) {
+        float b = sqrt(d);
+        f = 0.5f * log((1.0f + b) / (1.0f - b)) / b;
+    } else {
+        float b = sqrt(-d);
+        f = atan(b) / b;
+    }
+    return 1.0f + a2 * f;
+}
+
+// Reflection probabilities (Eq. 15 with Eq. 21): p^(k) = (E_D / D_H) w^(k),
+// where w^(k) are the prefiltered fuzzy indicators renormalised by their sum
+// (prefiltering preserves the partition of unity only up to rounding; the
+// authors renormalise at lookup, papers/README.md). Level 1 (L^(1) = 0) also
+// takes the facets that reflect nothing visible, 1 - E_D / D_H (003 §5
+// "Discrete Radiance Levels"), so the K probabilities sum to 1.
+void kneiphof2025_probabilities(vec4 w_a, vec4 w_b, int levels, float p_visible, OUT(vec4) p_a,
+                                OUT(vec4) p_b) {
+    w_a = max(w_a, vec4(0.0f));
+    w_b = levels > 4 ? max(w_b, vec4(0.0f)) : vec4(0.0f);
+    float sum = w_a.x + w_a.y + w_a.z + w_a.w + w_b.x + w_b.y + w_b.z + w_b.w;
+    float pv = clamp(p_visible, 0.0f, 1.0f);
+    if (!(sum > 0.0f)) {
+        p_a = vec4(1.0f, 0.0f, 0.0f, 0.0f);
+        p_b = vec4(0.0f);
+        return;
+    }
+    p_a = w_a * (pv / sum);
+    p_b = w_b * (pv / sum);
+    p_a.x += 1.0f - pv;
+}
+
+// One grid of the footprint (Eq. 10 without the half-vector dimension): per
+// simplex vertex, the multinomial counts of its N trials over the K levels
+// (§6), weighted by the level radiances. Returns (sum_v beta_v sum_k L^(k) M_k,
+// sum_v beta_v N_v). The vertex's stream gives the density jitter first (as in
+// deliot2023), then the 2 uniforms of each of the K - 1 hierarchy levels.
+vec2 kneiphof2025_grid_multinomial(ivec3 id, float weight, vec2 uv, float log_density, uint seed,
+                                   float density_randomization, int levels, vec4 p_a, vec4 p_b,
+                                   vec4 L_a, vec4 L_b) {
+    Deliot2023Simplex s = deliot2023_simplex(id, weight, uv, log_density, seed);
+    vec2 acc = vec2(0.0f);
+    for (int v = 0; v < 3; ++v) {
+        float bv = s.beta[v];
+        if (bv <= 0.0f) continue;
+        uint vs = s.vertex_seed[v];
+        float N = deliot2023_vertex_trials(s.log_trials, density_randomization, vs);
+        vec4 xi1_a = vec4(hash_random(vs), hash_random(vs), hash_random(vs), hash_random(vs));
+        vec4 xi2_a = vec4(hash_random(vs), hash_random(vs), hash_random(vs), hash_random(vs));
+        float value;
+        if (levels > 4) {
+            vec4 xi1_b = vec4(hash_random(vs), hash_random(vs), hash_random(vs), 0.0f);
+            vec4 xi2_b = vec4(hash_random(vs), hash_random(vs), hash_random(vs), 0.0f);
+            vec4 counts_a;
+            vec4 counts_b;
+            multinomial8(N, p_a, p_b, xi1_a, xi2_a, xi1_b, xi2_b, counts_a, counts_b);
+            value = dot(counts_a, L_a) + dot(counts_b, L_b);
+        } else {
+            value = dot(multinomial4(N, p_a, xi1_a, xi2_a), L_a);
+        }
+        acc += bv * vec2(value, N);
+    }
+    return acc;
+}
+
+// The glint factor of Eq. 17 for a footprint: weighted multinomial sample over
+// its expected value; mean 1 over realisations (Eq. 33). 1 where nothing
+// reflects (then the smooth radiance is 0 as well).
+float kneiphof2025_ibl_factor(Footprint fp, float log_density, uint seed, float screen_space_scale,
+                              float density_randomization, int levels, vec4 p_a, vec4 p_b,
+                              vec4 L_a, vec4 L_b) {
+    float expected = dot(p_a, L_a) + (levels > 4 ? dot(p_b, L_b) : 0.0f);
+    if (!(expected > 0.0f)) return 1.0f;
+    Deliot2023Grids grids = deliot2023_footprint_grids(fp, screen_space_scale, false);
+    vec2 acc = vec2(0.0f);
+    for (int i = 0; i < 4; ++i) {
+        if (grids.weight[i] <= 0.0f) continue;
+        acc += kneiphof2025_grid_multinomial(grids.id[i], grids.weight[i], fp.uv, log_density, seed,
+                                             density_randomization, levels, p_a, p_b, L_a, L_b);
+    }
+    return acc.y > 0.0f ? acc.x / (acc.y * expected) : 1.0f;
+}
+
+// K = 1 on the grid without the half-vector dimension: b(N_P, p) / (E[N_P] p)
+// with the single-gated law of Eq. 23 (the "wang2020-style" variant of 003
+// Fig. 8, whose p does not depend on the environment).
+float kneiphof2025_binomial_factor_no_h(Footprint fp, float p, float log_density, uint seed,
+                                        float screen_space_scale, float density_randomization) {
+    if (!(p > 0.0f)) return 1.0f;
+    Deliot2023Grids grids = deliot2023_footprint_grids(fp, screen_space_scale, false);
+    vec2 acc = vec2(0.0f);
+    for (int i = 0; i < 4; ++i) {
+        if (grids.weight[i] <= 0.0f) continue;
+        Deliot2023Simplex s = deliot2023_simplex(grids.id[i], grids.weight[i], fp.uv, log_density, seed);
+        for (int v = 0; v < 3; ++v) {
+            float bv = s.beta[v];
+            if (bv <= 0.0f) continue;
+            uint vs = s.vertex_seed[v];
+            float N = deliot2023_vertex_trials(s.log_trials, density_randomization, vs);
+            float xi1 = hash_random(vs);
+            float xi2 = hash_random(vs);
+            acc += bv * vec2(binomial_single_gated(N, p, xi1, xi2), N);
+        }
+    }
+    return acc.y > 0.0f ? acc.x / (acc.y * p) : 1.0f;
+}
+
+// K = 1 area light (kneiphof2024; 003 Eq. 6-9, 23): b(N_P, p_Omega) on the
+// full deliot2023 grid, whose angular dimension is indexed by the half vector
+// h_c towards the light's centre in units of R (000 Eq. 14), with the fixed
+// single-gated law. Returns b / (E[N_P] p), mean 1.
+float kneiphof2025_area_factor(vec3 h_center, Footprint fp, float p, float log_density, uint seed,
+                               float microfacet_roughness, float screen_space_scale,
+                               float density_randomization) {
+    if (!(p > 0.0f)) return 1.0f;
+    Deliot2023Grids grids = deliot2023_footprint_grids(fp, screen_space_scale, false);
+    vec2 slope = vec2(h_center.x, h_center.y) / microfacet_roughness;
+    vec2 acc = vec2(0.0f);
+    for (int i = 0; i < 4; ++i) {
+        if (grids.weight[i] <= 0.0f) continue;
+        acc += deliot2023_grid_counts(grids.id[i], grids.weight[i], fp.uv, slope, p, log_density, seed,
+                                      density_randomization, false);
+    }
+    return acc.y > 0.0f ? acc.x / (acc.y * p) : 1.0f;
+}
+
+// Environment lighting of one footprint (Eq. 11, 15, 17, 21).
+// wr: world mirror direction of wo; cos_o = n.wo > 0; alpha = GGX roughness;
+// f0: Schlick reflectance at normal incidence (split-sum E_rho = F0 A + B);
+// levels K (4 or 8) and radiance levels L_a (k = 1-4), L_b (k = 5-8);
+// variant: ours, or the wang2020 style with a fixed cone of solid angle
+// gamma_solid_angle around the mirror direction.
+vec3 kneiphof2025_environment(vec3 wr, float cos_o, float alpha, vec3 f0, vec3 color, Footprint fp,
+                              float log_density, uint seed, float screen_space_scale,
+                              float density_randomization, int levels, vec4 L_a, vec4 L_b,
+                              int variant, float gamma_solid_angle) {
+    float roughness = sqrt(clamp(alpha, 0.0f, 1.0f));
+    vec3 dfg = kneiphof2025_dfg_fetch(cos_o, roughness);
+    vec3 e_rho = color * (f0 * dfg.x + vec3(dfg.y));                          // Eq. 11, first integral
+    vec3 smooth_radiance = e_rho * kneiphof2025_radiance_fetch(wr, roughness);  // Eq. 11
+    float factor;
+    if (variant == KNEIPHOF2025_VARIANT_WANG2020) {
+        // 003 Fig. 8: p from a user cone, not from the environment. We take the
+        // probability of the facets within the cone Omega_gamma around the
+        // mirror direction, p = D(n) Omega_gamma / (4 cos_o D_H) (Eq. 8-9 with
+        // h = n), capped by the visible reflecting area.
+        float d_n = 1.0f / (PI * alpha * alpha);
+        float p = min(d_n * gamma_solid_angle / (4.0f * cos_o * kneiphof2025_total_facet_area(alpha)),
+                      dfg.z);
+        factor = kneiphof2025_binomial_factor_no_h(fp, p, log_density, seed, screen_space_scale,
+                                                   density_randomization);
+    } else {
+        vec4 w_a = kneiphof2025_weights_fetch(wr, roughness, 0);
+        vec4 w_b = levels > 4 ? kneiphof2025_weights_fetch(wr, roughness, 1) : vec4(0.0f);
+        vec4 p_a;
+        vec4 p_b;
+        kneiphof2025_probabilities(w_a, w_b, levels, dfg.z, p_a, p_b);
+        factor = kneiphof2025_ibl_factor(fp, log_density, seed, screen_space_scale,
+                                         density_randomization, levels, p_a, p_b, L_a, L_b);
+    }
+    return smooth_radiance * factor;
+}
+
+#endif

@@ -1,0 +1,26 @@
+// Parameters of the kneiphof2025 glint model (its block "kneiphof2025": {...}
+// of a glint material; ranges and defaults justified in docs/MODELS.md).
+#pragma once
+
+namespace glintlab {
+
+struct Kneiphof2025Params {
+    enum class Variant { Kneiphof2025, Wang2020Style };
+    // K radiance levels of the environment partition (003 §4-5): 4 or 8.
+    int levels = 8;
+    // l of 003 §5: the dimmest non-zero level is at least this luminance
+    // (the paper suggests [1e-5, 1e-2]; we accept [1e-8, 1]).
+    float black_level = 1e-2f;
+    // 003 Fig. 8: "kneiphof2025" (p from the environment's partition) or
+    // "wang2020_style" (p from a fixed cone of half-angle gamma_deg).
+    Variant variant = Variant::Kneiphof2025;
+    float gamma_deg = 5.0f;
+    // Reused deliot2023 grid parameters (000; see Deliot2023Params): R for the
+    // angular grid of point / directional / sphere lights, the minimum glint
+    // size in pixels, and the per-cell log-density jitter.
+    float microfacet_roughness = 0.025f;
+    float screen_space_scale = 1.5f;
+    float density_randomization = 0.0f;
+};
+
+}  // namespace glintlab

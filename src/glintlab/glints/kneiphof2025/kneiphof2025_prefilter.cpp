@@ -1,0 +1,370 @@
+#include "glintlab/glints/kneiphof2025/kneiphof2025_prefilter.h"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <mutex>
+#include <tuple>
+
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
+#include <glm/gtc/constants.hpp>
+
+#include "glintlab/core/error.h"
+#include "glintlab/core/image.h"
+#include "glintlab/microfacet/microfacet.h"
+#include "glintlab/scene/environment.h"
+
+namespace glintlab {
+namespace {
+
+constexpr float kPi = glm::pi<float>();
+
+float radical_inverse2(uint32_t i) {
+    i = (i << 16u) | (i >> 16u);
+    i = ((i & 0x55555555u) << 1u) | ((i & 0xAAAAAAAAu) >> 1u);
+    i = ((i & 0x33333333u) << 2u) | ((i & 0xCCCCCCCCu) >> 2u);
+    i = ((i & 0x0F0F0F0Fu) << 4u) | ((i & 0xF0F0F0F0u) >> 4u);
+    i = ((i & 0x00FF00FFu) << 8u) | ((i & 0xFF00FF00u) >> 8u);
+    return static_cast<float>(i) * 2.3283064365386963e-10f;
+}
+
+glm::vec2 hammersley(int i, int n) {
+    return {(static_cast<float>(i) + 0.5f) / static_cast<float>(n),
+            radical_inverse2(static_cast<uint32_t>(i))};
+}
+
+// Half vector with density D(h) cos(theta_h) for isotropic GGX (local frame).
+glm::vec3 sample_ggx_cos(float alpha, glm::vec2 u) {
+    const float a2 = alpha * alpha;
+    const float cos2 = (1.0f - u.x) / (1.0f + (a2 - 1.0f) * u.x);
+    const float cos_t = std::sqrt(std::max(cos2, 0.0f));
+    const float sin_t = std::sqrt(std::max(1.0f - cos2, 0.0f));
+    const float phi = 2.0f * kPi * u.y;
+    return {sin_t * std::cos(phi), sin_t * std::sin(phi), cos_t};
+}
+
+float d_ggx(glm::vec3 h, float alpha) {
+    return shader::D_Microfacet(shader::NDF_GGX, h, alpha, alpha);
+}
+
+// Lat-long in the map's own frame (rotation 0), the EnvironmentMap convention.
+glm::vec3 map_direction(glm::vec2 uv) {
+    const float theta = uv.y * kPi;
+    const float phi = (uv.x - 0.5f) * 2.0f * kPi;
+    const float s = std::sin(theta);
+    return {s * std::sin(phi), std::cos(theta), -s * std::cos(phi)};
+}
+
+glm::vec2 map_uv(glm::vec3 d, float rotation_rad) {
+    const float theta = std::acos(std::clamp(d.y, -1.0f, 1.0f));
+    float u = 0.5f + (std::atan2(d.x, -d.z) - rotation_rad) / (2.0f * kPi);
+    u -= std::floor(u);
+    return {u, theta / kPi};
+}
+
+// Bilinear lookup of C channels in a lat-long level (u wraps, v clamps).
+void bilinear(const Kneiphof2025Level& l, int channels, glm::vec2 uv, float* out) {
+    const float fx = uv.x * static_cast<float>(l.width) - 0.5f;
+    const float fy = uv.y * static_cast<float>(l.height) - 0.5f;
+    const float x0f = std::floor(fx), y0f = std::floor(fy);
+    const float tx = fx - x0f, ty = fy - y0f;
+    const int x0 = static_cast<int>(x0f), y0 = static_cast<int>(y0f);
+    const int xa = ((x0 % l.width) + l.width) % l.width, xb = (xa + 1) % l.width;
+    const int ya = std::clamp(y0, 0, l.height - 1), yb = std::clamp(y0 + 1, 0, l.height - 1);
+    const float w[4] = {(1 - tx) * (1 - ty), tx * (1 - ty), (1 - tx) * ty, tx * ty};
+    const size_t idx[4] = {
+        (size_t(ya) * l.width + xa) * channels, (size_t(ya) * l.width + xb) * channels,
+        (size_t(yb) * l.width + xa) * channels, (size_t(yb) * l.width + xb) * channels};
+    for (int c = 0; c < channels; ++c) {
+        float s = 0.0f;
+        for (int k = 0; k < 4; ++k) s += w[k] * l.data[idx[k] + c];
+        out[c] = s;
+    }
+}
+
+// Bilinear sample of the source image (image uv, no rotation) times scale.
+glm::vec3 source_sample(const EnvironmentMap& env, glm::vec2 uv) {
+    const Image& img = env.image();
+    const float fx = uv.x * static_cast<float>(img.width) - 0.5f;
+    const float fy = uv.y * static_cast<float>(img.height) - 0.5f;
+    const float x0f = std::floor(fx), y0f = std::floor(fy);
+    const float tx = fx - x0f, ty = fy - y0f;
+    const int x0 = static_cast<int>(x0f), y0 = static_cast<int>(y0f);
+    auto texel = [&](int x, int y) {
+        return img.at(((x % img.width) + img.width) % img.width, std::clamp(y, 0, img.height - 1));
+    };
+    const glm::vec3 c = (1 - tx) * (1 - ty) * texel(x0, y0) + tx * (1 - ty) * texel(x0 + 1, y0) +
+                        (1 - tx) * ty * texel(x0, y0 + 1) + tx * ty * texel(x0 + 1, y0 + 1);
+    return c * env.scale();
+}
+
+template <typename F>
+void parallel_rows(int rows, F&& f) {
+    // Isolated: the prefilter may run inside a render task while other
+    // render tasks wait for it (kneiphof2025_environment_for holds a lock);
+    // without isolation this thread could pick up one of them and deadlock.
+    tbb::this_task_arena::isolate([&] {
+        tbb::parallel_for(tbb::blocked_range<int>(0, rows), [&](const tbb::blocked_range<int>& r) {
+            for (int y = r.begin(); y < r.end(); ++y) f(y);
+        });
+    });
+}
+
+}  // namespace
+
+Kneiphof2025Environment::Kneiphof2025Environment(const EnvironmentMap& env,
+                                                 const Kneiphof2025PrefilterOptions& o)
+    : levels_(o.levels) {
+    if (o.levels != 4 && o.levels != 8)
+        fail("kneiphof2025: levels must be 4 or 8 (003 §4), got {}", o.levels);
+    if (!(o.black_level >= 1e-8f && o.black_level <= 1.0f))
+        fail("kneiphof2025: black_level must be in [1e-8, 1], got {}", o.black_level);
+    if (o.base_width < 16 || (o.base_width & (o.base_width - 1)) != 0 || o.base_width > 8192)
+        fail("kneiphof2025: base_width must be a power of two in [16, 8192], got {}", o.base_width);
+    if (o.mip_count < 2 || (o.base_width >> (o.mip_count - 1)) < 4)
+        fail("kneiphof2025: mip_count {} leaves fewer than 4 texels across the last level",
+             o.mip_count);
+    if (o.samples < 1 || o.samples > 65536)
+        fail("kneiphof2025: samples must be in [1, 65536], got {}", o.samples);
+    rotation_rad_ = glm::radians(env.rotation_deg());
+    const int C = channels();
+    const int W = o.base_width, H = o.base_width / 2;
+
+    // Level 0: the radiance resampled to W x H (s x s bilinear samples per
+    // texel when the source is larger, a box filter of its texels).
+    Kneiphof2025Level base;
+    base.width = W;
+    base.height = H;
+    base.data.assign(size_t(W) * H * C, 0.0f);
+    const int ss = std::max(1, (env.image().width + W - 1) / W);
+    std::vector<float> lum(size_t(W) * H);
+    parallel_rows(H, [&](int y) {
+        for (int x = 0; x < W; ++x) {
+            glm::vec3 c(0.0f);
+            for (int j = 0; j < ss; ++j)
+                for (int i = 0; i < ss; ++i)
+                    c += source_sample(env, {(x + (i + 0.5f) / ss) / W, (y + (j + 0.5f) / ss) / H});
+            c /= static_cast<float>(ss * ss);
+            float* t = &base.data[(size_t(y) * W + x) * C];
+            t[0] = c.x;
+            t[1] = c.y;
+            t[2] = c.z;
+            lum[size_t(y) * W + x] = std::max(luminance(c), 0.0f);
+        }
+    });
+
+    // Eq. 18: L^(1) = 0, L^(k) = exp(lerp(log lo, log hi, (k-1)/(K-1))) for
+    // k > 1, lo = max(min L, black level), hi = max L (luminance, Rec.709).
+    min_luminance_ = *std::min_element(lum.begin(), lum.end());
+    max_luminance_ = *std::max_element(lum.begin(), lum.end());
+    const float lo = std::max(min_luminance_, o.black_level);
+    const float hi = std::max(max_luminance_, lo);
+    radiance_levels_.fill(0.0f);
+    for (int k = 1; k < levels_; ++k) {
+        const float a = static_cast<float>(k) / static_cast<float>(levels_ - 1);
+        radiance_levels_[k] = std::exp(std::log(lo) + a * (std::log(hi) - std::log(lo)));
+    }
+    radiance_levels_[levels_ - 1] = hi;  // exactly the max: no texel above the top level
+    for (size_t i = 0; i < lum.size(); ++i) partition(lum[i], &base.data[i * C + 3]);
+
+    // Source pyramid for filtered importance sampling: 2 x 2 box reductions.
+    std::vector<Kneiphof2025Level> pyramid{base};
+    while (pyramid.back().width > 2) {
+        const Kneiphof2025Level& s = pyramid.back();
+        Kneiphof2025Level d;
+        d.width = s.width / 2;
+        d.height = std::max(1, s.height / 2);
+        d.data.assign(size_t(d.width) * d.height * C, 0.0f);
+        const int sy = s.height > 1 ? 2 : 1;
+        for (int y = 0; y < d.height; ++y)
+            for (int x = 0; x < d.width; ++x)
+                for (int c = 0; c < C; ++c) {
+                    float sum = 0.0f;
+                    for (int j = 0; j < sy; ++j)
+                        for (int i = 0; i < 2; ++i)
+                            sum += s.data[(size_t(y * sy + j) * s.width + x * 2 + i) * C + c];
+                    d.data[(size_t(y) * d.width + x) * C + c] = sum / static_cast<float>(2 * sy);
+                }
+        pyramid.push_back(std::move(d));
+    }
+    auto pyramid_fetch = [&](glm::vec2 uv, float lod, float* out, float* tmp) {
+        const float l = std::clamp(lod, 0.0f, static_cast<float>(pyramid.size() - 1));
+        const int l0 = static_cast<int>(std::floor(l));
+        const int l1 = std::min(l0 + 1, static_cast<int>(pyramid.size()) - 1);
+        const float t = l - static_cast<float>(l0);
+        bilinear(pyramid[l0], C, uv, out);
+        if (t > 0.0f && l1 != l0) {
+            bilinear(pyramid[l1], C, uv, tmp);
+            for (int c = 0; c < C; ++c) out[c] += t * (tmp[c] - out[c]);
+        }
+    };
+
+    // Eq. 11 / 21: every channel filtered by the same kernel p(wi) ~ D(h) <n, wi>
+    // with n = v = r. Sample solid angle vs texel solid angle gives the LOD
+    // (Colbert & Krivanek 2007, +1 as Karis 2013).
+    mips_.push_back(std::move(base));
+    const float texel_solid_angle = 4.0f * kPi / (static_cast<float>(W) * static_cast<float>(H));
+    for (int m = 1; m < o.mip_count; ++m) {
+        const float r = static_cast<float>(m) / static_cast<float>(o.mip_count - 1);
+        const float alpha = std::max(r * r, 1e-4f);
+        Kneiphof2025Level lvl;
+        lvl.width = W >> m;
+        lvl.height = H >> m;
+        lvl.data.assign(size_t(lvl.width) * lvl.height * C, 0.0f);
+        struct KernelSample {
+            glm::vec3 l;
+            float weight, lod;
+        };
+        std::vector<KernelSample> kernel;
+        for (int s = 0; s < o.samples; ++s) {
+            const glm::vec3 h = sample_ggx_cos(alpha, hammersley(s, o.samples));
+            const glm::vec3 l = 2.0f * h.z * h - glm::vec3(0, 0, 1);
+            if (l.z <= 0.0f) continue;
+            const float pdf = d_ggx(h, alpha) * 0.25f;  // D(h) <n,h> / (4 <v,h>), n = v
+            const float omega_s = 1.0f / (static_cast<float>(o.samples) * pdf);
+            kernel.push_back(
+                {l, l.z, std::max(0.5f * std::log2(omega_s / texel_solid_angle) + 1.0f, 0.0f)});
+        }
+        parallel_rows(lvl.height, [&](int y) {
+            std::vector<float> acc(C), val(C), tmp(C);
+            for (int x = 0; x < lvl.width; ++x) {
+                const glm::vec3 n =
+                    map_direction({(x + 0.5f) / lvl.width, (y + 0.5f) / lvl.height});
+                // Orthonormal basis (Duff et al. 2017).
+                const float sign = std::copysign(1.0f, n.z);
+                const float a = -1.0f / (sign + n.z);
+                const float b = n.x * n.y * a;
+                const glm::vec3 t(1.0f + sign * n.x * n.x * a, sign * b, -sign * n.x);
+                const glm::vec3 bt(b, sign + n.y * n.y * a, -n.y);
+                std::fill(acc.begin(), acc.end(), 0.0f);
+                float wsum = 0.0f;
+                for (const KernelSample& k : kernel) {
+                    const glm::vec3 d = k.l.x * t + k.l.y * bt + k.l.z * n;
+                    pyramid_fetch(map_uv(d, 0.0f), k.lod, val.data(), tmp.data());
+                    for (int c = 0; c < C; ++c) acc[c] += k.weight * val[c];
+                    wsum += k.weight;
+                }
+                float* out = &lvl.data[(size_t(y) * lvl.width + x) * C];
+                for (int c = 0; c < C; ++c) out[c] = wsum > 0.0f ? acc[c] / wsum : 0.0f;
+            }
+        });
+        mips_.push_back(std::move(lvl));
+    }
+}
+
+void Kneiphof2025Environment::partition(float L, float* w) const {
+    // Eq. 19 in linear space: the hat functions of the two levels around L.
+    for (int k = 0; k < levels_; ++k) w[k] = 0.0f;
+    const float l = std::clamp(L, 0.0f, radiance_levels_[levels_ - 1]);
+    for (int j = 0; j + 1 < levels_; ++j) {
+        const float a = radiance_levels_[j], b = radiance_levels_[j + 1];
+        if (l <= b) {
+            // Equal levels (a constant environment: all k > 1 equal) give the
+            // whole weight to the upper one.
+            const float t = b > a ? (l - a) / (b - a) : 1.0f;
+            w[j] = 1.0f - t;
+            w[j + 1] = t;
+            return;
+        }
+    }
+    w[levels_ - 1] = 1.0f;
+}
+
+void Kneiphof2025Environment::fetch_level(int level, glm::vec2 uv, float* out) const {
+    bilinear(mips_[level], channels(), uv, out);
+}
+
+void Kneiphof2025Environment::fetch(glm::vec3 dir, float roughness, float* out) const {
+    const glm::vec2 uv = map_uv(dir, rotation_rad_);
+    const int last = static_cast<int>(mips_.size()) - 1;
+    const float l = std::clamp(roughness, 0.0f, 1.0f) * static_cast<float>(last);
+    const int l0 = std::min(static_cast<int>(std::floor(l)), last);
+    const int l1 = std::min(l0 + 1, last);
+    const float t = l - static_cast<float>(l0);
+    fetch_level(l0, uv, out);
+    if (t > 0.0f && l1 != l0) {
+        float tmp[11];
+        fetch_level(l1, uv, tmp);
+        for (int c = 0; c < channels(); ++c) out[c] += t * (tmp[c] - out[c]);
+    }
+}
+
+// --- DFG / E_D table ---------------------------------------------------------
+
+glm::vec3 Kneiphof2025DfgLut::integrate(float cos_o, float roughness, int samples) {
+    const float c = std::clamp(cos_o, 1e-4f, 1.0f);
+    const float alpha = std::max(roughness * roughness, 1e-4f);
+    const glm::vec3 v(std::sqrt(std::max(1.0f - c * c, 0.0f)), 0.0f, c);
+    double A = 0.0, B = 0.0, E = 0.0;
+    for (int s = 0; s < samples; ++s) {
+        // h with density D(h) cos(theta_h).
+        const glm::vec3 h = sample_ggx_cos(alpha, hammersley(s, samples));
+        const float vh = glm::dot(v, h);
+        if (vh <= 0.0f) continue;
+        const glm::vec3 l = 2.0f * vh * h - v;
+        if (l.z <= 0.0f) continue;
+        // E_D = int D(h) dh over the orientations that reflect v above the
+        // horizon (Eq. 21: int D / (4 <h, wi>) dwi with dwi = 4 <h, wo> dh).
+        E += 1.0 / h.z;
+        // E_rho = int F G2 D / (4 cos_o) dwi; pdf(l) = D h.z / (4 vh).
+        const float g = shader::G2_SmithCorrelated(shader::NDF_GGX, v, l, alpha, alpha);
+        const float g_vis = g * vh / (h.z * c);
+        const float fc = std::pow(1.0f - vh, 5.0f);
+        A += (1.0f - fc) * g_vis;
+        B += fc * g_vis;
+    }
+    const double n = samples;
+    return {static_cast<float>(A / n), static_cast<float>(B / n),
+            static_cast<float>(E / n / kneiphof2025_total_facet_area(alpha))};
+}
+
+Kneiphof2025DfgLut::Kneiphof2025DfgLut() : table_(size_t(kSize) * kSize) {
+    parallel_rows(kSize, [&](int j) {
+        for (int i = 0; i < kSize; ++i)
+            table_[size_t(j) * kSize + i] =
+                integrate((i + 0.5f) / kSize, (j + 0.5f) / kSize, kSamples);
+    });
+}
+
+const Kneiphof2025DfgLut& Kneiphof2025DfgLut::get() {
+    static const Kneiphof2025DfgLut lut;
+    return lut;
+}
+
+glm::vec3 Kneiphof2025DfgLut::lookup(float cos_o, float roughness) const {
+    const float fx = std::clamp(cos_o * kSize - 0.5f, 0.0f, float(kSize - 1));
+    const float fy = std::clamp(roughness * kSize - 0.5f, 0.0f, float(kSize - 1));
+    const int x0 = std::min(static_cast<int>(fx), kSize - 2),
+              y0 = std::min(static_cast<int>(fy), kSize - 2);
+    const float tx = fx - x0, ty = fy - y0;
+    auto at = [&](int x, int y) { return table_[size_t(y) * kSize + x]; };
+    return (1 - tx) * (1 - ty) * at(x0, y0) + tx * (1 - ty) * at(x0 + 1, y0) +
+           (1 - tx) * ty * at(x0, y0 + 1) + tx * ty * at(x0 + 1, y0 + 1);
+}
+
+// --- cache -------------------------------------------------------------------
+
+std::shared_ptr<const Kneiphof2025Environment> kneiphof2025_environment_for(
+    const std::shared_ptr<const EnvironmentMap>& env, int levels, float black_level) {
+    struct Entry {
+        std::weak_ptr<const EnvironmentMap> owner;
+        std::shared_ptr<const Kneiphof2025Environment> value;
+    };
+    static std::mutex mutex;
+    static std::map<std::tuple<const EnvironmentMap*, int, float>, Entry> cache;
+    if (!env) fail("kneiphof2025: environment light without a map");
+    std::lock_guard<std::mutex> lock(mutex);
+    Entry& e = cache[{env.get(), levels, black_level}];
+    if (!e.value || e.owner.lock() != env) {
+        Kneiphof2025PrefilterOptions o;
+        o.levels = levels;
+        o.black_level = black_level;
+        e.value = std::make_shared<const Kneiphof2025Environment>(*env, o);
+        e.owner = env;
+    }
+    return e.value;
+}
+
+}  // namespace glintlab

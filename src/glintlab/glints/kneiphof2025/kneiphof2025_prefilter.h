@@ -1,0 +1,110 @@
+// CPU prefiltering for kneiphof2025 (papers/003 §3.4, §5): the K radiance
+// levels of an environment (Eq. 18), its fuzzy indicator maps (Eq. 19), and
+// the split-sum GGX prefiltering of the radiance and of the K indicator maps
+// with the same kernel (Eq. 11, 20-21), plus the DFG / E_D lookup table.
+//
+// Resolutions (docs/MODELS.md "kneiphof2025"):
+// - Maps are lat-long in the EnvironmentMap's own (u, v) convention, so a
+//   lookup is env.direction_to_uv(dir) (the map's rotation included).
+// - Level 0 is the environment resampled to 512 x 256 (0.7 deg texels: finer
+//   than the lobe of the smallest roughness the paper shows, sqrt(alpha) =
+//   0.1, whose reflected lobe is ~2 alpha = 1.1 deg wide), unfiltered: the
+//   mirror, roughness 0.
+// - Level i of M = 7 holds roughness sqrt(alpha) = i / (M - 1) at
+//   (512 >> i) x (256 >> i): a standard mip chain (the GPU back end maps
+//   roughness to LOD linearly), each level at least ~4 texels across its
+//   lobe (sqrt(alpha) = 1/6: lobe 3.2 deg, texel 1.4 deg; 1: 8 x 4 texels for
+//   a lobe spanning the hemisphere). Lookups blend the two nearest levels.
+// - Each filtered texel is a 64-sample Hammersley estimate of the GGX
+//   kernel p(wi) ~ D(h) <n, wi> with n = v = r (Karis 2013), each sample read
+//   from a box-filtered source pyramid at the LOD that matches its solid
+//   angle (filtered importance sampling), so 64 samples show no noise.
+// - DFG LUT: 32 x 32 over (cos_o, sqrt(alpha)) at texel centres, 2048
+//   Hammersley samples per entry: A, B (E_rho = F0 A + B for Schlick's F
+//   with the height-correlated Smith G2) and E_D / D_H (Eq. 21, 8).
+#pragma once
+
+#include <array>
+#include <memory>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+namespace glintlab {
+
+class EnvironmentMap;
+
+struct Kneiphof2025PrefilterOptions {
+    int levels = 8;             // K in {4, 8}
+    float black_level = 1e-2f;  // l: the dimmest non-zero level is max(min L, l), 003 §5
+    int base_width = 512;       // level 0 width (height = width / 2); a power of two >= 16
+    int mip_count = 7;          // filtered levels incl. the mirror; roughness i / (mip_count - 1)
+    int samples = 64;           // kernel samples per filtered texel
+};
+
+// One lat-long level: channels per texel = 3 (RGB radiance) + K (weights).
+struct Kneiphof2025Level {
+    int width = 0, height = 0;
+    std::vector<float> data;
+};
+
+class Kneiphof2025Environment {
+  public:
+    // Partitions and prefilters `env` (radiance = image x scale). Throws
+    // glintlab::Error for out-of-range options.
+    Kneiphof2025Environment(const EnvironmentMap& env, const Kneiphof2025PrefilterOptions& options);
+
+    int levels() const { return levels_; }
+    int channels() const { return 3 + levels_; }
+    // L^(k), k = 0 .. K-1 (003's k = 1 .. K); L^(0) = 0 (Eq. 18).
+    const std::array<float, 8>& radiance_levels() const { return radiance_levels_; }
+    float min_luminance() const { return min_luminance_; }
+    float max_luminance() const { return max_luminance_; }
+    const std::vector<Kneiphof2025Level>& mips() const { return mips_; }
+
+    // Prefiltered channels at a world direction and roughness sqrt(alpha) in
+    // [0, 1]: out[0..2] RGB radiance, out[3 .. 3+K) the weights (not
+    // renormalised). Bilinear within a level, linear between levels.
+    void fetch(glm::vec3 dir, float roughness, float* out) const;
+
+    // Fuzzy indicator weights of Eq. 19 for a luminance (linear space),
+    // into w[0 .. K).
+    void partition(float luminance, float* w) const;
+
+  private:
+    void fetch_level(int level, glm::vec2 uv, float* out) const;
+
+    float rotation_rad_ = 0.0f;
+    int levels_;
+    std::array<float, 8> radiance_levels_{};
+    float min_luminance_ = 0.0f, max_luminance_ = 0.0f;
+    std::vector<Kneiphof2025Level> mips_;
+};
+
+// The split-sum tables of isotropic GGX (built once, thread-safe).
+class Kneiphof2025DfgLut {
+  public:
+    static constexpr int kSize = 32;
+    static constexpr int kSamples = 2048;
+    static const Kneiphof2025DfgLut& get();
+    // (A, B, E_D / D_H), bilinear over texel centres, clamped at the borders.
+    glm::vec3 lookup(float cos_o, float roughness) const;
+    // One entry computed directly (the table's integrand), for tests.
+    static glm::vec3 integrate(float cos_o, float roughness, int samples);
+
+  private:
+    Kneiphof2025DfgLut();
+    std::vector<glm::vec3> table_;
+};
+
+// D_H: total facet area of isotropic GGX (003 §3.2), closed form
+// (kneiphof2025.glsl kneiphof2025_total_facet_area).
+float kneiphof2025_total_facet_area(float alpha);
+
+// The prefiltered environment of `env` for (K, black level), built on first
+// use and cached per EnvironmentMap (thread-safe; an entry whose map has been
+// destroyed is rebuilt for a new map at the same address).
+std::shared_ptr<const Kneiphof2025Environment> kneiphof2025_environment_for(
+    const std::shared_ptr<const EnvironmentMap>& env, int levels, float black_level);
+
+}  // namespace glintlab
