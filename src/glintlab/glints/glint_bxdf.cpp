@@ -3,6 +3,7 @@
 #include "glintlab/glints/chermain2020/chermain2020.h"
 #include "glintlab/glints/deliot2023/deliot2023.h"
 #include "glintlab/glints/kneiphof2025/kneiphof2025.h"
+#include "glintlab/glints/jakob2014/jakob2014.h"
 #include "glintlab/glints/zirr2016/zirr2016.h"
 #include "glintlab/microfacet/microfacet.h"
 #include "glintlab/scene/scene.h"
@@ -35,7 +36,6 @@ float GlintBxdf::footprint_ndf(glm::vec3 wo, glm::vec3 wi, glm::vec3 h) const {
         // Models still being built render their smooth limit until their
         // registry row exists (the scene loader cannot select them before).
         case GlintModelId::Explicit:
-        case GlintModelId::Jakob2014:
         case GlintModelId::Wang2020:
             break;
         case GlintModelId::Kneiphof2025:
@@ -46,6 +46,8 @@ float GlintBxdf::footprint_ndf(glm::vec3 wo, glm::vec3 wi, glm::vec3 h) const {
             return chermain2020_footprint_ndf(h, footprint, *desc);
         case GlintModelId::Zirr2016:
             return zirr2016_footprint_ndf(h, footprint, *desc);
+        case GlintModelId::Jakob2014:
+            return jakob2014_footprint_ndf(wo, wi, h, footprint, *desc);
     }
     return shader::D_Microfacet(ndf_id(desc->ndf), h, desc->alpha_x, desc->alpha_y);
 }
@@ -53,6 +55,8 @@ float GlintBxdf::footprint_ndf(glm::vec3 wo, glm::vec3 wi, glm::vec3 h) const {
 glm::vec3 GlintBxdf::footprint_ndf_rgb(glm::vec3 wo, glm::vec3 wi, glm::vec3 h) const {
     if (desc->model_id == GlintModelId::Chermain2020)
         return chermain2020_footprint_ndf_rgb(h, footprint, *desc);
+    if (desc->model_id == GlintModelId::Jakob2014)
+        return jakob2014_footprint_ndf_rgb(wo, wi, h, footprint, *desc);
     return glm::vec3(footprint_ndf(wo, wi, h));
 }
 
@@ -86,6 +90,9 @@ glm::vec3 GlintBxdf::f(glm::vec3 wo, glm::vec3 wi) const {
 
 float GlintBxdf::pdf(glm::vec3 wo, glm::vec3 wi) const {
     if (wo.z <= 0.0f || wi.z <= 0.0f) return 0.0f;
+    // jakob2014 samples its discrete model by 002 §4 (2α lobe ⊛ γ cone); its
+    // later bounces (no footprint) use the smooth model.
+    if (desc->model_id == GlintModelId::Jakob2014 && has_footprint) return jakob2014_pdf(*desc, wo, wi);
     glm::vec3 h = wo + wi;
     if (glm::dot(h, h) == 0.0f) return 0.0f;
     h = glm::normalize(h);
@@ -94,10 +101,17 @@ float GlintBxdf::pdf(glm::vec3 wo, glm::vec3 wi) const {
            (4.0f * std::abs(glm::dot(wo, h)));
 }
 
-std::optional<BsdfSample> GlintBxdf::sample(glm::vec3 wo, float, glm::vec2 u) const {
+std::optional<BsdfSample> GlintBxdf::sample(glm::vec3 wo, float uc, glm::vec2 u) const {
     if (wo.z <= 0.0f) return std::nullopt;
-    const glm::vec3 h = shader::sample_vndf(ndf_id(desc->ndf), wo, desc->alpha_x, desc->alpha_y, u);
-    const glm::vec3 wi = glm::reflect(-wo, h);
+    glm::vec3 wi;
+    if (desc->model_id == GlintModelId::Jakob2014 && has_footprint) {
+        const std::optional<glm::vec3> w = jakob2014_sample_wi(*desc, wo, uc, u);
+        if (!w) return std::nullopt;
+        wi = *w;
+    } else {
+        const glm::vec3 h = shader::sample_vndf(ndf_id(desc->ndf), wo, desc->alpha_x, desc->alpha_y, u);
+        wi = glm::reflect(-wo, h);
+    }
     if (wi.z <= 0.0f) return std::nullopt;
     BsdfSample s;
     s.wi = wi;

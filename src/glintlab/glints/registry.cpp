@@ -3,6 +3,7 @@
 #include "glintlab/glints/chermain2020/chermain2020.h"
 #include "glintlab/glints/deliot2023/deliot2023.h"
 #include "glintlab/glints/kneiphof2025/kneiphof2025.h"
+#include "glintlab/glints/jakob2014/jakob2014.h"
 #include "glintlab/glints/zirr2016/zirr2016.h"
 #include "glintlab/scene/json_reader.h"
 #include "glintlab/scene/scene.h"
@@ -33,6 +34,11 @@ const GlintModelInfo kModels[] = {
     {GlintModelId::Chermain2020, "chermain2020",
      "multiscale SDF dictionary over a MIP hierarchy (Chermain et al. 2020)", true, true, false,
      false, read_chermain2020_params},
+    // Every light (002 §3.1, §4): a BRDF over the γ cone; extended lights and
+    // environments through light sampling + MIS with its importance sampling.
+    {GlintModelId::Jakob2014, "jakob2014",
+     "discrete stochastic microfacets, 4-D hierarchy counting (Jakob et al. 2014)", true, true, true,
+     true, read_jakob2014_params},
     // Environment, sphere and sun-like directional lights by its own counting
     // (003 Eq. 17; K = 1 area lights, 003 Eq. 6-9); point and delta
     // directional lights through deliot2023's D_P (003 Table 1).

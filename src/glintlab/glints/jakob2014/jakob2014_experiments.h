@@ -1,0 +1,72 @@
+// Experiments behind `glintlab validate jakob2014` and the unit tests: count
+// statistics against the binomial law, convergence of D_P to the smooth NDF,
+// and the 002 Table 1 query statistics.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "glintlab/glints/jakob2014/query.h"
+
+namespace glintlab::jakob2014 {
+
+// One fixed query geometry (directions in the local frame).
+struct QueryGeometry {
+    std::string name;
+    int ndf = 0;
+    float alpha_x = 0.3f, alpha_y = 0.3f;
+    double gamma_deg = 1.0;
+    glm::dvec3 wi{0, 0, 1}, wo{0, 0, 1};
+    double log_density = 12.0;
+    glm::dvec2 e1{1e-2, 0.0}, e2{0.0, 1e-2};  // footprint edges (uv)
+    bool at_tile_corner = false;              // centre every footprint on uv (0, 0)
+};
+
+struct CountChi2 {
+    double expected_mean = 0.0;  // N · p_space · p_dir
+    double observed_mean = 0.0;
+    double chi2 = 0.0;
+    int dof = 0;
+    double p_value = 1.0;
+    int non_integer = 0;  // counts that were not integers (must be 0 with ε = 0)
+};
+
+// Counts of `footprints` independent queries (material seed k and a uniform
+// random position for footprint k) against Binomial(N, p_space · p_dir),
+// Pearson χ² with bins pooled to >= 5 expected. ε = 0 (exact traversal).
+CountChi2 count_chi2(const QueryGeometry& g, int footprints, uint64_t seed);
+
+struct ConvergenceResult {
+    double expected_count = 0.0;  // particles per query
+    double mean_ndf = 0.0;        // mean D_P over footprints
+    double smooth_ndf = 0.0;      // D(h)
+    double cone_ndf = 0.0;        // exact E[D_P] for this γ (D smoothed by the cone)
+    double rel_err_smooth = 0.0;  // |mean / D(h) - 1|
+    double rel_err_cone = 0.0;    // |mean / cone_ndf - 1|
+    double std_err = 0.0;         // standard error of the mean, relative
+};
+
+// Mean D_P over `footprints` random square footprints sized so that the
+// expected count per query is `expected_count` (ε = 0.1, the paper's value).
+ConvergenceResult convergence(const QueryGeometry& g, double expected_count, int footprints,
+                              uint64_t seed, double epsilon = 0.1);
+
+struct Table1Row {
+    std::string scene;
+    double paper_nodes = 0.0, paper_count = 0.0;  // 002 Table 1
+    double nodes = 0.0, count = 0.0;              // ours, per query
+    int64_t queries = 0;
+    int nan_count = 0;
+};
+
+// Queries of a plane seen by a 768 x 768 camera (002 Table 1 settings:
+// SPHERE LIGHTS N = 1e9, γ = 0.5°, α = 0.1; TWISTED TORUS N = 1e5..1e8,
+// γ = 1°, α = 0.03..0.81), light directions drawn around the mirror
+// direction as a sphere light or environment would. `pixels` sets how many
+// pixels of the image are queried.
+std::vector<Table1Row> table1_statistics(int pixels, uint64_t seed);
+
+}  // namespace glintlab::jakob2014

@@ -1,0 +1,278 @@
+#include "glintlab/glints/jakob2014/query.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <vector>
+
+#include "glintlab/glints/jakob2014/multinomial.h"
+#include "glintlab/glints/jakob2014/tea.h"
+
+namespace glintlab::jakob2014 {
+namespace {
+
+constexpr uint64_t kHemisphereId = 1;
+constexpr int64_t kLeafParticles = 64;
+
+struct Node {
+    UvBox box;
+    SphericalTriangle tri;  // unused while tri_id == kHemisphereId
+    uint64_t tri_id = kHemisphereId;
+    double tri_sigma = 2.0 * std::numbers::pi;
+    int64_t count = 0;
+    uint64_t id = 1;
+    int depth = 0;
+    glm::dvec3 area{1.0};  // chromatic: per-channel fraction of all particle area
+};
+
+struct Accum {
+    double count = 0.0;
+    glm::dvec3 area{0.0};
+};
+
+// Pushes the four children of `n` (Eq. 11 decides the split; counts by the
+// multinomial of §3.4, seeded by the node id).
+void split(const Model& m, const Node& n, std::vector<Node>& queue) {
+    Node c[4];
+    std::array<double, 4> p{};
+    const bool space = split_space(m, n.box.size * n.box.size, n.tri_sigma);
+    for (int j = 0; j < 4; ++j) {
+        c[j] = n;
+        c[j].id = child_id(n.id, j);
+        c[j].depth = n.depth + 1;
+    }
+    if (space) {
+        const double h = 0.5 * n.box.size;
+        for (int j = 0; j < 4; ++j) {
+            c[j].box = {n.box.lo + glm::dvec2((j & 1) * h, (j >> 1) * h), h};
+            p[j] = 0.25;
+        }
+    } else {
+        double total = 0.0;
+        for (int j = 0; j < 4; ++j) {
+            if (n.tri_id == kHemisphereId) {
+                c[j].tri = hemisphere_quadrant(j);
+                c[j].tri_id = 2 + uint64_t(j);
+            } else {
+                c[j].tri = n.tri.child(j);
+                c[j].tri_id = child_id(n.tri_id, j);
+            }
+            c[j].tri_sigma = c[j].tri.solid_angle();
+            p[j] = std::max(0.0, m.table->integral(c[j].tri_id, c[j].tri));
+            total += p[j];
+        }
+        if (total <= 0.0) return;  // D vanishes on the node: no particles can be here
+        for (double& v : p) v /= total;
+    }
+    const std::array<int64_t, 4> k = sample_multinomial4(n.count, p, n.id, m.seed);
+    if (m.chromatic) {
+        for (uint32_t ch = 0; ch < 3; ++ch) {
+            const std::array<double, 4> d = sample_dirichlet4(k, n.id, m.seed, ch);
+            for (int j = 0; j < 4; ++j) c[j].area[int(ch)] = n.area[int(ch)] * d[j];
+        }
+    }
+    for (int j = 0; j < 4; ++j) {
+        if (k[j] == 0) continue;
+        c[j].count = k[j];
+        queue.push_back(c[j]);
+    }
+}
+
+// The particles of a leaf at the depth limit, made explicit: the process
+// continued to infinite depth places a node's n particles independently,
+// uniformly in its uv box and with density D(m)(m·n) in its triangle, so
+// drawing them from the node's own TEA stream is the same process (and
+// consistent across queries). Directions descend the triangle tree by the
+// Algorithm 2 integrals while D is not uniform or the triangle is not flat,
+// then are uniform on the (then tiny, flat) triangle.
+void count_leaf_particles(const Model& m, const Node& node, const UvParallelogram& q,
+                          const SphericalConic& conic, Accum& acc) {
+    TeaStream rng(node.id, m.seed, 0x6c656166u /* "leaf" */);
+    const double n_total = double(m.particles);
+    for (int64_t k = 0; k < node.count; ++k) {
+        const glm::dvec2 x =
+            node.box.lo + node.box.size * glm::dvec2(rng.next_double(), rng.next_double());
+        uint64_t id = node.tri_id;
+        SphericalTriangle t = node.tri;
+        for (int level = 0; level < 40; ++level) {
+            const bool hemi = id == kHemisphereId;
+            if (!hemi && !m.table->stored(id) && t.max_edge_angle() < 1e-3) break;
+            SphericalTriangle c[4];
+            double w[4], total = 0.0;
+            for (int j = 0; j < 4; ++j) {
+                c[j] = hemi ? hemisphere_quadrant(j) : t.child(j);
+                w[j] = std::max(0.0,
+                                m.table->integral(hemi ? 2 + uint64_t(j) : child_id(id, j), c[j]));
+                total += w[j];
+            }
+            if (total <= 0.0) break;
+            double u = rng.next_double() * total;
+            int j = 0;
+            while (j < 3 && (u >= w[j] || w[j] <= 0.0)) {
+                u -= w[j];
+                ++j;
+            }
+            id = hemi ? 2 + uint64_t(j) : child_id(id, j);
+            t = c[j];
+        }
+        double b1 = rng.next_double(), b2 = rng.next_double();
+        if (b1 + b2 > 1.0) {
+            b1 = 1.0 - b1;
+            b2 = 1.0 - b2;
+        }
+        const glm::dvec3 dir =
+            glm::normalize(t.v[0] + b1 * (t.v[1] - t.v[0]) + b2 * (t.v[2] - t.v[0]));
+        if (q.contains(x) && conic.contains(dir)) {
+            acc.count += 1.0;
+            acc.area += node.area * (n_total / double(node.count));
+        }
+    }
+}
+
+void count_tile(const Model& m, const UvParallelogram& q, const SphericalConic& conic,
+                glm::dvec3 conic_wi, glm::dvec3 conic_wo, Accum& acc, QueryStats* stats) {
+    thread_local std::vector<Node> queue;
+    queue.clear();
+    Node root;
+    root.box = {glm::dvec2(0.0), 1.0};
+    root.count = m.particles;
+    if (root.count <= 0) return;
+    queue.push_back(root);
+    const double eps = m.epsilon;
+    const double n_total = double(m.particles);
+    size_t head = 0;
+    int64_t visited = 0;
+    while (head < queue.size()) {
+        const Node node = queue[head++];
+        ++visited;
+        // Line 7: disjoint nodes (empty ones are never pushed).
+        const Overlap so = classify_box(q, node.box);
+        if (so == Overlap::Disjoint) continue;
+        const Overlap dO =
+            node.tri_id == kHemisphereId ? Overlap::Partial : conic.classify(node.tri);
+        if (dO == Overlap::Disjoint) continue;
+        const double n = double(node.count);
+        // Lines 9-10: contained.
+        if (so == Overlap::Contained && dO == Overlap::Contained) {
+            acc.count += n;
+            acc.area += node.area * n_total;
+            continue;
+        }
+        // At the depth limit, a few particles are placed explicitly (exact
+        // counts); many take the expected value (line 12) below.
+        const bool at_limit = node.depth >= m.max_depth;
+        if (at_limit && node.count <= kLeafParticles) {
+            count_leaf_particles(m, node, q, conic, acc);
+            continue;
+        }
+        // Lines 11-12: the error criterion (Eq. 10) where D is close to
+        // uniform over the node (its triangle needed no composite rule in
+        // Algorithm 2) and the triangle is flat enough for the planar overlap.
+        const bool uniform = node.tri_id != kHemisphereId && !m.table->stored(node.tri_id) &&
+                             node.tri.max_edge_angle() < Model::kMaxFlatEdge;
+        // Safeguard (not in the paper): past kNodeBudget visited nodes every
+        // partial node takes its expected value, so pathological queries
+        // (a conic along the peak of a very narrow D, stored triangles
+        // everywhere, 1e13 particles) stay bounded in time and memory.
+        const bool over_budget = visited > Model::kNodeBudget;
+        if (at_limit || over_budget || (uniform && acc.count > 0.0)) {
+            // Fraction of the node's 4-D volume inside the query (line 12).
+            auto overlap = [&] {
+                const double ps = so == Overlap::Contained ? 1.0
+                                                           : box_overlap_area(q, node.box) /
+                                                                 (node.box.size * node.box.size);
+                if (ps <= 0.0 || dO == Overlap::Contained) return ps;
+                if (node.tri_id ==
+                    kHemisphereId)  // depth limit / budget before any directional split
+                    return ps *
+                           expected_fraction(m.table->spec(), 1.0, conic_wi, conic_wo, m.gamma);
+                return ps * conic.overlap_fraction(node.tri);
+            };
+            const double bound = eps * acc.count;
+            // max_p n p (1 - p) = n / 4: skip the overlap when Eq. 10 holds for any p.
+            bool ok = at_limit || over_budget || 0.25 * n < bound * bound;
+            double p = -1.0;
+            if (!ok) {
+                p = overlap();
+                ok = n * p * (1.0 - p) < bound * bound;
+            }
+            if (ok) {
+                if (p < 0.0) p = overlap();
+                acc.count += n * p;
+                acc.area += node.area * (n_total * p);
+                continue;
+            }
+        }
+        // Lines 13-15.
+        split(m, node, queue);
+    }
+    if (stats) {
+        stats->nodes += visited;
+        stats->max_queue = std::max<int64_t>(stats->max_queue, int64_t(queue.size()));
+        if (visited > Model::kNodeBudget) ++stats->over_budget;
+    }
+}
+
+}  // namespace
+
+QueryResult query_count(const Model& m, const UvParallelogram& q_in, glm::dvec3 wi, glm::dvec3 wo,
+                        QueryStats* stats) {
+    QueryResult r;
+    if (stats) ++stats->queries;
+    const SphericalConic conic = SphericalConic::make(wi, wo, m.gamma);
+    // Move the footprint's centre into the unit tile, then visit every tile
+    // its bounding box touches.
+    UvParallelogram q = q_in;
+    q.center -= glm::floor(q.center);
+    const glm::dvec2 half = 0.5 * (glm::abs(q.e1) + glm::abs(q.e2));
+    const glm::dvec2 lo = glm::floor(q.center - half), hi = glm::floor(q.center + half);
+    const double tiles = (hi.x - lo.x + 1.0) * (hi.y - lo.y + 1.0);
+    Accum acc;
+    if (tiles > kMaxTiles) {
+        const double f = expected_fraction(m.table->spec(), q.area(), wi, wo, m.gamma);
+        acc.count = f * double(m.particles);
+        acc.area = glm::dvec3(acc.count);
+    } else {
+        for (double ty = lo.y; ty <= hi.y; ty += 1.0)
+            for (double tx = lo.x; tx <= hi.x; tx += 1.0) {
+                UvParallelogram qt = q;
+                qt.center -= glm::dvec2(tx, ty);
+                count_tile(m, qt, conic, wi, wo, acc, stats);
+            }
+    }
+    r.count = acc.count;
+    r.area = m.chromatic ? acc.area : glm::dvec3(acc.count);
+    if (stats) stats->particles += acc.count;
+    return r;
+}
+
+double expected_fraction(const NdfSpec& spec, double area, glm::dvec3 wi, glm::dvec3 wo,
+                         double gamma) {
+    wi = glm::normalize(wi);
+    wo = glm::normalize(wo);
+    // Frame around wo.
+    const glm::dvec3 t0 = std::abs(wo.x) < 0.9 ? glm::dvec3(1, 0, 0) : glm::dvec3(0, 1, 0);
+    const glm::dvec3 tx = glm::normalize(glm::cross(wo, t0)), ty = glm::cross(wo, tx);
+    constexpr int kR = 64, kPhi = 128;
+    const double cos_g = std::cos(gamma);
+    double sum = 0.0;
+    for (int i = 0; i < kR; ++i) {
+        const double ct =
+            1.0 - (i + 0.5) / kR * (1.0 - cos_g);  // uniform in cos θ: dω = d(cos θ) dφ
+        const double st = std::sqrt(std::max(0.0, 1.0 - ct * ct));
+        for (int j = 0; j < kPhi; ++j) {
+            const double phi = (j + 0.5) / kPhi * 2.0 * std::numbers::pi;
+            const glm::dvec3 o = ct * wo + st * (std::cos(phi) * tx + std::sin(phi) * ty);
+            const glm::dvec3 hsum = wi + o;
+            if (glm::dot(hsum, hsum) <= 0.0) continue;
+            const glm::dvec3 mm = glm::normalize(hsum);
+            const double wim = glm::dot(wi, mm);
+            if (wim <= 0.0) continue;
+            sum += spec.density(mm) / (4.0 * wim);
+        }
+    }
+    const double d_omega = (1.0 - cos_g) * 2.0 * std::numbers::pi / (double(kR) * kPhi);
+    return area * sum * d_omega;
+}
+
+}  // namespace glintlab::jakob2014

@@ -1,0 +1,29 @@
+// Texture-space part of the jakob2014 query (002 §3.3): the pixel footprint
+// is a parallelogram uv ± duvdx/2 ± duvdy/2 (as for every glintlab model);
+// tree nodes are axis-aligned boxes. Classification by the separating-axis
+// theorem, overlap area by clipping the box against the parallelogram
+// (Sutherland-Hodgman), both exact.
+#pragma once
+
+#include <glm/glm.hpp>
+
+#include "glintlab/glints/jakob2014/spherical_geometry.h"
+
+namespace glintlab::jakob2014 {
+
+struct UvParallelogram {
+    glm::dvec2 center{0.0}, e1{0.0}, e2{0.0};  // points center + a e1 + b e2, |a|, |b| <= 1/2
+    double area() const { return std::abs(e1.x * e2.y - e1.y * e2.x); }
+    bool contains(glm::dvec2 x) const;
+};
+
+struct UvBox {
+    glm::dvec2 lo{0.0};
+    double size = 1.0;
+};
+
+Overlap classify_box(const UvParallelogram& q, const UvBox& b);
+// Area of box ∩ parallelogram.
+double box_overlap_area(const UvParallelogram& q, const UvBox& b);
+
+}  // namespace glintlab::jakob2014
