@@ -117,7 +117,7 @@ std::vector<Table1Row> run_table1(const Table1Options& options) {
     std::vector<Table1Row> rows;
     for (const std::string& scene_name : scenes) {
         for (const std::string& model : models) {
-            Table1Row row{scene_name, model, {}, 0.0, 0.0, {}};
+            Table1Row row{scene_name, model, {}, 0.0, 0.0, {}, {}};
             for (float log_density : options.log_densities) {
                 nlohmann::json j = scene_json(scene_name);
                 j["film"] = {{"width", options.width}, {"height", options.height}};
@@ -170,7 +170,10 @@ nlohmann::json table1_to_json(const Table1Options& o, const std::vector<Table1Ro
                               {"min_ms", r.min_ms},
                               {"max_ms", r.max_ms},
                               {"ms_per_density", r.ms_per_density}};
-        if (o.gpu) row["p90_ms_per_density"] = r.p90_ms_per_density;
+        if (o.gpu) {
+            row["p90_ms_per_density"] = r.p90_ms_per_density;
+            row["frame_ms_per_density"] = r.frame_ms_per_density;
+        }
         arr.push_back(row);
     }
     j["results"] = arr;
@@ -189,9 +192,13 @@ std::string table1_to_text(const Table1Options& o, const std::vector<Table1Row>&
         double smooth_ms = 0.0;
         for (const Table1Row& q : rows)
             if (q.scene == r.scene && q.model == "smooth") smooth_ms = q.min_ms;
-        s += fmt::format("{:<14} {:<14} {:>10.1f} {:>10.1f} {:>14}\n", r.scene, r.model, r.min_ms,
+        s += fmt::format("{:<14} {:<14} {:>10.1f} {:>10.1f} {:>14}", r.scene, r.model, r.min_ms,
                          r.max_ms,
                          smooth_ms > 0.0 ? fmt::format("{:.2f}", r.max_ms / smooth_ms) : "-");
+        if (o.gpu && !r.frame_ms_per_density.empty())
+            s += fmt::format("   frame (render + glFinish) ms: {:.1f}",
+                             fmt::join(r.frame_ms_per_density, " "));
+        s += "\n";
     }
     return s;
 }

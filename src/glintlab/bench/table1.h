@@ -30,6 +30,10 @@ struct Table1Row {
     std::vector<double> ms_per_density;  // median ms per frame, one per density
     double min_ms = 0.0, max_ms = 0.0;
     std::vector<double> p90_ms_per_density;  // GPU only: 90th percentile per density
+    // GPU only: median wall-clock frame time (render + glFinish) per density;
+    // the time to trust on software rasterisers whose timer queries do not
+    // cover the deferred rasterisation (docs/BENCHMARKS.md).
+    std::vector<double> frame_ms_per_density;
 };
 
 // PLANE_90, PLANE_25, HEIGHTMAP_90, HEIGHTMAP_25, SPHERE, MONKEY (the

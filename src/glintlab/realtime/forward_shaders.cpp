@@ -35,6 +35,7 @@ constexpr const char* kForwardHeader = R"(
 #include "glintlab/microfacet/ndf.glsl"
 #include "glintlab/microfacet/masking.glsl"
 #include "glintlab/microfacet/fresnel.glsl"
+#include "glintlab/microfacet/vndf.glsl"
 // The glint material's shared parameters (scene.h GlintDesc).
 uniform int u_glint_ndf;
 uniform vec2 u_glint_alpha;
@@ -89,6 +90,35 @@ uniform vec3 u_directional_direction[GLINTLAB_DIRECTIONAL_LIGHTS];  // towards t
 uniform vec3 u_directional_irradiance[GLINTLAB_DIRECTIONAL_LIGHTS];
 #endif
 
+#if GLINTLAB_ENVIRONMENT
+layout(binding = 0) uniform sampler2D u_environment;  // lat-long, full mip chain
+uniform float u_environment_scale;
+uniform float u_environment_rotation;  // radians about +y
+uniform vec2 u_environment_size;       // texels of level 0
+
+// scene/environment.cpp direction_to_uv.
+vec2 environment_uv(vec3 d) {
+    float theta = acos(clamp(d.y, -1.0f, 1.0f));
+    float phi = atan(d.x, -d.z) - u_environment_rotation;
+    float u = 0.5f + phi * INV_TWO_PI;
+    return vec2(u - floor(u), theta * INV_PI);
+}
+
+// Radiance from world direction d, prefiltered over the solid angle
+// `omega` of a sample (Krivanek & Colbert 2008 Eq. 13: lod = 0.5 log2(omega /
+// omega_texel) + 1, omega_texel = 2 pi^2 sin(theta) / (W H) for lat-long).
+vec3 environment_radiance(vec3 d, float omega) {
+    vec2 uv = environment_uv(d);
+    float texel = 2.0f * PI * PI * max(sin(uv.y * PI), 1e-4f) / (u_environment_size.x * u_environment_size.y);
+    float lod = max(0.5f * log2(omega / texel) + 1.0f, 0.0f);
+    return u_environment_scale * textureLod(u_environment, uv, lod).rgb;
+}
+
+vec2 hammersley(int i, int n) {
+    return vec2((float(i) + 0.5f) / float(n), float(bitfieldReverse(uint(i))) * 2.3283064e-10f);
+}
+#endif
+
 // render/light_sampling.cpp orthonormal_basis (Duff et al. 2017).
 void orthonormal_basis(vec3 n, out vec3 t, out vec3 b) {
     float s = n.z >= 0.0f ? 1.0f : -1.0f;
@@ -130,6 +160,56 @@ vec3 eval_bsdf(vec3 wo, vec3 wi, Footprint fp) {
     float fi = F_Dielectric(wi.z, u_eta.x);
     return u_albedo * INV_PI * (1.0f - fo) * (1.0f - fi) + vec3(F_Dielectric(cos_oh, u_eta.x) * dg);
 }
+
+#if GLINTLAB_ENVIRONMENT
+// Environment light reflected towards wo: a deterministic multi-sample MIS
+// estimate (balance heuristic, Veach 1997 Eq. 9.13) over visible-normal
+// samples of the lobe's NDF and, for materials with a diffuse part, cosine
+// samples; every sample reads the environment prefiltered over its solid
+// angle, so the estimate is smooth instead of noisy. Mirrors (alpha below
+// kSmoothAlpha) reflect one filtered direction.
+vec3 environment_lighting(vec3 wo, vec3 t, vec3 b, vec3 n, Footprint fp) {
+    bool glint = u_material_type == 4;
+    int ndf = glint ? u_glint_ndf : u_ndf;
+    vec2 alpha = glint ? u_glint_alpha : u_alpha;
+    bool has_diffuse = u_material_type == 0 || u_material_type == 3;
+    bool has_lobe = u_material_type != 0;
+    bool mirror = max(alpha.x, alpha.y) < 1e-3f;
+    vec3 sum = vec3(0.0f);
+    if (has_lobe && mirror) {
+        vec3 wi = vec3(-wo.x, -wo.y, wo.z);
+        vec3 f = u_material_type == 1 ? F_Conductor(wo.z, u_eta, u_k)
+                                      : vec3(F_Dielectric(wo.z, glint ? u_fresnel_eta.x : u_eta.x));
+        if (glint) f = u_glint_color * glint_fresnel(wo.z);
+        sum += f * environment_radiance(wi.x * t + wi.y * b + wi.z * n, 0.0f);
+        if (!has_diffuse) return sum;
+    }
+    int ns = has_lobe && !mirror ? GLINTLAB_ENV_SPECULAR_SAMPLES : 0;
+    int nd = has_diffuse ? GLINTLAB_ENV_DIFFUSE_SAMPLES : 0;
+    for (int s = 0; s < ns + nd; ++s) {
+        vec3 wi;
+        if (s < ns) {
+            vec3 m = sample_vndf(ndf, wo, alpha.x, alpha.y, hammersley(s, ns));
+            wi = reflect(-wo, m);
+        } else {
+            vec2 u = hammersley(s - ns, nd);
+            float r = sqrt(u.x);
+            float phi = TWO_PI * u.y;
+            wi = vec3(r * cos(phi), r * sin(phi), sqrt(max(1.0f - u.x, 0.0f)));
+        }
+        if (wi.z <= 0.0f) continue;
+        vec3 h = normalize(wo + wi);
+        float p_lobe = ns > 0 ? pdf_vndf(ndf, wo, h, alpha.x, alpha.y) / (4.0f * abs(dot(wo, h))) : 0.0f;
+        float p_cos = nd > 0 ? wi.z * INV_PI : 0.0f;
+        float p_mix = float(ns) * p_lobe + float(nd) * p_cos;  // sum_k N_k p_k
+        if (!(p_mix > 0.0f)) continue;
+        vec3 f = eval_bsdf(wo, wi, fp);
+        vec3 world = wi.x * t + wi.y * b + wi.z * n;
+        sum += f * wi.z / p_mix * environment_radiance(world, 1.0f / p_mix);
+    }
+    return sum;
+}
+#endif
 
 void main() {
     vec3 p = v_position;
@@ -186,6 +266,9 @@ void main() {
             if (wi.z <= 0.0f) continue;
             radiance += eval_bsdf(wo, wi, fp) * u_point_intensity[i] * (wi.z / r2);
         }
+#endif
+#if GLINTLAB_ENVIRONMENT
+        radiance += environment_lighting(wo, t, b, n, fp);
 #endif
 #if GLINTLAB_DIRECTIONAL_LIGHTS > 0
         for (int i = 0; i < GLINTLAB_DIRECTIONAL_LIGHTS; ++i) {
@@ -264,8 +347,9 @@ void main() {
 
 std::string ProgramKey::name() const {
     const GlintModelInfo* info = find_glint_model(model);
-    return fmt::format("forward[{}, {} point, {} directional]", info ? info->name : "?",
-                       point_lights, directional_lights);
+    return fmt::format("forward[{}, {} point, {} directional, {}]", info ? info->name : "?",
+                       point_lights, directional_lights,
+                       environment ? "environment" : "no environment");
 }
 
 AssembledShader forward_vertex_shader() {
@@ -273,9 +357,12 @@ AssembledShader forward_vertex_shader() {
 }
 
 AssembledShader forward_fragment_shader(const ProgramKey& key) {
-    std::string text =
-        fmt::format("#define GLINTLAB_POINT_LIGHTS {}\n#define GLINTLAB_DIRECTIONAL_LIGHTS {}\n",
-                    key.point_lights, key.directional_lights);
+    std::string text = fmt::format(
+        "#define GLINTLAB_POINT_LIGHTS {}\n#define GLINTLAB_DIRECTIONAL_LIGHTS {}\n"
+        "#define GLINTLAB_ENVIRONMENT {}\n#define GLINTLAB_ENV_SPECULAR_SAMPLES {}\n"
+        "#define GLINTLAB_ENV_DIFFUSE_SAMPLES {}\n",
+        key.point_lights, key.directional_lights, key.environment ? 1 : 0,
+        kEnvironmentSpecularSamples, kEnvironmentDiffuseSamples);
     text += kForwardHeader;
     text += glint_model_glsl(key.model);
     text += kForwardBody;

@@ -17,12 +17,20 @@ struct ProgramKey {
     GlintModelId model = GlintModelId::Smooth;
     int point_lights = 0;        // point lights and sphere lights (as points, see .cpp)
     int directional_lights = 0;  // delta or cone (cone shaded at its axis)
+    bool environment = false;    // image-based lighting by filtered importance sampling
     auto operator<=>(const ProgramKey&) const = default;
-    std::string name() const;  // "forward[deliot2023, 1 point, 0 directional]"
+    std::string name() const;  // "forward[deliot2023, 1 point, 0 directional, no environment]"
 };
 
 // Texture units of the forward shader.
 inline constexpr int kEnvironmentUnit = 0;
+
+// Environment lighting (Krivanek & Colbert 2008, filtered importance
+// sampling): a fixed Hammersley set of samples per pixel, the same for every
+// pixel (no noise), each reading the mipmapped environment at the level whose
+// texel solid angle matches the sample's share of the sphere.
+inline constexpr int kEnvironmentSpecularSamples = 48;
+inline constexpr int kEnvironmentDiffuseSamples = 64;
 
 AssembledShader forward_vertex_shader();
 AssembledShader forward_fragment_shader(const ProgramKey& key);

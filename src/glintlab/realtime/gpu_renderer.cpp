@@ -75,6 +75,7 @@ gl::ProgramKey program_key(const Scene& scene, const Shape& shape) {
         if (std::holds_alternative<PointLight>(light) || std::holds_alternative<SphereLight>(light))
             ++key.point_lights;
         if (std::holds_alternative<DirectionalLight>(light)) ++key.directional_lights;
+        if (std::holds_alternative<EnvironmentLight>(light)) key.environment = true;
     }
     return key;
 }
@@ -90,6 +91,7 @@ struct GpuRenderer::Impl {
     glm::vec4 bounds{0.0f};
     gl::Texture environment;
     float environment_scale = 1.0f, environment_rotation = 0.0f;
+    int environment_width = 0, environment_height = 0;
     std::map<gl::ProgramKey, gl::Program> programs;
     gl::Program background;
     gl::UniformCache uniforms;
@@ -231,14 +233,21 @@ GpuRenderer::GpuRenderer(const Scene& scene) : impl_(std::make_unique<Impl>()) {
             fail("{}: OpenGL renderer: the environment map {} is empty", scene.file.string(),
                  env.file.string());
         r.environment = gl::make_texture(GL_TEXTURE_2D);
-        glTextureStorage2D(r.environment.get(), 1, GL_RGB32F, image.width, image.height);
+        // Full mip chain: the filtered importance sampling of the forward
+        // shader reads coarser levels for wider samples.
+        const int levels =
+            1 + static_cast<int>(std::floor(std::log2(std::max(image.width, image.height))));
+        glTextureStorage2D(r.environment.get(), levels, GL_RGB32F, image.width, image.height);
         glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
         glTextureSubImage2D(r.environment.get(), 0, 0, 0, image.width, image.height, GL_RGB,
                             GL_FLOAT, image.pixels.data());
-        glTextureParameteri(r.environment.get(), GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+        glGenerateTextureMipmap(r.environment.get());
+        glTextureParameteri(r.environment.get(), GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
         glTextureParameteri(r.environment.get(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
         glTextureParameteri(r.environment.get(), GL_TEXTURE_WRAP_S, GL_REPEAT);
         glTextureParameteri(r.environment.get(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+        r.environment_width = image.width;
+        r.environment_height = image.height;
         r.environment_scale = env.map->scale();
         r.environment_rotation = glm::radians(env.map->rotation_deg());
     }
@@ -333,6 +342,13 @@ void GpuRenderer::render(const Scene& scene) {
         glProgramUniform1i(p, loc("u_per_triangle_frame"), g.per_triangle_frame ? 1 : 0);
         glProgramUniform1i(p, loc("u_has_normals"), g.has_normals ? 1 : 0);
         r.set_material(p, scene, shape);
+        if (r.environment) {
+            glProgramUniform1f(p, loc("u_environment_scale"), r.environment_scale);
+            glProgramUniform1f(p, loc("u_environment_rotation"), r.environment_rotation);
+            glProgramUniform2f(p, loc("u_environment_size"),
+                               static_cast<float>(r.environment_width),
+                               static_cast<float>(r.environment_height));
+        }
         r.set_lights(p, scene);
         if (g.triangles) glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, g.triangles.get());
         glUseProgram(p);
@@ -371,6 +387,10 @@ int GpuRenderer::width() const {
 }
 int GpuRenderer::height() const {
     return impl_->height;
+}
+
+void GpuRenderer::finish() const {
+    glFinish();
 }
 
 void GpuRenderer::set_environment(float scale, float rotation_deg) {

@@ -48,6 +48,9 @@ class GpuRenderer {
     int width() const;
     int height() const;
 
+    // Waits until the GPU has finished every command issued (glFinish).
+    void finish() const;
+
     // GPU time of each pass of the last render() (waits for the queries).
     GpuPassTimes pass_times();
 

@@ -4,6 +4,8 @@
 // input gives clear errors. Skipped, with the reason, without an EGL driver.
 #include <gtest/gtest.h>
 
+#include <filesystem>
+
 #include <fmt/format.h>
 #include <glm/gtc/constants.hpp>
 
@@ -129,6 +131,67 @@ TEST_P(GpuVsCpu, SameViewAgrees) {
         }
     }
 }
+
+// Environment lighting (filtered importance sampling, forward_shaders.h) vs
+// the CPU `direct` integrator at 64 spp: one sphere per material (no
+// occlusion), under a constant environment and under the forest lat-long map
+// of blender-data (docs/scene default). The GPU estimate is deterministic:
+// for the diffuse lobe under a constant environment it is exact (cosine
+// samples, p = cos / pi); lobes are integrated by 48 Hammersley VNDF samples
+// (quadrature error < 1% for alpha >= 0.2) and, for the map, read from mip
+// levels that average the radiance over each sample's solid angle: a bias
+// where the map has sharp features, and the lat-long mip chain weights texels
+// near the poles too much (measured: 1.2-3.4% for the four materials). CPU
+// noise of the image mean at 64 spp over ~1500 pixels: < 0.5%. Limits: mean
+// within 2% under the constant environment (measured <= 0.13%), 6% under the
+// map.
+class GpuEnvironment : public ::testing::TestWithParam<std::string> {};
+
+TEST_P(GpuEnvironment, MatchesCpuDirect) {
+    GLINTLAB_REQUIRE_GL();
+    const std::string forest = "/usr/share/blender/datafiles/studiolights/world/forest.exr";
+    nlohmann::json material = {{"name", "m"}};
+    if (GetParam() == "diffuse") material.update({{"type", "diffuse"}, {"albedo", 0.5}});
+    if (GetParam() == "conductor")
+        material.update({{"type", "conductor"}, {"roughness", 0.3}, {"metal", "gold"}});
+    if (GetParam() == "plastic")
+        material.update({{"type", "plastic"}, {"roughness", 0.2}, {"albedo", {0.2, 0.4, 0.6}}});
+    if (GetParam() == "glint_smooth")
+        material.update({{"type", "glint"},
+                         {"model", "smooth"},
+                         {"roughness", 0.25},
+                         {"fresnel", {{"type", "conductor"}, {"metal", "silver"}}}});
+    for (const bool map : {false, true}) {
+        if (map && !std::filesystem::exists(forest)) continue;
+        SCOPED_TRACE(map ? "forest.exr" : "constant");
+        nlohmann::json j;
+        j["film"] = {{"width", 64}, {"height", 64}};
+        j["camera"] = {{"eye", {0, 0.3, 3.0}}, {"target", {0, 0, 0}}, {"fov_deg", 30}};
+        j["render"] = {{"integrator", "direct"}, {"spp", 64}, {"seed", 3}};
+        j["materials"] = {material};
+        j["shapes"] = {{{"type", "sphere"}, {"radius", 0.7}, {"material", "m"}}};
+        nlohmann::json env = {{"type", "environment"}};
+        if (map)
+            env.update({{"file", forest}, {"rotation_deg", 90}});
+        else
+            env["radiance"] = {1.0, 1.0, 1.0};
+        j["lights"] = {env};
+        const Scene scene = parse_scene(j, "test:env");
+        GpuRenderer renderer(scene);
+        renderer.render(scene);
+        const Image gpu = renderer.read_image();
+        const Image cpu = render_scene(scene, RenderOptions{1, true});
+        const ImageAgreement a = compare_images(gpu, cpu, 8, 0.02f, 0.1f);
+        ASSERT_GT(a.mean_b, 0.01);
+        EXPECT_LT(a.mean_relative_error, map ? 0.06 : 0.02)
+            << "gpu " << a.mean_a << " cpu " << a.mean_b;
+        RecordProperty(map ? "mean_rel_map" : "mean_rel_constant",
+                       std::to_string(a.mean_relative_error));
+    }
+}
+
+INSTANTIATE_TEST_SUITE_P(Materials, GpuEnvironment,
+                         ::testing::Values("diffuse", "conductor", "plastic", "glint_smooth"));
 
 TEST(GpuRenderer, ShaderErrorNamesTheSourceLine) {
     GLINTLAB_REQUIRE_GL();
