@@ -7,6 +7,7 @@
 #include "glintlab/counting/validate_counting.h"
 #include "glintlab/glints/chermain2020/validate_chermain2020.h"
 #include "glintlab/glints/deliot2023/validate_deliot2023.h"
+#include "glintlab/glints/kneiphof2025/validate_kneiphof2025.h"
 #include "glintlab/glints/jakob2014/validate_jakob2014.h"
 #include "glintlab/glints/zirr2016/validate_zirr2016.h"
 #include "glintlab/validate/report.h"
@@ -48,6 +49,12 @@ const std::map<std::string, SuiteRunner>& suites() {
              Jakob2014ValidationOptions o;
              o.seed = static_cast<uint64_t>(a.seed);
              return validate_jakob2014(o);
+         }},
+        {"kneiphof2025",
+         [](const ValidateArgs& a) {
+             Kneiphof2025ValidationOptions o;
+             o.seed = static_cast<uint64_t>(a.seed);
+             return validate_kneiphof2025(o);
          }},
         {"zirr2016",
          [](const ValidateArgs& a) {

@@ -167,8 +167,12 @@ float kneiphof2025_ibl_factor(Footprint fp, float log_density, uint seed, float 
 }
 
 // K = 1 on the grid without the half-vector dimension: b(N_P, p) / (E[N_P] p)
-// with the single-gated law of Eq. 23 (the "wang2020-style" variant of 003
-// Fig. 8, whose p does not depend on the environment).
+// (the "wang2020-style" variant of 003 Fig. 8, whose p does not depend on the
+// environment). 003 does not say which gated law its reimplementation uses;
+// we take the dual-gated law (Algorithm 1), the same law as our multinomial
+// with K = 2: the single-gated Eq. 23 (one success plus a Gaussian for the
+// N - 1 others) overestimates E[b] by ~10-20 % where N p ~ 1-5 per vertex
+// (measured: Kneiphof2025.GateFixesRemoveFig13And14Bias, docs/VALIDATION.md).
 float kneiphof2025_binomial_factor_no_h(Footprint fp, float p, float log_density, uint seed,
                                         float screen_space_scale, float density_randomization) {
     if (!(p > 0.0f)) return 1.0f;
@@ -184,7 +188,7 @@ float kneiphof2025_binomial_factor_no_h(Footprint fp, float p, float log_density
             float N = deliot2023_vertex_trials(s.log_trials, density_randomization, vs);
             float xi1 = hash_random(vs);
             float xi2 = hash_random(vs);
-            acc += bv * vec2(binomial_single_gated(N, p, xi1, xi2), N);
+            acc += bv * vec2(binomial_dual_gated(N, p, xi1, xi2, false).x, N);
         }
     }
     return acc.y > 0.0f ? acc.x / (acc.y * p) : 1.0f;

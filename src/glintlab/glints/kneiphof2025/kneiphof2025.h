@@ -43,7 +43,7 @@ glm::vec3 kneiphof2025_environment_smooth(const Kneiphof2025Environment& env, gl
 float kneiphof2025_area_factor(glm::vec3 h_center, const Footprint& footprint, float p,
                                const GlintDesc& desc);
 
-// The single-gated (Eq. 23) factor on the grid without h, for the
+// The dual-gated (Algorithm 1) K = 1 factor on the grid without h, for the
 // wang2020-style variant and tests.
 float kneiphof2025_binomial_factor(const Footprint& footprint, float p, const GlintDesc& desc);
 
