@@ -99,6 +99,8 @@ glm::dvec2 qmc_point(int i) {
 
 namespace {
 
+constexpr int kQmcPoints = 64;  // 002 §4: "64 samples of a (0,2) rule"
+
 // D_P per channel, or nullopt where the smooth D applies (degenerate footprint).
 std::optional<glm::dvec3> query_ndf(glm::vec3 wo, glm::vec3 wi, glm::vec3 h, const Footprint& fp,
                                     const GlintDesc& desc) {
@@ -173,21 +175,33 @@ float jakob2014_pdf(const GlintDesc& desc, glm::vec3 wo, glm::vec3 wi, bool full
     glm::dvec3 t, b;
     jakob2014::basis(wd, t, b);
     const double one_minus_cos = 1.0 - std::cos(gamma);
+    // The net's azimuths are fixed: (cos φ, sin φ) tabulated once.
+    struct Net {
+        double x[kQmcPoints], c[kQmcPoints], s[kQmcPoints];
+        Net() {
+            for (int i = 0; i < kQmcPoints; ++i) {
+                const glm::dvec2 p = jakob2014::qmc_point(i);
+                x[i] = p.x;
+                c[i] = std::cos(2.0 * std::numbers::pi * p.y);
+                s[i] = std::sin(2.0 * std::numbers::pi * p.y);
+            }
+        }
+    };
+    static const Net net;
     double sum = 0.0;
-    constexpr int kPoints = 64;
-    for (int i = 0; i < kPoints; ++i) {
-        const glm::dvec2 x = jakob2014::qmc_point(i);
-        const double ct = 1.0 - x.x * one_minus_cos;
+    for (int i = 0; i < kQmcPoints; ++i) {
+        const double ct = 1.0 - net.x[i] * one_minus_cos;
         const double st = std::sqrt(std::max(0.0, 1.0 - ct * ct));
-        const double phi = 2.0 * std::numbers::pi * x.y;
-        const glm::dvec3 w1 = ct * wd + st * (std::cos(phi) * t + std::sin(phi) * b);
+        const glm::dvec3 w1 = ct * wd + st * (net.c[i] * t + net.s[i] * b);
         const glm::dvec3 hs = w0 + w1;
-        if (glm::dot(hs, hs) <= 0.0) continue;
-        const glm::dvec3 m = glm::normalize(hs);
+        const double len2 = glm::dot(hs, hs);
+        if (len2 <= 0.0) continue;
+        const glm::dvec3 m = hs / std::sqrt(len2);
         if (m.z <= 0.0 || glm::dot(w0, m) <= 0.0) continue;
-        sum += double(shader::D_Microfacet(ndf, glm::vec3(m), ax, ay)) * g1 / (4.0 * double(wo.z));
+        sum += double(shader::D_Microfacet(ndf, glm::vec3(m), ax, ay));
     }
-    return float(sum / kPoints);
+    sum *= g1 / (4.0 * double(wo.z));
+    return float(sum / kQmcPoints);
 }
 
 void read_jakob2014_params(JsonObject& block, GlintDesc& desc) {

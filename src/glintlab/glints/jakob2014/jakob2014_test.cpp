@@ -204,6 +204,7 @@ TEST(Jakob2014Overlap, BoxParallelogramOverlapMatchesMonteCarlo) {
         q.e1 = {0.6 * (rng.next_double() - 0.5), 0.6 * (rng.next_double() - 0.5)};
         q.e2 = {0.6 * (rng.next_double() - 0.5), 0.6 * (rng.next_double() - 0.5)};
         if (q.area() < 1e-3) continue;
+        q.prepare();
         const UvBox b{{0.5 * rng.next_double(), 0.5 * rng.next_double()},
                       0.1 + 0.4 * rng.next_double()};
         const int n = 100000;

@@ -48,10 +48,11 @@ double NdfIntegralTable::integrate(uint64_t id, const SphericalTriangle& t, int 
     return rule3;
 }
 
-double NdfIntegralTable::integral(uint64_t id, const SphericalTriangle& t) const {
+double NdfIntegralTable::integral(uint64_t id, const SphericalTriangle& t,
+                                  double solid_angle) const {
     const auto it = table_.find(id);
     if (it != table_.end()) return it->second;
-    return t.solid_angle() * spec_.density(t.center());
+    return solid_angle * spec_.density(t.center());
 }
 
 size_t NdfIntegralTable::memory_bytes() const {

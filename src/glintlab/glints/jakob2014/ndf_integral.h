@@ -35,7 +35,11 @@ class NdfIntegralTable {
     explicit NdfIntegralTable(const NdfSpec& spec);
 
     // ∫_T D(m)(m·n) dm: the stored entry, else the 1-point rule σ(T) D(centre) (Algorithm 2 text).
-    double integral(uint64_t id, const SphericalTriangle& t) const;
+    double integral(uint64_t id, const SphericalTriangle& t) const {
+        return integral(id, t, t.solid_angle());
+    }
+    // The same with σ(T) known.
+    double integral(uint64_t id, const SphericalTriangle& t, double solid_angle) const;
     // Whether T needed a composite rule (D is not close to uniform over T).
     bool stored(uint64_t id) const { return table_.count(id) != 0; }
     const NdfSpec& spec() const { return spec_; }

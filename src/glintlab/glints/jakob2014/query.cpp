@@ -30,6 +30,48 @@ struct Accum {
     glm::dvec3 area{0.0};
 };
 
+// The four children of a direction-tree triangle with their solid angles and
+// normalised split probabilities (∫ D(m)(m·n) over each child, Algorithm 2's
+// table or its 1-point rule). A pure function of (table, triangle id); the
+// top of the tree is shared by all queries, so a small thread-local
+// direct-mapped cache avoids recomputing it (same values, bit for bit).
+struct DirectionalSplit {
+    const NdfIntegralTable* table = nullptr;
+    uint64_t id = 0;
+    bool valid = false;
+    SphericalTriangle child[4];
+    uint64_t child_id[4];
+    double sigma[4];
+    std::array<double, 4> p;
+};
+
+const DirectionalSplit& directional_split(const NdfIntegralTable& table, uint64_t id,
+                                          const SphericalTriangle& t) {
+    constexpr size_t kSlots = 1024;
+    thread_local std::vector<DirectionalSplit> cache(kSlots);
+    DirectionalSplit& d = cache[(id * 0x9e3779b97f4a7c15ull) >> 54];
+    if (d.table == &table && d.id == id) return d;
+    d.table = &table;
+    d.id = id;
+    double total = 0.0;
+    for (int j = 0; j < 4; ++j) {
+        if (id == kHemisphereId) {
+            d.child[j] = hemisphere_quadrant(j);
+            d.child_id[j] = 2 + uint64_t(j);
+        } else {
+            d.child[j] = t.child(j);
+            d.child_id[j] = child_id(id, j);
+        }
+        d.sigma[j] = d.child[j].solid_angle();
+        d.p[j] = std::max(0.0, table.integral(d.child_id[j], d.child[j], d.sigma[j]));
+        total += d.p[j];
+    }
+    d.valid = total > 0.0;
+    if (d.valid)
+        for (double& v : d.p) v /= total;
+    return d;
+}
+
 // Pushes the four children of `n` (Eq. 11 decides the split; counts by the
 // multinomial of §3.4, seeded by the node id).
 void split(const Model& m, const Node& n, std::vector<Node>& queue) {
@@ -48,21 +90,14 @@ void split(const Model& m, const Node& n, std::vector<Node>& queue) {
             p[j] = 0.25;
         }
     } else {
-        double total = 0.0;
+        const DirectionalSplit& d = directional_split(*m.table, n.tri_id, n.tri);
+        if (!d.valid) return;  // D vanishes on the node: no particles can be here
         for (int j = 0; j < 4; ++j) {
-            if (n.tri_id == kHemisphereId) {
-                c[j].tri = hemisphere_quadrant(j);
-                c[j].tri_id = 2 + uint64_t(j);
-            } else {
-                c[j].tri = n.tri.child(j);
-                c[j].tri_id = child_id(n.tri_id, j);
-            }
-            c[j].tri_sigma = c[j].tri.solid_angle();
-            p[j] = std::max(0.0, m.table->integral(c[j].tri_id, c[j].tri));
-            total += p[j];
+            c[j].tri = d.child[j];
+            c[j].tri_id = d.child_id[j];
+            c[j].tri_sigma = d.sigma[j];
+            p[j] = d.p[j];
         }
-        if (total <= 0.0) return;  // D vanishes on the node: no particles can be here
-        for (double& v : p) v /= total;
     }
     const std::array<int64_t, 4> k = sample_multinomial4(n.count, p, n.id, m.seed);
     if (m.chromatic) {
@@ -224,6 +259,7 @@ QueryResult query_count(const Model& m, const UvParallelogram& q_in, glm::dvec3 
     // its bounding box touches.
     UvParallelogram q = q_in;
     q.center -= glm::floor(q.center);
+    q.prepare();
     const glm::dvec2 half = 0.5 * (glm::abs(q.e1) + glm::abs(q.e2));
     const glm::dvec2 lo = glm::floor(q.center - half), hi = glm::floor(q.center + half);
     const double tiles = (hi.x - lo.x + 1.0) * (hi.y - lo.y + 1.0);

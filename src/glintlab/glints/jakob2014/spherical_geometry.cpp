@@ -37,6 +37,12 @@ int solve_quadratic(double a, double b, double c, double* t0, double* t1) {
 double SphericalTriangle::solid_angle() const {
     const double num = std::abs(det3(v[0], v[1], v[2]));
     const double den = 1.0 + glm::dot(v[0], v[1]) + glm::dot(v[1], v[2]) + glm::dot(v[2], v[0]);
+    // Ω = 2 atan(num/den); deep triangles have num/den < 0.1, where the
+    // series to x^7 is accurate to 1e-10 relative (atan2 is a hot spot).
+    if (den > 0.0 && num < 0.1 * den) {
+        const double x = num / den, x2 = x * x;
+        return 2.0 * x * (1.0 - x2 * (1.0 / 3.0 - x2 * (1.0 / 5.0 - x2 * (1.0 / 7.0))));
+    }
     return 2.0 * std::atan2(num, den);
 }
 
@@ -104,6 +110,14 @@ SphericalConic SphericalConic::make(glm::dvec3 wi, glm::dvec3 wo, double gamma) 
     const glm::dmat3 L(glm::dvec3(l1, 0, 0), glm::dvec3(0, l2, 0), glm::dvec3(0, 0, -1));
     k.C = Q * L * glm::transpose(Q);
     k.axis = z;
+    // Cap around ẑ containing the elliptic conic: tan²θ <= 1/min(λ1, λ2).
+    const double lmin = std::min(l1, l2);
+    k.bounded = lmin > 0.0;
+    if (k.bounded) {
+        const double th = std::atan(1.0 / std::sqrt(lmin));
+        k.cos_max = std::cos(th);
+        k.sin_max = std::sin(th);
+    }
     return k;
 }
 
@@ -121,9 +135,41 @@ bool SphericalConic::arc_crosses(glm::dvec3 a, glm::dvec3 b) const {
 }
 
 Overlap SphericalConic::classify(const SphericalTriangle& t) const {
-    if (arc_crosses(t.v[0], t.v[1]) || arc_crosses(t.v[1], t.v[2]) || arc_crosses(t.v[2], t.v[0]))
-        return Overlap::Partial;
-    if (contains(t.v[0])) return Overlap::Contained;
+    // Quick reject (not in the paper, exact): the conic lies in the cap of
+    // radius θmax around ẑ, the triangle in the cap of radius r around its
+    // normalised centroid c; caps further apart than r + θmax are disjoint.
+    if (bounded) {
+        const glm::dvec3 c = t.center();
+        const double cr = std::min({glm::dot(c, t.v[0]), glm::dot(c, t.v[1]), glm::dot(c, t.v[2])});
+        if (cr > 0.0) {
+            const double sr = std::sqrt(std::max(0.0, 1.0 - cr * cr));
+            const double cos_sum = cr * cos_max - sr * sin_max;  // cos(r + θmax), r + θmax < π
+            if (glm::dot(c, axis) < cos_sum - 1e-12) return Overlap::Disjoint;
+        }
+    }
+    // Quadric values and cross terms of the vertices; the edge quadratic of
+    // §3.3 for c = a + b, d = a - b is (q_a + q_b - 2 a^T C b) t² +
+    // 2 (q_a - q_b) t + (q_a + q_b + 2 a^T C b).
+    const glm::dvec3 Ca = C * t.v[0], Cb = C * t.v[1];
+    const double q[3] = {glm::dot(t.v[0], Ca), glm::dot(t.v[1], Cb), glm::dot(t.v[2], C * t.v[2])};
+    const double x[3] = {glm::dot(t.v[1], Ca), glm::dot(t.v[2], Cb),
+                         glm::dot(t.v[2], Ca)};  // ab, bc, ca
+    const double z[3] = {glm::dot(t.v[0], axis), glm::dot(t.v[1], axis), glm::dot(t.v[2], axis)};
+    bool inside[3];
+    for (int i = 0; i < 3; ++i) inside[i] = q[i] <= 0.0 && z[i] > 0.0;
+    if (inside[0] != inside[1] || inside[1] != inside[2]) return Overlap::Partial;
+    for (int e = 0; e < 3; ++e) {
+        const int i = e, j = (e + 1) % 3;
+        double t0, t1;
+        const int n = solve_quadratic(q[i] + q[j] - 2.0 * x[e], 2.0 * (q[i] - q[j]),
+                                      q[i] + q[j] + 2.0 * x[e], &t0, &t1);
+        for (int k = 0; k < n; ++k) {
+            const double tt = k == 0 ? t0 : t1;
+            if (tt >= -1.0 && tt <= 1.0 && (z[i] + z[j]) + tt * (z[i] - z[j]) > 0.0)
+                return Overlap::Partial;
+        }
+    }
+    if (inside[0]) return Overlap::Contained;
     if (t.contains(axis)) return Overlap::Partial;
     return Overlap::Disjoint;
 }

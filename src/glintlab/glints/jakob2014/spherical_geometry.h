@@ -43,6 +43,9 @@ struct SphericalConic {
     glm::dmat3 C{1.0};
     glm::dvec3 axis{0.0, 0.0, 1.0};  // ẑ, always inside (ẑ^T C ẑ = -1)
     double gamma = 0.0;
+    // Elliptic case (λ1 > 0): Ω_h lies in the cap of radius θmax around ẑ.
+    bool bounded = false;
+    double cos_max = -1.0, sin_max = 0.0;
 
     static SphericalConic make(glm::dvec3 wi, glm::dvec3 wo, double gamma);
     double quadric(glm::dvec3 m) const { return glm::dot(m, C * m); }

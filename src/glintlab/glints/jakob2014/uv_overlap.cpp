@@ -12,12 +12,22 @@ double cross2(glm::dvec2 a, glm::dvec2 b) {
 
 // Parallelogram coordinates (a, b) of point x.
 glm::dvec2 local(const UvParallelogram& q, glm::dvec2 x) {
-    const double det = cross2(q.e1, q.e2);
     const glm::dvec2 d = x - q.center;
-    return {cross2(d, q.e2) / det, cross2(q.e1, d) / det};
+    return {glm::dot(q.inv_row0, d), glm::dot(q.inv_row1, d)};
 }
 
 }  // namespace
+
+void UvParallelogram::prepare() {
+    const double det = cross2(e1, e2);
+    inv_row0 = glm::dvec2(e2.y, -e2.x) / det;
+    inv_row1 = glm::dvec2(-e1.y, e1.x) / det;
+    half = 0.5 * (glm::abs(e1) + glm::abs(e2));
+    n1 = {-e1.y, e1.x};
+    n2 = {-e2.y, e2.x};
+    r1 = 0.5 * std::abs(glm::dot(n1, e2));
+    r2 = 0.5 * std::abs(glm::dot(n2, e1));
+}
 
 bool UvParallelogram::contains(glm::dvec2 x) const {
     const glm::dvec2 l = local(*this, x);
@@ -25,37 +35,32 @@ bool UvParallelogram::contains(glm::dvec2 x) const {
 }
 
 Overlap classify_box(const UvParallelogram& q, const UvBox& b) {
-    const glm::dvec2 corners[4] = {b.lo, b.lo + glm::dvec2(b.size, 0), b.lo + glm::dvec2(b.size),
-                                   b.lo + glm::dvec2(0, b.size)};
+    // Separating axes: the box's (x, y) first (cheap), then the
+    // parallelogram's edge normals.
+    const glm::dvec2 hi = b.lo + glm::dvec2(b.size);
+    if (q.center.x - q.half.x > hi.x || q.center.x + q.half.x < b.lo.x) return Overlap::Disjoint;
+    if (q.center.y - q.half.y > hi.y || q.center.y + q.half.y < b.lo.y) return Overlap::Disjoint;
+    const glm::dvec2 corners[4] = {b.lo, {hi.x, b.lo.y}, hi, {b.lo.x, hi.y}};
+    const glm::dvec2 ns[2] = {q.n1, q.n2};
+    const double rs[2] = {q.r1, q.r2};
+    for (int k = 0; k < 2; ++k) {
+        // The parallelogram spans ±r_k around n_k·center along n_k (the
+        // edge e_k itself has no extent along its own normal).
+        const double c = glm::dot(ns[k], q.center);
+        double lo = 1e300, hv = -1e300;
+        for (const glm::dvec2& p : corners) {
+            const double v = glm::dot(ns[k], p);
+            lo = std::min(lo, v);
+            hv = std::max(hv, v);
+        }
+        if (lo > c + rs[k] || hv < c - rs[k]) return Overlap::Disjoint;
+    }
     // Containment: every box corner inside the parallelogram.
-    bool all_in = true;
     for (const glm::dvec2& c : corners) {
         const glm::dvec2 l = local(q, c);
-        if (std::abs(l.x) > 0.5 || std::abs(l.y) > 0.5) {
-            all_in = false;
-            break;
-        }
+        if (std::abs(l.x) > 0.5 || std::abs(l.y) > 0.5) return Overlap::Partial;
     }
-    if (all_in) return Overlap::Contained;
-    // Separating axes: the box's (x, y) and the parallelogram's edge normals.
-    const glm::dvec2 half = 0.5 * (glm::abs(q.e1) + glm::abs(q.e2));
-    if (q.center.x - half.x > b.lo.x + b.size || q.center.x + half.x < b.lo.x)
-        return Overlap::Disjoint;
-    if (q.center.y - half.y > b.lo.y + b.size || q.center.y + half.y < b.lo.y)
-        return Overlap::Disjoint;
-    const glm::dvec2 axes[2] = {{-q.e1.y, q.e1.x}, {-q.e2.y, q.e2.x}};
-    for (const glm::dvec2& n : axes) {
-        const double c = glm::dot(n, q.center);
-        const double r = 0.5 * (std::abs(glm::dot(n, q.e1)) + std::abs(glm::dot(n, q.e2)));
-        double lo = 1e300, hi = -1e300;
-        for (const glm::dvec2& p : corners) {
-            const double v = glm::dot(n, p);
-            lo = std::min(lo, v);
-            hi = std::max(hi, v);
-        }
-        if (lo > c + r || hi < c - r) return Overlap::Disjoint;
-    }
-    return Overlap::Partial;
+    return Overlap::Contained;
 }
 
 double box_overlap_area(const UvParallelogram& q, const UvBox& b) {
