@@ -13,6 +13,7 @@ void add_view_command(CLI::App& app, int* status) {
         std::string scene;
         int frames = 0;
         std::string screenshot;
+        std::string window_screenshot;
         std::string res;
         std::optional<float> exposure;
         bool no_ui = false;
@@ -27,6 +28,8 @@ void add_view_command(CLI::App& app, int* status) {
         ->check(CLI::Range(0, 1000000));
     sub->add_option("--screenshot", a->screenshot,
                     "PNG written after the last of --frames (and the target of the P key)");
+    sub->add_option("--window-screenshot", a->window_screenshot,
+                    "PNG of the whole window (panel included) after the last of --frames");
     sub->add_option("--res", a->res, "Window size WxH (overrides the scene's film)");
     sub->add_option("--exposure", a->exposure, "Exposure in stops (overrides the scene)")
         ->check(CLI::Range(-20.0f, 20.0f));
@@ -46,11 +49,12 @@ void add_view_command(CLI::App& app, int* status) {
             scene.camera.width = w, scene.camera.height = h;
         }
         if (a->exposure) scene.film.exposure = *a->exposure;
-        if (!a->screenshot.empty() && a->frames == 0)
-            fail("--screenshot needs --frames N (the screenshot is taken after frame N)");
+        if ((!a->screenshot.empty() || !a->window_screenshot.empty()) && a->frames == 0)
+            fail("--screenshot and --window-screenshot need --frames N (taken after frame N)");
         ViewerOptions o;
         o.frames = a->frames;
         o.screenshot = a->screenshot;
+        o.window_screenshot = a->window_screenshot;
         o.show_ui = !a->no_ui;
         run_viewer(std::move(scene), o);
         *status = 0;

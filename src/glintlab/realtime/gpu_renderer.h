@@ -10,7 +10,8 @@
 // shader (docs/ARCHITECTURE.md "realtime/"): no shadows; sphere lights are
 // shaded as point lights of intensity pi r^2 L at their centre (exact for the
 // irradiance of a fully visible sphere); cone (sun) lights at their axis; the
-// environment is drawn as background but does not light surfaces; the
+// environment lights surfaces through a deterministic filtered-importance-
+// sampling estimate (forward_shaders.h) instead of random samples; the
 // dielectric shows its reflection only.
 #pragma once
 

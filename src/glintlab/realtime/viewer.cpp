@@ -178,6 +178,24 @@ void material_panel(MaterialDesc& m) {
     }
 }
 
+// The window's back buffer as displayed (sRGB bytes), decoded to linear so
+// write_png encodes it back unchanged.
+void write_window(int w, int h, const std::filesystem::path& path) {
+    std::vector<unsigned char> rgba(static_cast<size_t>(w) * h * 4);
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    glReadBuffer(GL_BACK);
+    glPixelStorei(GL_PACK_ALIGNMENT, 1);
+    glReadPixels(0, 0, w, h, GL_RGBA, GL_UNSIGNED_BYTE, rgba.data());
+    Image image(w, h);
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x) {
+            const unsigned char* px = &rgba[(static_cast<size_t>(h - 1 - y) * w + x) * 4];
+            image.at(x, y) = glm::vec3(srgb_decode(px[0] / 255.0f), srgb_decode(px[1] / 255.0f),
+                                       srgb_decode(px[2] / 255.0f));
+        }
+    write_png(image, path);
+}
+
 void write_screenshot(const GpuRenderer& renderer, const Scene& scene,
                       const std::filesystem::path& path) {
     const Image image = renderer.read_image();
@@ -286,10 +304,15 @@ void run_viewer(Scene scene, const ViewerOptions& options) {
             ImGui_ImplGlfw_NewFrame();
             ImGui::NewFrame();
             ImGui::SetNextWindowPos(ImVec2(8, 8), ImGuiCond_FirstUseEver);
+            ImGui::SetNextWindowSize(ImVec2(340.0f, 0.45f * static_cast<float>(fb_h)),
+                                     ImGuiCond_FirstUseEver);
+            ImGui::SetNextWindowBgAlpha(0.8f);
             ImGui::Begin("glintlab");
+            ImGui::PushItemWidth(170.0f);
             ImGui::TextUnformatted(gl_description().c_str());
-            ImGui::Text("GPU ms (median of 60): background %.3f  forward %.3f  display %.3f",
-                        background_ms.median(), forward_ms.median(), display_ms.median());
+            ImGui::Text("GPU ms, median of 60 frames (GL_TIME_ELAPSED)");
+            ImGui::Text("background %.3f  forward %.3f  display %.3f", background_ms.median(),
+                        forward_ms.median(), display_ms.median());
             ImGui::SliderFloat("exposure (stops)", &scene.film.exposure, -10.0f, 10.0f);
             if (ImGui::Button("screenshot (P)")) take_shot = true;
             if (!status.empty()) ImGui::TextUnformatted(status.c_str());
@@ -325,6 +348,7 @@ void run_viewer(Scene scene, const ViewerOptions& options) {
                     ImGui::PopID();
                 }
             }
+            ImGui::PopItemWidth();
             ImGui::End();
             ImGui::Render();
             ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
@@ -341,6 +365,8 @@ void run_viewer(Scene scene, const ViewerOptions& options) {
             write_screenshot(renderer, scene, shot_path);
             status = "saved " + shot_path.string();
         }
+        if (last && !options.window_screenshot.empty())
+            write_window(fb_w, fb_h, options.window_screenshot);
         glfwSwapBuffers(glfw.window);
         if (last) break;
     }

@@ -18,6 +18,8 @@ struct ViewerOptions {
     int frames = 0;  // > 0: close after this many frames (scripted use)
     std::filesystem::path
         screenshot;  // written after the last frame when set; P key target otherwise
+    std::filesystem::path
+        window_screenshot;  // the window as shown (panel included), after the last frame
     bool show_ui = true;
 };
 
