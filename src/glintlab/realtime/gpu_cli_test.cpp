@@ -127,7 +127,13 @@ TEST(GpuViewer, ScreenshotUnderXvfbMatchesTheHeadlessRender) {
     const RunResult headless = run(cli() + " render --gpu -q " + (dir / "s.json").string() +
                                    " -o " + (dir / "headless.exr").string());
     ASSERT_EQ(headless.status, 0) << headless.output;
-    const RunResult viewer = run("xvfb-run -a -s \"-screen 0 640x480x24\" " + cli() + " view " +
+    // Under the sanitizers: Mesa's GLX driver, unloaded by glfwTerminate,
+    // leaves 112 bytes that LeakSanitizer reports from an "<unknown module>"
+    // (measured with a 20-line GLFW + ImGui program), which no suppression
+    // can name; leak checking stays on for everything else (and for our GL
+    // code in this process, through EGL).
+    const RunResult viewer = run("ASAN_OPTIONS=\"${ASAN_OPTIONS}:detect_leaks=0\" xvfb-run -a -s "
+                                 "\"-screen 0 640x480x24\" " + cli() + " view " +
                                  (dir / "s.json").string() + " --frames 3 --screenshot " +
                                  (dir / "viewer.png").string());
     if (viewer.output.find("cannot create a window") != std::string::npos ||
