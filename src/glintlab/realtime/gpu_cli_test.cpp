@@ -132,10 +132,11 @@ TEST(GpuViewer, ScreenshotUnderXvfbMatchesTheHeadlessRender) {
     // (measured with a 20-line GLFW + ImGui program), which no suppression
     // can name; leak checking stays on for everything else (and for our GL
     // code in this process, through EGL).
-    const RunResult viewer = run("ASAN_OPTIONS=\"${ASAN_OPTIONS}:detect_leaks=0\" xvfb-run -a -s "
-                                 "\"-screen 0 640x480x24\" " + cli() + " view " +
-                                 (dir / "s.json").string() + " --frames 3 --screenshot " +
-                                 (dir / "viewer.png").string());
+    const RunResult viewer =
+        run("ASAN_OPTIONS=\"${ASAN_OPTIONS}:detect_leaks=0\" xvfb-run -a -s "
+            "\"-screen 0 640x480x24\" " +
+            cli() + " view " + (dir / "s.json").string() + " --frames 3 --screenshot " +
+            (dir / "viewer.png").string());
     if (viewer.output.find("cannot create a window") != std::string::npos ||
         viewer.output.find("cannot initialise GLFW") != std::string::npos)
         GTEST_SKIP() << "no OpenGL 4.5 window under Xvfb: " << viewer.output;

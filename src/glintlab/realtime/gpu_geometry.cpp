@@ -1,5 +1,6 @@
 #include "glintlab/realtime/gpu_geometry.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -26,10 +27,20 @@ glm::vec3 triangle_dpdu(glm::vec3 p0, glm::vec3 p1, glm::vec3 p2, glm::vec2 uv0,
     return glm::normalize(glm::cross(ng, a));
 }
 
-GpuMeshData gpu_mesh_data(const Shape& shape) {
+int sphere_segments(const Scene& scene) {
+    const auto spheres = std::count_if(
+        scene.shapes.begin(), scene.shapes.end(),
+        [](const Shape& s) { return std::holds_alternative<SphereGeometry>(s.geometry); });
+    if (spheres == 0) return kMaxSphereSegments;
+    // segments^2 triangles per sphere (segments x segments / 2 quads).
+    const int n = static_cast<int>(std::sqrt(kSphereTriangleBudget / static_cast<double>(spheres)));
+    return std::clamp(n - n % 2, kMinSphereSegments, kMaxSphereSegments);
+}
+
+GpuMeshData gpu_mesh_data(const Shape& shape, int segments) {
     GpuMeshData out;
     if (const auto* s = std::get_if<SphereGeometry>(&shape.geometry)) {
-        const TriangleMesh m = make_sphere(s->radius, kSphereSegments, kSphereRings);
+        const TriangleMesh m = make_sphere(s->radius, segments, segments / 2);
         out.vertices.resize(m.positions.size());
         for (size_t i = 0; i < m.positions.size(); ++i) {
             GpuVertex& v = out.vertices[i];

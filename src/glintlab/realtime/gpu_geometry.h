@@ -34,14 +34,19 @@ struct GpuMeshData {
     bool has_normals = true;
 };
 
-// Tessellation of analytic spheres: segments in phi and rings in theta of
-// scene/shapes.cpp make_sphere (its uv = (phi / 2pi, theta / pi) is the
-// parameterisation of the CPU's analytic sphere, render/accel.cpp). 192 x 96
-// keeps the chord error below 1.4e-4 r.
-inline constexpr int kSphereSegments = 192;
-inline constexpr int kSphereRings = 96;
+// Tessellation of analytic spheres: segments in phi (and half as many rings
+// in theta) of scene/shapes.cpp make_sphere, whose uv = (phi / 2pi, theta /
+// pi) is the parameterisation of the CPU's analytic sphere
+// (render/accel.cpp). 192 segments (chord error 1.4e-4 r) while the scene's
+// spheres stay within a budget of 300k triangles, fewer (down to 64: chord
+// error 1.2e-3 r, 0.05 px for the 64 spheres of the MANY scene at 1080p)
+// beyond it, so that many small spheres do not make the frame vertex-bound.
+inline constexpr int kMaxSphereSegments = 192;
+inline constexpr int kMinSphereSegments = 64;
+inline constexpr double kSphereTriangleBudget = 300000.0;
+int sphere_segments(const Scene& scene);
 
-GpuMeshData gpu_mesh_data(const Shape& shape);
+GpuMeshData gpu_mesh_data(const Shape& shape, int sphere_segments = kMaxSphereSegments);
 
 // dp/du of triangle (p0, p1, p2) with uvs (uv0, uv1, uv2) exactly as
 // render/accel.cpp triangle_hit, including its fallback for degenerate uvs.

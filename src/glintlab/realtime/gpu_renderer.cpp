@@ -29,8 +29,8 @@ struct GpuShape {
     bool has_normals = true;
 };
 
-GpuShape upload_shape(const Shape& shape) {
-    const GpuMeshData data = gpu_mesh_data(shape);
+GpuShape upload_shape(const Shape& shape, int sphere_segments) {
+    const GpuMeshData data = gpu_mesh_data(shape, sphere_segments);
     GpuShape g;
     g.vao = gl::make_vertex_array();
     g.vertices = gl::make_buffer();
@@ -220,7 +220,8 @@ struct GpuRenderer::Impl {
 GpuRenderer::GpuRenderer(const Scene& scene) : impl_(std::make_unique<Impl>()) {
     require_gl45("OpenGL renderer");
     Impl& r = *impl_;
-    for (const Shape& shape : scene.shapes) r.shapes.push_back(upload_shape(shape));
+    const int segments = sphere_segments(scene);
+    for (const Shape& shape : scene.shapes) r.shapes.push_back(upload_shape(shape, segments));
     r.bounds = scene_bounds(scene);
     if (scene.environment >= 0) {
         const auto& env =
