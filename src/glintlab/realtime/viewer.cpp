@@ -116,9 +116,21 @@ void slider(const char* label, float* v, float lo, float hi, bool log_scale = fa
 // Material controls; returns nothing, edits in place within the loader's ranges.
 void material_panel(MaterialDesc& m) {
     if (m.type != MaterialDesc::Type::Glint) {
-        ImGui::ColorEdit3("albedo", &m.albedo.x);
+        const bool diffuse_part =
+            m.type == MaterialDesc::Type::Diffuse || m.type == MaterialDesc::Type::Plastic;
+        if (diffuse_part) ImGui::ColorEdit3("albedo", &m.albedo.x);
+        if (m.type == MaterialDesc::Type::Diffuse) return;
+        int ndf = m.ndf == NdfType::GGX ? 1 : 0;
+        if (ImGui::Combo("ndf", &ndf, "beckmann\0ggx\0"))
+            m.ndf = ndf == 1 ? NdfType::GGX : NdfType::Beckmann;
         slider("alpha x", &m.alpha_x, 1e-3f, 1.0f, true);
         slider("alpha y", &m.alpha_y, 1e-3f, 1.0f, true);
+        if (m.type == MaterialDesc::Type::Conductor) {
+            ImGui::DragFloat3("eta", &m.eta.x, 0.01f, 0.01f, 10.0f);
+            ImGui::DragFloat3("k", &m.k.x, 0.01f, 0.0f, 20.0f);
+        } else {
+            slider("eta", &m.eta.x, 1.0f, 3.0f);
+        }
         return;
     }
     GlintDesc& g = m.glint;
