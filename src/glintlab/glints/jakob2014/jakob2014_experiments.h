@@ -59,6 +59,7 @@ struct Table1Row {
     double paper_nodes = 0.0, paper_count = 0.0;  // 002 Table 1
     double nodes = 0.0, count = 0.0;              // ours, per query
     int64_t queries = 0;
+    int64_t over_budget = 0;  // tile traversals that hit Model::kNodeBudget
     int nan_count = 0;
 };
 
@@ -68,5 +69,26 @@ struct Table1Row {
 // direction as a sphere light or environment would. `pixels` sets how many
 // pixels of the image are queried.
 std::vector<Table1Row> table1_statistics(int pixels, uint64_t seed);
+
+}  // namespace glintlab::jakob2014
+
+namespace glintlab::jakob2014 {
+
+// jakob2014 against explicitly generated particles (an in-folder reference:
+// N i.i.d. particles, positions uniform on the unit uv square, normals drawn
+// from D(m)(m·n) by visible-normal sampling at wo = n, counted by brute force
+// in each query). A plane of `pixels`² square footprints tiling the uv square
+// is seen by a camera and lit by a point light at finite distance (per-pixel
+// directions); the per-pixel D_P of both models is compared by its first and
+// second moments over the pixels and `realizations` seeds.
+struct ExplicitComparison {
+    double mean_explicit = 0.0, mean_jakob = 0.0;
+    double m2_explicit = 0.0, m2_jakob = 0.0;
+    double mean_rel_err = 0.0, m2_rel_err = 0.0;
+    double mean_std_err = 0.0, m2_std_err = 0.0;  // relative standard errors of the difference
+};
+ExplicitComparison compare_with_explicit_particles(int ndf, float alpha, double gamma_deg,
+                                                   double log_density, int pixels, int realizations,
+                                                   uint64_t seed);
 
 }  // namespace glintlab::jakob2014

@@ -72,6 +72,33 @@ const DirectionalSplit& directional_split(const NdfIntegralTable& table, uint64_
     return d;
 }
 
+// sample_multinomial4 through a thread-local direct-mapped cache: the top
+// levels of the tree (the same node ids, counts and probabilities for every
+// query of a material) are drawn once per thread. A pure function of its
+// arguments, all of which form the key, so results are bit-identical.
+std::array<int64_t, 4> cached_multinomial4(int64_t n, const std::array<double, 4>& p, uint64_t id,
+                                           uint32_t seed) {
+    if (n <= 8)
+        return sample_multinomial4(n, p, id, seed);  // cheap, and the deep levels never repeat
+    struct Entry {
+        uint64_t id = 0;
+        int64_t n = -1;
+        uint32_t seed = 0;
+        std::array<double, 4> p{};
+        std::array<int64_t, 4> k{};
+    };
+    constexpr size_t kSlots = 4096;
+    thread_local std::vector<Entry> cache(kSlots);
+    Entry& e = cache[((id ^ (uint64_t(seed) << 32)) * 0x9e3779b97f4a7c15ull) >> 52];
+    if (e.id == id && e.n == n && e.seed == seed && e.p == p) return e.k;
+    e.id = id;
+    e.n = n;
+    e.seed = seed;
+    e.p = p;
+    e.k = sample_multinomial4(n, p, id, seed);
+    return e.k;
+}
+
 // Pushes the four children of `n` (Eq. 11 decides the split; counts by the
 // multinomial of §3.4, seeded by the node id).
 void split(const Model& m, const Node& n, std::vector<Node>& queue) {
@@ -99,7 +126,7 @@ void split(const Model& m, const Node& n, std::vector<Node>& queue) {
             p[j] = d.p[j];
         }
     }
-    const std::array<int64_t, 4> k = sample_multinomial4(n.count, p, n.id, m.seed);
+    const std::array<int64_t, 4> k = cached_multinomial4(n.count, p, n.id, m.seed);
     if (m.chromatic) {
         for (uint32_t ch = 0; ch < 3; ++ch) {
             const std::array<double, 4> d = sample_dirichlet4(k, n.id, m.seed, ch);

@@ -223,7 +223,8 @@ ValidationReport validate_jakob2014(const Jakob2014ValidationOptions& o) {
                       {"paper_nodes", r.paper_nodes},
                       {"particles", r.count},
                       {"paper_particles", r.paper_count},
-                      {"queries", r.queries}});
+                      {"queries", r.queries},
+                      {"over_budget", r.over_budget}});
         nodes_avg += r.nodes / double(rows.size());
         parts_avg += r.count / double(rows.size());
         nan_count += r.nan_count;
@@ -231,12 +232,58 @@ ValidationReport validate_jakob2014(const Jakob2014ValidationOptions& o) {
     report.details["table1"] = jt;
     text += "\n";
 
+    // 4. Against explicit particles (in-folder reference, see the header).
+    text +=
+        "Per-pixel D_P moments over a plane under a point light: jakob2014 vs explicit particles\n";
+    text += fmt::format("{:<34} {:>10} {:>10} {:>8} {:>10} {:>10} {:>8}\n", "setting", "mean expl",
+                        "mean jak", "err", "m2 expl", "m2 jak", "err");
+    nlohmann::json jex = nlohmann::json::array();
+    double ex_mean = 0.0, ex_m2 = 0.0;
+    struct ExCase {
+        const char* name;
+        int ndf;
+        float alpha;
+        double gamma;
+        double n;
+    };
+    const ExCase ex_cases[] = {{"beckmann a=0.3 g=3 N=1e6", shader::NDF_BECKMANN, 0.3f, 3.0, 1e6},
+                               {"ggx a=0.1 g=1 N=4e6", shader::NDF_GGX, 0.1f, 1.0, 4e6}};
+    int exi = 0;
+    for (const ExCase& c : ex_cases) {
+        const ExplicitComparison r = compare_with_explicit_particles(
+            c.ndf, c.alpha, c.gamma, std::log(c.n), o.explicit_pixels, o.explicit_realizations,
+            o.seed * 31 + uint64_t(exi++));
+        ex_mean = std::max(ex_mean, r.mean_rel_err);
+        ex_m2 = std::max(ex_m2, r.m2_rel_err);
+        text += fmt::format("{:<34} {:>10.4f} {:>10.4f} {:>8.4f} {:>10.3f} {:>10.3f} {:>8.4f}\n",
+                            c.name, r.mean_explicit, r.mean_jakob, r.mean_rel_err, r.m2_explicit,
+                            r.m2_jakob, r.m2_rel_err);
+        jex.push_back({{"setting", c.name},
+                       {"mean_explicit", r.mean_explicit},
+                       {"mean_jakob", r.mean_jakob},
+                       {"mean_rel_err", r.mean_rel_err},
+                       {"mean_std_err", r.mean_std_err},
+                       {"m2_explicit", r.m2_explicit},
+                       {"m2_jakob", r.m2_jakob},
+                       {"m2_rel_err", r.m2_rel_err},
+                       {"m2_std_err", r.m2_std_err}});
+    }
+    report.details["explicit_particles"] = jex;
+    text += "\n";
+
+    thread_stats() = QueryStats{};
     nan_count += robustness(o.robustness_queries, o.seed);
+    report.details["robustness_queries"] = o.robustness_queries;
+    report.details["robustness_over_budget"] = thread_stats().over_budget;
+    text += fmt::format("Robustness: {} random queries, {} tile traversals hit the node budget\n\n",
+                        o.robustness_queries, thread_stats().over_budget);
     report.details["count_non_integer_with_eps0"] = non_integer;
 
     report.check("count_chi2_p_min", p_corrected, ">", 1e-3);
     report.check("convergence_rel_err_max", conv_max, "<=", 0.01);
     report.check("convergence_cone_rel_err_max", conv_cone_max, "<=", 0.01);
+    report.check("explicit_vs_jakob_mean_rel_err", ex_mean, "<=", 0.05);
+    report.check("explicit_vs_jakob_m2_rel_err", ex_m2, "<=", 0.1);
     report.check("nan_count", nan_count, "==", 0);
     // Reported values (always pass): averages over the Table 1 settings.
     report.check("nodes_per_query", nodes_avg, ">=", 0.0);

@@ -16,6 +16,8 @@ struct Jakob2014ValidationOptions {
     double convergence_count = 1000.0;  // expected particles per query (>= 1e3)
     int table1_pixels = 20000;          // queries per Table 1 setting
     int robustness_queries = 4000;
+    int explicit_pixels = 128;       // footprints per side of the explicit comparison
+    int explicit_realizations = 16;  // particle sets (seeds) per model
 };
 
 ValidationReport validate_jakob2014(const Jakob2014ValidationOptions& options);
