@@ -4,6 +4,7 @@
 // input gives clear errors. Skipped, with the reason, without an EGL driver.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <filesystem>
 
 #include <fmt/format.h>
@@ -192,6 +193,77 @@ TEST_P(GpuEnvironment, MatchesCpuDirect) {
 
 INSTANTIATE_TEST_SUITE_P(Materials, GpuEnvironment,
                          ::testing::Values("diffuse", "conductor", "plastic", "glint_smooth"));
+
+// The viewer's model switcher: the same material switched to every GPU model
+// (with that model's defaults) renders a lit, finite image.
+TEST(GpuRenderer, ModelSwitcherRendersEveryModel) {
+    GLINTLAB_REQUIRE_GL();
+    Scene scene = parse_scene(test_scene("sphere", "deliot2023", 12.0f), "test:sphere");
+    scene.camera.width = scene.camera.height = 48;
+    GpuRenderer renderer(scene);
+    for (const GlintModelInfo& m : glint_models()) {
+        if (!gl::gpu_supports_model(m.id)) continue;
+        SCOPED_TRACE(std::string(m.name));
+        gl::reset_model_params(scene.materials[0].glint, m.id);
+        renderer.render(scene);
+        const Image image = renderer.read_image();
+        double sum = 0.0;
+        for (const glm::vec3& p : image.pixels) {
+            ASSERT_TRUE(std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z));
+            sum += luminance(p);
+        }
+        EXPECT_GT(sum, 0.0);
+        // The same switch on the CPU side agrees in the mean (as GpuVsCpu).
+        const Image cpu = render_scene(scene, RenderOptions{1, true});
+        EXPECT_LT(compare_images(image, cpu, 8, 0.02f, 0.1f).mean_relative_error, 0.15);
+    }
+}
+
+// Orthographic camera, a mesh without normals (faceted: the quad's
+// geometric normal) and a diffuse + plastic + conductor material each:
+// smooth materials have no threshold decisions, so the images agree per
+// pixel (limits of GpuVsCpu for pixel-exact models).
+TEST(GpuRenderer, OrthographicCameraAndSmoothMaterialsMatchCpu) {
+    GLINTLAB_REQUIRE_GL();
+    for (const std::string type : {"diffuse", "plastic", "conductor"}) {
+        SCOPED_TRACE(type);
+        nlohmann::json j;
+        j["film"] = {{"width", 64}, {"height", 48}};
+        j["camera"] = {{"type", "orthographic"},
+                       {"height", 3.0},
+                       {"eye", {0.5, 2.0, 2.5}},
+                       {"target", {0, 0, 0}}};
+        j["render"] = {{"integrator", "direct"}, {"spp", 1}};
+        nlohmann::json m = {{"name", "m"}, {"type", type}};
+        if (type != "diffuse") m["roughness"] = 0.3;
+        j["materials"] = {m};
+        j["shapes"] = {
+            {{"type", "quad"}, {"size", {3, 3}}, {"material", "m"}},
+            {{"type", "sphere"}, {"center", {0.4, 0.5, 0.3}}, {"radius", 0.4}, {"material", "m"}}};
+        j["lights"] = {
+            {{"type", "point"}, {"position", {-1.0, 2.0, 1.0}}, {"intensity", 3.0}},
+            {{"type", "directional"}, {"direction", {0.2, 1.0, 0.1}}, {"irradiance", 0.5}}};
+        const Scene scene = parse_scene(j, "test:ortho");
+        // The GPU has no shadows: the sphere's shadow on the quad darkens
+        // only the CPU image. Pixels in that shadow (CPU < 90% of GPU) are
+        // excluded; everywhere the CPU may only be darker, never brighter.
+        GpuRenderer renderer(scene);
+        renderer.render(scene);
+        const Image gpu = renderer.read_image();
+        const Image cpu = render_scene(scene, RenderOptions{1, true});
+        int compared = 0, mismatched = 0;
+        for (int y = 0; y < gpu.height; ++y)
+            for (int x = 0; x < gpu.width; ++x) {
+                const float a = luminance(gpu.at(x, y)), b = luminance(cpu.at(x, y));
+                EXPECT_LE(b, a + 0.02f + 0.1f * a) << x << "," << y;  // shadows only darken
+                if (b < 0.9f * a) continue;                           // in the CPU's shadow
+                ++compared;
+                if (std::abs(a - b) > 0.02f + 0.1f * std::max(a, b)) ++mismatched;
+            }
+        EXPECT_GT(compared, gpu.width * gpu.height / 2);
+        EXPECT_LT(mismatched, compared / 100 + 1);
+    }
+}
 
 TEST(GpuRenderer, ShaderErrorNamesTheSourceLine) {
     GLINTLAB_REQUIRE_GL();
