@@ -137,4 +137,46 @@ vec2 binomial_dual_gated(float N, float p, float xi1, float xi2, bool integer_ga
                 b_all_neg * (n2 - 1.0f) + b_neg + b_gauss * g_bar);       // line 22
 }
 
+// Law 6b (an extension, not in 003; used by kneiphof2025's "conditional"
+// option): Algorithm 1 with the Gaussian given the moments of b(N, p)
+// conditioned on its interior case 1 <= n <= N - 1, instead of Algorithm 1's
+// 1 + (N - 2) p and (N - 2) p (1 - p) ("one known positive and one known
+// negative, N - 2 free"). With Z = 1 - p^N - (1 - p)^N (the gate of the
+// Gaussian case, computed as in lines 5-6):
+//   E[n | interior] = (N p - N p^N) / Z,
+//   E[n^2 | interior] = (N p (1 - p) + N^2 p^2 - N^2 p^N) / Z.
+// Algorithm 1's mean overestimates E[b] by up to ~20 % where N p ~ 1-10
+// (e.g. N = 10, p = 0.1: +21 %); with these moments E[b] = N p for integer
+// N >= 2 up to the clamp to [1, N - 1] and rounding (residual <= 5.4 %,
+// Kneiphof2025.ConditionalGaussianIsUnbiased). Gating is unchanged.
+vec2 binomial_dual_gated_conditional(float N, float p, float xi1, float xi2, bool integer_gaussian) {
+    float n = max(N, 0.0f);
+    float n2 = max(2.0f, n);
+    float c = stable_pow_scale(p);
+    float w_many = clamp(n - 1.0f, 0.0f, 1.0f);
+    float pow_pos = pow_unit(p, n2);
+    float pow_neg = pow_unit(max(1.0f - c * p, 0.0f), n2 / c);
+    float p_all_pos = w_many * pow_pos;
+    float p_all_neg = w_many * pow_neg;
+    float w_one = max(0.0f, 1.0f - abs(1.0f - n));
+    float p_one_pos = w_one * p;
+    float p_one_neg = w_one * (1.0f - p);
+    float b_all_pos = xi1 < p_all_pos ? 1.0f : 0.0f;
+    float b_pos = xi1 < p_all_pos + p_one_pos ? 1.0f : 0.0f;
+    float b_all_neg = 1.0f - p_all_neg <= xi1 ? 1.0f : 0.0f;
+    float b_neg = 1.0f - p_all_neg - p_one_neg <= xi1 ? 1.0f : 0.0f;
+    float b_gauss = (n > 1.0f ? 1.0f : 0.0f) * (1.0f - b_pos) * (1.0f - b_neg);
+    float z = max(1.0f - pow_pos - pow_neg, 1e-30f);
+    float mean = (n2 * p - n2 * pow_pos) / z;
+    float second = (n2 * p * (1.0f - p) + n2 * n2 * p * p - n2 * n2 * pow_pos) / z;
+    mean = clamp(mean, 1.0f, n2 - 1.0f);
+    float variance = max(second - mean * mean, 0.0f);
+    float g = gaussian_deviate(mean, variance, xi2);
+    if (integer_gaussian) g = floor(g + 0.5f);
+    g = clamp(g, 1.0f, n2 - 1.0f);
+    float g_bar = n2 - g;
+    return vec2(b_all_pos * (n2 - 1.0f) + b_pos + b_gauss * g,
+                b_all_neg * (n2 - 1.0f) + b_neg + b_gauss * g_bar);
+}
+
 #endif

@@ -24,6 +24,7 @@ float binomial_zirr2016(float N, float p, float xi_gauss, mat4 xi_trials);
 float binomial_deliot2023(float N, float p, float xi0, float xi1);
 float binomial_single_gated(float N, float p, float xi1, float xi2);
 vec2 binomial_dual_gated(float N, float p, float xi1, float xi2, bool integer_gaussian);
+vec2 binomial_dual_gated_conditional(float N, float p, float xi1, float xi2, bool integer_gaussian);
 // multinomial.glsl
 float multinomial_level(INOUT(float) remaining, float p_bin, float p_rest, float xi1, float xi2);
 vec4 multinomial4(float N, vec4 probs, vec4 xi1, vec4 xi2);

@@ -172,31 +172,31 @@ glm::vec3 kneiphof2025_f0(const GlintDesc& desc) {
     return glm::vec3(1.0f);
 }
 
-glm::vec3 kneiphof2025_environment_radiance(const Kneiphof2025Environment& env, glm::vec3 wr,
-                                            float cos_o, const Footprint& footprint,
+glm::vec3 kneiphof2025_environment_radiance(const Kneiphof2025Environment& env, glm::vec3 n,
+                                            glm::vec3 wr, float cos_o, const Footprint& footprint,
                                             const GlintDesc& desc) {
     const Kneiphof2025Params& p = params_of(desc);
     if (env.levels() != p.levels) fail("kneiphof2025: environment prefiltered for another K");
     const auto& L = env.radiance_levels();
     t_env = &env;
     const glm::vec3 r = shader::kneiphof2025_environment(
-        wr, cos_o, alpha_of(desc), kneiphof2025_f0(desc), desc.color, footprint, desc.log_density,
-        desc.seed, p.screen_space_scale, p.density_randomization, p.levels,
+        n, wr, cos_o, alpha_of(desc), kneiphof2025_f0(desc), desc.color, footprint,
+        desc.log_density, desc.seed, p.screen_space_scale, p.density_randomization, p.levels,
         glm::vec4(L[0], L[1], L[2], L[3]), glm::vec4(L[4], L[5], L[6], L[7]),
         p.variant == Kneiphof2025Params::Variant::Wang2020Style
             ? shader::KNEIPHOF2025_VARIANT_WANG2020
             : shader::KNEIPHOF2025_VARIANT_OURS,
-        gamma_solid_angle(p));
+        gamma_solid_angle(p), p.conditional_gaussian);
     t_env = nullptr;
     return r;
 }
 
-glm::vec3 kneiphof2025_environment_smooth(const Kneiphof2025Environment& env, glm::vec3 wr,
-                                          float cos_o, const GlintDesc& desc) {
+glm::vec3 kneiphof2025_environment_smooth(const Kneiphof2025Environment& env, glm::vec3 n,
+                                          glm::vec3 wr, float cos_o, const GlintDesc& desc) {
     const float roughness = std::sqrt(alpha_of(desc));
     const glm::vec3 dfg = Kneiphof2025DfgLut::get().lookup(cos_o, roughness);
     float c[11];
-    env.fetch(wr, roughness, c);
+    env.fetch(shader::kneiphof2025_lookup_direction(n, wr, alpha_of(desc)), roughness, c);
     return desc.color * (kneiphof2025_f0(desc) * dfg.x + glm::vec3(dfg.y)) *
            glm::vec3(c[0], c[1], c[2]);
 }
@@ -212,7 +212,8 @@ float kneiphof2025_area_factor(glm::vec3 h_center, const Footprint& footprint, f
 float kneiphof2025_binomial_factor(const Footprint& footprint, float p, const GlintDesc& desc) {
     const Kneiphof2025Params& k = params_of(desc);
     return shader::kneiphof2025_binomial_factor_no_h(footprint, p, desc.log_density, desc.seed,
-                                                     k.screen_space_scale, k.density_randomization);
+                                                     k.screen_space_scale, k.density_randomization,
+                                                     k.conditional_gaussian);
 }
 
 float kneiphof2025_footprint_ndf(glm::vec3 h, const Footprint& footprint, const GlintDesc& desc) {
@@ -248,7 +249,7 @@ glm::vec3 kneiphof2025_light_radiance(const GlintLightingContext& ctx, int light
         const Kneiphof2025Params& p = params_of(desc);
         const auto env = kneiphof2025_environment_for(e->map, p.levels, p.black_level);
         const glm::vec3 wr = ctx.to_world(glm::vec3(-ctx.wo.x, -ctx.wo.y, ctx.wo.z));
-        return kneiphof2025_environment_radiance(*env, wr, ctx.wo.z, ctx.footprint, desc);
+        return kneiphof2025_environment_radiance(*env, ctx.n, wr, ctx.wo.z, ctx.footprint, desc);
     }
     if (const auto* s = std::get_if<SphereLight>(&l)) {
         const glm::vec3 d = s->center - ctx.p;
@@ -282,6 +283,8 @@ void read_kneiphof2025_params(JsonObject& block, GlintDesc& desc) {
         block.string("variant", "kneiphof2025", {"kneiphof2025", "wang2020_style"});
     p.variant = variant == "wang2020_style" ? Kneiphof2025Params::Variant::Wang2020Style
                                             : Kneiphof2025Params::Variant::Kneiphof2025;
+    p.conditional_gaussian =
+        block.string("gaussian", "conditional", {"conditional", "algorithm1"}) == "conditional";
     // Cone half-angle of the wang2020-style probability: 0.01-45 deg.
     p.gamma_deg = static_cast<float>(block.number("gamma_deg", p.gamma_deg, 0.01, 45.0));
     // Same ranges as deliot2023's block (deliot2023.cpp).

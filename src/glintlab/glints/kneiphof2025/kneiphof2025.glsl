@@ -24,7 +24,7 @@
 //        visible reflecting facet area over the total facet area (Eq. 21, 8).
 // The C++ back end (kneiphof2025.cpp) defines them over its CPU prefiltered
 // maps before including this file; the GLSL defaults below read lat-long
-// textures whose mip level i holds roughness i / (mip count - 1).
+// texture arrays whose layer i holds roughness i / (layers - 1).
 #ifndef GLINTLAB_GLINTS_KNEIPHOF2025_GLSL
 #define GLINTLAB_GLINTS_KNEIPHOF2025_GLSL
 
@@ -32,19 +32,19 @@
 #include "glintlab/core/footprint.glsl"
 #include "glintlab/core/hash.glsl"
 #include "glintlab/counting/binomial_laws.glsl"
-#include "glintlab/counting/multinomial.glsl"
 #include "glintlab/glints/deliot2023/deliot2023.glsl"
 
 #ifndef GLINTLAB_CPP
-// RGB radiance and the weights of levels 1-4 and 5-8, lat-long (the
-// EnvironmentMap convention, v = 0 at the zenith), one roughness per mip.
-uniform sampler2D kneiphof2025_radiance_map;
-uniform sampler2D kneiphof2025_weights_map_a;
-uniform sampler2D kneiphof2025_weights_map_b;
+// Texture arrays, one layer per roughness level (layer i: sqrt(alpha) =
+// i / (layers - 1)), lat-long in the EnvironmentMap convention (v = 0 at the
+// zenith): RGB radiance, the weights of levels 1-4 and of levels 5-8.
+uniform sampler2DArray kneiphof2025_radiance_layers;
+uniform sampler2DArray kneiphof2025_weights_layers_a;
+uniform sampler2DArray kneiphof2025_weights_layers_b;
 // RGB = (A, B, E_D / D_H) at (cos_o, roughness) texel centres.
 uniform sampler2D kneiphof2025_dfg_lut;
 uniform float kneiphof2025_env_rotation;  // radians about +y
-uniform float kneiphof2025_max_lod;       // mip count - 1
+uniform float kneiphof2025_last_layer;    // layers - 1
 
 vec2 kneiphof2025_latlong_uv(vec3 d) {
     float theta = acos(clamp(d.y, -1.0f, 1.0f));
@@ -52,16 +52,23 @@ vec2 kneiphof2025_latlong_uv(vec3 d) {
     float u = 0.5f + phi / TWO_PI;
     return vec2(u - floor(u), theta / PI);
 }
+// Bilinear within a layer, linear between the two layers around roughness.
+vec4 kneiphof2025_layers_fetch(sampler2DArray layers, vec3 dir, float roughness) {
+    vec2 uv = kneiphof2025_latlong_uv(dir);
+    float l = clamp(roughness, 0.0f, 1.0f) * kneiphof2025_last_layer;
+    float l0 = min(floor(l), kneiphof2025_last_layer);
+    float l1 = min(l0 + 1.0f, kneiphof2025_last_layer);
+    vec4 a = textureLod(layers, vec3(uv.x, uv.y, l0), 0.0f);
+    vec4 b = textureLod(layers, vec3(uv.x, uv.y, l1), 0.0f);
+    return mix(a, b, l - l0);
+}
 vec3 kneiphof2025_radiance_fetch(vec3 dir, float roughness) {
-    vec4 t = textureLod(kneiphof2025_radiance_map, kneiphof2025_latlong_uv(dir),
-                        roughness * kneiphof2025_max_lod);
+    vec4 t = kneiphof2025_layers_fetch(kneiphof2025_radiance_layers, dir, roughness);
     return vec3(t.x, t.y, t.z);
 }
 vec4 kneiphof2025_weights_fetch(vec3 dir, float roughness, int group) {
-    vec2 uv = kneiphof2025_latlong_uv(dir);
-    float lod = roughness * kneiphof2025_max_lod;
-    return group == 0 ? textureLod(kneiphof2025_weights_map_a, uv, lod)
-                      : textureLod(kneiphof2025_weights_map_b, uv, lod);
+    return group == 0 ? kneiphof2025_layers_fetch(kneiphof2025_weights_layers_a, dir, roughness)
+                      : kneiphof2025_layers_fetch(kneiphof2025_weights_layers_b, dir, roughness);
 }
 vec3 kneiphof2025_dfg_fetch(float cos_o, float roughness) {
     vec4 t = textureLod(kneiphof2025_dfg_lut, vec2(cos_o, roughness), 0.0f);
@@ -115,14 +122,51 @@ void kneiphof2025_probabilities(vec4 w_a, vec4 w_b, int levels, float p_visible,
     p_a.x += 1.0f - pv;
 }
 
+// Eq. 17's numerator for one vertex: the multinomial counts M_k of N trials
+// over the K levels (003 §6: bin k takes a dual-gated binomial of the trials
+// not yet assigned with probability p_k / (p_k + ... + p_K), the last bin the
+// rest; the Gaussian part is rounded so integer N gives counts summing to N),
+// weighted by the level radiances. The uniforms (2 per level) come from the
+// vertex's stream. `conditional` selects binomial_dual_gated_conditional
+// (counting/binomial_laws.glsl) instead of Algorithm 1 as published.
+float kneiphof2025_weighted_multinomial(float N, int levels, vec4 p_a, vec4 p_b, vec4 L_a, vec4 L_b,
+                                        bool conditional, INOUT(uint) vs) {
+    float p[8];
+    float L[8];
+    for (int k = 0; k < 4; ++k) {
+        p[k] = p_a[k];
+        p[k + 4] = p_b[k];
+        L[k] = L_a[k];
+        L[k + 4] = L_b[k];
+    }
+    // Suffix sums p_k + ... + p_K, from the end (no cancellation).
+    float rest[8];
+    float acc = 0.0f;
+    for (int k = 7; k >= 0; --k) {
+        acc += k < levels ? p[k] : 0.0f;
+        rest[k] = acc;
+    }
+    float remaining = max(N, 0.0f);
+    float value = 0.0f;
+    for (int k = 0; k < levels - 1; ++k) {
+        float q = rest[k] > 0.0f ? clamp(p[k] / rest[k], 0.0f, 1.0f) : 0.0f;
+        float xi1 = hash_random(vs);
+        float xi2 = hash_random(vs);
+        vec2 c = conditional ? binomial_dual_gated_conditional(remaining, q, xi1, xi2, true)
+                             : binomial_dual_gated(remaining, q, xi1, xi2, true);
+        value += L[k] * c.x;
+        remaining = c.y;
+    }
+    return value + L[levels - 1] * remaining;
+}
+
 // One grid of the footprint (Eq. 10 without the half-vector dimension): per
-// simplex vertex, the multinomial counts of its N trials over the K levels
-// (§6), weighted by the level radiances. Returns (sum_v beta_v sum_k L^(k) M_k,
-// sum_v beta_v N_v). The vertex's stream gives the density jitter first (as in
-// deliot2023), then the 2 uniforms of each of the K - 1 hierarchy levels.
+// simplex vertex, the weighted multinomial counts of its N trials. Returns
+// (sum_v beta_v sum_k L^(k) M_k, sum_v beta_v N_v). The vertex's stream gives
+// the density jitter first (as in deliot2023), then the multinomial's uniforms.
 vec2 kneiphof2025_grid_multinomial(ivec3 id, float weight, vec2 uv, float log_density, uint seed,
                                    float density_randomization, int levels, vec4 p_a, vec4 p_b,
-                                   vec4 L_a, vec4 L_b) {
+                                   vec4 L_a, vec4 L_b, bool conditional) {
     Deliot2023Simplex s = deliot2023_simplex(id, weight, uv, log_density, seed);
     vec2 acc = vec2(0.0f);
     for (int v = 0; v < 3; ++v) {
@@ -130,19 +174,7 @@ vec2 kneiphof2025_grid_multinomial(ivec3 id, float weight, vec2 uv, float log_de
         if (bv <= 0.0f) continue;
         uint vs = s.vertex_seed[v];
         float N = deliot2023_vertex_trials(s.log_trials, density_randomization, vs);
-        vec4 xi1_a = vec4(hash_random(vs), hash_random(vs), hash_random(vs), hash_random(vs));
-        vec4 xi2_a = vec4(hash_random(vs), hash_random(vs), hash_random(vs), hash_random(vs));
-        float value;
-        if (levels > 4) {
-            vec4 xi1_b = vec4(hash_random(vs), hash_random(vs), hash_random(vs), 0.0f);
-            vec4 xi2_b = vec4(hash_random(vs), hash_random(vs), hash_random(vs), 0.0f);
-            vec4 counts_a;
-            vec4 counts_b;
-            multinomial8(N, p_a, p_b, xi1_a, xi2_a, xi1_b, xi2_b, counts_a, counts_b);
-            value = dot(counts_a, L_a) + dot(counts_b, L_b);
-        } else {
-            value = dot(multinomial4(N, p_a, xi1_a, xi2_a), L_a);
-        }
+        float value = kneiphof2025_weighted_multinomial(N, levels, p_a, p_b, L_a, L_b, conditional, vs);
         acc += bv * vec2(value, N);
     }
     return acc;
@@ -153,7 +185,7 @@ vec2 kneiphof2025_grid_multinomial(ivec3 id, float weight, vec2 uv, float log_de
 // reflects (then the smooth radiance is 0 as well).
 float kneiphof2025_ibl_factor(Footprint fp, float log_density, uint seed, float screen_space_scale,
                               float density_randomization, int levels, vec4 p_a, vec4 p_b,
-                              vec4 L_a, vec4 L_b) {
+                              vec4 L_a, vec4 L_b, bool conditional) {
     float expected = dot(p_a, L_a) + (levels > 4 ? dot(p_b, L_b) : 0.0f);
     if (!(expected > 0.0f)) return 1.0f;
     Deliot2023Grids grids = deliot2023_footprint_grids(fp, screen_space_scale, false);
@@ -161,7 +193,8 @@ float kneiphof2025_ibl_factor(Footprint fp, float log_density, uint seed, float 
     for (int i = 0; i < 4; ++i) {
         if (grids.weight[i] <= 0.0f) continue;
         acc += kneiphof2025_grid_multinomial(grids.id[i], grids.weight[i], fp.uv, log_density, seed,
-                                             density_randomization, levels, p_a, p_b, L_a, L_b);
+                                             density_randomization, levels, p_a, p_b, L_a, L_b,
+                                             conditional);
     }
     return acc.y > 0.0f ? acc.x / (acc.y * expected) : 1.0f;
 }
@@ -174,7 +207,8 @@ float kneiphof2025_ibl_factor(Footprint fp, float log_density, uint seed, float 
 // N - 1 others) overestimates E[b] by ~10-20 % where N p ~ 1-5 per vertex
 // (measured: Kneiphof2025.GateFixesRemoveFig13And14Bias, docs/VALIDATION.md).
 float kneiphof2025_binomial_factor_no_h(Footprint fp, float p, float log_density, uint seed,
-                                        float screen_space_scale, float density_randomization) {
+                                        float screen_space_scale, float density_randomization,
+                                        bool conditional) {
     if (!(p > 0.0f)) return 1.0f;
     Deliot2023Grids grids = deliot2023_footprint_grids(fp, screen_space_scale, false);
     vec2 acc = vec2(0.0f);
@@ -188,7 +222,9 @@ float kneiphof2025_binomial_factor_no_h(Footprint fp, float p, float log_density
             float N = deliot2023_vertex_trials(s.log_trials, density_randomization, vs);
             float xi1 = hash_random(vs);
             float xi2 = hash_random(vs);
-            acc += bv * vec2(binomial_dual_gated(N, p, xi1, xi2, false).x, N);
+            vec2 c = conditional ? binomial_dual_gated_conditional(N, p, xi1, xi2, false)
+                                 : binomial_dual_gated(N, p, xi1, xi2, false);
+            acc += bv * vec2(c.x, N);
         }
     }
     return acc.y > 0.0f ? acc.x / (acc.y * p) : 1.0f;
@@ -213,20 +249,37 @@ float kneiphof2025_area_factor(vec3 h_center, Footprint fp, float p, float log_d
     return acc.y > 0.0f ? acc.x / (acc.y * p) : 1.0f;
 }
 
+// The direction at which the prefiltered maps are read: the split-sum kernel
+// assumes n = v = r (Eq. 11), which puts too much of a rough lobe around the
+// mirror direction r; Lagarde & de Rousiers 2014 ([LDR14], whose prefiltering
+// 003 follows) read at the lobe's dominant direction, bent from r towards n:
+// lerp(n, r, s (sqrt(s) + alpha)), s = 1 - alpha. On the validation sphere
+// this cut the split-sum's per-pixel error at sqrt(alpha) = 0.5-0.7 from up
+// to +50 % (+250 % near the lower silhouette) to ~15 % (docs/MODELS.md).
+// The same direction serves the radiance and the weight maps (Eq. 21 reuses
+// the kernel of Eq. 11).
+vec3 kneiphof2025_lookup_direction(vec3 n, vec3 wr, float alpha) {
+    float s = clamp(1.0f - alpha, 0.0f, 1.0f);
+    float f = s * (sqrt(s) + alpha);
+    return normalize(n + (wr - n) * f);
+}
+
 // Environment lighting of one footprint (Eq. 11, 15, 17, 21).
-// wr: world mirror direction of wo; cos_o = n.wo > 0; alpha = GGX roughness;
+// n, wr: world normal and mirror direction of wo; cos_o = n.wo > 0; alpha = GGX roughness;
 // f0: Schlick reflectance at normal incidence (split-sum E_rho = F0 A + B);
 // levels K (4 or 8) and radiance levels L_a (k = 1-4), L_b (k = 5-8);
 // variant: ours, or the wang2020 style with a fixed cone of solid angle
-// gamma_solid_angle around the mirror direction.
-vec3 kneiphof2025_environment(vec3 wr, float cos_o, float alpha, vec3 f0, vec3 color, Footprint fp,
+// gamma_solid_angle around the mirror direction; conditional: the Gaussian
+// moments of binomial_dual_gated_conditional instead of Algorithm 1's.
+vec3 kneiphof2025_environment(vec3 n, vec3 wr, float cos_o, float alpha, vec3 f0, vec3 color, Footprint fp,
                               float log_density, uint seed, float screen_space_scale,
                               float density_randomization, int levels, vec4 L_a, vec4 L_b,
-                              int variant, float gamma_solid_angle) {
+                              int variant, float gamma_solid_angle, bool conditional) {
     float roughness = sqrt(clamp(alpha, 0.0f, 1.0f));
+    vec3 dir = kneiphof2025_lookup_direction(n, wr, alpha);
     vec3 dfg = kneiphof2025_dfg_fetch(cos_o, roughness);
     vec3 e_rho = color * (f0 * dfg.x + vec3(dfg.y));                          // Eq. 11, first integral
-    vec3 smooth_radiance = e_rho * kneiphof2025_radiance_fetch(wr, roughness);  // Eq. 11
+    vec3 smooth_radiance = e_rho * kneiphof2025_radiance_fetch(dir, roughness);  // Eq. 11
     float factor;
     if (variant == KNEIPHOF2025_VARIANT_WANG2020) {
         // 003 Fig. 8: p from a user cone, not from the environment. We take the
@@ -237,15 +290,16 @@ vec3 kneiphof2025_environment(vec3 wr, float cos_o, float alpha, vec3 f0, vec3 c
         float p = min(d_n * gamma_solid_angle / (4.0f * cos_o * kneiphof2025_total_facet_area(alpha)),
                       dfg.z);
         factor = kneiphof2025_binomial_factor_no_h(fp, p, log_density, seed, screen_space_scale,
-                                                   density_randomization);
+                                                   density_randomization, conditional);
     } else {
-        vec4 w_a = kneiphof2025_weights_fetch(wr, roughness, 0);
-        vec4 w_b = levels > 4 ? kneiphof2025_weights_fetch(wr, roughness, 1) : vec4(0.0f);
+        vec4 w_a = kneiphof2025_weights_fetch(dir, roughness, 0);
+        vec4 w_b = levels > 4 ? kneiphof2025_weights_fetch(dir, roughness, 1) : vec4(0.0f);
         vec4 p_a;
         vec4 p_b;
         kneiphof2025_probabilities(w_a, w_b, levels, dfg.z, p_a, p_b);
         factor = kneiphof2025_ibl_factor(fp, log_density, seed, screen_space_scale,
-                                         density_randomization, levels, p_a, p_b, L_a, L_b);
+                                         density_randomization, levels, p_a, p_b, L_a, L_b,
+                                         conditional);
     }
     return smooth_radiance * factor;
 }

@@ -29,14 +29,14 @@ struct Scene;
 // none -> 1, schlick -> f0, conductor / dielectric -> F at normal incidence.
 glm::vec3 kneiphof2025_f0(const GlintDesc& desc);
 
-// Environment radiance of Eq. 17 towards local wo (frame n = z) for the world
-// mirror direction wr. desc.params must hold Kneiphof2025Params.
-glm::vec3 kneiphof2025_environment_radiance(const Kneiphof2025Environment& env, glm::vec3 wr,
-                                            float cos_o, const Footprint& footprint,
+// Environment radiance of Eq. 17 towards wo for the world normal n and mirror
+// direction wr, cos_o = n.wo. desc.params must hold Kneiphof2025Params.
+glm::vec3 kneiphof2025_environment_radiance(const Kneiphof2025Environment& env, glm::vec3 n,
+                                            glm::vec3 wr, float cos_o, const Footprint& footprint,
                                             const GlintDesc& desc);
 // Its smooth limit L_o (Eq. 11, split sum), the mean of the above.
-glm::vec3 kneiphof2025_environment_smooth(const Kneiphof2025Environment& env, glm::vec3 wr,
-                                          float cos_o, const GlintDesc& desc);
+glm::vec3 kneiphof2025_environment_smooth(const Kneiphof2025Environment& env, glm::vec3 n,
+                                          glm::vec3 wr, float cos_o, const GlintDesc& desc);
 
 // One area light of constant radiance (K = 1): the factor b(N_P, p) / (E[N_P] p)
 // for the light's centre half vector h_c (local) and probability p (Eq. 8-9).

@@ -211,8 +211,8 @@ FurnaceStats kneiphof2025_furnace_stats(const Kneiphof2025Environment& env,
         const float cos_o = 0.2f + 0.8f * rng.next_float();
         const glm::vec3 wr = random_direction(rng);
         desc.seed = rng.next_uint();
-        const glm::vec3 L = kneiphof2025_environment_radiance(env, wr, cos_o, fp, desc);
-        const glm::vec3 Ls = kneiphof2025_environment_smooth(env, wr, cos_o, desc);
+        const glm::vec3 L = kneiphof2025_environment_radiance(env, wr, wr, cos_o, fp, desc);
+        const glm::vec3 Ls = kneiphof2025_environment_smooth(env, wr, wr, cos_o, desc);
         if (!std::isfinite(L.x + L.y + L.z)) {
             ++st.nan_count;
             continue;
@@ -270,23 +270,56 @@ std::vector<SphereComparison> kneiphof2025_sphere_comparison(const SphereCompari
             const float alpha = sa * sa;
             const GgxAreaSampler sampler(alpha);
             const double dh = kneiphof2025_total_facet_area(alpha);
-            // Exact expectation of the ground truth per pixel: int rho~ L dwi
-            // (256 stratified facet normals per pixel).
+            // Expectation of the ground truth per pixel, int rho~ L dwi (F = 1):
+            // multiple importance sampling (balance heuristic) of the facet
+            // normals (h ~ D / D_H: pdf(wi) = D / (4 D_H <h, wo>)) and of the
+            // environment's luminance (EnvironmentMap::sample), 64 + 64
+            // stratified samples: the suns of city / interior (luminance 3e4)
+            // are found by the second strategy.
             std::vector<double> gt_mean(pixels.size());
             {
                 Pcg32 rng(o.seed, 0x1000u + row);
+                const int m = 8;
                 for (size_t i = 0; i < pixels.size(); ++i) {
                     const SpherePixel& p = pixels[i];
                     const glm::vec3 wo(glm::dot(wo_world, p.t), glm::dot(wo_world, p.b), p.n.z);
-                    glm::vec3 acc(0.0f);
-                    const int m = 16;
+                    auto brdf = [&](glm::vec3 wi, glm::vec3 h, float* pdf_b) {
+                        const float d = shader::D_Microfacet(shader::NDF_GGX, h, alpha, alpha);
+                        *pdf_b = static_cast<float>(d / (4.0 * dh * glm::dot(h, wo)));
+                        return shader::G2_SmithCorrelated(shader::NDF_GGX, wo, wi, alpha, alpha) *
+                               d / (4.0f * wo.z);
+                    };
+                    double acc = 0.0;
                     for (int a = 0; a < m; ++a)
                         for (int c = 0; c < m; ++c) {
-                            const glm::vec3 h = sampler.sample((a + rng.next_float()) / m,
-                                                               (c + rng.next_float()) / m);
-                            acc += facet_contribution(*env, h, wo, p.t, p.b, p.n, alpha);
+                            const glm::vec2 u((a + rng.next_float()) / m,
+                                              (c + rng.next_float()) / m);
+                            const glm::vec3 h = sampler.sample(u.x, u.y);
+                            const float oh = glm::dot(wo, h);
+                            if (oh > 0.0f) {
+                                const glm::vec3 wi = 2.0f * oh * h - wo;
+                                if (wi.z > 0.0f) {
+                                    const glm::vec3 w = wi.x * p.t + wi.y * p.b + wi.z * p.n;
+                                    float pdf_b = 0.0f;
+                                    const float f = brdf(wi, h, &pdf_b);
+                                    acc += f * luminance(env->eval(w)) / (pdf_b + env->pdf(w));
+                                }
+                            }
+                            glm::vec3 w;
+                            float pdf_e = 0.0f;
+                            const glm::vec3 le = env->sample(
+                                glm::vec2((c + rng.next_float()) / m, (a + rng.next_float()) / m),
+                                &w, &pdf_e);
+                            const glm::vec3 wi(glm::dot(w, p.t), glm::dot(w, p.b),
+                                               glm::dot(w, p.n));
+                            if (pdf_e > 0.0f && wi.z > 0.0f) {
+                                const glm::vec3 h2 = glm::normalize(wi + wo);
+                                float pdf_b = 0.0f;
+                                const float f = brdf(wi, h2, &pdf_b);
+                                acc += f * luminance(le) / (pdf_b + pdf_e);
+                            }
                         }
-                    gt_mean[i] = dh * luminance(acc) / (m * m);
+                    gt_mean[i] = acc / (m * m);
                 }
             }
             double gt_mean_sum = 0.0;
@@ -295,7 +328,7 @@ std::vector<SphereComparison> kneiphof2025_sphere_comparison(const SphereCompari
                 const float log_rho = o.log_rhos[di];
                 const double log_density = log_density_1 + log_rho;
                 const double fpp = o.facets_per_pixel * std::exp(log_rho);
-                const int R = std::clamp(static_cast<int>(std::ceil(64.0 / fpp)), 1, 16);
+                const int R = std::clamp(static_cast<int>(std::ceil(256.0 / fpp)), 2, 16);
                 const float exposure = log_rho < 0.0f ? 0.25f : 1.0f;  // 003 Fig. 6: -2 stops
                 // Ground truth realizations: Poisson(density |P|) facets per footprint.
                 double gt_sq = 0.0, gt_sum = 0.0;
@@ -319,39 +352,50 @@ std::vector<SphereComparison> kneiphof2025_sphere_comparison(const SphereCompari
                             grid.at(static_cast<int>(di) * 3 * res + 2 * res + p.x,
                                     row * res + p.y) = L * exposure;
                     }
-                for (int K : {4, 8}) {
+                for (int variant = 0; variant < 4; ++variant) {
+                    const int K = variant % 2 == 0 ? 4 : 8;
+                    const bool conditional = variant >= 2;
                     const auto pre = kneiphof2025_environment_for(env, K, 1e-2f);
                     GlintDesc desc = validation_desc(alpha, K, log_density);
+                    std::get<Kneiphof2025Params>(desc.params).conditional_gaussian = conditional;
                     SphereComparison c;
                     c.environment = path.stem().string();
                     c.sqrt_alpha = sa;
                     c.log_rho = log_rho;
                     c.levels = K;
+                    c.conditional = conditional;
                     c.facets_per_pixel = fpp;
                     c.realizations = R;
-                    double sum = 0.0, sq = 0.0;
+                    double sum = 0.0, sq = 0.0, sum_means = 0.0, sum_means2 = 0.0;
                     for (int r = 0; r < R; ++r) {
+                        const double sum_before = sum;
                         desc.seed = o.seed * 7919u + static_cast<uint32_t>(r);
                         for (const SpherePixel& p : pixels) {
-                            const glm::vec3 L =
-                                kneiphof2025_environment_radiance(*pre, p.wr, p.n.z, p.fp, desc);
+                            const glm::vec3 L = kneiphof2025_environment_radiance(
+                                *pre, p.n, p.wr, p.n.z, p.fp, desc);
                             if (!std::isfinite(L.x + L.y + L.z)) {
                                 ++c.nan_count;
                                 continue;
                             }
                             const double l = luminance(L);
-                            const double m =
-                                luminance(kneiphof2025_environment_smooth(*pre, p.wr, p.n.z, desc));
+                            const double m = luminance(
+                                kneiphof2025_environment_smooth(*pre, p.n, p.wr, p.n.z, desc));
                             sum += l;
                             sq += (l - m) * (l - m);
-                            if (r == 0)
+                            if (r == 0 && conditional)
                                 grid.at(
                                     static_cast<int>(di) * 3 * res + (K == 4 ? 0 : 1) * res + p.x,
                                     row * res + p.y) = L * exposure;
                         }
+                        const double m = (sum - sum_before) / static_cast<double>(pixels.size());
+                        sum_means += m;
+                        sum_means2 += m * m;
                     }
                     const double np = static_cast<double>(pixels.size());
                     c.mean_ours = sum / (R * np);
+                    const double mm = sum_means / R;
+                    c.mean_ours_se =
+                        std::sqrt(std::max(sum_means2 / R - mm * mm, 0.0) / std::max(R - 1, 1));
                     c.mean_gt = gt_mean_sum / np;
                     c.mean_gt_realized = gt_sum / (R * np);
                     c.mean_rel_err = std::abs(c.mean_ours - c.mean_gt) / c.mean_gt;
@@ -394,7 +438,7 @@ std::vector<SphereFurnace> kneiphof2025_sphere_furnace(int res, float sqrt_alpha
             desc.seed = seed * 104729u + static_cast<uint32_t>(r);
             for (const SpherePixel& p : pixels) {
                 const glm::vec3 L =
-                    kneiphof2025_environment_radiance(*pre, p.wr, p.n.z, p.fp, desc);
+                    kneiphof2025_environment_radiance(*pre, p.n, p.wr, p.n.z, p.fp, desc);
                 if (!std::isfinite(L.x + L.y + L.z)) {
                     ++f.nan_count;
                     continue;

@@ -43,10 +43,12 @@ struct SphereComparison {
     float sqrt_alpha = 0.0f;
     float log_rho = 0.0f;         // ln of the density factor rho_N
     int levels = 0;               // K
+    bool conditional = false;     // Gaussian moments: Algorithm 1 (false) or conditional
     double facets_per_pixel = 0;  // expected facets in a centre pixel's footprint
     int realizations = 0;
-    double mean_ours = 0.0;  // image mean luminance, averaged over realizations
-    double mean_gt = 0.0;    // exact expectation of the explicit ground truth
+    double mean_ours = 0.0;     // image mean luminance, averaged over realizations
+    double mean_ours_se = 0.0;  // standard error of that mean (spread of the realizations)
+    double mean_gt = 0.0;       // exact expectation of the explicit ground truth
     double mean_gt_realized = 0.0;
     double mean_rel_err = 0.0;    // |mean_ours - mean_gt| / mean_gt
     double variance_ratio = 0.0;  // sum of per-pixel squared deviations, ours / ground truth

@@ -15,6 +15,12 @@ struct Kneiphof2025Params {
     // "wang2020_style" (p from a fixed cone of half-angle gamma_deg).
     Variant variant = Variant::Kneiphof2025;
     float gamma_deg = 5.0f;
+    // The Gaussian of the dual-gated law: "conditional" (default: the
+    // interior case's exact moments, binomial_dual_gated_conditional) or
+    // "algorithm1" (003 as published, mean 1 + (N - 2) p, which overestimates
+    // E[b] by up to ~20 % where N p ~ 1-10; docs/VALIDATION.md). Like
+    // deliot2023's original_defects, the published form is an option.
+    bool conditional_gaussian = true;
     // Reused deliot2023 grid parameters (000; see Deliot2023Params): R for the
     // angular grid of point / directional / sphere lights, the minimum glint
     // size in pixels, and the per-cell log-density jitter.

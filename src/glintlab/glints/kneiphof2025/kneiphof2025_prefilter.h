@@ -6,15 +6,15 @@
 // Resolutions (docs/MODELS.md "kneiphof2025"):
 // - Maps are lat-long in the EnvironmentMap's own (u, v) convention, so a
 //   lookup is env.direction_to_uv(dir) (the map's rotation included).
-// - Level 0 is the environment resampled to 512 x 256 (0.7 deg texels: finer
-//   than the lobe of the smallest roughness the paper shows, sqrt(alpha) =
-//   0.1, whose reflected lobe is ~2 alpha = 1.1 deg wide), unfiltered: the
-//   mirror, roughness 0.
-// - Level i of M = 7 holds roughness sqrt(alpha) = i / (M - 1) at
-//   (512 >> i) x (256 >> i): a standard mip chain (the GPU back end maps
-//   roughness to LOD linearly), each level at least ~4 texels across its
-//   lobe (sqrt(alpha) = 1/6: lobe 3.2 deg, texel 1.4 deg; 1: 8 x 4 texels for
-//   a lobe spanning the hemisphere). Lookups blend the two nearest levels.
+// - M = 7 levels, level i holding roughness sqrt(alpha) = i / (M - 1), all
+//   at 256 x 128 (1.4 deg texels; a texture array on a GPU). Level 0 is the
+//   environment box-filtered to that size, unfiltered: the mirror. A halving
+//   mip chain (8 x 4 at sqrt(alpha) = 1) was tried first: its bilinear lookups
+//   at 22-45 deg texels smear the horizon, and the mean radiance was 10-30 %
+//   off on the validation sphere; 256 x 128 is the coarsest size at which the
+//   filtered radiance matched a brute-force kernel integral to a few percent
+//   at every level (the smallest filtered lobe, sqrt(alpha) = 1/6, is 3.2 deg
+//   wide). Lookups blend the two nearest levels linearly in sqrt(alpha).
 // - Each filtered texel is a 64-sample Hammersley estimate of the GGX
 //   kernel p(wi) ~ D(h) <n, wi> with n = v = r (Karis 2013), each sample read
 //   from a box-filtered source pyramid at the LOD that matches its solid
@@ -37,9 +37,9 @@ class EnvironmentMap;
 struct Kneiphof2025PrefilterOptions {
     int levels = 8;             // K in {4, 8}
     float black_level = 1e-2f;  // l: the dimmest non-zero level is max(min L, l), 003 §5
-    int base_width = 512;       // level 0 width (height = width / 2); a power of two >= 16
-    int mip_count = 7;          // filtered levels incl. the mirror; roughness i / (mip_count - 1)
-    int samples = 64;           // kernel samples per filtered texel
+    int base_width = 256;       // width of every level (height = width / 2); a power of two >= 16
+    int mip_count = 7;  // levels incl. the mirror; level i has roughness i / (mip_count - 1)
+    int samples = 64;   // kernel samples per filtered texel
 };
 
 // One lat-long level: channels per texel = 3 (RGB radiance) + K (weights).

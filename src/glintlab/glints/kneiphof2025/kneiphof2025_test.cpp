@@ -15,6 +15,7 @@
 #include "glintlab/core/error.h"
 #include "glintlab/core/image.h"
 #include "glintlab/core/rng.h"
+#include "glintlab/counting/laws.h"
 #include "glintlab/glints/kneiphof2025/kneiphof2025_experiments.h"
 #include "glintlab/glints/kneiphof2025/kneiphof2025_prefilter.h"
 #include "glintlab/microfacet/microfacet.h"
@@ -204,6 +205,32 @@ TEST(Kneiphof2025, GateFixesRemoveFig13And14Bias) {
     const GateBias tiny = kneiphof2025_gate_bias(1e-8f, 5e9f, 20000, 8u);
     EXPECT_NEAR(tiny.fixed_mean, 1.0, 0.1);
     EXPECT_LT(tiny.original_mean, 0.05);
+}
+
+// binomial_dual_gated_conditional (our option, default): the interior case's
+// exact moments make E[b] ~ N p for integer N >= 2, where Algorithm 1's
+// Gaussian (mean 1 + (N - 2) p) is biased (N = 10, p = 0.1: +21 %).
+// Rounding the Gaussian to integers and clamping it to [1, N - 1] leave a
+// residual of up to 5.4 % (measured: N = 10, p = 0.1 and N = 40, p = 0.01,
+// where the interior case's spread is < 1 count). 2e5 draws: the relative
+// standard error of the mean is <= sqrt(1 / (N p M)) ~ 0.7 %; limit 7 %.
+// Algorithm 1 must show its bias (> 10 %) at N p = 1.
+TEST(Kneiphof2025, ConditionalGaussianIsUnbiased) {
+    Pcg32 rng(11u, 3u);
+    const int M = 200000;
+    for (float N : {3.0f, 10.0f, 40.0f, 300.0f})
+        for (float p : {0.01f, 0.1f, 0.5f}) {
+            double cond = 0.0, alg1 = 0.0;
+            for (int i = 0; i < M; ++i) {
+                const float a = rng.next_float(), b = rng.next_float();
+                cond += shader::binomial_dual_gated_conditional(N, p, a, b, true).x;
+                alg1 += shader::binomial_dual_gated(N, p, a, b, true).x;
+            }
+            EXPECT_NEAR(cond / M / (N * p), 1.0, 0.07) << "N " << N << " p " << p;
+            if (N == 10.0f && p == 0.1f) {
+                EXPECT_GT(alg1 / M / (N * p), 1.1);
+            }
+        }
 }
 
 TEST(Kneiphof2025, ReadsParametersWithRangeChecks) {
