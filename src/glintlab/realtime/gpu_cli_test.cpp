@@ -43,9 +43,13 @@ std::string cli() {
     return std::string(GLINTLAB_CLI_PATH);
 }
 
-// A small deliot2023 sphere under a point and a directional light.
+// A small deliot2023 sphere under a point and a directional light, with bloom.
 nlohmann::json small_scene() {
-    return {{"film", {{"width", 96}, {"height", 80}, {"exposure", -1.0}}},
+    return {{"film",
+             {{"width", 96},
+              {"height", 80},
+              {"exposure", -1.0},
+              {"bloom", {{"strength", 0.2}, {"radius_px", 3}, {"threshold", 1.0}}}}},
             {"camera", {{"eye", {0, 0.4, 3.2}}, {"target", {0, 0, 0}}, {"fov_deg", 45}}},
             {"render", {{"integrator", "direct"}, {"spp", 1}}},
             {"materials",
@@ -132,11 +136,11 @@ TEST(GpuViewer, ScreenshotUnderXvfbMatchesTheHeadlessRender) {
     // (measured with a 20-line GLFW + ImGui program), which no suppression
     // can name; leak checking stays on for everything else (and for our GL
     // code in this process, through EGL).
-    const RunResult viewer =
-        run("ASAN_OPTIONS=\"${ASAN_OPTIONS}:detect_leaks=0\" xvfb-run -a -s "
-            "\"-screen 0 640x480x24\" " +
-            cli() + " view " + (dir / "s.json").string() + " --frames 3 --screenshot " +
-            (dir / "viewer.png").string());
+    const RunResult viewer = run(
+        "ASAN_OPTIONS=\"${ASAN_OPTIONS}:detect_leaks=0\" xvfb-run -a -s "
+        "\"-screen 0 640x480x24\" " +
+        cli() + " view " + (dir / "s.json").string() + " --frames 3 --no-ui --screenshot " +
+        (dir / "viewer.png").string() + " --window-screenshot " + (dir / "window.png").string());
     if (viewer.output.find("cannot create a window") != std::string::npos ||
         viewer.output.find("cannot initialise GLFW") != std::string::npos)
         GTEST_SKIP() << "no OpenGL 4.5 window under Xvfb: " << viewer.output;
@@ -149,6 +153,14 @@ TEST(GpuViewer, ScreenshotUnderXvfbMatchesTheHeadlessRender) {
     EXPECT_GT(m.mean_b, 0.01);
     EXPECT_LT(m.mean_relative_error, 0.005);
     EXPECT_LT(m.mismatch_fraction, 0.005);
+    // The window itself: GPU bloom + tonemap pass into an 8-bit sRGB back
+    // buffer, read back and re-encoded, vs CPU bloom + write_png. Rounding
+    // of the two 8-bit encodings differs by at most one step each; 3 steps
+    // near white are 0.03 in linear luminance.
+    const Image window = read_image(dir / "window.png");
+    const ImageAgreement w = compare_images(window, b, 8, 0.03f, 0.0f);
+    EXPECT_LT(w.mean_relative_error, 0.01);
+    EXPECT_LT(w.mismatch_fraction, 0.005);
 }
 
 }  // namespace

@@ -23,6 +23,7 @@
 #include "glintlab/realtime/gl_handles.h"
 #include "glintlab/realtime/gl_program.h"
 #include "glintlab/realtime/glint_programs.h"
+#include "glintlab/realtime/gpu_bloom.h"
 #include "glintlab/realtime/gpu_renderer.h"
 #include "glintlab/realtime/gpu_timer.h"
 
@@ -245,7 +246,8 @@ void run_viewer(Scene scene, const ViewerOptions& options) {
         gl::link_program(gl::background_vertex_shader(), gl::tonemap_fragment_shader(), "tonemap"));
     const GLint exposure_location = glGetUniformLocation(tonemap.get(), "u_exposure_scale");
     gl::VertexArray empty_vao = gl::make_vertex_array();
-    gl::PassTimer display_timer;
+    gl::PassTimer display_timer, bloom_timer;
+    gl::GpuBloom bloom;
 
     ImGuiScope imgui;
     ImGui::GetIO().IniFilename = nullptr;  // no imgui.ini beside the user's files
@@ -264,7 +266,7 @@ void run_viewer(Scene scene, const ViewerOptions& options) {
     const std::filesystem::path shot_path = options.screenshot.empty()
                                                 ? std::filesystem::path("glintlab_screenshot.png")
                                                 : options.screenshot;
-    PassHistory background_ms, forward_ms, display_ms;
+    PassHistory background_ms, forward_ms, bloom_ms, display_ms;
     std::string status;
     int selected_material = 0;
     bool p_was_down = false;
@@ -299,14 +301,18 @@ void run_viewer(Scene scene, const ViewerOptions& options) {
         renderer.set_environment(env_scale, env_rotation);
         renderer.render(scene);
 
-        // Display: tonemap the HDR frame to the window, then the panel.
+        // Bloom (the PNG's filter, on the GPU), then the display: tonemap to
+        // the window and the panel.
+        bloom_timer.begin();
+        const GLuint shown = bloom.apply(renderer.hdr_texture(), fb_w, fb_h, scene.film.bloom);
+        bloom_timer.end();
         display_timer.begin();
         glBindFramebuffer(GL_FRAMEBUFFER, 0);
         glViewport(0, 0, fb_w, fb_h);
         glDisable(GL_DEPTH_TEST);
         glUseProgram(tonemap.get());
         glProgramUniform1f(tonemap.get(), exposure_location, std::exp2(scene.film.exposure));
-        glBindTextureUnit(0, renderer.hdr_texture());
+        glBindTextureUnit(0, shown);
         glBindVertexArray(empty_vao.get());
         glDrawArrays(GL_TRIANGLES, 0, 3);
         glBindVertexArray(0);
@@ -323,9 +329,15 @@ void run_viewer(Scene scene, const ViewerOptions& options) {
             ImGui::PushItemWidth(170.0f);
             ImGui::TextUnformatted(gl_description().c_str());
             ImGui::Text("GPU ms, median of 60 frames (GL_TIME_ELAPSED)");
-            ImGui::Text("background %.3f  forward %.3f  display %.3f", background_ms.median(),
-                        forward_ms.median(), display_ms.median());
+            ImGui::Text("background %.3f  forward %.3f  bloom %.3f  display %.3f",
+                        background_ms.median(), forward_ms.median(), bloom_ms.median(),
+                        display_ms.median());
             ImGui::SliderFloat("exposure (stops)", &scene.film.exposure, -10.0f, 10.0f);
+            if (ImGui::CollapsingHeader("bloom")) {
+                slider("strength", &scene.film.bloom.strength, 0.0f, 1.0f);
+                slider("radius (px)", &scene.film.bloom.radius_px, 0.5f, 64.0f);
+                slider("threshold", &scene.film.bloom.threshold, 0.0f, 100.0f);
+            }
             if (ImGui::Button("screenshot (P)")) take_shot = true;
             if (!status.empty()) ImGui::TextUnformatted(status.c_str());
             if (!scene.materials.empty() &&
@@ -370,6 +382,7 @@ void run_viewer(Scene scene, const ViewerOptions& options) {
         const GpuPassTimes t = renderer.pass_times();
         background_ms.add(t.background_ms);
         forward_ms.add(t.forward_ms);
+        bloom_ms.add(bloom_timer.elapsed_ms());
         display_ms.add(display_timer.elapsed_ms());
 
         const bool last = options.frames > 0 && frame + 1 >= options.frames;

@@ -3,7 +3,8 @@
 // dolly), model switcher (same material, any GPU model, with that model's
 // default parameters), every material parameter live, light and environment
 // controls, exposure, per-pass GPU milliseconds (GL_TIME_ELAPSED, median of
-// the last 60 frames) and a screenshot key (P). Screenshots are the linear
+// the last 60 frames), bloom (GPU, the filter of the PNGs) and a screenshot
+// key (P). Screenshots are the linear
 // frame read back and written by write_png with the scene's exposure and
 // bloom: the PNG that `glintlab render --gpu` writes for the same view.
 #pragma once
