@@ -17,6 +17,8 @@ constexpr int64_t kLeafParticles = 64;
 struct Node {
     UvBox box;
     SphericalTriangle tri;  // unused while tri_id == kHemisphereId
+    glm::dvec3 tri_center{0.0, 0.0, 1.0};
+    double tri_cap_cos = 0.0;  // cos of the radius of the cap around tri_center
     uint64_t tri_id = kHemisphereId;
     double tri_sigma = 2.0 * std::numbers::pi;
     int64_t count = 0;
@@ -40,6 +42,8 @@ struct DirectionalSplit {
     uint64_t id = 0;
     bool valid = false;
     SphericalTriangle child[4];
+    glm::dvec3 center[4];
+    double cap_cos[4];
     uint64_t child_id[4];
     double sigma[4];
     std::array<double, 4> p;
@@ -63,6 +67,8 @@ const DirectionalSplit& directional_split(const NdfIntegralTable& table, uint64_
             d.child_id[j] = child_id(id, j);
         }
         d.sigma[j] = d.child[j].solid_angle();
+        d.center[j] = d.child[j].center();
+        d.cap_cos[j] = d.child[j].cap_cos(d.center[j]);
         d.p[j] = std::max(0.0, table.integral(d.child_id[j], d.child[j], d.sigma[j]));
         total += d.p[j];
     }
@@ -123,6 +129,8 @@ void split(const Model& m, const Node& n, std::vector<Node>& queue) {
             c[j].tri = d.child[j];
             c[j].tri_id = d.child_id[j];
             c[j].tri_sigma = d.sigma[j];
+            c[j].tri_center = d.center[j];
+            c[j].tri_cap_cos = d.cap_cos[j];
             p[j] = d.p[j];
         }
     }
@@ -211,7 +219,8 @@ void count_tile(const Model& m, const UvParallelogram& q, const SphericalConic& 
         const Overlap so = classify_box(q, node.box);
         if (so == Overlap::Disjoint) continue;
         const Overlap dO =
-            node.tri_id == kHemisphereId ? Overlap::Partial : conic.classify(node.tri);
+            node.tri_id == kHemisphereId ? Overlap::Partial
+                                         : conic.classify(node.tri, node.tri_center, node.tri_cap_cos);
         if (dO == Overlap::Disjoint) continue;
         const double n = double(node.count);
         // Lines 9-10: contained.

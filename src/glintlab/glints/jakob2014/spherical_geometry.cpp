@@ -135,17 +135,18 @@ bool SphericalConic::arc_crosses(glm::dvec3 a, glm::dvec3 b) const {
 }
 
 Overlap SphericalConic::classify(const SphericalTriangle& t) const {
+    const glm::dvec3 c = t.center();
+    return classify(t, c, t.cap_cos(c));
+}
+
+Overlap SphericalConic::classify(const SphericalTriangle& t, glm::dvec3 c, double cr) const {
     // Quick reject (not in the paper, exact): the conic lies in the cap of
     // radius θmax around ẑ, the triangle in the cap of radius r around its
     // normalised centroid c; caps further apart than r + θmax are disjoint.
-    if (bounded) {
-        const glm::dvec3 c = t.center();
-        const double cr = std::min({glm::dot(c, t.v[0]), glm::dot(c, t.v[1]), glm::dot(c, t.v[2])});
-        if (cr > 0.0) {
-            const double sr = std::sqrt(std::max(0.0, 1.0 - cr * cr));
-            const double cos_sum = cr * cos_max - sr * sin_max;  // cos(r + θmax), r + θmax < π
-            if (glm::dot(c, axis) < cos_sum - 1e-12) return Overlap::Disjoint;
-        }
+    if (bounded && cr > 0.0) {
+        const double sr = std::sqrt(std::max(0.0, 1.0 - cr * cr));
+        const double cos_sum = cr * cos_max - sr * sin_max;  // cos(r + θmax), r + θmax < π
+        if (glm::dot(c, axis) < cos_sum - 1e-12) return Overlap::Disjoint;
     }
     // Quadric values and cross terms of the vertices; the edge quadratic of
     // §3.3 for c = a + b, d = a - b is (q_a + q_b - 2 a^T C b) t² +

@@ -6,6 +6,7 @@
 // are compared at depth 20.
 #pragma once
 
+#include <algorithm>
 #include <cstdint>
 
 #include <glm/glm.hpp>
@@ -24,6 +25,10 @@ struct SphericalTriangle {
     SphericalTriangle child(int j) const;
     // Three plane-point sidedness tests (002 §3.3).
     bool contains(glm::dvec3 m) const;
+    // min_i centre·v_i: cos of the radius of the cap around center().
+    double cap_cos(glm::dvec3 c) const {
+        return std::min({glm::dot(c, v[0]), glm::dot(c, v[1]), glm::dot(c, v[2])});
+    }
     // Largest edge angle (radians).
     double max_edge_angle() const;
 };
@@ -57,6 +62,9 @@ struct SphericalConic {
     // §3.3: boundaries disjoint -> C contains T if it contains a vertex,
     // T contains C (partial) if it contains ẑ, else disjoint.
     Overlap classify(const SphericalTriangle& t) const;
+    // The same with the triangle's bounding cap given: normalised centroid c
+    // and cos of its radius (min_i c·v_i), as cached by the traversal.
+    Overlap classify(const SphericalTriangle& t, glm::dvec3 c, double cap_cos) const;
     // σ(T ∩ Ω_h)/σ(T) for a small triangle (line 12 of Algorithm 1): in the
     // plane through the vertices the conic is a planar conic; for an ellipse
     // an affine map makes it the unit disk, where the triangle's overlap is
