@@ -119,6 +119,33 @@ vec2 hammersley(int i, int n) {
 }
 #endif
 
+#if GLINTLAB_DIRECTIONAL_LIGHTS > 0
+// Shadows of directional lights: one orthographic depth map per light (a
+// layer of u_shadow_maps) over the scene's bounding sphere. The lookup
+// point moves 1.5 texels along the geometric normal towards the light and
+// the depth comparison carries a slope-scaled bias (normal-offset shadow
+// mapping), so lit surfaces do not shadow themselves; one hardware 2x2
+// comparison (GL_LINEAR on a depth-compare texture) softens the edge over a
+// texel, where the CPU's shadow ray is hard.
+uniform bool u_shadows;
+uniform mat4 u_shadow_matrix[GLINTLAB_DIRECTIONAL_LIGHTS];  // world -> [0, 1]^3
+uniform float u_shadow_texel;        // world size of a shadow texel
+uniform float u_shadow_depth_range;  // world length of the depth range
+layout(binding = 1) uniform sampler2DArrayShadow u_shadow_maps;
+float directional_visibility(int i, vec3 p, vec3 ng) {
+    if (!u_shadows) return 1.0f;
+    vec3 w = u_directional_direction[i];
+    float c = dot(ng, w);
+    vec3 towards = c >= 0.0f ? ng : -ng;
+    float cos_l = clamp(abs(c), 0.05f, 1.0f);
+    vec4 s = u_shadow_matrix[i] * vec4(p + towards * (1.5f * u_shadow_texel), 1.0f);
+    if (any(lessThan(s.xyz, vec3(0.0f))) || any(greaterThan(s.xyz, vec3(1.0f)))) return 1.0f;
+    float tan_l = sqrt(1.0f - cos_l * cos_l) / cos_l;
+    float bias = u_shadow_texel * (1.0f + min(tan_l, 10.0f)) / u_shadow_depth_range;
+    return texture(u_shadow_maps, vec4(s.x, s.y, float(i), s.z - bias));
+}
+#endif
+
 // render/light_sampling.cpp orthonormal_basis (Duff et al. 2017).
 void orthonormal_basis(vec3 n, out vec3 t, out vec3 b) {
     float s = n.z >= 0.0f ? 1.0f : -1.0f;
@@ -275,7 +302,9 @@ void main() {
             vec3 w = u_directional_direction[i];
             vec3 wi = vec3(dot(w, t), dot(w, b), dot(w, n));
             if (wi.z <= 0.0f) continue;
-            radiance += eval_bsdf(wo, wi, fp) * u_directional_irradiance[i] * wi.z;
+            float visible = directional_visibility(i, p, ng);
+            if (visible <= 0.0f) continue;
+            radiance += eval_bsdf(wo, wi, fp) * u_directional_irradiance[i] * (wi.z * visible);
         }
 #endif
     }
@@ -350,6 +379,20 @@ std::string ProgramKey::name() const {
     return fmt::format("forward[{}, {} point, {} directional, {}]", info ? info->name : "?",
                        point_lights, directional_lights,
                        environment ? "environment" : "no environment");
+}
+
+AssembledShader shadow_vertex_shader() {
+    return assemble_shader(R"(
+// Depth of world-space vertices seen from a directional light.
+layout(location = 0) in vec3 a_position;
+uniform mat4 u_light_view_projection;
+void main() { gl_Position = u_light_view_projection * vec4(a_position, 1.0f); }
+)",
+                           true);
+}
+
+AssembledShader shadow_fragment_shader() {
+    return assemble_shader("void main() {}\n", true);
 }
 
 AssembledShader forward_vertex_shader() {

@@ -24,6 +24,8 @@ struct ProgramKey {
 
 // Texture units of the forward shader.
 inline constexpr int kEnvironmentUnit = 0;
+inline constexpr int kShadowUnit = 1;  // depth-compare 2D array, one layer per directional light
+inline constexpr int kShadowMapSize = 2048;
 
 // Environment lighting (Krivanek & Colbert 2008, filtered importance
 // sampling): a fixed Hammersley set of samples per pixel, the same for every
@@ -33,6 +35,8 @@ inline constexpr int kEnvironmentSpecularSamples = 48;
 inline constexpr int kEnvironmentDiffuseSamples = 64;
 
 AssembledShader forward_vertex_shader();
+AssembledShader shadow_vertex_shader();  // depth-only pass of the shadow maps
+AssembledShader shadow_fragment_shader();
 AssembledShader forward_fragment_shader(const ProgramKey& key);
 AssembledShader background_vertex_shader();
 AssembledShader background_fragment_shader();

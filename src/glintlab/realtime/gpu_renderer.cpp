@@ -99,7 +99,75 @@ struct GpuRenderer::Impl {
     gl::Framebuffer fbo;
     gl::Texture color, depth;
     int width = 0, height = 0;
-    gl::PassTimer background_timer, forward_timer;
+    gl::PassTimer shadow_timer, background_timer, forward_timer;
+    // Shadow maps (forward_shaders.cpp directional_visibility).
+    bool shadows = true;
+    gl::Program shadow_program;
+    gl::Framebuffer shadow_fbo;
+    gl::Texture shadow_maps;
+    int shadow_layers = 0;
+    std::vector<glm::mat4> shadow_matrices;
+    float shadow_texel = 0.0f, shadow_depth_range = 1.0f;
+
+    // Renders one depth layer per directional light (none: shadow_matrices empty).
+    void render_shadow_maps(const Scene& scene) {
+        shadow_matrices.clear();
+        std::vector<glm::vec3> directions;
+        for (const Light& light : scene.lights)
+            if (const auto* l = std::get_if<DirectionalLight>(&light))
+                directions.push_back(l->direction);
+        if (!shadows || directions.empty()) return;
+        const int layers = static_cast<int>(directions.size());
+        if (layers != shadow_layers) {
+            shadow_maps = gl::make_texture(GL_TEXTURE_2D_ARRAY);
+            glTextureStorage3D(shadow_maps.get(), 1, GL_DEPTH_COMPONENT32F, gl::kShadowMapSize,
+                               gl::kShadowMapSize, layers);
+            glTextureParameteri(shadow_maps.get(), GL_TEXTURE_COMPARE_MODE,
+                                GL_COMPARE_REF_TO_TEXTURE);
+            glTextureParameteri(shadow_maps.get(), GL_TEXTURE_COMPARE_FUNC, GL_LEQUAL);
+            glTextureParameteri(shadow_maps.get(), GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+            glTextureParameteri(shadow_maps.get(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+            glTextureParameteri(shadow_maps.get(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+            glTextureParameteri(shadow_maps.get(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+            shadow_fbo = gl::make_framebuffer();
+            glNamedFramebufferDrawBuffer(shadow_fbo.get(), GL_NONE);
+            glNamedFramebufferReadBuffer(shadow_fbo.get(), GL_NONE);
+            shadow_layers = layers;
+        }
+        const glm::vec3 c(bounds);
+        const float radius = bounds.w * 1.01f;
+        shadow_texel = 2.0f * radius / static_cast<float>(gl::kShadowMapSize);
+        shadow_depth_range = 2.0f * radius;
+        // [-1, 1]^3 -> [0, 1]^3.
+        const glm::mat4 to_unit = glm::translate(glm::mat4(1.0f), glm::vec3(0.5f)) *
+                                  glm::scale(glm::mat4(1.0f), glm::vec3(0.5f));
+        const GLuint p = shadow_program.get();
+        glBindFramebuffer(GL_FRAMEBUFFER, shadow_fbo.get());
+        glViewport(0, 0, gl::kShadowMapSize, gl::kShadowMapSize);
+        glEnable(GL_DEPTH_TEST);
+        glDepthFunc(GL_LESS);
+        glEnable(GL_POLYGON_OFFSET_FILL);
+        glPolygonOffset(1.5f, 4.0f);
+        glUseProgram(p);
+        for (int i = 0; i < layers; ++i) {
+            const glm::vec3 d = glm::normalize(directions[static_cast<size_t>(i)]);
+            const glm::vec3 up = std::abs(d.y) < 0.99f ? glm::vec3(0, 1, 0) : glm::vec3(1, 0, 0);
+            const glm::mat4 vp =
+                glm::ortho(-radius, radius, -radius, radius, radius, 3.0f * radius) *
+                glm::lookAt(c + d * (2.0f * radius), c, up);
+            shadow_matrices.push_back(to_unit * vp);
+            glNamedFramebufferTextureLayer(shadow_fbo.get(), GL_DEPTH_ATTACHMENT, shadow_maps.get(),
+                                           0, i);
+            glClear(GL_DEPTH_BUFFER_BIT);
+            glProgramUniformMatrix4fv(p, uniforms.location(p, "u_light_view_projection"), 1,
+                                      GL_FALSE, glm::value_ptr(vp));
+            for (const GpuShape& g : shapes) {
+                glBindVertexArray(g.vao.get());
+                glDrawElements(GL_TRIANGLES, g.index_count, GL_UNSIGNED_INT, nullptr);
+            }
+        }
+        glDisable(GL_POLYGON_OFFSET_FILL);
+    }
     gl::VertexArray empty_vao;
 
     GLuint program(const gl::ProgramKey& key) {
@@ -255,6 +323,8 @@ GpuRenderer::GpuRenderer(const Scene& scene) : impl_(std::make_unique<Impl>()) {
     r.background = gl::Program(gl::link_program(gl::background_vertex_shader(),
                                                 gl::background_fragment_shader(), "background"));
     r.empty_vao = gl::make_vertex_array();
+    r.shadow_program = gl::Program(
+        gl::link_program(gl::shadow_vertex_shader(), gl::shadow_fragment_shader(), "shadow"));
     for (const Shape& shape : scene.shapes) {
         const gl::ProgramKey key = program_key(scene, shape);
         if (!gl::gpu_supports_model(key.model)) (void)gl::glint_model_glsl(key.model);  // throws
@@ -300,10 +370,16 @@ void GpuRenderer::render(const Scene& scene) {
     const glm::mat4 view_projection = projection * view;
     const bool ortho = c.type == Camera::Type::Orthographic;
 
-    glBindFramebuffer(GL_FRAMEBUFFER, r.fbo.get());
-    glViewport(0, 0, r.width, r.height);
     glDisable(GL_BLEND);
     glDisable(GL_CULL_FACE);  // two-sided materials
+
+    // Pass 0: shadow maps of the directional lights.
+    r.shadow_timer.begin();
+    r.render_shadow_maps(scene);
+    r.shadow_timer.end();
+
+    glBindFramebuffer(GL_FRAMEBUFFER, r.fbo.get());
+    glViewport(0, 0, r.width, r.height);
 
     // Pass 1: background (environment or black).
     r.background_timer.begin();
@@ -351,6 +427,16 @@ void GpuRenderer::render(const Scene& scene) {
                                static_cast<float>(r.environment_height));
         }
         r.set_lights(p, scene);
+        const bool shadowed = !r.shadow_matrices.empty();
+        glProgramUniform1i(p, loc("u_shadows"), shadowed ? 1 : 0);
+        if (shadowed) {
+            glProgramUniformMatrix4fv(p, loc("u_shadow_matrix"),
+                                      static_cast<GLsizei>(r.shadow_matrices.size()), GL_FALSE,
+                                      glm::value_ptr(r.shadow_matrices[0]));
+            glProgramUniform1f(p, loc("u_shadow_texel"), r.shadow_texel);
+            glProgramUniform1f(p, loc("u_shadow_depth_range"), r.shadow_depth_range);
+            glBindTextureUnit(gl::kShadowUnit, r.shadow_maps.get());
+        }
         if (g.triangles) glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, g.triangles.get());
         glUseProgram(p);
         glBindVertexArray(g.vao.get());
@@ -403,8 +489,13 @@ bool GpuRenderer::has_environment() const {
     return static_cast<bool>(impl_->environment);
 }
 
+void GpuRenderer::set_shadows(bool on) {
+    impl_->shadows = on;
+}
+
 GpuPassTimes GpuRenderer::pass_times() {
-    return {impl_->background_timer.elapsed_ms(), impl_->forward_timer.elapsed_ms()};
+    return {impl_->shadow_timer.elapsed_ms(), impl_->background_timer.elapsed_ms(),
+            impl_->forward_timer.elapsed_ms()};
 }
 
 Image render_scene_gpu(const Scene& scene) {

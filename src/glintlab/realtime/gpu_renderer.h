@@ -7,7 +7,8 @@
 // PNG (exposure) and bloom of the CPU path apply unchanged.
 //
 // Differences from the CPU `direct` integrator, by design of a forward
-// shader (docs/ARCHITECTURE.md "realtime/"): no shadows; sphere lights are
+// shader (docs/ARCHITECTURE.md "realtime/"): shadows of directional lights
+// only (shadow maps; point and sphere lights cast none); sphere lights are
 // shaded as point lights of intensity pi r^2 L at their centre (exact for the
 // irradiance of a fully visible sphere); cone (sun) lights at their axis; the
 // environment lights surfaces through a deterministic filtered-importance-
@@ -23,6 +24,7 @@
 namespace glintlab {
 
 struct GpuPassTimes {
+    double shadow_ms = 0.0;      // depth maps of the directional lights
     double background_ms = 0.0;  // environment / clear pass
     double forward_ms = 0.0;     // geometry + shading (the glint evaluation)
 };
@@ -59,6 +61,8 @@ class GpuRenderer {
     // initially those of the scene's map.
     void set_environment(float scale, float rotation_deg);
     bool has_environment() const;
+    // Shadow maps of directional lights (on by default).
+    void set_shadows(bool on);
 
     // Compiles (once) the program of every glint model the GPU supports with
     // the light set of `scene`; used by tests and by the viewer's switcher.

@@ -266,7 +266,8 @@ void run_viewer(Scene scene, const ViewerOptions& options) {
     const std::filesystem::path shot_path = options.screenshot.empty()
                                                 ? std::filesystem::path("glintlab_screenshot.png")
                                                 : options.screenshot;
-    PassHistory background_ms, forward_ms, bloom_ms, display_ms;
+    PassHistory shadow_ms, background_ms, forward_ms, bloom_ms, display_ms;
+    bool shadows = true;
     std::string status;
     int selected_material = 0;
     bool p_was_down = false;
@@ -329,9 +330,11 @@ void run_viewer(Scene scene, const ViewerOptions& options) {
             ImGui::PushItemWidth(170.0f);
             ImGui::TextUnformatted(gl_description().c_str());
             ImGui::Text("GPU ms, median of 60 frames (GL_TIME_ELAPSED)");
-            ImGui::Text("background %.3f  forward %.3f  bloom %.3f  display %.3f",
-                        background_ms.median(), forward_ms.median(), bloom_ms.median(),
-                        display_ms.median());
+            ImGui::Text("shadow %.3f  background %.3f  forward %.3f", shadow_ms.median(),
+                        background_ms.median(), forward_ms.median());
+            ImGui::Text("bloom %.3f  display %.3f", bloom_ms.median(), display_ms.median());
+            if (ImGui::Checkbox("shadows (directional lights)", &shadows))
+                renderer.set_shadows(shadows);
             ImGui::SliderFloat("exposure (stops)", &scene.film.exposure, -10.0f, 10.0f);
             if (ImGui::CollapsingHeader("bloom")) {
                 slider("strength", &scene.film.bloom.strength, 0.0f, 1.0f);
@@ -380,6 +383,7 @@ void run_viewer(Scene scene, const ViewerOptions& options) {
         display_timer.end();
 
         const GpuPassTimes t = renderer.pass_times();
+        shadow_ms.add(t.shadow_ms);
         background_ms.add(t.background_ms);
         forward_ms.add(t.forward_ms);
         bloom_ms.add(bloom_timer.elapsed_ms());
