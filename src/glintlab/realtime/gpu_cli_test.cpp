@@ -94,6 +94,30 @@ TEST(GpuCli, RenderGpuWritesExrAndPng) {
     EXPECT_TRUE(std::filesystem::exists(dir / "out.png"));
 }
 
+// The EGL device platform (the NVIDIA path) on whatever devices EGL lists:
+// Mesa exposes its software rasteriser as a device (EGL_MESA_device_software),
+// so the device code path runs in CI too and must give the surfaceless
+// platform's image exactly (same driver, same programs).
+TEST(GpuCli, EglDevicePlatformGivesTheSurfacelessImage) {
+    GLINTLAB_REQUIRE_GL();
+    testing::ScratchDir dir;
+    std::ofstream(dir / "s.json") << small_scene().dump();
+    const std::string args = " render --gpu -q " + (dir / "s.json").string() + " -o ";
+    const RunResult device =
+        run("GLINTLAB_EGL_PLATFORM=device " + cli() + args + (dir / "device.exr").string());
+    if (device.status != 0 && device.output.find("no EGL device") != std::string::npos)
+        GTEST_SKIP() << "no EGL device platform here: " << device.output;
+    ASSERT_EQ(device.status, 0) << device.output;
+    const RunResult surfaceless = run("GLINTLAB_EGL_PLATFORM=surfaceless " + cli() + args +
+                                      (dir / "surfaceless.exr").string());
+    ASSERT_EQ(surfaceless.status, 0) << surfaceless.output;
+    const Image a = read_image(dir / "device.exr");
+    const Image b = read_image(dir / "surfaceless.exr");
+    ASSERT_EQ(a.pixels.size(), b.pixels.size());
+    for (size_t i = 0; i < a.pixels.size(); ++i)
+        ASSERT_EQ(a.pixels[i], b.pixels[i]) << "pixel " << i;
+}
+
 TEST(GpuCli, MissingEnvironmentMapIsAClearError) {
     testing::ScratchDir dir;
     nlohmann::json s = small_scene();
