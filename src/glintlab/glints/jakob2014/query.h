@@ -27,6 +27,9 @@ struct Model {
     // Triangles wider than this are never approximated by line 12 (the
     // planar overlap needs nearly flat triangles, §3.3).
     static constexpr double kMaxFlatEdge = 0.2;
+    // Largest relative deviation of D(m)(m·n) between a triangle's vertices
+    // and its centre for line 12 to treat D as uniform over the triangle.
+    static constexpr double kUniformTolerance = 0.02;
     // Nodes one tile's traversal may visit before every partial node takes
     // its expected value (a safeguard; counted in docs/VALIDATION.md).
     static constexpr int64_t kNodeBudget = 20000;
@@ -71,5 +74,9 @@ inline bool split_space(const Model& m, double node_area, double node_solid_angl
 // outgoing directions (dm = dωo / (4 ωi·m)) by a fine midpoint rule.
 double expected_fraction(const NdfSpec& spec, double area, glm::dvec3 wi, glm::dvec3 wo,
                          double gamma);
+// ∫_{Ω_h ∩ T} D(m)(m·n) dm (T = null: the whole of Ω_h) by a rings × sectors
+// midpoint rule over the cone of outgoing directions.
+double conic_mass(const NdfSpec& spec, glm::dvec3 wi, glm::dvec3 wo, double gamma,
+                  const SphericalTriangle* t, int rings, int sectors);
 
 }  // namespace glintlab::jakob2014
