@@ -94,7 +94,7 @@ struct Cone {
     glm::vec3 axis;
     float cos_max;
     glm::vec3 radiance;
-    float t_max;
+    float t_max;  // shadow-ray length (short of the emitter: it is geometry too)
 };
 
 // Eq. 8-9 and the smooth reflected radiance of one cone, by a stratified
@@ -257,7 +257,7 @@ glm::vec3 kneiphof2025_light_radiance(const GlintLightingContext& ctx, int light
         if (!(dist > s->radius)) return glm::vec3(0.0f);
         const float sin_max = s->radius / dist;
         Cone c{d / dist, std::sqrt(std::max(0.0f, 1.0f - sin_max * sin_max)), s->radiance,
-               dist - s->radius};
+               (dist - s->radius) * (1.0f - 1e-4f)};
         return area_light_radiance(ctx, c);
     }
     if (const auto* dl = std::get_if<DirectionalLight>(&l)) {
