@@ -119,6 +119,37 @@ vec2 hammersley(int i, int n) {
 }
 #endif
 
+#if GLINTLAB_POINT_LIGHTS > 0
+// Shadows of point lights (and of sphere lights, shaded from their centre,
+// whose own sphere is left out of their map): one depth cube per light (a
+// cube of u_point_shadow_maps), perspective 90 deg faces from u_point_near[i]
+// to u_point_far[i]. The reference depth is that of the face the direction
+// falls in (its major axis), after the same normal offset and slope-scaled
+// bias as the directional maps, with texels of 2 d / size at distance d.
+uniform bool u_point_shadows;
+uniform float u_point_near[GLINTLAB_POINT_LIGHTS];
+uniform float u_point_far[GLINTLAB_POINT_LIGHTS];
+uniform float u_point_shadow_size;  // texels per cube face side
+layout(binding = 2) uniform samplerCubeArrayShadow u_point_shadow_maps;
+float point_visibility(int i, vec3 p, vec3 ng, vec3 from_light) {
+    if (!u_point_shadows) return 1.0f;
+    float dist = length(from_light);
+    vec3 l = -from_light / dist;  // towards the light
+    float c = dot(ng, l);
+    vec3 towards = c >= 0.0f ? ng : -ng;
+    float cos_l = clamp(abs(c), 0.05f, 1.0f);
+    float texel = 2.0f * dist / u_point_shadow_size;
+    vec3 v = from_light + towards * (1.5f * texel);
+    float tan_l = sqrt(1.0f - cos_l * cos_l) / cos_l;
+    float major = max(max(abs(v.x), abs(v.y)), abs(v.z)) - texel * (1.0f + min(tan_l, 10.0f));
+    float n = u_point_near[i];
+    float f = u_point_far[i];
+    if (major <= n) return 1.0f;
+    float z_ndc = (f + n) / (f - n) - 2.0f * f * n / ((f - n) * major);  // glm::perspective depth
+    return texture(u_point_shadow_maps, vec4(v, float(i)), 0.5f * z_ndc + 0.5f);
+}
+#endif
+
 #if GLINTLAB_DIRECTIONAL_LIGHTS > 0
 // Shadows of directional lights: one orthographic depth map per light (a
 // layer of u_shadow_maps) over the scene's bounding sphere. The lookup
@@ -291,7 +322,9 @@ void main() {
             vec3 w = d * inversesqrt(r2);
             vec3 wi = vec3(dot(w, t), dot(w, b), dot(w, n));
             if (wi.z <= 0.0f) continue;
-            radiance += eval_bsdf(wo, wi, fp) * u_point_intensity[i] * (wi.z / r2);
+            float visible = point_visibility(i, p, ng, -d);
+            if (visible <= 0.0f) continue;
+            radiance += eval_bsdf(wo, wi, fp) * u_point_intensity[i] * (wi.z * visible / r2);
         }
 #endif
 #if GLINTLAB_ENVIRONMENT

@@ -26,6 +26,8 @@ struct ProgramKey {
 inline constexpr int kEnvironmentUnit = 0;
 inline constexpr int kShadowUnit = 1;  // depth-compare 2D array, one layer per directional light
 inline constexpr int kShadowMapSize = 2048;
+inline constexpr int kPointShadowUnit = 2;  // depth-compare cube array, one cube per point light
+inline constexpr int kPointShadowSize = 1024;
 
 // Environment lighting (Krivanek & Colbert 2008, filtered importance
 // sampling): a fixed Hammersley set of samples per pixel, the same for every

@@ -108,6 +108,84 @@ struct GpuRenderer::Impl {
     int shadow_layers = 0;
     std::vector<glm::mat4> shadow_matrices;
     float shadow_texel = 0.0f, shadow_depth_range = 1.0f;
+    gl::Texture point_shadow_maps;
+    int point_shadow_cubes = 0;
+    std::vector<float> point_near, point_far;  // empty: no point shadows this frame
+
+    // One depth cube per point/sphere light, in set_lights' order; a sphere
+    // light's own shape is not drawn into its cube.
+    void render_point_shadow_maps(const Scene& scene) {
+        point_near.clear();
+        point_far.clear();
+        struct Source {
+            glm::vec3 position;
+            int light;
+        };
+        std::vector<Source> sources;
+        for (size_t i = 0; i < scene.lights.size(); ++i) {
+            if (const auto* l = std::get_if<PointLight>(&scene.lights[i]))
+                sources.push_back({l->position, static_cast<int>(i)});
+            else if (const auto* l = std::get_if<SphereLight>(&scene.lights[i]))
+                sources.push_back({l->center, static_cast<int>(i)});
+        }
+        if (!shadows || sources.empty()) return;
+        const int cubes = static_cast<int>(sources.size());
+        const int size = gl::kPointShadowSize;
+        if (cubes != point_shadow_cubes) {
+            point_shadow_maps = gl::make_texture(GL_TEXTURE_CUBE_MAP_ARRAY);
+            glTextureStorage3D(point_shadow_maps.get(), 1, GL_DEPTH_COMPONENT32F, size, size,
+                               6 * cubes);
+            glTextureParameteri(point_shadow_maps.get(), GL_TEXTURE_COMPARE_MODE,
+                                GL_COMPARE_REF_TO_TEXTURE);
+            glTextureParameteri(point_shadow_maps.get(), GL_TEXTURE_COMPARE_FUNC, GL_LEQUAL);
+            glTextureParameteri(point_shadow_maps.get(), GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+            glTextureParameteri(point_shadow_maps.get(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+            point_shadow_cubes = cubes;
+        }
+        if (!shadow_fbo) {
+            shadow_fbo = gl::make_framebuffer();
+            glNamedFramebufferDrawBuffer(shadow_fbo.get(), GL_NONE);
+            glNamedFramebufferReadBuffer(shadow_fbo.get(), GL_NONE);
+        }
+        // Cube face order +X -X +Y -Y +Z -Z with GL's face orientations.
+        const glm::vec3 dirs[6] = {{1, 0, 0},  {-1, 0, 0}, {0, 1, 0},
+                                   {0, -1, 0}, {0, 0, 1},  {0, 0, -1}};
+        const glm::vec3 ups[6] = {{0, -1, 0}, {0, -1, 0}, {0, 0, 1},
+                                  {0, 0, -1}, {0, -1, 0}, {0, -1, 0}};
+        const GLuint p = shadow_program.get();
+        glBindFramebuffer(GL_FRAMEBUFFER, shadow_fbo.get());
+        glViewport(0, 0, size, size);
+        glEnable(GL_DEPTH_TEST);
+        glDepthFunc(GL_LESS);
+        glEnable(GL_POLYGON_OFFSET_FILL);
+        glPolygonOffset(1.5f, 4.0f);
+        glUseProgram(p);
+        const glm::vec3 c(bounds);
+        for (int i = 0; i < cubes; ++i) {
+            const glm::vec3 o = sources[static_cast<size_t>(i)].position;
+            const float far_plane = std::max(glm::length(o - c) + bounds.w * 1.01f, 1e-3f);
+            const float near_plane = std::max(far_plane * 1e-4f, 1e-4f);
+            point_near.push_back(near_plane);
+            point_far.push_back(far_plane);
+            const glm::mat4 proj =
+                glm::perspective(glm::half_pi<float>(), 1.0f, near_plane, far_plane);
+            for (int face = 0; face < 6; ++face) {
+                glNamedFramebufferTextureLayer(shadow_fbo.get(), GL_DEPTH_ATTACHMENT,
+                                               point_shadow_maps.get(), 0, 6 * i + face);
+                glClear(GL_DEPTH_BUFFER_BIT);
+                const glm::mat4 vp = proj * glm::lookAt(o, o + dirs[face], ups[face]);
+                glProgramUniformMatrix4fv(p, uniforms.location(p, "u_light_view_projection"), 1,
+                                          GL_FALSE, glm::value_ptr(vp));
+                for (size_t k = 0; k < shapes.size(); ++k) {
+                    if (scene.shapes[k].area_light == sources[static_cast<size_t>(i)].light)
+                        continue;
+                    glBindVertexArray(shapes[k].vao.get());
+                    glDrawElements(GL_TRIANGLES, shapes[k].index_count, GL_UNSIGNED_INT, nullptr);
+                }
+            }
+        }
+        glDisable(GL_POLYGON_OFFSET_FILL);
+    }
 
     // Renders one depth layer per directional light (none: shadow_matrices empty).
     void render_shadow_maps(const Scene& scene) {
@@ -376,6 +454,7 @@ void GpuRenderer::render(const Scene& scene) {
     // Pass 0: shadow maps of the directional lights.
     r.shadow_timer.begin();
     r.render_shadow_maps(scene);
+    r.render_point_shadow_maps(scene);
     r.shadow_timer.end();
 
     glBindFramebuffer(GL_FRAMEBUFFER, r.fbo.get());
@@ -436,6 +515,17 @@ void GpuRenderer::render(const Scene& scene) {
             glProgramUniform1f(p, loc("u_shadow_texel"), r.shadow_texel);
             glProgramUniform1f(p, loc("u_shadow_depth_range"), r.shadow_depth_range);
             glBindTextureUnit(gl::kShadowUnit, r.shadow_maps.get());
+        }
+        const bool point_shadowed = !r.point_near.empty();
+        glProgramUniform1i(p, loc("u_point_shadows"), point_shadowed ? 1 : 0);
+        if (point_shadowed) {
+            glProgramUniform1fv(p, loc("u_point_near"), static_cast<GLsizei>(r.point_near.size()),
+                                r.point_near.data());
+            glProgramUniform1fv(p, loc("u_point_far"), static_cast<GLsizei>(r.point_far.size()),
+                                r.point_far.data());
+            glProgramUniform1f(p, loc("u_point_shadow_size"),
+                               static_cast<float>(gl::kPointShadowSize));
+            glBindTextureUnit(gl::kPointShadowUnit, r.point_shadow_maps.get());
         }
         if (g.triangles) glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, g.triangles.get());
         glUseProgram(p);

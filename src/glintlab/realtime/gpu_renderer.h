@@ -7,13 +7,14 @@
 // PNG (exposure) and bloom of the CPU path apply unchanged.
 //
 // Differences from the CPU `direct` integrator, by design of a forward
-// shader (docs/ARCHITECTURE.md "realtime/"): shadows of directional lights
-// only (shadow maps; point and sphere lights cast none); sphere lights are
-// shaded as point lights of intensity pi r^2 L at their centre (exact for the
-// irradiance of a fully visible sphere); cone (sun) lights at their axis; the
-// environment lights surfaces through a deterministic filtered-importance-
-// sampling estimate (forward_shaders.h) instead of random samples; the
-// dielectric shows its reflection only.
+// shader (docs/ARCHITECTURE.md "realtime/"): shadow maps instead of shadow
+// rays (directional, point and sphere lights; sphere lights cast the hard
+// shadow of their centre); sphere lights are shaded as point lights of
+// intensity pi r^2 L at their centre (exact for the irradiance of a fully
+// visible sphere); cone (sun) lights at their axis; the environment lights
+// surfaces through a deterministic filtered-importance-sampling estimate
+// (forward_shaders.h) without occlusion; the dielectric shows its
+// reflection only.
 #pragma once
 
 #include <memory>
@@ -61,7 +62,7 @@ class GpuRenderer {
     // initially those of the scene's map.
     void set_environment(float scale, float rotation_deg);
     bool has_environment() const;
-    // Shadow maps of directional lights (on by default).
+    // Shadow maps (on by default).
     void set_shadows(bool on);
 
     // Compiles (once) the program of every glint model the GPU supports with

@@ -333,8 +333,7 @@ void run_viewer(Scene scene, const ViewerOptions& options) {
             ImGui::Text("shadow %.3f  background %.3f  forward %.3f", shadow_ms.median(),
                         background_ms.median(), forward_ms.median());
             ImGui::Text("bloom %.3f  display %.3f", bloom_ms.median(), display_ms.median());
-            if (ImGui::Checkbox("shadows (directional lights)", &shadows))
-                renderer.set_shadows(shadows);
+            if (ImGui::Checkbox("shadows", &shadows)) renderer.set_shadows(shadows);
             ImGui::SliderFloat("exposure (stops)", &scene.film.exposure, -10.0f, 10.0f);
             if (ImGui::CollapsingHeader("bloom")) {
                 slider("strength", &scene.film.bloom.strength, 0.0f, 1.0f);
