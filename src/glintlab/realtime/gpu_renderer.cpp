@@ -541,16 +541,23 @@ void GpuRenderer::render(const Scene& scene) {
 Image GpuRenderer::read_image() const {
     const Impl& r = *impl_;
     if (!r.color) fail("OpenGL renderer: read_image() before render()");
-    std::vector<float> rgba(static_cast<size_t>(r.width) * r.height * 4);
-    glPixelStorei(GL_PACK_ALIGNMENT, 4);
-    glGetTextureImage(r.color.get(), 0, GL_RGBA, GL_FLOAT,
-                      static_cast<GLsizei>(rgba.size() * sizeof(float)), rgba.data());
     Image image(r.width, r.height);
-    for (int y = 0; y < r.height; ++y) {
-        const size_t row = static_cast<size_t>(r.height - 1 - y) * r.width;  // GL rows go up
-        for (int x = 0; x < r.width; ++x) {
-            const float* px = &rgba[(row + static_cast<size_t>(x)) * 4];
-            image.at(x, y) = glm::vec3(px[0], px[1], px[2]);
+    // Strips of rows below 256 MiB, so the byte count fits glGetTextureSubImage's GLsizei.
+    const size_t row_bytes = static_cast<size_t>(r.width) * 4 * sizeof(float);
+    const int strip = std::max(1, static_cast<int>((size_t{1} << 28) / row_bytes));
+    std::vector<float> rgba(static_cast<size_t>(r.width) * 4 *
+                            static_cast<size_t>(std::min(strip, r.height)));
+    glPixelStorei(GL_PACK_ALIGNMENT, 4);
+    for (int y0 = 0; y0 < r.height; y0 += strip) {
+        const int rows = std::min(strip, r.height - y0);
+        glGetTextureSubImage(r.color.get(), 0, 0, y0, 0, r.width, rows, 1, GL_RGBA, GL_FLOAT,
+                             static_cast<GLsizei>(row_bytes * static_cast<size_t>(rows)),
+                             rgba.data());
+        for (int k = 0; k < rows; ++k) {
+            const int y = r.height - 1 - (y0 + k);  // GL rows go up, Image rows down
+            const float* px = &rgba[static_cast<size_t>(k) * r.width * 4];
+            for (int x = 0; x < r.width; ++x, px += 4)
+                image.at(x, y) = glm::vec3(px[0], px[1], px[2]);
         }
     }
     return image;
