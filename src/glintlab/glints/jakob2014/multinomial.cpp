@@ -49,6 +49,13 @@ std::array<int64_t, 4> sample_multinomial4(int64_t n, const std::array<double, 4
     if (n <= 0) return x;
     TeaStream rng(node_id, seed, kCountSalt);
     if (n <= 8) {
+        if (p[0] == 0.25 && p[1] == 0.25 && p[2] == 0.25 && p[3] == 0.25) {
+            // Spatial splits: each draw is uniform over 4 children, i.e. two
+            // random bits; one TEA call gives all (at most 8) draws.
+            uint64_t bits = (uint64_t(rng.next_u32()) << 32u) | rng.next_u32();
+            for (int64_t k = 0; k < n; ++k, bits >>= 2u) ++x[bits & 3u];
+            return x;
+        }
         for (int64_t k = 0; k < n; ++k) ++x[categorical(p, rng.next_double())];
         return x;
     }
