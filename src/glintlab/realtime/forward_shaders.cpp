@@ -409,8 +409,8 @@ void main() {
 
 std::string ProgramKey::name() const {
     const GlintModelInfo* info = find_glint_model(model);
-    return fmt::format("forward[{}, {} point, {} directional, {}]", info ? info->name : "?",
-                       point_lights, directional_lights,
+    return fmt::format("forward[{}{}, {} point, {} directional, {}]", info ? info->name : "?",
+                       noise_texture ? " (noise texture)" : "", point_lights, directional_lights,
                        environment ? "environment" : "no environment");
 }
 
@@ -440,7 +440,7 @@ AssembledShader forward_fragment_shader(const ProgramKey& key) {
         key.point_lights, key.directional_lights, key.environment ? 1 : 0,
         kEnvironmentSpecularSamples, kEnvironmentDiffuseSamples);
     text += kForwardHeader;
-    text += glint_model_glsl(key.model);
+    text += glint_model_glsl(key.model, key.noise_texture);
     text += kForwardBody;
     return assemble_shader(text, true);
 }

@@ -5,6 +5,7 @@
 #include <epoxy/gl.h>
 
 #include "glintlab/core/error.h"
+#include "glintlab/core/rng.h"
 #include "glintlab/glints/chermain2020/dictionary.h"
 #include "glintlab/realtime/uniform_cache.h"
 #include "glintlab/scene/scene.h"
@@ -90,6 +91,8 @@ float glint_masking(vec3 wo, vec3 wi, vec3 h) { return G2_VCavity(wo, wi, h); }
 )";
 
 constexpr int kChermain2020DictionaryUnit = kFirstModelTextureUnit;
+constexpr int kDeliot2023NoiseUnit = kFirstModelTextureUnit + 1;  // binding = 5 in the glue
+static_assert(kDeliot2023NoiseUnit == 5);
 
 }  // namespace
 
@@ -105,12 +108,24 @@ bool gpu_supports_model(GlintModelId model) {
     }
 }
 
-std::string glint_model_glsl(GlintModelId model) {
+// deliot2023's noise-texture variant: the fetch function the shared file
+// calls under GLINTLAB_DELIOT2023_NOISE_TEXTURE, ahead of its include.
+constexpr const char* kDeliot2023NoisePrefix = R"(
+#define GLINTLAB_DELIOT2023_NOISE_TEXTURE 1
+layout(binding = 5) uniform sampler2D u_deliot2023_noise;  // RG32F, 64 x 64
+vec2 deliot2023_noise_fetch(uint cell_hash) {
+    uint i = cell_hash % 4096u;
+    return texelFetch(u_deliot2023_noise, ivec2(int(i % 64u), int(i / 64u)), 0).rg;
+}
+)";
+
+std::string glint_model_glsl(GlintModelId model, bool noise_texture) {
     switch (model) {
         case GlintModelId::Smooth:
             return kSmoothGlue;
         case GlintModelId::Deliot2023:
-            return kDeliot2023Glue;
+            return noise_texture ? std::string(kDeliot2023NoisePrefix) + kDeliot2023Glue
+                                 : std::string(kDeliot2023Glue);
         case GlintModelId::Zirr2016:
             return kZirr2016Glue;
         case GlintModelId::Chermain2020:
@@ -129,9 +144,32 @@ GlintResources::GlintResources() = default;
 
 GlintResources::~GlintResources() {
     if (chermain2020_dictionary_ != 0) glDeleteTextures(1, &chermain2020_dictionary_);
+    if (deliot2023_noise_ != 0) glDeleteTextures(1, &deliot2023_noise_);
 }
 
-void GlintResources::bind(GlintModelId model) {
+std::vector<float> deliot2023_noise_pairs() {
+    std::vector<float> pairs(64 * 64 * 2);
+    Pcg32 rng(0x6465'6c69'6f74ull, 2023);
+    for (size_t i = 0; i < pairs.size(); i += 2) {
+        pairs[i] = rng.next_float();
+        pairs[i + 1] = rng.next_float();
+    }
+    return pairs;
+}
+
+void GlintResources::bind(GlintModelId model, bool noise_texture) {
+    if (model == GlintModelId::Deliot2023 && noise_texture) {
+        if (deliot2023_noise_ == 0) {
+            const std::vector<float> pairs = deliot2023_noise_pairs();
+            glCreateTextures(GL_TEXTURE_2D, 1, &deliot2023_noise_);
+            glTextureStorage2D(deliot2023_noise_, 1, GL_RG32F, 64, 64);
+            glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+            glTextureSubImage2D(deliot2023_noise_, 0, 0, 0, 64, 64, GL_RG, GL_FLOAT, pairs.data());
+            glTextureParameteri(deliot2023_noise_, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+            glTextureParameteri(deliot2023_noise_, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+        }
+        glBindTextureUnit(kDeliot2023NoiseUnit, deliot2023_noise_);
+    }
     if (model != GlintModelId::Chermain2020) return;
     if (chermain2020_dictionary_ == 0) {
         // 004 §4.4-4.5: one row per (marginal, level), one texel per table

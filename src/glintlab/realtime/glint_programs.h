@@ -9,6 +9,7 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 #include "glintlab/glints/registry.h"
 
@@ -22,7 +23,11 @@ class UniformCache;
 
 // GLSL text of the model's glue (includes resolved by assemble_shader).
 // Throws glintlab::Error for a model the GPU renderer does not implement.
-std::string glint_model_glsl(GlintModelId model);
+// `noise_texture` (deliot2023 only): the uniforms of the gated-Gaussian
+// evaluations come from a 64 x 64 RG32F noise texture (000 §6.3, the
+// shared file's GLINTLAB_DELIOT2023_NOISE_TEXTURE variant) instead of two
+// hash rounds.
+std::string glint_model_glsl(GlintModelId model, bool noise_texture = false);
 
 // Whether the GPU renderer implements `model`.
 bool gpu_supports_model(GlintModelId model);
@@ -31,8 +36,8 @@ bool gpu_supports_model(GlintModelId model);
 // models use units from 4 on.
 inline constexpr int kFirstModelTextureUnit = 4;
 
-// Per-process GPU resources of the models (created on first use in the
-// current context, freed by release_glint_resources()).
+// GPU resources of the models (created on first use in the
+// current context, freed with this object).
 class GlintResources {
   public:
     GlintResources();
@@ -40,14 +45,23 @@ class GlintResources {
     GlintResources(const GlintResources&) = delete;
     GlintResources& operator=(const GlintResources&) = delete;
     // Binds what `model` needs to its texture units.
-    void bind(GlintModelId model);
+    void bind(GlintModelId model, bool noise_texture = false);
 
   private:
     unsigned chermain2020_dictionary_ = 0;  // R32F texture, uploaded lazily
+    unsigned deliot2023_noise_ = 0;         // RG32F 64 x 64, uploaded lazily
 };
 
 // Sets the model's uniforms of `program` from the material.
 void set_glint_uniforms(unsigned program, UniformCache& uniforms, const GlintDesc& desc);
+
+// The 64 x 64 uniform pairs of the deliot2023 noise texture, row-major: the
+// PCG32 stream of glints/deliot2023/deliot2023_noise_table.cpp (0x64656c696f74,
+// seed 2023), each pair (first draw, second draw). The CPU table fills its
+// pairs with vec2(next_float(), next_float()), whose order C++ leaves to the
+// compiler (GCC: second draw first), so the two tables hold the same numbers
+// but not necessarily the same pairs (docs/VALIDATION.md).
+std::vector<float> deliot2023_noise_pairs();
 
 // Default parameters of `model` (the viewer's model switcher).
 void reset_model_params(GlintDesc& desc, GlintModelId model);

@@ -65,12 +65,13 @@ GpuShape upload_shape(const Shape& shape, int sphere_segments) {
     return g;
 }
 
-gl::ProgramKey program_key(const Scene& scene, const Shape& shape) {
+gl::ProgramKey program_key(const Scene& scene, const Shape& shape, bool noise_texture) {
     gl::ProgramKey key;
     if (shape.material >= 0) {
         const MaterialDesc& m = scene.materials[static_cast<size_t>(shape.material)];
         if (m.type == MaterialDesc::Type::Glint) key.model = m.glint.model_id;
     }
+    key.noise_texture = noise_texture && key.model == GlintModelId::Deliot2023;
     for (const Light& light : scene.lights) {
         if (std::holds_alternative<PointLight>(light) || std::holds_alternative<SphereLight>(light))
             ++key.point_lights;
@@ -102,6 +103,7 @@ struct GpuRenderer::Impl {
     gl::PassTimer shadow_timer, background_timer, forward_timer;
     // Shadow maps (forward_shaders.cpp directional_visibility).
     bool shadows = true;
+    bool noise_texture = false;  // deliot2023's noise-texture variant
     gl::Program shadow_program;
     gl::Framebuffer shadow_fbo;
     gl::Texture shadow_maps;
@@ -331,7 +333,7 @@ struct GpuRenderer::Impl {
         glProgramUniform3fv(p, loc("u_fresnel_eta"), 1, glm::value_ptr(g.fresnel.eta));
         glProgramUniform3fv(p, loc("u_fresnel_k"), 1, glm::value_ptr(g.fresnel.k));
         gl::set_glint_uniforms(p, uniforms, g);
-        glint_resources.bind(g.model_id);
+        glint_resources.bind(g.model_id, noise_texture);
     }
 
     void set_lights(GLuint p, const Scene& scene) {
@@ -404,7 +406,7 @@ GpuRenderer::GpuRenderer(const Scene& scene) : impl_(std::make_unique<Impl>()) {
     r.shadow_program = gl::Program(
         gl::link_program(gl::shadow_vertex_shader(), gl::shadow_fragment_shader(), "shadow"));
     for (const Shape& shape : scene.shapes) {
-        const gl::ProgramKey key = program_key(scene, shape);
+        const gl::ProgramKey key = program_key(scene, shape, false);
         if (!gl::gpu_supports_model(key.model)) (void)gl::glint_model_glsl(key.model);  // throws
         r.program(key);
     }
@@ -416,7 +418,7 @@ void GpuRenderer::compile_all_models(const Scene& scene) {
     Shape probe;
     for (const GlintModelInfo& m : glint_models()) {
         if (!gl::gpu_supports_model(m.id)) continue;
-        gl::ProgramKey key = program_key(scene, probe);
+        gl::ProgramKey key = program_key(scene, probe, false);
         key.model = m.id;
         impl_->program(key);
     }
@@ -488,7 +490,7 @@ void GpuRenderer::render(const Scene& scene) {
     for (size_t i = 0; i < r.shapes.size(); ++i) {
         const Shape& shape = scene.shapes[i];
         const GpuShape& g = r.shapes[i];
-        const GLuint p = r.program(program_key(scene, shape));
+        const GLuint p = r.program(program_key(scene, shape, r.noise_texture));
         auto loc = [&](const char* name) { return r.uniforms.location(p, name); };
         glProgramUniformMatrix4fv(p, loc("u_view_projection"), 1, GL_FALSE,
                                   glm::value_ptr(view_projection));
@@ -584,6 +586,10 @@ void GpuRenderer::set_environment(float scale, float rotation_deg) {
 
 bool GpuRenderer::has_environment() const {
     return static_cast<bool>(impl_->environment);
+}
+
+void GpuRenderer::set_deliot2023_noise_texture(bool on) {
+    impl_->noise_texture = on;
 }
 
 void GpuRenderer::set_shadows(bool on) {

@@ -62,6 +62,9 @@ class GpuRenderer {
     // initially those of the scene's map.
     void set_environment(float scale, float rotation_deg);
     bool has_environment() const;
+    // deliot2023 materials use the noise-texture variant (000 §6.3) instead
+    // of the hash (off by default, the CPU's choice).
+    void set_deliot2023_noise_texture(bool on);
     // Shadow maps (on by default).
     void set_shadows(bool on);
 

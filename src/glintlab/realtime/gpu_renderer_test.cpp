@@ -304,6 +304,37 @@ TEST_P(GpuShadows, MatchCpuShadowRays) {
 
 INSTANTIATE_TEST_SUITE_P(Lights, GpuShadows, ::testing::Values("directional", "point"));
 
+// deliot2023's noise-texture variant (000 §6.3): the uniforms of the gated
+// Gaussians come from 4096 precomputed pairs instead of hashes, a different
+// draw of the same statistics. On the PLANE scene (~1e5 glints in view) two
+// draws have the same mean to ~1%; the 8x8 block means hold ~100 glint
+// cells each, so they differ by ~10% (measured: 0.5% and 8.4%; hash-GPU vs
+// hash-CPU, also two draws, measured 0.8% and 4.5%). Limits: mean within
+// 3%, block means within 15%, and the pattern must differ (> 5% mismatching
+// pixels; measured 68%), or the texture was not used.
+TEST(GpuRenderer, Deliot2023NoiseTextureVariantHasTheHashStatistics) {
+    GLINTLAB_REQUIRE_GL();
+    const Scene scene = parse_scene(test_scene("plane", "deliot2023", 12.0f), "test:plane");
+    GpuRenderer renderer(scene);
+    renderer.render(scene);
+    const Image hashed = renderer.read_image();
+    renderer.set_deliot2023_noise_texture(true);
+    renderer.render(scene);
+    const Image noise = renderer.read_image();
+    const ImageAgreement a = compare_images(noise, hashed, 8, 0.02f, 0.1f);
+    RecordProperty("mean_rel", std::to_string(a.mean_relative_error));
+    RecordProperty("smoothed", std::to_string(a.smoothed_relative_l1));
+    RecordProperty("mismatch", std::to_string(a.mismatch_fraction));
+    EXPECT_LT(a.mean_relative_error, 0.03);
+    EXPECT_LT(a.smoothed_relative_l1, 0.15);
+    EXPECT_GT(a.mismatch_fraction, 0.05);
+    const std::vector<float> pairs = gl::deliot2023_noise_pairs();
+    ASSERT_EQ(pairs.size(), 8192u);
+    double mean = 0.0;
+    for (float v : pairs) mean += v;
+    EXPECT_NEAR(mean / 8192.0, 0.5, 0.01);  // uniform: sd of the mean 0.0032
+}
+
 TEST(GpuRenderer, ShaderErrorNamesTheSourceLine) {
     GLINTLAB_REQUIRE_GL();
     // Line 3 of the inline root calls a shared function with a wrong argument.

@@ -268,6 +268,7 @@ void run_viewer(Scene scene, const ViewerOptions& options) {
                                                 : options.screenshot;
     PassHistory shadow_ms, background_ms, forward_ms, bloom_ms, display_ms;
     bool shadows = true;
+    bool noise_texture = false;
     std::string status;
     int selected_material = 0;
     bool p_was_down = false;
@@ -352,6 +353,10 @@ void run_viewer(Scene scene, const ViewerOptions& options) {
                 MaterialDesc& m = scene.materials[static_cast<size_t>(selected_material)];
                 ImGui::Text("%s", m.name.c_str());
                 material_panel(m);
+                if (m.type == MaterialDesc::Type::Glint &&
+                    m.glint.model_id == GlintModelId::Deliot2023 &&
+                    ImGui::Checkbox("noise texture (000 6.3)", &noise_texture))
+                    renderer.set_deliot2023_noise_texture(noise_texture);
             }
             if (ImGui::CollapsingHeader("lights")) {
                 for (size_t i = 0; i < scene.lights.size(); ++i) {
