@@ -125,6 +125,9 @@ TEST_P(GpuVsCpu, SameViewAgrees) {
         const Image cpu = render_scene(scene, RenderOptions{1, true});
         const ImageAgreement a = compare_images(gpu, cpu, 8, 0.02f, 0.1f);
         ASSERT_GT(a.mean_b, 0.01);  // the view is lit
+        RecordProperty(which + "_mean_rel", std::to_string(a.mean_relative_error));
+        RecordProperty(which + "_smoothed", std::to_string(a.smoothed_relative_l1));
+        RecordProperty(which + "_mismatch", std::to_string(a.mismatch_fraction));
         EXPECT_LT(a.mean_relative_error, defect ? 0.10 : 0.03);
         EXPECT_LT(a.smoothed_relative_l1, defect ? 0.5 : 0.05);
         if (!defect) {
