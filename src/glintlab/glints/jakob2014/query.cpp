@@ -50,9 +50,9 @@ struct DirectionalSplit {
     // Model::kMaxFlatEdge, for the planar overlap), and D(m)(m·n) at its
     // vertices is within kUniformTolerance of its value at the centre.
     // Algorithm 2's test alone passes linear gradients (both rules are exact
-    // for them), and the line-12 fraction σ(T ∩ Ω)/σ(T) is then biased for a
-    // conic off the triangle's centre: measured 8 % low when the split
-    // schedule made triangles large (Jakob2014Ndf.SplitSchedule... test).
+    // for them), for which the line-12 fraction σ(T ∩ Ω)/σ(T) is biased when
+    // the conic sits off the triangle's centre. (A conservative tightening:
+    // its effect on the validated means was below their noise.)
     bool uniform[4];
     uint64_t child_id[4];
     double sigma[4];
