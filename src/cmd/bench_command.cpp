@@ -26,6 +26,8 @@ void add_bench_command(CLI::App& app, int* status) {
     sub->add_flag("--gpu", o->gpu,
                   "Time the OpenGL forward pass (GL_TIME_ELAPSED, headless EGL) instead of the CPU; "
                   "default resolution 1920x1080");
+    sub->add_flag("--noise-texture", o->gpu_noise_texture,
+                  "GPU: deliot2023 with its noise texture (000 6.3) instead of the hash");
     sub->add_option("--warmup", o->gpu_warmup, "GPU: untimed frames before the timed ones")
         ->check(CLI::Range(0, 1000));
     sub->callback([o, res, json, status] {
@@ -39,6 +41,7 @@ void add_bench_command(CLI::App& app, int* status) {
         } else if (o->gpu) {
             o->width = 1920, o->height = 1080;  // the resolution of 000 Table 1
         }
+        if (o->gpu_noise_texture && !o->gpu) fail("--noise-texture needs --gpu");
         const auto rows = run_table1(*o);
         if (*json)
             fmt::print("{}\n", table1_to_json(*o, rows).dump(2));

@@ -157,7 +157,10 @@ nlohmann::json table1_to_json(const Table1Options& o, const std::vector<Table1Ro
     j["benchmark"] = o.gpu ? "table1_gpu" : "table1_cpu";
     j["integrator"] = o.gpu ? "opengl_forward" : "direct";
 #if GLINTLAB_WITH_GL
-    if (o.gpu) j["device"] = gpu_bench_device();
+    if (o.gpu) {
+        j["device"] = gpu_bench_device();
+        j["deliot2023_noise_texture"] = o.gpu_noise_texture;
+    }
 #endif
     j["resolution"] = {o.width, o.height};
     j["frames"] = o.frames;

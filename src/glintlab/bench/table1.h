@@ -23,6 +23,7 @@ struct Table1Options {
     // `gpu_warmup` frames (realtime/gpu_bench.h).
     bool gpu = false;
     int gpu_warmup = 5;
+    bool gpu_noise_texture = false;  // deliot2023 rows: the 000 §6.3 noise-texture variant
 };
 
 struct Table1Row {

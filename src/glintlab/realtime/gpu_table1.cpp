@@ -34,6 +34,7 @@ std::vector<Table1Row> run_table1_gpu(const Table1Options& options,
                                                                   options.width, options.height),
                                                 "bench:" + scene_name);
                 GpuRenderer renderer(scene);
+                renderer.set_deliot2023_noise_texture(options.gpu_noise_texture);
                 for (int f = 0; f < options.gpu_warmup; ++f) {
                     renderer.render(scene);
                     (void)renderer.pass_times();
