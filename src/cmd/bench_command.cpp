@@ -23,9 +23,10 @@ void add_bench_command(CLI::App& app, int* status) {
     sub->add_option("--threads", o->threads, "Worker threads (0 = all cores)")
         ->check(CLI::Range(0, 1024));
     sub->add_flag("--json", *json, "Print one JSON object");
-    sub->add_flag("--gpu", o->gpu,
-                  "Time the OpenGL forward pass (GL_TIME_ELAPSED, headless EGL) instead of the CPU; "
-                  "default resolution 1920x1080");
+    sub->add_flag(
+        "--gpu", o->gpu,
+        "Time the OpenGL forward pass (GL_TIME_ELAPSED, headless EGL) instead of the CPU; "
+        "default resolution 1920x1080");
     sub->add_flag("--noise-texture", o->gpu_noise_texture,
                   "GPU: deliot2023 with its noise texture (000 6.3) instead of the hash");
     sub->add_option("--warmup", o->gpu_warmup, "GPU: untimed frames before the timed ones")

@@ -87,8 +87,12 @@ nlohmann::json table1_scene_json(const std::string& scene_name, const std::strin
                                  float log_density, int width, int height) {
     nlohmann::json j = scene_json(scene_name);
     j["film"] = {{"width", width}, {"height", height}};
-    j["materials"] = {{{"name", "g"}, {"type", "glint"}, {"model", model},
-                       {"ndf", "beckmann"}, {"roughness", 0.3}, {"log_density", log_density},
+    j["materials"] = {{{"name", "g"},
+                       {"type", "glint"},
+                       {"model", model},
+                       {"ndf", "beckmann"},
+                       {"roughness", 0.3},
+                       {"log_density", log_density},
                        {"fresnel", {{"type", "conductor"}, {"metal", "silver"}}}}};
     return j;
 }
@@ -166,8 +170,7 @@ nlohmann::json table1_to_json(const Table1Options& o, const std::vector<Table1Ro
     j["frames"] = o.frames;
     j["log_densities"] = o.log_densities;
     nlohmann::json arr = nlohmann::json::array();
-    for (const Table1Row& r : rows)
-    {
+    for (const Table1Row& r : rows) {
         nlohmann::json row = {{"scene", r.scene},
                               {"model", r.model},
                               {"min_ms", r.min_ms},
@@ -187,7 +190,8 @@ std::string table1_to_text(const Table1Options& o, const std::vector<Table1Row>&
     std::string s = fmt::format(
         "000 Table 1 {}, {}x{}, median of {} frames, min-max over "
         "log_density {}\n",
-        o.gpu ? "on the GPU: OpenGL forward pass (GL_TIME_ELAPSED)" : "on the CPU: direct integrator",
+        o.gpu ? "on the GPU: OpenGL forward pass (GL_TIME_ELAPSED)"
+              : "on the CPU: direct integrator",
         o.width, o.height, o.frames, fmt::join(o.log_densities, ", "));
     s += fmt::format("{:<14} {:<14} {:>10} {:>10} {:>14}\n", "scene", "model", "min ms", "max ms",
                      "max/smooth min");
