@@ -26,8 +26,10 @@ void add_view_command(CLI::App& app, int* status) {
         ->check(CLI::ExistingFile);
     sub->add_option("--frames", a->frames, "Close after N frames (scripted use; 0 = until closed)")
         ->check(CLI::Range(0, 1000000));
-    sub->add_option("--screenshot", a->screenshot,
-                    "PNG written after the last of --frames (and the target of the P key)");
+    sub->add_option(
+        "--screenshot", a->screenshot,
+        "PNG of the rendered frame: written after the last of --frames, and by the P key "
+        "(default glintlab_screenshot.png)");
     sub->add_option("--window-screenshot", a->window_screenshot,
                     "PNG of the whole window (panel included) after the last of --frames");
     sub->add_option("--res", a->res, "Window size WxH (overrides the scene's film)");
@@ -49,8 +51,8 @@ void add_view_command(CLI::App& app, int* status) {
             scene.camera.width = w, scene.camera.height = h;
         }
         if (a->exposure) scene.film.exposure = *a->exposure;
-        if ((!a->screenshot.empty() || !a->window_screenshot.empty()) && a->frames == 0)
-            fail("--screenshot and --window-screenshot need --frames N (taken after frame N)");
+        if (!a->window_screenshot.empty() && a->frames == 0)
+            fail("--window-screenshot needs --frames N (taken after frame N)");
         ViewerOptions o;
         o.frames = a->frames;
         o.screenshot = a->screenshot;
