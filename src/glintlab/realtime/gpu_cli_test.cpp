@@ -129,6 +129,15 @@ TEST(GpuCli, MissingEnvironmentMapIsAClearError) {
     EXPECT_NE(r.output.find("no_such_sky.exr"), std::string::npos) << r.output;
 }
 
+TEST(GpuCli, ViewWithoutADisplayIsAClearError) {
+    testing::ScratchDir dir;
+    std::ofstream(dir / "s.json") << small_scene().dump();
+    const RunResult r = run("env -u DISPLAY -u WAYLAND_DISPLAY " + cli() + " view " +
+                            (dir / "s.json").string() + " --frames 1");
+    EXPECT_EQ(r.status, 1) << r.output;
+    EXPECT_NE(r.output.find("cannot initialise GLFW (no display?"), std::string::npos) << r.output;
+}
+
 TEST(GpuCli, UnknownEglPlatformIsAClearError) {
     testing::ScratchDir dir;
     std::ofstream(dir / "s.json") << small_scene().dump();
