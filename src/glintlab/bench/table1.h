@@ -35,6 +35,8 @@ struct Table1Row {
     // the time to trust on software rasterisers whose timer queries do not
     // cover the deferred rasterisation (docs/BENCHMARKS.md).
     std::vector<double> frame_ms_per_density;
+    // GPU only: median GL_TIME_ELAPSED of the other passes per density.
+    std::vector<double> shadow_ms_per_density, background_ms_per_density;
 };
 
 // PLANE_90, PLANE_25, HEIGHTMAP_90, HEIGHTMAP_25, SPHERE, MONKEY (the

@@ -39,7 +39,7 @@ std::vector<Table1Row> run_table1_gpu(const Table1Options& options,
                     renderer.render(scene);
                     (void)renderer.pass_times();
                 }
-                std::vector<double> ms, frame_ms;
+                std::vector<double> ms, frame_ms, shadow_ms, background_ms;
                 for (int f = 0; f < options.frames; ++f) {
                     const auto t0 = std::chrono::steady_clock::now();
                     renderer.render(scene);
@@ -47,8 +47,13 @@ std::vector<Table1Row> run_table1_gpu(const Table1Options& options,
                     frame_ms.push_back(std::chrono::duration<double, std::milli>(
                                            std::chrono::steady_clock::now() - t0)
                                            .count());
-                    ms.push_back(renderer.pass_times().forward_ms);
+                    const GpuPassTimes t = renderer.pass_times();
+                    ms.push_back(t.forward_ms);
+                    shadow_ms.push_back(t.shadow_ms);
+                    background_ms.push_back(t.background_ms);
                 }
+                row.shadow_ms_per_density.push_back(gl::timing_stats(shadow_ms).median_ms);
+                row.background_ms_per_density.push_back(gl::timing_stats(background_ms).median_ms);
                 row.frame_ms_per_density.push_back(gl::timing_stats(frame_ms).median_ms);
                 const gl::TimingStats s = gl::timing_stats(ms);
                 row.ms_per_density.push_back(s.median_ms);
