@@ -421,6 +421,10 @@ void GpuRenderer::compile_all_models(const Scene& scene) {
         gl::ProgramKey key = program_key(scene, probe, false);
         key.model = m.id;
         impl_->program(key);
+        if (m.id == GlintModelId::Deliot2023) {
+            key.noise_texture = true;
+            impl_->program(key);
+        }
     }
 }
 

@@ -69,7 +69,7 @@ class GpuRenderer {
     void set_shadows(bool on);
 
     // Compiles (once) the program of every glint model the GPU supports with
-    // the light set of `scene`; used by tests and by the viewer's switcher.
+    // the light set of `scene` (and deliot2023's noise-texture variant).
     void compile_all_models(const Scene& scene);
 
   private:

@@ -82,11 +82,26 @@ TEST(GpuGeometry, TriangleDpduInvertsTheUvMapping) {
     EXPECT_NEAR(dpdu.z, 0.0f, 1e-6f);
 }
 
+// Every model's program compiles and links (llvmpipe in CI) for the light
+// sets of the test scenes: 1 point + 1 directional; no lights; 2 point (one a
+// sphere light) + 2 directional + an environment.
 TEST(GpuRenderer, EveryModelProgramCompilesAndLinks) {
     GLINTLAB_REQUIRE_GL();
-    const Scene scene = parse_scene(test_scene("plane", "smooth", 10.0f), "test:plane");
-    GpuRenderer renderer(scene);
-    EXPECT_NO_THROW(renderer.compile_all_models(scene));
+    nlohmann::json plain = test_scene("plane", "smooth", 10.0f);
+    nlohmann::json dark = plain;
+    dark["lights"] = nlohmann::json::array();
+    nlohmann::json many = plain;
+    many["lights"].push_back(
+        {{"type", "directional"}, {"direction", {0, 1, 0}}, {"irradiance", 0.5}});
+    many["lights"].push_back(
+        {{"type", "sphere"}, {"center", {0, 3, 0}}, {"radius", 0.2}, {"radiance", 5.0}});
+    many["lights"].push_back({{"type", "environment"}, {"radiance", {0.1, 0.2, 0.3}}});
+    for (const nlohmann::json& j : {plain, dark, many}) {
+        const Scene scene = parse_scene(j, "test:plane");
+        SCOPED_TRACE(scene.lights.size());
+        GpuRenderer renderer(scene);
+        EXPECT_NO_THROW(renderer.compile_all_models(scene));
+    }
 }
 
 // CPU `direct` vs GPU at 128x128 (docs/VALIDATION.md "CPU vs GPU"): same
