@@ -193,7 +193,16 @@ void material_panel(MaterialDesc& m) {
 
 // The window's back buffer as displayed (sRGB bytes), decoded to linear so
 // write_png encodes it back unchanged.
+// Creates the parent directory of a screenshot path if needed.
+void make_parent(const std::filesystem::path& path) {
+    if (path.parent_path().empty()) return;
+    std::error_code ec;
+    std::filesystem::create_directories(path.parent_path(), ec);
+    if (ec) fail("{}: cannot create the directory: {}", path.parent_path().string(), ec.message());
+}
+
 void write_window(int w, int h, const std::filesystem::path& path) {
+    make_parent(path);
     std::vector<unsigned char> rgba(static_cast<size_t>(w) * h * 4);
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     glReadBuffer(GL_BACK);
@@ -211,6 +220,7 @@ void write_window(int w, int h, const std::filesystem::path& path) {
 
 void write_screenshot(const GpuRenderer& renderer, const Scene& scene,
                       const std::filesystem::path& path) {
+    make_parent(path);
     const Image image = renderer.read_image();
     const Image preview =
         scene.film.bloom.strength > 0.0f ? apply_bloom(image, scene.film.bloom) : image;
