@@ -13,7 +13,6 @@
 #include <backends/imgui_impl_opengl3.h>
 #include <fmt/format.h>
 #include <imgui.h>
-#include <glm/gtc/quaternion.hpp>
 
 #include "glintlab/core/bloom.h"
 #include "glintlab/core/error.h"
@@ -26,6 +25,7 @@
 #include "glintlab/realtime/gpu_bloom.h"
 #include "glintlab/realtime/gpu_renderer.h"
 #include "glintlab/realtime/gpu_timer.h"
+#include "glintlab/realtime/orbit_camera.h"
 
 namespace glintlab {
 namespace {
@@ -72,32 +72,6 @@ struct OrbitState {
 
 void scroll_callback(GLFWwindow* window, double, double dy) {
     static_cast<OrbitState*>(glfwGetWindowUserPointer(window))->scroll += dy;
-}
-
-// Orbit camera about camera.target: left drag rotates (about camera.up, then
-// about the right axis, never across the poles), right drag pans, the wheel
-// dollies.
-void orbit(Camera& c, glm::vec2 drag_left, glm::vec2 drag_right, double scroll) {
-    glm::vec3 offset = c.eye - c.target;
-    const float radius = glm::length(offset);
-    if (!(radius > 0.0f)) return;
-    const glm::vec3 up = glm::normalize(c.up);
-    if (drag_left != glm::vec2(0.0f)) {
-        offset = glm::angleAxis(-0.01f * drag_left.x, up) * offset;
-        const glm::vec3 right = glm::normalize(glm::cross(-offset, up));
-        const glm::vec3 tilted = glm::angleAxis(-0.01f * drag_left.y, right) * offset;
-        const float cos_pole = glm::dot(glm::normalize(tilted), up);
-        if (std::abs(cos_pole) < 0.995f) offset = tilted;
-    }
-    if (drag_right != glm::vec2(0.0f)) {
-        const glm::vec3 forward = -glm::normalize(offset);
-        const glm::vec3 right = glm::normalize(glm::cross(forward, up));
-        const glm::vec3 cam_up = glm::cross(right, forward);
-        const glm::vec3 pan = (-drag_right.x * right + drag_right.y * cam_up) * (0.0015f * radius);
-        c.target += pan;
-    }
-    if (scroll != 0.0) offset *= static_cast<float>(std::pow(0.9, scroll));
-    c.eye = c.target + offset;
 }
 
 std::string light_label(const Light& light, size_t i) {
@@ -302,8 +276,8 @@ void run_viewer(Scene scene, const ViewerOptions& options) {
             const bool left = glfwGetMouseButton(glfw.window, GLFW_MOUSE_BUTTON_LEFT) == GLFW_PRESS;
             const bool right =
                 glfwGetMouseButton(glfw.window, GLFW_MOUSE_BUTTON_RIGHT) == GLFW_PRESS;
-            orbit(scene.camera, left ? delta : glm::vec2(0.0f), right ? delta : glm::vec2(0.0f),
-                  orbit_state.scroll);
+            orbit_camera(scene.camera, left ? delta : glm::vec2(0.0f),
+                         right ? delta : glm::vec2(0.0f), orbit_state.scroll);
         }
         orbit_state.scroll = 0.0;
         const bool p_down = glfwGetKey(glfw.window, GLFW_KEY_P) == GLFW_PRESS;
