@@ -1,0 +1,18 @@
+// Parameters of the explicit ground-truth model (its block "explicit": {...}
+// of a glint material; ranges justified in docs/MODELS.md, section explicit).
+#pragma once
+
+namespace glintlab {
+
+struct ExplicitParams {
+    // Half-angle γ of the query cone that delta lights (point, delta
+    // directional) are spread over (002 §3.1: "a constant γ between 0.5 and 6
+    // degrees in our scenes"), degrees.
+    float gamma_deg = 1.0f;
+    // Expected facets per pixel footprint above which shading fails with an
+    // error instead of enumerating for minutes (docs/BENCHMARKS.md: ~20-40 ns
+    // per facet, so 1e6 facets ~ 30 ms per shading call).
+    double max_facets_per_footprint = 1e6;
+};
+
+}  // namespace glintlab
