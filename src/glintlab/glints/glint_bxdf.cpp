@@ -2,6 +2,7 @@
 
 #include "glintlab/glints/chermain2020/chermain2020.h"
 #include "glintlab/glints/deliot2023/deliot2023.h"
+#include "glintlab/glints/explicit/explicit_model.h"
 #include "glintlab/glints/kneiphof2025/kneiphof2025.h"
 #include "glintlab/glints/jakob2014/jakob2014.h"
 #include "glintlab/glints/zirr2016/zirr2016.h"
@@ -36,6 +37,7 @@ float GlintBxdf::footprint_ndf(glm::vec3 wo, glm::vec3 wi, glm::vec3 h) const {
         // Models still being built render their smooth limit until their
         // registry row exists (the scene loader cannot select them before).
         case GlintModelId::Explicit:
+            return explicit_footprint_ndf(wo, wi, footprint, *desc);
         case GlintModelId::Wang2020:
             break;
         case GlintModelId::Kneiphof2025:

@@ -7,6 +7,7 @@
 
 #include "glintlab/glints/chermain2020/chermain2020_params.h"
 #include "glintlab/glints/deliot2023/deliot2023_params.h"
+#include "glintlab/glints/explicit/explicit_params.h"
 #include "glintlab/glints/jakob2014/jakob2014_params.h"
 #include "glintlab/glints/kneiphof2025/kneiphof2025_params.h"
 #include "glintlab/glints/zirr2016/zirr2016_params.h"
@@ -17,6 +18,6 @@ struct SmoothParams {};  // `smooth` has no parameters of its own
 
 using GlintModelParams =
     std::variant<SmoothParams, Deliot2023Params, Zirr2016Params, Chermain2020Params,
-                 Jakob2014Params, Kneiphof2025Params>;
+                 Jakob2014Params, Kneiphof2025Params, ExplicitParams>;
 
 }  // namespace glintlab

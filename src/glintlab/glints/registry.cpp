@@ -2,6 +2,7 @@
 
 #include "glintlab/glints/chermain2020/chermain2020.h"
 #include "glintlab/glints/deliot2023/deliot2023.h"
+#include "glintlab/glints/explicit/explicit_model.h"
 #include "glintlab/glints/kneiphof2025/kneiphof2025.h"
 #include "glintlab/glints/jakob2014/jakob2014.h"
 #include "glintlab/glints/zirr2016/zirr2016.h"
@@ -34,6 +35,11 @@ const GlintModelInfo kModels[] = {
     {GlintModelId::Chermain2020, "chermain2020",
      "multiscale SDF dictionary over a MIP hierarchy (Chermain et al. 2020)", true, true, false,
      false, read_chermain2020_params},
+    // Ground truth: enumerates the footprint's mirror facets and shades every
+    // light itself (explicit_model.h); D_P for GlintBxdf from its γ-cone count.
+    {GlintModelId::Explicit, "explicit",
+     "ground truth: explicitly enumerated mirror microfacets (002 Sec. 3.1, 003 Sec. 3.2)", true,
+     true, true, true, read_explicit_params, explicit_shades_light, explicit_light_radiance},
     // Every light (002 §3.1, §4): a BRDF over the γ cone; extended lights and
     // environments through light sampling + MIS with its importance sampling.
     {GlintModelId::Jakob2014, "jakob2014",

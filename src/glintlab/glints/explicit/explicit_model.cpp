@@ -1,0 +1,143 @@
+#include "glintlab/glints/explicit/explicit_model.h"
+
+#include <cmath>
+#include <limits>
+#include <numbers>
+#include <variant>
+
+#include "glintlab/core/error.h"
+#include "glintlab/glints/glint_bxdf.h"
+#include "glintlab/glints/glint_lighting.h"
+#include "glintlab/scene/environment.h"
+#include "glintlab/scene/json_reader.h"
+#include "glintlab/scene/scene.h"
+
+namespace glintlab {
+namespace {
+
+const ExplicitParams& params_of(const GlintDesc& desc) {
+    static const ExplicitParams kDefaults;
+    const auto* p = std::get_if<ExplicitParams>(&desc.params);
+    return p != nullptr ? *p : kDefaults;
+}
+
+// A cone of directions (world space) with uniform radiance.
+struct Cone {
+    glm::vec3 axis;
+    float cos_max;
+    glm::vec3 radiance;
+};
+
+glm::vec3 cone_radiance(const GlintLightingContext& ctx, const Cone& cone) {
+    const GlintDesc& desc = *ctx.desc;
+    const ExplicitFacetField field = explicit_field(desc);
+    const double area = explicit_footprint_area(ctx.footprint);
+    if (!(area > 0.0)) return glm::vec3(0.0f);
+    const glm::vec3 axis = ctx.to_local(cone.axis);
+    GlintBxdf bxdf;
+    bxdf.desc = &desc;
+    glm::dvec3 sum(0.0);
+    for_each_explicit_facet(field, ctx.footprint, [&](const ExplicitFacet& f) {
+        glm::vec3 r;
+        const float w = explicit_facet_weight(field, ctx.wo, f.m, r);
+        if (w <= 0.0f || glm::dot(r, axis) < cone.cos_max) return;
+        sum += glm::dvec3(w * bxdf.fresnel(glm::dot(ctx.wo, f.m)));
+    });
+    if (sum == glm::dvec3(0.0)) return glm::vec3(0.0f);
+    const double n = double(explicit_facets_per_tile(field));
+    return desc.color * cone.radiance * glm::vec3(sum / (n * area));
+}
+
+}  // namespace
+
+ExplicitFacetField explicit_field(const GlintDesc& desc) {
+    ExplicitFacetField f;
+    f.ndf = desc.ndf;
+    f.alpha_x = desc.alpha_x;
+    f.alpha_y = desc.alpha_y;
+    f.log_density = desc.log_density;
+    f.seed = desc.seed;
+    f.max_facets_per_footprint = params_of(desc).max_facets_per_footprint;
+    return f;
+}
+
+float explicit_gamma_rad(const GlintDesc& desc) {
+    return params_of(desc).gamma_deg * std::numbers::pi_v<float> / 180.0f;
+}
+
+float explicit_footprint_ndf(glm::vec3 wo, glm::vec3 wi, const Footprint& footprint,
+                             const GlintDesc& desc) {
+    return explicit_footprint_ndf(explicit_field(desc), footprint, wo, wi,
+                                  explicit_gamma_rad(desc));
+}
+
+bool explicit_shades_light(const GlintDesc&, const Scene&, int) {
+    return true;  // every light type (explicit_model.h)
+}
+
+glm::vec3 explicit_light_radiance(const GlintLightingContext& ctx, int light) {
+    const Light& l = ctx.scene->lights[static_cast<size_t>(light)];
+    const GlintDesc& desc = *ctx.desc;
+    if (ctx.wo.z <= 0.0f) return glm::vec3(0.0f);
+    const float inf = std::numeric_limits<float>::infinity();
+    if (const auto* e = std::get_if<EnvironmentLight>(&l)) {
+        GlintBxdf bxdf;
+        bxdf.desc = &desc;
+        const EnvironmentMap& map = *e->map;
+        const glm::vec3 L = explicit_environment_radiance(
+            explicit_field(desc), ctx.footprint, ctx.wo,
+            [&](glm::vec3 r) { return map.eval(ctx.to_world(r)); },
+            [&](float cos_om) { return bxdf.fresnel(cos_om); });
+        return desc.color * L;
+    }
+    if (const auto* s = std::get_if<SphereLight>(&l)) {
+        const glm::vec3 d = s->center - ctx.p;
+        const float dist = glm::length(d);
+        if (!(dist > s->radius)) return glm::vec3(0.0f);
+        const glm::vec3 axis = d / dist;
+        if (ctx.visible && !ctx.visible(axis, (dist - s->radius) * (1.0f - 1e-4f)))
+            return glm::vec3(0.0f);
+        const float sin_max = s->radius / dist;
+        return cone_radiance(
+            ctx, {axis, std::sqrt(std::max(0.0f, 1.0f - sin_max * sin_max)), s->radiance});
+    }
+    const float gamma = explicit_gamma_rad(desc);
+    const float sigma = float(explicit_cone_solid_angle(gamma));
+    if (const auto* dl = std::get_if<DirectionalLight>(&l)) {
+        const glm::vec3 axis = glm::normalize(dl->direction);
+        if (ctx.visible && !ctx.visible(axis, inf)) return glm::vec3(0.0f);
+        if (dl->solid_angle > 0.0f) return cone_radiance(ctx, {axis, dl->cos_max, dl->radiance});
+        return cone_radiance(ctx, {axis, std::cos(gamma), dl->irradiance / sigma});
+    }
+    if (const auto* pl = std::get_if<PointLight>(&l)) {
+        const glm::vec3 d = pl->position - ctx.p;
+        const float dist2 = glm::dot(d, d);
+        if (!(dist2 > 0.0f)) return glm::vec3(0.0f);
+        const float dist = std::sqrt(dist2);
+        const glm::vec3 axis = d / dist;
+        if (ctx.visible && !ctx.visible(axis, dist * (1.0f - 1e-4f))) return glm::vec3(0.0f);
+        return cone_radiance(ctx, {axis, std::cos(gamma), pl->intensity / (dist2 * sigma)});
+    }
+    return glm::vec3(0.0f);
+}
+
+void read_explicit_params(JsonObject& block, GlintDesc& desc) {
+    ExplicitParams p;
+    // 002 §3.1: "a constant γ between 0.5 and 6 degrees in our scenes".
+    p.gamma_deg = float(block.number("gamma_deg", p.gamma_deg, 0.5, 6.0));
+    p.max_facets_per_footprint =
+        block.number("max_facets_per_footprint", p.max_facets_per_footprint, 1.0, 1e9);
+    block.finish();
+    if (!(desc.log_density >= 0.0f && desc.log_density <= 30.0f)) {
+        std::string parent = block.path();
+        const size_t slash = parent.rfind('/');
+        if (slash != std::string::npos) parent.resize(slash);
+        fail(
+            "{}: {}/log_density: {} is out of range for the explicit model: [0, 30] (N = "
+            "e^log_density facets per unit uv area are enumerated one by one)",
+            block.file(), parent, desc.log_density);
+    }
+    desc.params = p;
+}
+
+}  // namespace glintlab
