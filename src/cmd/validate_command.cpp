@@ -7,6 +7,7 @@
 #include "glintlab/counting/validate_counting.h"
 #include "glintlab/glints/chermain2020/validate_chermain2020.h"
 #include "glintlab/glints/deliot2023/validate_deliot2023.h"
+#include "glintlab/glints/explicit/validate_explicit.h"
 #include "glintlab/glints/kneiphof2025/validate_kneiphof2025.h"
 #include "glintlab/glints/jakob2014/validate_jakob2014.h"
 #include "glintlab/glints/zirr2016/validate_zirr2016.h"
@@ -43,6 +44,12 @@ const std::map<std::string, SuiteRunner>& suites() {
              Deliot2023ValidationOptions o;
              o.seed = static_cast<uint64_t>(a.seed);
              return validate_deliot2023(o);
+         }},
+        {"explicit",
+         [](const ValidateArgs& a) {
+             ExplicitValidationOptions o;
+             o.seed = static_cast<uint64_t>(a.seed);
+             return validate_explicit(o);
          }},
         {"jakob2014",
          [](const ValidateArgs& a) {
