@@ -1,0 +1,158 @@
+#include "glintlab/glints/wang2020/wang2020_prefilter.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+
+#include "glintlab/core/error.h"
+#include "glintlab/glints/wang2020/wang2020_beckmann.h"
+
+namespace glintlab::wang2020 {
+
+namespace {
+constexpr double kTwoPi = 2.0 * kPi;
+constexpr double kHalfPi = 0.5 * kPi;
+
+void cell(double x, int n, bool periodic, int& i0, int& i1, double& f) {
+    if (periodic) {
+        x -= std::floor(x / n) * n;
+        i0 = std::min(static_cast<int>(x), n - 1);
+        i1 = (i0 + 1) % n;
+        f = x - i0;
+    } else {
+        x = std::clamp(x, 0.0, static_cast<double>(n - 1));
+        i0 = std::min(static_cast<int>(x), n - 1);
+        i1 = std::min(i0 + 1, n - 1);
+        f = x - i0;
+    }
+}
+}  // namespace
+
+PrefilterResolution default_prefilter_resolution(double alpha) {
+    // Table 2 lists two resolutions: α = 0.1 (Shoe) and α = 0.5 (Snow,
+    // Cloth). Smooth lobes need fewer samples; we switch at α = 0.3.
+    if (alpha < 0.3) return {31, 60, 10, 36};
+    return {10, 18, 4, 12};
+}
+
+void tangent_frame(const glm::dvec3& n, glm::dvec3& t, glm::dvec3& b) {
+    const double s = n.z >= 0.0 ? 1.0 : -1.0;
+    const double a = -1.0 / (s + n.z);
+    const double c = n.x * n.y * a;
+    t = {1.0 + s * n.x * n.x * a, s * c, -s * n.x};
+    b = {c, s + n.y * n.y * a, -n.y};
+}
+
+double m_term(const glm::dvec3& wi, const glm::dvec3& wo, double alpha) {
+    if (wi.z <= 0.0 || wo.z <= 0.0) return 0.0;
+    const glm::dvec3 h = glm::normalize(wi + wo);
+    if (h.z <= 0.0) return 0.0;
+    return glm::dot(wi, h) * beckmann_G2(wi.z, wo.z, alpha) / (h.z * wo.z);
+}
+
+glm::dvec4 PrefilterTable::evaluate(const DpfTable& dpf, double alpha, const EnvironmentFn& env,
+                                    const glm::dvec3& n, const glm::dvec3& o, int K) {
+    glm::dvec3 t, b;
+    tangent_frame(n, t, b);
+    auto to_world = [&](const glm::dvec3& v) { return v.x * t + v.y * b + v.z * n; };
+    glm::dvec3 lo(0.0);
+    const int side = std::max(1, static_cast<int>(std::lround(std::sqrt(K))));
+    const int k_used = side * side;
+    for (int sy = 0; sy < side; ++sy) {
+        for (int sx = 0; sx < side; ++sx) {
+            const double u1 = (sx + 0.5) / side, u2 = (sy + 0.5) / side;
+            // Beckmann: tan²θh = −α² ln(1 − u1).
+            const double tan2 = -alpha * alpha * std::log(1.0 - u1);
+            const double ch = 1.0 / std::sqrt(1.0 + tan2);
+            const glm::dvec3 h = spherical_dir(std::acos(ch), kTwoPi * u2);
+            const double oh = glm::dot(o, h);
+            if (oh <= 0.0) continue;
+            const glm::dvec3 i = 2.0 * oh * h - o;
+            if (i.z <= 0.0) continue;
+            const double pdf = beckmann_D(h.z, alpha) * h.z / (4.0 * oh);
+            if (!(pdf > 0.0)) continue;
+            const glm::dvec3 li = glm::dvec3(env(to_world(i)));
+            lo += li * (dpf.lookup(i, o) * m_term(i, o, alpha) / (pdf * k_used));  // Eq. 16
+        }
+    }
+    // Eq. 17: B = 36 × 9 uniform (equal solid angle) hemisphere strata.
+    double p_avg = 0.0;
+    constexpr int kPhi = 36, kTheta = 9;
+    for (int a = 0; a < kTheta; ++a) {
+        const double cos_t = 1.0 - (a + 0.5) / kTheta;  // uniform in cos θ
+        for (int p = 0; p < kPhi; ++p) {
+            const glm::dvec3 i = spherical_dir(std::acos(cos_t), (p + 0.5) / kPhi * kTwoPi);
+            p_avg += kTwoPi * dpf.lookup(i, o) / (kPhi * kTheta);
+        }
+    }
+    return {lo, p_avg};
+}
+
+PrefilterTable::PrefilterTable(const DpfTable& dpf, double alpha, double /*gamma_rad*/,
+                               const EnvironmentFn& env, PrefilterResolution res, int K)
+    : res_(res) {
+    if (res.theta_n < 2 || res.phi_n < 2 || res.theta_o < 2 || res.phi_o < 2)
+        fail("wang2020: prefilter resolution {}x{}x{}x{} must be at least 2 everywhere",
+             res.theta_n, res.phi_n, res.theta_o, res.phi_o);
+    if (K < 1 || K > 4096) fail("wang2020: prefilter sample count K={} outside [1, 4096]", K);
+    const auto t0 = std::chrono::steady_clock::now();
+    data_.resize(static_cast<size_t>(res.theta_n) * res.phi_n * res.theta_o * res.phi_o);
+    size_t k = 0;
+    for (int a = 0; a < res.theta_n; ++a)
+        for (int b = 0; b < res.phi_n; ++b) {
+            const glm::dvec3 n =
+                spherical_dir((a + 0.5) / res.theta_n * kPi, (b + 0.5) / res.phi_n * kTwoPi);
+            for (int c = 0; c < res.theta_o; ++c)
+                for (int d = 0; d < res.phi_o; ++d) {
+                    const glm::dvec3 o = spherical_dir((c + 0.5) / res.theta_o * kHalfPi,
+                                                       (d + 0.5) / res.phi_o * kTwoPi);
+                    data_[k++] = glm::vec4(evaluate(dpf, alpha, env, n, o, K));
+                }
+        }
+    build_seconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
+glm::dvec4 PrefilterTable::texel(int tn, int pn, int to, int po) const {
+    return glm::dvec4(
+        data_[((static_cast<size_t>(tn) * res_.phi_n + pn) * res_.theta_o + to) * res_.phi_o + po]);
+}
+
+glm::dvec4 PrefilterTable::lookup(const glm::dvec3& n, const glm::dvec3& o_world) const {
+    const double tn = std::acos(std::clamp(n.z, -1.0, 1.0));
+    const double pn = std::atan2(n.y, n.x);
+    int a0, a1, b0, b1;
+    double fa, fb;
+    cell(tn / kPi * res_.theta_n - 0.5, res_.theta_n, false, a0, a1, fa);
+    cell(pn / kTwoPi * res_.phi_n - 0.5, res_.phi_n, true, b0, b1, fb);
+    glm::dvec4 sum(0.0);
+    // For each neighbouring normal texel, express o in that texel's own
+    // tangent frame (the frame the texel was prefiltered in).
+    const int an[2] = {a0, a1}, bn[2] = {b0, b1};
+    const double wa[2] = {1.0 - fa, fa}, wb[2] = {1.0 - fb, fb};
+    for (int i = 0; i < 2; ++i)
+        for (int j = 0; j < 2; ++j) {
+            const double w = wa[i] * wb[j];
+            if (w == 0.0) continue;
+            const glm::dvec3 nc = spherical_dir((an[i] + 0.5) / res_.theta_n * kPi,
+                                                (bn[j] + 0.5) / res_.phi_n * kTwoPi);
+            glm::dvec3 t, b;
+            tangent_frame(nc, t, b);
+            const glm::dvec3 ol{glm::dot(o_world, t), glm::dot(o_world, b),
+                                std::max(glm::dot(o_world, nc), 0.0)};
+            const double to =
+                std::acos(std::clamp(ol.z / std::max(glm::length(ol), 1e-12), 0.0, 1.0));
+            const double po = std::atan2(ol.y, ol.x);
+            int c0, c1, d0, d1;
+            double fc, fd;
+            cell(to / kHalfPi * res_.theta_o - 0.5, res_.theta_o, false, c0, c1, fc);
+            cell(po / kTwoPi * res_.phi_o - 0.5, res_.phi_o, true, d0, d1, fd);
+            const glm::dvec4 v =
+                (1 - fc) *
+                    ((1 - fd) * texel(an[i], bn[j], c0, d0) + fd * texel(an[i], bn[j], c0, d1)) +
+                fc * ((1 - fd) * texel(an[i], bn[j], c1, d0) + fd * texel(an[i], bn[j], c1, d1));
+            sum += w * v;
+        }
+    return sum;
+}
+
+}  // namespace glintlab::wang2020

@@ -1,0 +1,67 @@
+// Spatial quadtree of particle counts (001 §4.4 "Spatial Tree Construction"):
+// the N particles of one uv tile [0,1)² are split among the four children of
+// each node by a multinomial draw (as in [JHY*14], 002 §3.4), down to a fixed
+// depth (11 in the paper, §6).
+//
+// Compact storage (the paper's two float4 per node — id, count, depth, child
+// count, AABB — cost 256 MB, Table 2): only non-empty nodes are stored, 8
+// bytes each: the index of the first stored child and the particle count with
+// a 4-bit child-occupancy mask. Node id, depth and AABB are implicit in the
+// traversal. Particle positions inside a leaf and their random thresholds
+// λ(x_k) (Eq. 7) are hashes of (leaf id, particle index), as in WWH18.
+#pragma once
+
+#include <cstdint>
+#include <functional>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+namespace glintlab::wang2020 {
+
+struct QuadtreeNode {
+    uint32_t first_child;  // index into nodes(); children stored contiguously
+    uint32_t count_mask;   // bits 0..27: particle count, 28..31: child mask
+    uint32_t count() const { return count_mask & 0x0FFFFFFFu; }
+    uint32_t mask() const { return count_mask >> 28; }
+};
+
+struct Particle {
+    glm::dvec2 uv;  // inside the tile [0,1)²
+    double lambda;  // λ(x_k) ∈ [0,1), Eq. 7
+};
+
+class ParticleQuadtree {
+  public:
+    // particles ∈ [1, 2^28 − 1], depth ∈ [1, 16] (glintlab::Error otherwise).
+    ParticleQuadtree(uint64_t particles, int depth, uint32_t seed);
+
+    uint64_t particles() const { return particles_; }
+    int depth() const { return depth_; }
+    const std::vector<QuadtreeNode>& nodes() const { return nodes_; }
+    size_t memory_bytes() const { return nodes_.size() * sizeof(QuadtreeNode); }
+    double build_seconds() const { return build_seconds_; }
+
+    // Σ_k 1_A(x_k) for the axis-aligned uv rectangle A = [lo, hi] (uv may
+    // leave the tile: the tile repeats periodically). Exact: leaves cut by the
+    // border are resolved particle by particle.
+    uint64_t count(glm::dvec2 lo, glm::dvec2 hi) const;
+    // Calls fn for every particle inside A (micro-scale traversal, §4.3).
+    void for_each(glm::dvec2 lo, glm::dvec2 hi,
+                  const std::function<void(const Particle&)>& fn) const;
+
+    // Particle k of the leaf at (x, y) on the finest level.
+    Particle leaf_particle(uint32_t x, uint32_t y, uint32_t k) const;
+
+  private:
+    template <typename Visit>
+    void traverse(glm::dvec2 lo, glm::dvec2 hi, Visit&& visit) const;
+
+    uint64_t particles_;
+    int depth_;
+    uint32_t seed_;
+    std::vector<QuadtreeNode> nodes_;
+    double build_seconds_ = 0.0;
+};
+
+}  // namespace glintlab::wang2020

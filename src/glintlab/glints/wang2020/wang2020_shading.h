@@ -1,0 +1,90 @@
+// Three-scale glint shading of 001 §4.3 (environment: Eqs. 18–20; point and
+// directional lights: Eq. 21) on top of the DPF tables, the prefiltered
+// environment tables and the particle quadtree.
+//
+// Footprint: the axis-aligned uv bounding box A of the pixel footprint, in
+// units of the particle tile (N particles per unit uv square, tile repeats).
+// a(A) is its area; the expected particle count is N a(A) (§4.4 "Glint
+// Rendering": the footprint area estimates the count), which selects
+//   micro (< 4):  Eq. 20 — traverse, accept particle k iff λ(x_k) < P̂ (the
+//                 Heaviside H of Eq. 8 is read as "accepted with probability
+//                 P̂"; the printed argument order λ − P̂ would accept with
+//                 probability 1 − P̂ and break Eq. 19's expectation);
+//   meso (4–64):  Eq. 18 — exact count from the quadtree, no acceptance test;
+//   macro (> 64): count ≈ N a(A): Lo = L̂o / σ(Ωo).
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <optional>
+
+#include <glm/glm.hpp>
+
+#include "glintlab/glints/wang2020/wang2020_dpf.h"
+#include "glintlab/glints/wang2020/wang2020_prefilter.h"
+#include "glintlab/glints/wang2020/wang2020_quadtree.h"
+
+namespace glintlab::wang2020 {
+
+struct Wang2020Material {
+    double alpha = 0.1;           // Beckmann roughness, [0.02, 1]
+    double gamma_deg = 1.0;       // search cone half-angle γ, [1, 30]
+    uint64_t particles = 100000;  // N per uv tile
+    int depth = 11;               // quadtree depth (§6)
+    uint32_t seed = 1;
+    glm::dvec3 color{1.0};
+    DpfResolution dpf_res{};                           // Table 2: 90 × 90 × 180
+    std::optional<PrefilterResolution> prefilter_res;  // default: Table 2 by α
+    int prefilter_samples = 64;                        // K of Eq. 16
+};
+
+enum class Scale { Micro, Meso, Macro };
+inline constexpr double kMicroMax = 4.0;  // §4.3
+inline constexpr double kMesoMax = 64.0;  // §4.3
+Scale select_scale(double expected_count);
+
+struct UvBox {
+    glm::dvec2 lo, hi;
+    double area() const { return std::max(0.0, hi.x - lo.x) * std::max(0.0, hi.y - lo.y); }
+};
+
+class Wang2020Model {
+  public:
+    explicit Wang2020Model(const Wang2020Material& m);
+
+    // Prefilter pass (Eqs. 16–17) for an environment; replaces any previous one.
+    void prefilter(const EnvironmentFn& env);
+    bool has_environment() const { return prefiltered_ != nullptr; }
+    // Spatial tree pass only (§4.5: editing N re-runs just the quadtree).
+    void rebuild_quadtree(uint64_t particles, uint32_t seed);
+
+    // Environment radiance towards o (world space, n = world normal).
+    glm::dvec3 environment_radiance(const UvBox& A, const glm::dvec3& n_world,
+                                    const glm::dvec3& o_world, Scale* used = nullptr) const;
+    // Eq. 21 for a light of incident radiance-times-solid-angle (irradiance
+    // normal to i) `li` from local direction wi; wo local (z = normal).
+    glm::dvec3 light_radiance(const UvBox& A, const glm::dvec3& wi, const glm::dvec3& wo,
+                              const glm::dvec3& li, Scale* used = nullptr) const;
+
+    const Wang2020Material& material() const { return m_; }
+    const DpfTable& dpf() const { return dpf_; }
+    const ParticleQuadtree& quadtree() const { return tree_; }
+    const PrefilterTable* prefiltered() const { return prefiltered_.get(); }
+    double sigma_o() const { return sigma_o_; }  // σ(Ωo) = 2π(1 − cos γ)
+    double extract_seconds() const { return extract_seconds_; }
+
+  private:
+    // Σ_k 1_A(x_k) H(p − λ_k) (micro) as a function of a per-particle
+    // acceptance probability.
+    uint64_t accepted(const UvBox& A, double p) const;
+
+    Wang2020Material m_;
+    double gamma_rad_;
+    double sigma_o_;
+    DpfTable dpf_;
+    ParticleQuadtree tree_;
+    std::unique_ptr<PrefilterTable> prefiltered_;
+    double extract_seconds_ = 0.0;
+};
+
+}  // namespace glintlab::wang2020
