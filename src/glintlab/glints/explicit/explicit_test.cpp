@@ -63,10 +63,21 @@ TEST(ExplicitField, NormalsFollowProjectedAreaDensity) {
         field.log_density = std::log(300000.0);
         field.seed = 3;
         std::vector<glm::vec3> normals;
+        std::vector<double> cells(40 * 40, 0.0);
         const uint64_t n =
-            for_each_explicit_facet(field, square({0.5f, 0.5f}, 1.0f),
-                                    [&](const ExplicitFacet& f) { normals.push_back(f.m); });
+            for_each_explicit_facet(field, square({0.5f, 0.5f}, 1.0f), [&](const ExplicitFacet& f) {
+                normals.push_back(f.m);
+                // 40 x 40 cells do not align with the quadtree (2^k) cells.
+                cells[size_t(f.uv.y * 40.0f) * 40 + size_t(f.uv.x * 40.0f)] += 1.0;
+            });
         ASSERT_EQ(n, explicit_facets_per_tile(field));  // the unit tile holds exactly N
+        // Spatial uniformity: the cell counts of N i.i.d. uniform facets are
+        // multinomial; Pearson's statistic has 1599 degrees of freedom.
+        double chi2 = 0.0;
+        const double expected = double(n) / double(cells.size());
+        for (double c : cells) chi2 += (c - expected) * (c - expected) / expected;
+        const double p_space = boost::math::gamma_q(0.5 * 1599.0, 0.5 * chi2);
+        EXPECT_GT(p_space, kSignificance) << "spatial chi2 = " << chi2;
         size_t next = 0;
         testing::Chi2Config cfg;
         cfg.n_cos = 32;
