@@ -84,7 +84,8 @@ TEST(ExplicitModel, ConstantEnvironmentGivesTheSmoothAlbedo) {
 
 TEST(ExplicitModel, DeltaAndConeLightsMatchTheSmoothBrdfOverTheCone) {
     // A delta directional light spread over the 6° cone (E⊥/σ) and a sun of
-    // the same cone and radiance must both give ∫_cone f cos L dω (midpoint
+    // the same cone and radiance (and a sphere light / point light of the same
+    // cone / irradiance) must all give ∫_cone f cos L dω (midpoint
     // quadrature over the cone); ~3e4 facets reflect into the cone: relative
     // std ~0.6 %, 3 % tolerance.
     ShadingCase s;
@@ -101,6 +102,18 @@ TEST(ExplicitModel, DeltaAndConeLightsMatchTheSmoothBrdfOverTheCone) {
     sun.radiance = glm::vec3(float(3.0 / sigma));
     s.scene.lights.push_back(delta);
     s.scene.lights.push_back(sun);
+    // A sphere light subtending the same cone from p, and a point light
+    // giving the same irradiance from the same direction.
+    const float dist = 5.0f;
+    SphereLight sphere;
+    sphere.center = s.ctx.p + dist * wi_world;
+    sphere.radius = dist * std::sin(gamma);
+    sphere.radiance = sun.radiance;
+    PointLight point;
+    point.position = sphere.center;
+    point.intensity = delta.irradiance * dist * dist;
+    s.scene.lights.push_back(sphere);
+    s.scene.lights.push_back(point);
     const glm::vec3 z = wi_local, x = glm::normalize(glm::cross(glm::vec3(0, 0, 1), z)),
                     y = glm::cross(z, x);
     glm::dvec3 ref(0.0);
@@ -116,9 +129,13 @@ TEST(ExplicitModel, DeltaAndConeLightsMatchTheSmoothBrdfOverTheCone) {
         }
     const glm::vec3 Ld = explicit_light_radiance(s.ctx, 0);
     const glm::vec3 Ls = explicit_light_radiance(s.ctx, 1);
+    const glm::vec3 Lsph = explicit_light_radiance(s.ctx, 2);
+    const glm::vec3 Lpt = explicit_light_radiance(s.ctx, 3);
     for (int c = 0; c < 3; ++c) {
         EXPECT_NEAR(Ld[c] / ref[c], 1.0, 0.03) << "delta, channel " << c;
         EXPECT_NEAR(Ls[c] / Ld[c], 1.0, 1e-4) << "sun vs delta, channel " << c;
+        EXPECT_NEAR(Lsph[c] / Ld[c], 1.0, 1e-4) << "sphere vs delta, channel " << c;
+        EXPECT_NEAR(Lpt[c] / Ld[c], 1.0, 1e-4) << "point vs delta, channel " << c;
     }
     // Occluded towards the light: black.
     s.ctx.visible = [](glm::vec3, float) { return false; };
