@@ -10,6 +10,7 @@
 #include "glintlab/glints/explicit/validate_explicit.h"
 #include "glintlab/glints/kneiphof2025/validate_kneiphof2025.h"
 #include "glintlab/glints/jakob2014/validate_jakob2014.h"
+#include "glintlab/glints/wang2020/validate_wang2020.h"
 #include "glintlab/glints/zirr2016/validate_zirr2016.h"
 #include "glintlab/validate/report.h"
 
@@ -62,6 +63,12 @@ const std::map<std::string, SuiteRunner>& suites() {
              Kneiphof2025ValidationOptions o;
              o.seed = static_cast<uint64_t>(a.seed);
              return validate_kneiphof2025(o);
+         }},
+        {"wang2020",
+         [](const ValidateArgs& a) {
+             Wang2020ValidationOptions o;
+             o.seed = static_cast<uint64_t>(a.seed);
+             return validate_wang2020(o);
          }},
         {"zirr2016",
          [](const ValidateArgs& a) {

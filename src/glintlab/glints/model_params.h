@@ -10,6 +10,7 @@
 #include "glintlab/glints/explicit/explicit_params.h"
 #include "glintlab/glints/jakob2014/jakob2014_params.h"
 #include "glintlab/glints/kneiphof2025/kneiphof2025_params.h"
+#include "glintlab/glints/wang2020/wang2020_params.h"
 #include "glintlab/glints/zirr2016/zirr2016_params.h"
 
 namespace glintlab {
@@ -18,6 +19,7 @@ struct SmoothParams {};  // `smooth` has no parameters of its own
 
 using GlintModelParams =
     std::variant<SmoothParams, Deliot2023Params, Zirr2016Params, Chermain2020Params,
-                 Jakob2014Params, Kneiphof2025Params, ExplicitParams>;
+                 Jakob2014Params, Kneiphof2025Params, ExplicitParams,
+                 Wang2020Params>;
 
 }  // namespace glintlab

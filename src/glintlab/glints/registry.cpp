@@ -5,6 +5,7 @@
 #include "glintlab/glints/explicit/explicit_model.h"
 #include "glintlab/glints/kneiphof2025/kneiphof2025.h"
 #include "glintlab/glints/jakob2014/jakob2014.h"
+#include "glintlab/glints/wang2020/wang2020_model.h"
 #include "glintlab/glints/zirr2016/zirr2016.h"
 #include "glintlab/scene/json_reader.h"
 #include "glintlab/scene/scene.h"
@@ -52,6 +53,11 @@ const GlintModelInfo kModels[] = {
      "image-based lighting of glints, multinomial over K radiance levels (Kneiphof & Klein 2025)",
      true, true, true, true, read_kneiphof2025_params, kneiphof2025_shades_light,
      kneiphof2025_light_radiance},
+    // Environment (Eqs. 16-20), point and directional lights (Eq. 21) by its
+    // own three-scale evaluation; no sphere lights (001 has none).
+    {GlintModelId::Wang2020, "wang2020",
+     "prefiltered discrete stochastic microfacets, three-scale (Wang et al. 2020)", true, true,
+     false, true, read_wang2020_params, wang2020_shades_light, wang2020_light_radiance},
 };
 
 }  // namespace

@@ -15,6 +15,17 @@ Scale select_scale(double expected_count) {
 }
 
 namespace {
+// Scale of §4.3 for footprint A; degenerate / non-finite boxes and boxes
+// spanning more than 64 uv tiles (the traversal's limit) use the macro scale.
+Scale scale_for(const UvBox& A, double N) {
+    const double a = A.area();
+    if (!(a > 0.0) || !std::isfinite(a)) return Scale::Macro;
+    const double tiles = (std::floor(A.hi.x) - std::floor(A.lo.x) + 1.0) *
+                         (std::floor(A.hi.y) - std::floor(A.lo.y) + 1.0);
+    if (!(tiles <= 64.0)) return Scale::Macro;
+    return select_scale(N * a);
+}
+
 double checked_gamma(const Wang2020Material& m) {
     if (!(m.gamma_deg >= 1.0 && m.gamma_deg <= 30.0))
         fail("wang2020: gamma_deg {} outside [1, 30]", m.gamma_deg);
@@ -70,7 +81,7 @@ glm::dvec3 Wang2020Model::environment_radiance(const UvBox& A, const glm::dvec3&
     const double phat = t.w;
     const double a = A.area();
     const double N = static_cast<double>(tree_.particles());
-    const Scale s = a > 0.0 ? select_scale(N * a) : Scale::Macro;
+    const Scale s = scale_for(A, N);
     if (used) *used = s;
     switch (s) {
         case Scale::Macro:  // count ≈ N a(A) in Eq. 18
@@ -94,7 +105,7 @@ glm::dvec3 Wang2020Model::light_radiance(const UvBox& A, const glm::dvec3& wi, c
     const double m = m_term(wi, wo, m_.alpha);
     const double a = A.area();
     const double N = static_cast<double>(tree_.particles());
-    const Scale s = a > 0.0 ? select_scale(N * a) : Scale::Macro;
+    const Scale s = scale_for(A, N);
     if (used) *used = s;
     double dprime = 0.0;  // D̂'(A, o, i) = D̂ / (a σ), D̂ from Eq. 5 / Eq. 7
     switch (s) {

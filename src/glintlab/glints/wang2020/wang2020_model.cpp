@@ -1,0 +1,140 @@
+#include "glintlab/glints/wang2020/wang2020_model.h"
+
+#include <cmath>
+#include <limits>
+#include <map>
+#include <memory>
+#include <mutex>
+#include <tuple>
+
+#include "glintlab/glints/glint_lighting.h"
+#include "glintlab/glints/model_params.h"
+#include "glintlab/glints/wang2020/wang2020_shading.h"
+#include "glintlab/scene/environment.h"
+#include "glintlab/scene/json_reader.h"
+#include "glintlab/scene/scene.h"
+
+namespace glintlab {
+
+namespace {
+
+using wang2020::UvBox;
+using wang2020::Wang2020Material;
+using wang2020::Wang2020Model;
+
+const Wang2020Params& params_of(const GlintDesc& desc) {
+    return std::get<Wang2020Params>(desc.params);
+}
+
+uint64_t particles_of(const GlintDesc& desc) {
+    return static_cast<uint64_t>(std::llround(std::exp(static_cast<double>(desc.log_density))));
+}
+
+// One model per (material, environment map); the map pointer identifies the
+// environment (scenes own their maps for the whole render).
+using Key =
+    std::tuple<float, float, uint64_t, uint32_t, double, int, int, int, int, const EnvironmentMap*>;
+
+std::shared_ptr<const Wang2020Model> model_for(const GlintDesc& desc, const EnvironmentMap* env) {
+    static std::mutex mutex;
+    static std::map<Key, std::shared_ptr<const Wang2020Model>> cache;
+    const Wang2020Params& p = params_of(desc);
+    const Key key{desc.alpha_x, 0.0f,        particles_of(desc), desc.seed,           p.gamma_deg,
+                  p.depth,      p.dpf_theta, p.dpf_phi,          p.prefilter_samples, env};
+    const std::lock_guard lock(mutex);
+    auto& slot = cache[key];
+    if (!slot) {
+        Wang2020Material m;
+        m.alpha = desc.alpha_x;
+        m.gamma_deg = p.gamma_deg;
+        m.particles = particles_of(desc);
+        m.depth = p.depth;
+        m.seed = desc.seed;
+        m.color = glm::dvec3(1.0);  // the tint is applied per call
+        m.dpf_res = {p.dpf_theta, p.dpf_theta, p.dpf_phi};
+        m.prefilter_samples = p.prefilter_samples;
+        auto model = std::make_shared<Wang2020Model>(m);
+        if (env) model->prefilter([env](const glm::dvec3& d) { return env->eval(glm::vec3(d)); });
+        slot = std::move(model);
+    }
+    return slot;
+}
+
+// AABB of the footprint parallelogram uv + s duvdx + t duvdy, s, t ∈ [-½, ½).
+UvBox box_of(const Footprint& fp) {
+    const glm::dvec2 half = 0.5 * (glm::abs(glm::dvec2(fp.duvdx)) + glm::abs(glm::dvec2(fp.duvdy)));
+    return {glm::dvec2(fp.uv) - half, glm::dvec2(fp.uv) + half};
+}
+
+}  // namespace
+
+void read_wang2020_params(JsonObject& block, GlintDesc& desc) {
+    if (desc.ndf != NdfType::Beckmann || desc.alpha_x != desc.alpha_y || desc.alpha_x < 0.02f ||
+        desc.alpha_x > 1.0f)
+        block.error("",
+                    "wang2020 needs an isotropic Beckmann material with roughness in [0.02, 1] "
+                    "(\"ndf\": \"beckmann\"; 001 §4.4: DPF tables for alpha 0.02..1)");
+    if (!(desc.log_density >= 0.0f && desc.log_density <= 19.4f))
+        block.error("",
+                    "wang2020 needs log_density in [0, 19.4] (at most 2^28 particles per uv "
+                    "tile: the quadtree stores 28-bit counts)");
+    Wang2020Params p;
+    p.gamma_deg = block.number("gamma_deg", p.gamma_deg, 1.0, 30.0);
+    p.depth = block.integer("depth", p.depth, 1, 16);
+    p.dpf_theta = block.integer("dpf_theta", p.dpf_theta, 2, 180);
+    p.dpf_phi = block.integer("dpf_phi", p.dpf_phi, 2, 360);
+    p.prefilter_samples = block.integer("prefilter_samples", p.prefilter_samples, 1, 4096);
+    p.directional_occlusion = block.boolean("directional_occlusion", p.directional_occlusion);
+    desc.params = p;
+    block.finish();
+}
+
+bool wang2020_shades_light(const GlintDesc&, const Scene& scene, int light) {
+    const Light& l = scene.lights[static_cast<size_t>(light)];
+    return std::holds_alternative<EnvironmentLight>(l) || std::holds_alternative<PointLight>(l) ||
+           std::holds_alternative<DirectionalLight>(l);
+}
+
+glm::vec3 wang2020_light_radiance(const GlintLightingContext& ctx, int light) {
+    const Light& l = ctx.scene->lights[static_cast<size_t>(light)];
+    const GlintDesc& desc = *ctx.desc;
+    if (ctx.wo.z <= 0.0f) return glm::vec3(0.0f);
+    const UvBox A = box_of(ctx.footprint);
+    const glm::dvec3 wo(ctx.wo);
+    const glm::dvec3 tint(desc.color);
+    if (const auto* e = std::get_if<EnvironmentLight>(&l)) {
+        const auto model = model_for(desc, e->map.get());
+        // §4.4 directional occlusion: one ray along the mirror direction
+        // (unblurred: the 9-tap blur needs an image pass, see header).
+        if (params_of(desc).directional_occlusion) {
+            const glm::vec3 r = ctx.to_world(glm::vec3(-ctx.wo.x, -ctx.wo.y, ctx.wo.z));
+            if (!ctx.visible(r, std::numeric_limits<float>::infinity())) return glm::vec3(0.0f);
+        }
+        const glm::dvec3 L =
+            model->environment_radiance(A, glm::dvec3(ctx.n), glm::dvec3(ctx.to_world(ctx.wo)));
+        return glm::vec3(L * tint);
+    }
+    const auto model = model_for(desc, nullptr);
+    glm::vec3 wi_world;
+    glm::dvec3 li;
+    float t_max = std::numeric_limits<float>::infinity();
+    if (const auto* pl = std::get_if<PointLight>(&l)) {
+        const glm::vec3 d = pl->position - ctx.p;
+        const float dist = glm::length(d);
+        if (!(dist > 0.0f)) return glm::vec3(0.0f);
+        wi_world = d / dist;
+        li = glm::dvec3(pl->intensity) / (static_cast<double>(dist) * dist);
+        t_max = dist * (1.0f - 1e-4f);
+    } else if (const auto* dl = std::get_if<DirectionalLight>(&l)) {
+        // A cone light is treated as a delta light along its axis (Eq. 21).
+        wi_world = glm::normalize(dl->direction);
+        li = glm::dvec3(dl->irradiance);
+    } else {
+        return glm::vec3(0.0f);
+    }
+    const glm::dvec3 wi(ctx.to_local(wi_world));
+    if (wi.z <= 0.0 || !ctx.visible(wi_world, t_max)) return glm::vec3(0.0f);
+    return glm::vec3(model->light_radiance(A, wi, wo, li) * tint);  // Eq. 21
+}
+
+}  // namespace glintlab

@@ -1,0 +1,24 @@
+// Scene integration of wang2020 (registry row "wang2020"): parameter block
+// reading and the GlintModelInfo::shades_light / light_radiance hooks
+// (glint_lighting.h). The model shades the camera's first hit for
+// environment, point and directional lights itself (Eqs. 18–21); the tables
+// (DPF set, extracted DPF, prefiltered environment, quadtree) are built lazily
+// once per (material parameters, environment map) and cached, thread-safe.
+// Post-process blurs (wang2020_postprocess.h) are not applied by the CPU
+// renderer (no per-model image pass there); see docs/MODELS.md.
+#pragma once
+
+#include <glm/glm.hpp>
+
+namespace glintlab {
+
+class JsonObject;
+struct GlintDesc;
+struct GlintLightingContext;
+struct Scene;
+
+void read_wang2020_params(JsonObject& block, GlintDesc& desc);
+bool wang2020_shades_light(const GlintDesc& desc, const Scene& scene, int light);
+glm::vec3 wang2020_light_radiance(const GlintLightingContext& ctx, int light);
+
+}  // namespace glintlab

@@ -1,0 +1,21 @@
+// Parameters of the wang2020 glint model (its block "wang2020": {...} of a
+// glint material; ranges in docs/MODELS.md, section wang2020). The particle
+// density is the material's log_density (N = round(e^log_density) particles
+// per unit uv tile, the explicit ground truth's convention), the roughness its
+// isotropic Beckmann alpha.
+#pragma once
+
+#include <cstdint>
+
+namespace glintlab {
+
+struct Wang2020Params {
+    double gamma_deg = 1.0;             // search cone half-angle γ (001 §3.1), [1, 30]
+    int depth = 11;                     // quadtree depth (001 §6), [1, 16]
+    int dpf_theta = 90;                 // DPF table θi and θo resolution (Table 2), [2, 180]
+    int dpf_phi = 180;                  // DPF table Δφ resolution (Table 2), [2, 360]
+    int prefilter_samples = 64;         // K of Eq. 16, [1, 4096]
+    bool directional_occlusion = true;  // §4.4: one mirror-direction visibility ray
+};
+
+}  // namespace glintlab
