@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "glintlab/core/error.h"
+#include "glintlab/core/rng.h"
 #include "glintlab/glints/wang2020/wang2020_beckmann.h"
 
 namespace glintlab::wang2020 {
@@ -51,16 +52,21 @@ double m_term(const glm::dvec3& wi, const glm::dvec3& wo, double alpha) {
 }
 
 glm::dvec4 PrefilterTable::evaluate(const DpfTable& dpf, double alpha, const EnvironmentFn& env,
-                                    const glm::dvec3& n, const glm::dvec3& o, int K) {
+                                    const glm::dvec3& n, const glm::dvec3& o, int K,
+                                    uint64_t texel_id) {
     glm::dvec3 t, b;
     tangent_frame(n, t, b);
     auto to_world = [&](const glm::dvec3& v) { return v.x * t + v.y * b + v.z * n; };
     glm::dvec3 lo(0.0);
     const int side = std::max(1, static_cast<int>(std::lround(std::sqrt(K))));
     const int k_used = side * side;
+    Pcg32 rng(texel_id, 0x9e3779b97f4a7c15ull);
     for (int sy = 0; sy < side; ++sy) {
         for (int sx = 0; sx < side; ++sx) {
-            const double u1 = (sx + 0.5) / side, u2 = (sy + 0.5) / side;
+            // Jittered strata (one Pcg32 stream per texel): unbiased per texel,
+            // so a small bright source (a sun) is not systematically missed
+            // by every texel's fixed sample pattern.
+            const double u1 = (sx + rng.next_double()) / side, u2 = (sy + rng.next_double()) / side;
             // Beckmann: tan²θh = −α² ln(1 − u1).
             const double tan2 = -alpha * alpha * std::log(1.0 - u1);
             const double ch = 1.0 / std::sqrt(1.0 + tan2);
@@ -106,7 +112,8 @@ PrefilterTable::PrefilterTable(const DpfTable& dpf, double alpha, double /*gamma
                 for (int d = 0; d < res.phi_o; ++d) {
                     const glm::dvec3 o = spherical_dir((c + 0.5) / res.theta_o * kHalfPi,
                                                        (d + 0.5) / res.phi_o * kTwoPi);
-                    data_[k++] = glm::vec4(evaluate(dpf, alpha, env, n, o, K));
+                    data_[k] = glm::vec4(evaluate(dpf, alpha, env, n, o, K, k));
+                    ++k;
                 }
         }
     build_seconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();

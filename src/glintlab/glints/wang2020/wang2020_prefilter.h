@@ -13,9 +13,10 @@
 // we use this form (decision documented in docs/MODELS.md; checked by the
 // white-furnace test). F = 1: the glint colour multiplies the result.
 // Importance sampling: i = reflect(o, h) with h ~ D(h)(h·n) (Beckmann),
-// pdf(i) = D(h)(h·n) / (4 (o·h)); the K samples are an 8 × 8 stratified grid.
+// pdf(i) = D(h)(h·n) / (4 (o·h)); the K samples are an 8 × 8 jittered stratified grid.
 #pragma once
 
+#include <cstdint>
 #include <functional>
 #include <vector>
 
@@ -49,7 +50,8 @@ class PrefilterTable {
     // One texel (exact value at the sample directions).
     glm::dvec4 texel(int tn, int pn, int to, int po) const;
     static glm::dvec4 evaluate(const DpfTable& dpf, double alpha, const EnvironmentFn& env,
-                               const glm::dvec3& n_world, const glm::dvec3& o_local, int K);
+                               const glm::dvec3& n_world, const glm::dvec3& o_local, int K,
+                               uint64_t texel_id = 0);
 
     const PrefilterResolution& resolution() const { return res_; }
     size_t memory_bytes() const { return data_.size() * sizeof(glm::vec4); }

@@ -148,15 +148,20 @@ TEST(Wang2020Prefilter, WhiteFurnaceMacroEqualsSmoothModel) {
     for (double th : {10.0, 40.0, 65.0}) {
         const glm::dvec3 o = spherical_dir(th * kDeg, 0.0);
         const double ref = smooth_albedo(o, 0.6);
-        // Texel-exact evaluation (Eq. 16 with K = 64) vs the smooth model.
-        const glm::dvec4 v = PrefilterTable::evaluate(
-            model.dpf(), 0.6, [](const glm::dvec3&) { return glm::vec3(1.0f); }, {0, 0, 1}, o, 64);
-        // Same 8 × 8 strata with the exact DPF isolates the DPF-table error.
-        const double ref64 = smooth_albedo(o, 0.6, 8);
-        EXPECT_NEAR(v.x / model.sigma_o(), ref64, 0.01 * ref64) << th;
-        // K = 64 quadrature error grows at grazing view (measured 2.4 % at 65°).
-        const double tol = th < 60.0 ? 0.02 : 0.04;
-        EXPECT_NEAR(v.x / model.sigma_o(), ref, tol * ref) << th;
+        // Eq. 16 with K = 64 jittered strata per texel: one texel's estimate
+        // is noisy (measured ≤ 3 %: bound 6 %), the mean over 16 independent
+        // texel streams (1024 samples) is unbiased up to the DPF-table error
+        // (≤ 1 % at α = 0.6, 30 × 30 × 60): bound 2 %.
+        auto white = [](const glm::dvec3&) { return glm::vec3(1.0f); };
+        double mean = 0.0;
+        for (uint64_t id = 0; id < 16; ++id) {
+            const double v =
+                PrefilterTable::evaluate(model.dpf(), 0.6, white, {0, 0, 1}, o, 64, id).x /
+                model.sigma_o();
+            EXPECT_NEAR(v, ref, 0.06 * ref) << th;
+            mean += v / 16;
+        }
+        EXPECT_NEAR(mean, ref, 0.02 * ref) << th;
         // Through the 4-D table lookup (interpolation in n and o).
         Scale s;
         const glm::dvec3 n = glm::normalize(glm::dvec3(0.3, -0.2, 0.9));
@@ -165,7 +170,7 @@ TEST(Wang2020Prefilter, WhiteFurnaceMacroEqualsSmoothModel) {
         const glm::dvec3 ow = o.x * t + o.y * b + o.z * n;
         const glm::dvec3 l = model.environment_radiance({{0, 0}, {1, 1}}, n, ow, &s);
         EXPECT_EQ(s, Scale::Macro);
-        EXPECT_NEAR(l.x, ref, (tol + 0.02) * ref) << th;  // + table interpolation
+        EXPECT_NEAR(l.x, ref, 0.08 * ref) << th;  // texel noise + interpolation
     }
 }
 
@@ -192,7 +197,11 @@ TEST(Wang2020Shading, MicroScaleRealizationsAverageToTheSmoothModel) {
             }
     }
     EXPECT_EQ(micro, 256 * 1024);
-    EXPECT_NEAR(sum / (256 * 1024), ref, 0.02 * ref);
+    // Realizations average to the macro (prefiltered) value, which is the
+    // smooth model up to the K = 64 texel noise (see the furnace test).
+    const double macro = model.environment_radiance({{0, 0}, {1, 1}}, n, o).x;
+    EXPECT_NEAR(sum / (256 * 1024), macro, 0.02 * macro);
+    EXPECT_NEAR(macro, ref, 0.08 * ref);
 }
 
 TEST(Wang2020Shading, PointLightEq21IsUnbiasedAtEveryScale) {
