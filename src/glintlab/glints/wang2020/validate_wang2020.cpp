@@ -118,7 +118,7 @@ ValidationReport validate_wang2020(const Wang2020ValidationOptions& opt) {
     // Orthographic sphere, view +z; pixel (x, y) covers the uv box
     // [x, x+1) × [y, y+1) · s with s chosen per density case so that the
     // expected particle count per pixel is `expected`.
-    double gt_err_max = 0.0;
+    double gt_err_max = 0.0, micro_z_max = 0.0;
     nlohmann::json gt_rows = nlohmann::json::array();
     text += "ground truth (explicit facets), sphere " + std::to_string(opt.image_size) + "^2, " +
             std::to_string(opt.realizations) + " realizations\n";
@@ -197,10 +197,17 @@ ValidationReport validate_wang2020(const Wang2020ValidationOptions& opt) {
                 vg += (pg[k].sum2 - pg[k].sum * pg[k].sum / R) / (R - 1);
             }
             const double err = std::abs(mw - mg) / std::max(mg, 1e-30);
-            gt_err_max = std::max(gt_err_max, err);
             const double ratio = vg > 0.0 ? vw / vg : 0.0;
             // Standard error of (mean_wang − mean_gt) / mean_gt (realizations independent).
             const double se = std::sqrt(std::max(0.0, vw + vg) / R) / std::max(mg, 1e-30);
+            // Meso / macro: the relative error is resolved (s.e. ≤ 8 %) and
+            // checked against 0.1. Micro: rare bright glints (city's sun)
+            // leave a standard error of 3–15 % at 64 realizations, so there
+            // the check is statistical: |err| / s.e. ≤ 4.
+            if (expected < kMicroMaxExpected)
+                micro_z_max = std::max(micro_z_max, se > 0.0 ? err / se : 0.0);
+            else
+                gt_err_max = std::max(gt_err_max, err);
             const std::string name = std::filesystem::path(path).stem().string();
             text += fmt::format(
                 "  {:<12} {:6.0f}  {:10.5f}  {:9.5f}  {:8.4f} ({:.4f})  {:9.3f}  {:12.5f}  "
@@ -241,6 +248,7 @@ ValidationReport validate_wang2020(const Wang2020ValidationOptions& opt) {
     report.details["quadtree_mb"] = tree_mb;
 
     report.check("gt_mean_rel_err_max", gt_err_max, "<=", 0.1);
+    report.check("gt_micro_z_max", micro_z_max, "<=", 4.0);
     report.check("furnace_rel_err", furnace_err, "<=", 0.02);
     report.check("nan_count", static_cast<double>(nan_count), "==", 0.0);
     report.check("memory_mb", tree_mb, "<=", 64.0);
