@@ -35,15 +35,24 @@ uint64_t particles_of(const GlintDesc& desc) {
 using Key =
     std::tuple<float, float, uint64_t, uint32_t, double, int, int, int, int, const EnvironmentMap*>;
 
-std::shared_ptr<const Wang2020Model> model_for(const GlintDesc& desc, const EnvironmentMap* env) {
+// The map pointer is part of the key; the entry also keeps a weak_ptr to the
+// map so that a new map allocated at a freed map's address (a later scene)
+// never reuses the old prefiltered tables.
+struct CacheEntry {
+    std::weak_ptr<const EnvironmentMap> env;
+    std::shared_ptr<const Wang2020Model> model;
+};
+
+std::shared_ptr<const Wang2020Model> model_for(const GlintDesc& desc,
+                                               const std::shared_ptr<const EnvironmentMap>& env) {
     static std::mutex mutex;
-    static std::map<Key, std::shared_ptr<const Wang2020Model>> cache;
+    static std::map<Key, CacheEntry> cache;
     const Wang2020Params& p = params_of(desc);
     const Key key{desc.alpha_x, 0.0f,        particles_of(desc), desc.seed,           p.gamma_deg,
-                  p.depth,      p.dpf_theta, p.dpf_phi,          p.prefilter_samples, env};
+                  p.depth,      p.dpf_theta, p.dpf_phi,          p.prefilter_samples, env.get()};
     const std::lock_guard lock(mutex);
-    auto& slot = cache[key];
-    if (!slot) {
+    CacheEntry& slot = cache[key];
+    if (!slot.model || (env && slot.env.expired())) {
         Wang2020Material m;
         m.alpha = desc.alpha_x;
         m.gamma_deg = p.gamma_deg;
@@ -54,10 +63,14 @@ std::shared_ptr<const Wang2020Model> model_for(const GlintDesc& desc, const Envi
         m.dpf_res = {p.dpf_theta, p.dpf_theta, p.dpf_phi};
         m.prefilter_samples = p.prefilter_samples;
         auto model = std::make_shared<Wang2020Model>(m);
-        if (env) model->prefilter([env](const glm::dvec3& d) { return env->eval(glm::vec3(d)); });
-        slot = std::move(model);
+        if (env) {
+            const EnvironmentMap* map = env.get();
+            model->prefilter([map](const glm::dvec3& d) { return map->eval(glm::vec3(d)); });
+        }
+        slot.model = std::move(model);
+        slot.env = env;
     }
-    return slot;
+    return slot.model;
 }
 
 // AABB of the footprint parallelogram uv + s duvdx + t duvdy, s, t ∈ [-½, ½).
@@ -103,7 +116,7 @@ glm::vec3 wang2020_light_radiance(const GlintLightingContext& ctx, int light) {
     const glm::dvec3 wo(ctx.wo);
     const glm::dvec3 tint(desc.color);
     if (const auto* e = std::get_if<EnvironmentLight>(&l)) {
-        const auto model = model_for(desc, e->map.get());
+        const auto model = model_for(desc, e->map);
         // §4.4 directional occlusion: one ray along the mirror direction
         // (unblurred: the 9-tap blur needs an image pass, see header).
         if (params_of(desc).directional_occlusion) {
@@ -114,7 +127,7 @@ glm::vec3 wang2020_light_radiance(const GlintLightingContext& ctx, int light) {
             model->environment_radiance(A, glm::dvec3(ctx.n), glm::dvec3(ctx.to_world(ctx.wo)));
         return glm::vec3(L * tint);
     }
-    const auto model = model_for(desc, nullptr);
+    const auto model = model_for(desc, {});
     glm::vec3 wi_world;
     glm::dvec3 li;
     float t_max = std::numeric_limits<float>::infinity();
