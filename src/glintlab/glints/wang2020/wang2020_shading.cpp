@@ -4,7 +4,12 @@
 #include <cmath>
 
 #include "glintlab/core/error.h"
+#include "glintlab/core/glsl.h"
 #include "glintlab/glints/wang2020/wang2020_beckmann.h"
+
+GLINTLAB_SHADER_FUNCTIONS_BEGIN
+#include "glintlab/glints/wang2020/wang2020.glsl"
+GLINTLAB_SHADER_FUNCTIONS_END
 
 namespace glintlab::wang2020 {
 
@@ -83,19 +88,16 @@ glm::dvec3 Wang2020Model::environment_radiance(const UvBox& A, const glm::dvec3&
     const double N = static_cast<double>(tree_.particles());
     const Scale s = scale_for(A, N);
     if (used) *used = s;
-    switch (s) {
-        case Scale::Macro:  // count ≈ N a(A) in Eq. 18
-            return m_.color * lhat / sigma_o_;
-        case Scale::Meso:  // Eq. 18
-            return m_.color * lhat *
-                   (static_cast<double>(tree_.count(A.lo, A.hi)) / (sigma_o_ * a * N));
-        case Scale::Micro: {  // Eq. 20
-            if (!(phat > 0.0)) return glm::dvec3(0.0);
-            const double k = static_cast<double>(accepted(A, std::min(phat, 1.0)));
-            return m_.color * lhat * (k / (sigma_o_ * a * N * phat));
-        }
-    }
-    return glm::dvec3(0.0);
+    // Eqs. 18-20 (wang2020.glsl, shared with the GPU subset).
+    double count = 0.0, accepted_count = 0.0;
+    if (s == Scale::Meso) count = static_cast<double>(tree_.count(A.lo, A.hi));
+    if (s == Scale::Micro && phat > 0.0)
+        accepted_count = static_cast<double>(accepted(A, std::min(phat, 1.0)));
+    const glm::vec3 r = shader::wang2020_environment_combine(
+        static_cast<int>(s), glm::vec3(lhat), static_cast<float>(phat), static_cast<float>(count),
+        static_cast<float>(accepted_count), static_cast<float>(a), static_cast<float>(N),
+        static_cast<float>(sigma_o_));
+    return m_.color * glm::dvec3(r);
 }
 
 glm::dvec3 Wang2020Model::light_radiance(const UvBox& A, const glm::dvec3& wi, const glm::dvec3& wo,
@@ -107,18 +109,14 @@ glm::dvec3 Wang2020Model::light_radiance(const UvBox& A, const glm::dvec3& wi, c
     const double N = static_cast<double>(tree_.particles());
     const Scale s = scale_for(A, N);
     if (used) *used = s;
-    double dprime = 0.0;  // D̂'(A, o, i) = D̂ / (a σ), D̂ from Eq. 5 / Eq. 7
-    switch (s) {
-        case Scale::Macro:
-            dprime = p / sigma_o_;
-            break;
-        case Scale::Meso:
-            dprime = static_cast<double>(tree_.count(A.lo, A.hi)) * p / (N * a * sigma_o_);
-            break;
-        case Scale::Micro:
-            dprime = static_cast<double>(accepted(A, std::min(p, 1.0))) / (N * a * sigma_o_);
-            break;
-    }
+    // D̂'(A, o, i) = D̂ / (a σ), D̂ from Eq. 5 / Eq. 7 (wang2020.glsl).
+    double count = 0.0, accepted_count = 0.0;
+    if (s == Scale::Meso) count = static_cast<double>(tree_.count(A.lo, A.hi));
+    if (s == Scale::Micro) accepted_count = static_cast<double>(accepted(A, std::min(p, 1.0)));
+    const double dprime = shader::wang2020_point_dprime(
+        static_cast<int>(s), static_cast<float>(p), static_cast<float>(count),
+        static_cast<float>(accepted_count), static_cast<float>(a), static_cast<float>(N),
+        static_cast<float>(sigma_o_));
     return m_.color * li * (dprime * m);  // Eq. 21
 }
 

@@ -1,0 +1,40 @@
+// wang2020 per-pixel combination (Wang et al. 2020, papers/001 §4.3), the part
+// a GPU shader runs after fetching its tables: the three-scale selection and
+// Eqs. 18-21. Shared by the CPU path (wang2020_shading.cpp) and GLSL.
+// Inputs: lhat, phat = L̂o(n, o), P̂(n, o) (Eqs. 16-17, prefilter table);
+// count = Σ_k 1_A(x_k) (quadtree); accepted = Σ_k 1_A(x_k) H (λ_k < P̂ or P);
+// area = a(A); total = N; sigma = σ(Ωo) = 2π(1 − cos γ).
+#ifndef GLINTLAB_GLINTS_WANG2020_GLSL
+#define GLINTLAB_GLINTS_WANG2020_GLSL
+
+const int WANG2020_MICRO = 0;
+const int WANG2020_MESO = 1;
+const int WANG2020_MACRO = 2;
+
+// §4.3: < 4 expected particles micro, 4-64 meso, > 64 macro.
+int wang2020_select_scale(float expected_count) {
+    if (expected_count < 4.0f) return WANG2020_MICRO;
+    if (expected_count <= 64.0f) return WANG2020_MESO;
+    return WANG2020_MACRO;
+}
+
+// Environment radiance (before tint): Eq. 20 (micro), Eq. 18 (meso), Eq. 18
+// with Σ 1_A ≈ N a(A) (macro).
+vec3 wang2020_environment_combine(int scale, vec3 lhat, float phat, float count,
+                                  float accepted, float area, float total, float sigma) {
+    if (scale == WANG2020_MACRO) return lhat / sigma;
+    if (scale == WANG2020_MESO) return lhat * (count / (sigma * area * total));
+    if (!(phat > 0.0f)) return vec3(0.0f);
+    return lhat * (accepted / (sigma * area * total * phat));
+}
+
+// D̂'(A, o, i) = D̂ / (a σ) of Eq. 21 with D̂ from Eq. 5 (meso), Eq. 7
+// (micro: accepted particles with probability P) or P (macro).
+float wang2020_point_dprime(int scale, float p, float count, float accepted, float area,
+                            float total, float sigma) {
+    if (scale == WANG2020_MACRO) return p / sigma;
+    if (scale == WANG2020_MESO) return count * p / (total * area * sigma);
+    return accepted / (total * area * sigma);
+}
+
+#endif  // GLINTLAB_GLINTS_WANG2020_GLSL
