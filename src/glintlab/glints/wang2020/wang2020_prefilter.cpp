@@ -1,8 +1,11 @@
 #include "glintlab/glints/wang2020/wang2020_prefilter.h"
 
 #include <algorithm>
+#include <atomic>
 #include <chrono>
 #include <cmath>
+#include <thread>
+#include <vector>
 
 #include "glintlab/core/error.h"
 #include "glintlab/core/rng.h"
@@ -103,8 +106,11 @@ PrefilterTable::PrefilterTable(const DpfTable& dpf, double alpha, double /*gamma
     if (K < 1 || K > 4096) fail("wang2020: prefilter sample count K={} outside [1, 4096]", K);
     const auto t0 = std::chrono::steady_clock::now();
     data_.resize(static_cast<size_t>(res.theta_n) * res.phi_n * res.theta_o * res.phi_o);
-    size_t k = 0;
-    for (int a = 0; a < res.theta_n; ++a)
+    // Rows of θn in parallel (each texel depends only on its own index, so
+    // the table is identical for any thread count).
+    const size_t per_row = static_cast<size_t>(res.phi_n) * res.theta_o * res.phi_o;
+    auto row = [&](int a) {
+        size_t k = static_cast<size_t>(a) * per_row;
         for (int b = 0; b < res.phi_n; ++b) {
             const glm::dvec3 n =
                 spherical_dir((a + 0.5) / res.theta_n * kPi, (b + 0.5) / res.phi_n * kTwoPi);
@@ -116,6 +122,17 @@ PrefilterTable::PrefilterTable(const DpfTable& dpf, double alpha, double /*gamma
                     ++k;
                 }
         }
+    };
+    const int threads = std::clamp(static_cast<int>(std::thread::hardware_concurrency()), 1,
+                                   std::min(res.theta_n, 16));
+    std::atomic<int> next{0};
+    std::vector<std::thread> pool;
+    for (int t = 1; t < threads; ++t)
+        pool.emplace_back([&] {
+            for (int a = next++; a < res.theta_n; a = next++) row(a);
+        });
+    for (int a = next++; a < res.theta_n; a = next++) row(a);
+    for (std::thread& th : pool) th.join();
     build_seconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
 
