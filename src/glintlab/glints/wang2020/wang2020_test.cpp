@@ -127,6 +127,7 @@ TEST(Wang2020Quadtree, CountsAreConservedAndQueriesExact) {
     EXPECT_EQ(tree.memory_bytes(), nodes.size() * 8u);
     EXPECT_THROW(ParticleQuadtree(0, 11, 1), Error);
     EXPECT_THROW(ParticleQuadtree(10, 17, 1), Error);
+    EXPECT_THROW(ParticleQuadtree(uint64_t{1} << 27, 16, 1), Error);  // node budget
 }
 
 Wang2020Material furnace_material(double gamma_deg) {
