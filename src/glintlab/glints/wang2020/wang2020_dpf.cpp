@@ -41,7 +41,8 @@ float DpfTable::at(int ti, int to, int p) const {
 }
 
 double DpfTable::lookup_angles(double theta_i, double theta_o, double dphi) const {
-    if (values_.empty() || theta_i >= kHalfPi || theta_o >= kHalfPi) return 0.0;
+    if (values_.empty() || !(theta_i < kHalfPi) || !(theta_o < kHalfPi) || !std::isfinite(dphi))
+        return 0.0;  // below the horizon or non-finite input (no NaN → int casts)
     // Cell-centred samples: coordinate x = θ / (π/2) · n − 0.5.
     auto split = [](double x, int n, int& i0, int& i1, double& f) {
         x = std::clamp(x, 0.0, static_cast<double>(n - 1));
@@ -67,7 +68,7 @@ double DpfTable::lookup_angles(double theta_i, double theta_o, double dphi) cons
 }
 
 double DpfTable::lookup(const glm::dvec3& wi, const glm::dvec3& wo) const {
-    if (wi.z <= 0.0 || wo.z <= 0.0) return 0.0;
+    if (!(wi.z > 0.0) || !(wo.z > 0.0)) return 0.0;
     const double ti = std::acos(std::min(1.0, wi.z));
     const double to = std::acos(std::min(1.0, wo.z));
     const double dphi = std::atan2(wo.y, wo.x) - std::atan2(wi.y, wi.x);
@@ -75,7 +76,7 @@ double DpfTable::lookup(const glm::dvec3& wi, const glm::dvec3& wo) const {
 }
 
 double dpf_exact(const glm::dvec3& wi, const glm::dvec3& wo, double alpha, double gamma_rad) {
-    if (wi.z <= 0.0 || wo.z <= 0.0) return 0.0;
+    if (!(wi.z > 0.0) || !(wo.z > 0.0)) return 0.0;
     const glm::dvec3 hs = wi + wo;
     const double len = glm::length(hs);
     if (len < 1e-12) return 0.0;

@@ -48,7 +48,7 @@ void tangent_frame(const glm::dvec3& n, glm::dvec3& t, glm::dvec3& b) {
 }
 
 double m_term(const glm::dvec3& wi, const glm::dvec3& wo, double alpha) {
-    if (wi.z <= 0.0 || wo.z <= 0.0) return 0.0;
+    if (!(wi.z > 0.0) || !(wo.z > 0.0)) return 0.0;
     const glm::dvec3 h = glm::normalize(wi + wo);
     if (h.z <= 0.0) return 0.0;
     return glm::dot(wi, h) * beckmann_G2(wi.z, wo.z, alpha) / (h.z * wo.z);
@@ -142,6 +142,8 @@ glm::dvec4 PrefilterTable::texel(int tn, int pn, int to, int po) const {
 }
 
 glm::dvec4 PrefilterTable::lookup(const glm::dvec3& n, const glm::dvec3& o_world) const {
+    if (!std::isfinite(n.x + n.y + n.z + o_world.x + o_world.y + o_world.z))
+        return glm::dvec4(0.0);  // no NaN → int casts in the cell search
     const double tn = std::acos(std::clamp(n.z, -1.0, 1.0));
     const double pn = std::atan2(n.y, n.x);
     int a0, a1, b0, b1;

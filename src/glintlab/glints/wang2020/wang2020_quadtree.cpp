@@ -49,9 +49,10 @@ ParticleQuadtree::ParticleQuadtree(uint64_t particles, int depth, uint32_t seed)
     for (int d = 0; d <= depth; ++d)
         bound += std::min(std::ldexp(1.0, 2 * d), static_cast<double>(particles));
     if (bound > 1.25e8)
-        fail("wang2020: quadtree of {} particles at depth {} may need {:.0f} MB (> 1000 MB); "
-             "lower `depth` or the material's log_density",
-             particles, depth, bound * 8.0 / 1e6);
+        fail(
+            "wang2020: quadtree of {} particles at depth {} may need {:.0f} MB (> 1000 MB); "
+            "lower `depth` or the material's log_density",
+            particles, depth, bound * 8.0 / 1e6);
     const auto t0 = std::chrono::steady_clock::now();
     nodes_.push_back({0u, static_cast<uint32_t>(particles)});
     std::vector<Pending> level{{0u, 0u, 0u}}, next;

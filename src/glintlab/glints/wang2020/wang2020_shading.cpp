@@ -80,7 +80,7 @@ uint64_t Wang2020Model::accepted(const UvBox& A, double p) const {
 glm::dvec3 Wang2020Model::environment_radiance(const UvBox& A, const glm::dvec3& n,
                                                const glm::dvec3& o, Scale* used) const {
     if (!prefiltered_) fail("wang2020: environment_radiance called before prefilter()");
-    if (glm::dot(n, o) <= 0.0) return glm::dvec3(0.0);
+    if (!(glm::dot(n, o) > 0.0)) return glm::dvec3(0.0);
     const glm::dvec4 t = prefiltered_->lookup(n, o);
     const glm::dvec3 lhat(t.x, t.y, t.z);
     const double phat = t.w;
@@ -102,7 +102,7 @@ glm::dvec3 Wang2020Model::environment_radiance(const UvBox& A, const glm::dvec3&
 
 glm::dvec3 Wang2020Model::light_radiance(const UvBox& A, const glm::dvec3& wi, const glm::dvec3& wo,
                                          const glm::dvec3& li, Scale* used) const {
-    if (wi.z <= 0.0 || wo.z <= 0.0) return glm::dvec3(0.0);
+    if (!(wi.z > 0.0) || !(wo.z > 0.0)) return glm::dvec3(0.0);
     const double p = dpf_.lookup(wi, wo);  // P(i, o, γ), 3-D table (§5)
     const double m = m_term(wi, wo, m_.alpha);
     const double a = A.area();

@@ -248,6 +248,12 @@ TEST(Wang2020Shading, RejectsBadParameters) {
     EXPECT_THROW(Wang2020Model{m}, Error);
     const Wang2020Model ok(furnace_material(1.0));
     EXPECT_THROW(ok.environment_radiance({{0, 0}, {1, 1}}, {0, 0, 1}, {0, 0, 1}), Error);
+    // Non-finite directions give 0, never NaN.
+    const double nan = std::nan("");
+    const glm::dvec3 l =
+        ok.light_radiance({{0, 0}, {0.01, 0.01}}, {nan, 0, nan}, {0, 0, 1}, glm::dvec3(1));
+    EXPECT_EQ(l, glm::dvec3(0.0));
+    EXPECT_EQ(ok.dpf().lookup({0, 0, 1}, {nan, nan, 0.5}), 0.0);
 }
 
 TEST(Wang2020Postprocess, BlursPreserveEnergyAndConstants) {
