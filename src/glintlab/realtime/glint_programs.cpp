@@ -5,8 +5,8 @@
 #include <epoxy/gl.h>
 
 #include "glintlab/core/error.h"
-#include "glintlab/core/rng.h"
 #include "glintlab/glints/chermain2020/dictionary.h"
+#include "glintlab/glints/deliot2023/deliot2023.h"
 #include "glintlab/realtime/uniform_cache.h"
 #include "glintlab/scene/scene.h"
 
@@ -148,11 +148,11 @@ GlintResources::~GlintResources() {
 }
 
 std::vector<float> deliot2023_noise_pairs() {
-    std::vector<float> pairs(64 * 64 * 2);
-    Pcg32 rng(0x6465'6c69'6f74ull, 2023);
-    for (size_t i = 0; i < pairs.size(); i += 2) {
-        pairs[i] = rng.next_float();
-        pairs[i + 1] = rng.next_float();
+    std::vector<float> pairs;
+    pairs.reserve(64 * 64 * 2);
+    for (const glm::vec2& v : deliot2023_noise_table()) {
+        pairs.push_back(v.x);
+        pairs.push_back(v.y);
     }
     return pairs;
 }

@@ -55,12 +55,8 @@ class GlintResources {
 // Sets the model's uniforms of `program` from the material.
 void set_glint_uniforms(unsigned program, UniformCache& uniforms, const GlintDesc& desc);
 
-// The 64 x 64 uniform pairs of the deliot2023 noise texture, row-major: the
-// PCG32 stream of glints/deliot2023/deliot2023_noise_table.cpp (0x64656c696f74,
-// seed 2023), each pair (first draw, second draw). The CPU table fills its
-// pairs with vec2(next_float(), next_float()), whose order C++ leaves to the
-// compiler (GCC: second draw first), so the two tables hold the same numbers
-// but not necessarily the same pairs (docs/VALIDATION.md).
+// The 64 x 64 uniform pairs of the deliot2023 noise texture, row-major,
+// flattened: deliot2023_noise_table(), the CPU's own table.
 std::vector<float> deliot2023_noise_pairs();
 
 // Default parameters of `model` (the viewer's model switcher).

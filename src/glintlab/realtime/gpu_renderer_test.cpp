@@ -116,22 +116,31 @@ TEST(GpuRenderer, EveryModelProgramCompilesAndLinks) {
 //    move LOD blend weights by < 0.05, which the models blend continuously;
 //  - at most 1% of the pixels differ by more than 0.02 + 10% (a flipped
 //    glint is one pixel; measured 0 - 0.3%).
-// deliot2023 and zirr2016 evaluate `vec2(hash_random(s), hash_random(s))`:
-// GLSL evaluates constructor arguments left to right, C++ in unspecified
-// order (GCC: right to left), so their CPU and GPU glint patterns are two
-// different draws of the same statistics until the shared .glsl sequences
-// the two calls (docs/VALIDATION.md). For them only the statistical checks
-// hold: the mean within 10% (the sphere holds a few hundred glints, so
-// two draws differ by several percent) and block means within 50%.
+// Gated models (deliot2023, zirr2016) decide each glint by a gate
+// `xi < p(footprint)`, a discontinuous function of the footprint: on odd rows,
+// where the GPU's one-sided quad difference moves dv/dy by up to 3%, gates
+// flip (measured 11% / 5% of the odd-row pixels on the PLANE), so the
+// pixel-pattern limit applies to the even rows, where the footprints agree to
+// 1e-6 (measured <= 0.25% mismatching pixels). Their glints are also far
+// sparser and brighter than chermain2020's (a few hundred on the sphere), so
+// one flipped glint moves an 8x8 block by several percent: mean within 5%,
+// block means within 10% (measured <= 3.3% and 5.6%).
+// These two models once built vectors from two `inout` hash calls in one
+// constructor, whose argument order C++ leaves unspecified (GCC: right to
+// left) while GLSL evaluates left to right, so CPU and GPU drew different
+// patterns (59% / 46% mismatching pixels); this test found that defect.
 class GpuVsCpu : public ::testing::TestWithParam<std::string> {};
 
-bool has_evaluation_order_defect(const std::string& model) {
-    return model == "deliot2023" || model == "zirr2016";
+// Rows of `image` with the given parity (0: even rows, 1: odd rows).
+Image rows_of_parity(const Image& image, int parity) {
+    Image out(image.width, image.height / 2);
+    for (int y = 0; y < out.height; ++y)
+        for (int x = 0; x < image.width; ++x) out.at(x, y) = image.at(x, 2 * y + parity);
+    return out;
 }
 
 TEST_P(GpuVsCpu, SameViewAgrees) {
     GLINTLAB_REQUIRE_GL();
-    const bool defect = has_evaluation_order_defect(GetParam());
     for (const std::string which : {"plane", "sphere"}) {
         SCOPED_TRACE(which);
         const Scene scene = parse_scene(test_scene(which, GetParam(), 12.0f), "test:" + which);
@@ -141,14 +150,17 @@ TEST_P(GpuVsCpu, SameViewAgrees) {
         const Image cpu = render_scene(scene, RenderOptions{1, true});
         const ImageAgreement a = compare_images(gpu, cpu, 8, 0.02f, 0.1f);
         ASSERT_GT(a.mean_b, 0.01);  // the view is lit
+        const ImageAgreement even =
+            compare_images(rows_of_parity(gpu, 0), rows_of_parity(cpu, 0), 8, 0.02f, 0.1f);
         RecordProperty(which + "_mean_rel", std::to_string(a.mean_relative_error));
         RecordProperty(which + "_smoothed", std::to_string(a.smoothed_relative_l1));
         RecordProperty(which + "_mismatch", std::to_string(a.mismatch_fraction));
-        EXPECT_LT(a.mean_relative_error, defect ? 0.10 : 0.03);
-        EXPECT_LT(a.smoothed_relative_l1, defect ? 0.5 : 0.05);
-        if (!defect) {
-            EXPECT_LT(a.mismatch_fraction, 0.01);
-        }
+        RecordProperty(which + "_mismatch_even_rows", std::to_string(even.mismatch_fraction));
+        const bool gated = GetParam() == "deliot2023" || GetParam() == "zirr2016";
+        EXPECT_LT(a.mean_relative_error, gated ? 0.05 : 0.03);
+        EXPECT_LT(a.smoothed_relative_l1, gated ? 0.10 : 0.05);
+        EXPECT_LT(even.mismatch_fraction, 0.01);
+        if (!gated) EXPECT_LT(a.mismatch_fraction, 0.01);
     }
 }
 

@@ -251,7 +251,12 @@ Deliot2023Simplex deliot2023_simplex(ivec3 id, float weight, vec2 uv, float log_
     vec2 g;
     g.y = q.y / 0.93060486f;  // q.y / (a sqrt(3)/2)
     g.x = q.x / 1.07456993f - 0.5f * g.y;
-    g = g + vec2(hash_random(st), hash_random(st));
+    // Two statements, not vec2(hash_random(st), hash_random(st)): C++ leaves
+    // the order of constructor arguments unspecified (GCC: right to left),
+    // GLSL evaluates left to right; the CPU and GPU must draw the same offset.
+    float offset_x = hash_random(st);
+    float offset_y = hash_random(st);
+    g = g + vec2(offset_x, offset_y);
     g = mod(g, DELIOT2023_LATTICE_PERIOD);
     vec2 gf = floor(g);
     ivec2 cell = ivec2(gf);
@@ -305,7 +310,9 @@ vec2 deliot2023_grid_counts(ivec3 id, float weight, vec2 uv, vec2 slope, float p
         float N = deliot2023_vertex_trials(s.log_trials, density_randomization, vs);
         // Eq. 14: angular grid over the projected half vector in units of R,
         // offset per vertex so that angular cells do not align across space.
-        vec2 a = slope + vec2(hash_random(vs), hash_random(vs));
+        float angular_offset_x = hash_random(vs);  // sequenced: see the lattice offset
+        float angular_offset_y = hash_random(vs);
+        vec2 a = slope + vec2(angular_offset_x, angular_offset_y);
         a = mod(a, DELIOT2023_LATTICE_PERIOD);
         vec2 af = floor(a);
         ivec2 ac = ivec2(af);

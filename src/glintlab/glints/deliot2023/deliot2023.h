@@ -2,6 +2,7 @@
 // the shared deliot2023.glsl and the reader of its parameter block.
 #pragma once
 
+#include <array>
 #include <cstdint>
 
 #include <glm/glm.hpp>
@@ -26,6 +27,11 @@ struct Deliot2023Target {
 // D_P(h) (000 Eq. 3-4) of shader::deliot2023_ndf, h in the local frame.
 float deliot2023_ndf(glm::vec3 h, const Footprint& footprint, const Deliot2023Target& target,
                      const Deliot2023Params& params);
+
+// The 64 x 64 uniform pairs of the noise table (000 §6.3), row-major: PCG32
+// stream (0x64656c696f74, seed 2023), each pair (first draw, second draw).
+// The one source of the table for the CPU lookup and the GPU texture.
+const std::array<glm::vec2, 64 * 64>& deliot2023_noise_table();
 
 // The same with the uniforms from a precomputed 64 x 64 noise table instead of
 // a hash (000 §6.3; deliot2023_noise_table.cpp), for speed comparisons.

@@ -17,11 +17,20 @@ constexpr uint32_t kNoiseTexels = 64 * 64;
 const std::array<glm::vec2, kNoiseTexels> kNoise = [] {
     std::array<glm::vec2, kNoiseTexels> t{};
     Pcg32 rng(0x6465'6c69'6f74ull, 2023);
-    for (glm::vec2& v : t) v = glm::vec2(rng.next_float(), rng.next_float());
+    for (glm::vec2& v : t) {
+        // Sequenced (C++ leaves constructor argument order unspecified): the
+        // GPU table (realtime/glint_programs.cpp) pairs (first, second) draw.
+        const float first = rng.next_float();
+        const float second = rng.next_float();
+        v = glm::vec2(first, second);
+    }
     return t;
 }();
 
 }  // namespace
+
+const std::array<glm::vec2, 64 * 64>& deliot2023_noise_table() { return kNoise; }
+
 }  // namespace glintlab
 
 GLINTLAB_SHADER_FUNCTIONS_BEGIN

@@ -79,7 +79,11 @@ float zirr2016_cell_law(float N, float p, uint cell_hash) {
 // `slope` (h.xy / R, offset per texel), blended bilinearly (000 §3).
 float zirr2016_texel_count(ivec2 t, int l, vec2 slope, float N, float p, uint seed) {
     uint ts = hash_cell3(ivec3(t & ivec2(ZIRR2016_LATTICE_MASK), l), seed);
-    vec2 a = mod(slope + vec2(hash_random(ts), hash_random(ts)), ZIRR2016_LATTICE_PERIOD);
+    // Sequenced draws: C++ leaves the order of constructor arguments
+    // unspecified, GLSL evaluates left to right (CPU and GPU must agree).
+    float offset_x = hash_random(ts);
+    float offset_y = hash_random(ts);
+    vec2 a = mod(slope + vec2(offset_x, offset_y), ZIRR2016_LATTICE_PERIOD);
     vec2 af = floor(a);
     ivec2 ac = ivec2(af);
     vec2 f = clamp(a - af, 0.0f, 1.0f);
