@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <limits>
+#include <variant>
 
 #include "glintlab/glints/glint_lighting.h"
 #include "glintlab/glints/registry.h"
@@ -44,6 +45,23 @@ glm::vec3 emitted(const Scene& scene, const SurfaceHit& hit, glm::vec3 dir) {
     return std::get<SphereLight>(scene.lights[shape.area_light]).radiance;
 }
 
+// Whether light `light` is visible from `hit` along wi, up to t_max (the
+// distance to the light from hit.p). A sphere light is a shape of the scene:
+// its shadow ray stops at its own surface, where a t_max computed from hit.p
+// is off by the origin offset and Embree's float sphere intersection
+// (measured 1-3e-4 at distance 2, enough to self-occlude 7% of the samples
+// of a glossy lobe). So for sphere lights the first hit decides: visible iff
+// it is the light's own sphere, or nothing. Other lights are no shapes.
+bool light_visible(const IntegratorContext& ctx, const SurfaceHit& hit, glm::vec3 wi, float t_max,
+                   int light) {
+    const glm::vec3 origin = offset_ray_origin(hit, wi);
+    if (std::holds_alternative<SphereLight>(ctx.scene.lights[light])) {
+        const auto first = ctx.accel.intersect(Ray{origin, wi}, kInfinity);
+        return !first || ctx.scene.shapes[first->shape].area_light == light;
+    }
+    return !ctx.accel.occluded(origin, wi, t_max);
+}
+
 // The lights a glint model shades itself at the camera's first hit
 // (glints/glint_lighting.h); empty for every other hit.
 struct OwnLights {
@@ -77,14 +95,16 @@ glm::vec3 own_light_radiance(const IntegratorContext& ctx, const OwnLights& own,
     lc.n = bsdf.frame().n;
     lc.wo = bsdf.frame().to_local(wo);
     lc.footprint = footprint;
-    lc.visible = [&](glm::vec3 wi, float t_max) {
-        return !ctx.accel.occluded(offset_ray_origin(hit, wi), wi, t_max);
-    };
     lc.rng = &rng;
     if (lc.wo.z <= 0.0f) return glm::vec3(0.0f);
     glm::vec3 L(0.0f);
-    for (int i = 0; i < static_cast<int>(ctx.scene.lights.size()); ++i)
-        if (own.has(ctx.scene, i)) L += own.model->light_radiance(lc, i);
+    for (int i = 0; i < static_cast<int>(ctx.scene.lights.size()); ++i) {
+        if (!own.has(ctx.scene, i)) continue;
+        lc.visible = [&ctx, &hit, i](glm::vec3 wi, float t_max) {
+            return light_visible(ctx, hit, wi, t_max, i);
+        };
+        L += own.model->light_radiance(lc, i);
+    }
     return L;
 }
 
@@ -104,9 +124,8 @@ glm::vec3 sample_lights(const IntegratorContext& ctx, const SurfaceHit& hit,
         const glm::vec3 f = bsdf.f(wo, ls->wi);
         if (f == glm::vec3(0.0f)) continue;
         const float cos_i = std::abs(glm::dot(ls->wi, bsdf.frame().n));
-        const glm::vec3 origin = offset_ray_origin(hit, ls->wi);
         const float t_max = std::isinf(ls->distance) ? kInfinity : ls->distance * (1.0f - 1e-4f);
-        if (ctx.accel.occluded(origin, ls->wi, t_max)) continue;
+        if (!light_visible(ctx, hit, ls->wi, t_max, i)) continue;
         const float w = ls->is_delta ? 1.0f : power_heuristic(ls->pdf, bsdf.pdf(wo, ls->wi));
         L += f * ls->radiance * cos_i * w / ls->pdf;
     }

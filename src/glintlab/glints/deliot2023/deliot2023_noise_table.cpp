@@ -29,7 +29,9 @@ const std::array<glm::vec2, kNoiseTexels> kNoise = [] {
 
 }  // namespace
 
-const std::array<glm::vec2, 64 * 64>& deliot2023_noise_table() { return kNoise; }
+const std::array<glm::vec2, 64 * 64>& deliot2023_noise_table() {
+    return kNoise;
+}
 
 }  // namespace glintlab
 
