@@ -3,9 +3,13 @@
 #include <boost/math/distributions/binomial.hpp>
 #include <boost/math/special_functions/gamma.hpp>
 #include <cmath>
+#include <functional>
 #include <numbers>
+#include <vector>
 
+#include "glintlab/core/error.h"
 #include "glintlab/core/rng.h"
+#include "glintlab/glints/explicit/explicit.h"
 #include "glintlab/glints/jakob2014/jakob2014.h"
 #include "glintlab/glints/registry.h"
 #include "glintlab/microfacet/microfacet.h"
@@ -213,103 +217,180 @@ std::vector<Table1Row> table1_statistics(int pixels, uint64_t seed) {
 
 namespace glintlab::jakob2014 {
 
-ExplicitComparison compare_with_explicit_particles(int ndf, float alpha, double gamma_deg,
-                                                   double log_density, int pixels, int realizations,
-                                                   uint64_t seed) {
-    NdfSpec spec;
-    spec.ndf = ndf;
-    spec.alpha_x = spec.alpha_y = alpha;
-    const double gamma = gamma_deg * std::numbers::pi / 180.0;
-    const int64_t n = std::llround(std::exp(log_density));
-    const double side = 1.0 / pixels, area = side * side;
-    // Scene: the uv square is the plane z = 0 (1 × 1); camera and light above it.
-    const glm::dvec3 camera(0.5, -0.8, 1.2), light(0.5, 1.6, 0.9);
-    auto dirs = [&](int px, int py, glm::dvec3& wi, glm::dvec3& wo) {
-        const glm::dvec3 p((px + 0.5) * side, (py + 0.5) * side, 0.0);
-        wo = glm::normalize(camera - p);
-        wi = glm::normalize(light - p);
-    };
-    Model base;
-    base.table = &ndf_integral_table(spec);
-    base.particles = n;
-    base.gamma = gamma;
-    base.epsilon = 0.1;
-    base.max_depth = 20;
-    base.query_area = area;
-    base.query_solid_angle = cone_solid_angle(gamma) / (4.0 * 0.8);
-    double se = 0, se2 = 0, sj = 0, sj2 = 0;
-    std::vector<double> ve, vj;  // per-realization moments, for the standard errors
-    Pcg32 rng(seed, 0x65787031u);
-    for (int r = 0; r < realizations; ++r) {
-        // Explicit particles, bucketed by pixel.
-        std::vector<std::vector<glm::dvec3>> cells(size_t(pixels) * size_t(pixels));
-        const glm::vec3 up(0.0f, 0.0f, 1.0f);
-        for (int64_t k = 0; k < n; ++k) {
-            const double u = rng.next_double(), v = rng.next_double();
-            const glm::vec3 m = shader::sample_vndf(ndf, up, alpha, alpha,
-                                                    glm::vec2(rng.next_float(), rng.next_float()));
-            const int cx = std::min(pixels - 1, int(u * pixels)),
-                      cy = std::min(pixels - 1, int(v * pixels));
-            cells[size_t(cy) * size_t(pixels) + size_t(cx)].push_back(glm::dvec3(m));
-        }
-        Model m = base;
-        m.seed = rng.next_uint();
-        double re = 0, re2 = 0, rj = 0, rj2 = 0;
-        for (int py = 0; py < pixels; ++py)
-            for (int px = 0; px < pixels; ++px) {
-                glm::dvec3 wi, wo;
-                dirs(px, py, wi, wo);
-                const glm::dvec3 h = glm::normalize(wi + wo);
-                const double scale = count_to_ndf(m, area, wi, h);
-                const SphericalConic c = SphericalConic::make(wi, wo, gamma);
-                int count = 0;
-                for (const glm::dvec3& mm : cells[size_t(py) * size_t(pixels) + size_t(px)])
-                    count += c.contains(mm);
-                const double de = count * scale;
-                UvParallelogram q;
-                q.center = {(px + 0.5) * side, (py + 0.5) * side};
-                q.e1 = {side, 0.0};
-                q.e2 = {0.0, side};
-                const double dj = query_count(m, q, wi, wo, nullptr).count * scale;
-                re += de;
-                re2 += de * de;
-                rj += dj;
-                rj2 += dj * dj;
-            }
-        const double np = double(pixels) * pixels;
-        ve.push_back(re / np);
-        ve.push_back(re2 / np);
-        vj.push_back(rj / np);
-        vj.push_back(rj2 / np);
-        se += re / np;
-        se2 += re2 / np;
-        sj += rj / np;
-        sj2 += rj2 / np;
+namespace {
+
+// The two models on the same material: the `explicit` facet field and a
+// jakob2014 glint description, each seeded per realization.
+struct ComparedModels {
+    ExplicitFacetField field;
+    GlintDesc desc;
+};
+
+ComparedModels compared_models(int ndf, float alpha, double gamma_deg, double log_density) {
+    ComparedModels m;
+    m.field.ndf = ndf == shader::NDF_GGX ? NdfType::GGX : NdfType::Beckmann;
+    m.field.alpha_x = m.field.alpha_y = alpha;
+    // The glint material stores ln N as a float: give the field the same value.
+    m.field.log_density = static_cast<double>(static_cast<float>(log_density));
+    m.desc.model = "jakob2014";
+    m.desc.model_id = GlintModelId::Jakob2014;
+    m.desc.ndf = m.field.ndf;
+    m.desc.alpha_x = m.desc.alpha_y = alpha;
+    m.desc.log_density = static_cast<float>(log_density);
+    Jakob2014Params params;
+    params.gamma_deg = static_cast<float>(gamma_deg);
+    m.desc.params = params;
+    if (make_model(m.desc).particles != static_cast<int64_t>(explicit_facets_per_tile(m.field)))
+        fail("jakob2014 vs explicit: the two models disagree on N at log density {}", log_density);
+    return m;
+}
+
+// Per-realization first and second moments of both models -> the comparison
+// (relative differences and their standard errors from the realizations).
+ExplicitComparison summarize(const std::vector<glm::dvec2>& expl,
+                             const std::vector<glm::dvec2>& jak,
+                             const std::vector<glm::dvec2>& var = {}) {
+    const double k = static_cast<double>(expl.size());
+    glm::dvec2 se(0.0), se2(0.0), sj(0.0), sj2(0.0);
+    for (size_t r = 0; r < expl.size(); ++r) {
+        se += expl[r], se2 += expl[r] * expl[r];
+        sj += jak[r], sj2 += jak[r] * jak[r];
     }
     ExplicitComparison out;
-    out.mean_explicit = se / realizations;
-    out.m2_explicit = se2 / realizations;
-    out.mean_jakob = sj / realizations;
-    out.m2_jakob = sj2 / realizations;
+    out.mean_explicit = se.x / k;
+    out.m2_explicit = se.y / k;
+    out.mean_jakob = sj.x / k;
+    out.m2_jakob = sj.y / k;
     out.mean_rel_err = std::abs(out.mean_jakob / out.mean_explicit - 1.0);
     out.m2_rel_err = std::abs(out.m2_jakob / out.m2_explicit - 1.0);
-    // Standard errors from the spread of the per-realization moments.
-    auto rel_se = [&](int which) {
-        double a = 0, a2 = 0, b = 0, b2 = 0;
-        for (int r = 0; r < realizations; ++r) {
-            a += ve[size_t(2 * r + which)];
-            a2 += ve[size_t(2 * r + which)] * ve[size_t(2 * r + which)];
-            b += vj[size_t(2 * r + which)];
-            b2 += vj[size_t(2 * r + which)] * vj[size_t(2 * r + which)];
-        }
-        const double k = realizations;
-        const double va = std::max(0.0, a2 / k - (a / k) * (a / k)) / std::max(1.0, k - 1.0);
-        const double vb = std::max(0.0, b2 / k - (b / k) * (b / k)) / std::max(1.0, k - 1.0);
-        return std::sqrt(va + vb) / (a / k);
+    const auto rel_se = [&](int i) {
+        const double va =
+            std::max(0.0, se2[i] / k - (se[i] / k) * (se[i] / k)) / std::max(1.0, k - 1.0);
+        const double vb =
+            std::max(0.0, sj2[i] / k - (sj[i] / k) * (sj[i] / k)) / std::max(1.0, k - 1.0);
+        return std::sqrt(va + vb) / (se[i] / k);
     };
     out.mean_std_err = rel_se(0);
     out.m2_std_err = rel_se(1);
+    if (var.empty()) {
+        out.var_explicit = out.m2_explicit - out.mean_explicit * out.mean_explicit;
+        out.var_jakob = out.m2_jakob - out.mean_jakob * out.mean_jakob;
+    } else {
+        for (const glm::dvec2& v : var) out.var_explicit += v.x / k, out.var_jakob += v.y / k;
+    }
+    out.var_rel_err = std::abs(out.var_jakob / out.var_explicit - 1.0);
     return out;
+}
+
+// Footprint of pixel (px, py) of a plane of pixels² square footprints tiling
+// the uv square (the plane z = 0, normal +z: local = world).
+Footprint pixel_footprint(int px, int py, int pixels) {
+    const float side = 1.0f / static_cast<float>(pixels);
+    Footprint fp;
+    fp.uv =
+        glm::vec2((static_cast<float>(px) + 0.5f) * side, (static_cast<float>(py) + 0.5f) * side);
+    fp.duvdx = glm::vec2(side, 0.0f);
+    fp.duvdy = glm::vec2(0.0f, side);
+    return fp;
+}
+
+constexpr glm::dvec3 kCamera(0.5, -0.8, 1.2);
+
+}  // namespace
+
+ExplicitComparison compare_with_explicit_particles(int ndf, float alpha, double gamma_deg,
+                                                   double log_density, int pixels, int realizations,
+                                                   uint64_t seed) {
+    ComparedModels models = compared_models(ndf, alpha, gamma_deg, log_density);
+    const double gamma = gamma_deg * std::numbers::pi / 180.0;
+    const glm::dvec3 light(0.5, 1.6, 0.9);
+    std::vector<glm::dvec2> expl, jak;  // per realization: (mean, second moment) over pixels
+    Pcg32 rng(seed, 0x65787031u);
+    for (int r = 0; r < realizations; ++r) {
+        models.field.seed = rng.next_uint();
+        models.desc.seed = rng.next_uint();
+        glm::dvec2 e(0.0), j(0.0);
+        for (int py = 0; py < pixels; ++py)
+            for (int px = 0; px < pixels; ++px) {
+                const Footprint fp = pixel_footprint(px, py, pixels);
+                const glm::dvec3 p(fp.uv.x, fp.uv.y, 0.0);
+                const glm::vec3 wo(glm::normalize(kCamera - p)), wi(glm::normalize(light - p));
+                const glm::vec3 h = glm::normalize(wi + wo);
+                const double de = explicit_footprint_ndf(models.field, fp, wo, wi, float(gamma));
+                const double dj = jakob2014_footprint_ndf(wo, wi, h, fp, models.desc);
+                e += glm::dvec2(de, de * de);
+                j += glm::dvec2(dj, dj * dj);
+            }
+        const double np = double(pixels) * pixels;
+        expl.push_back(e / np);
+        jak.push_back(j / np);
+    }
+    return summarize(expl, jak);
+}
+
+float smooth_test_environment(glm::vec3 d) {
+    // Smooth at the scale of γ (no feature narrower than ~20°), so the cone
+    // average jakob2014 applies to each particle's mirror direction changes
+    // its radiance by O(γ²) only.
+    return 1.0f + 0.8f * d.z + 0.6f * std::sin(3.0f * d.x) * std::cos(2.0f * d.y) +
+           2.0f * std::exp(-8.0f * glm::dot(d - glm::vec3(0.3f, 0.5f, 0.81f),
+                                            d - glm::vec3(0.3f, 0.5f, 0.81f)));
+}
+
+ExplicitComparison compare_with_explicit_environment(int ndf, float alpha, double gamma_deg,
+                                                     double log_density, int pixels,
+                                                     int realizations, int samples, uint64_t seed) {
+    ComparedModels models = compared_models(ndf, alpha, gamma_deg, log_density);
+    const std::function<glm::vec3(glm::vec3)> env = [](glm::vec3 d) {
+        return glm::vec3(smooth_test_environment(d));
+    };
+    std::vector<glm::dvec2> expl, jak, var;
+    Pcg32 rng(seed, 0x656e7631u);
+    for (int r = 0; r < realizations; ++r) {
+        models.field.seed = rng.next_uint();
+        models.desc.seed = rng.next_uint();
+        glm::dvec2 e(0.0), j(0.0);
+        double j1 = 0.0, j2 = 0.0;  // sums of the first and second jakob2014 estimates
+        for (int py = 0; py < pixels; ++py)
+            for (int px = 0; px < pixels; ++px) {
+                const Footprint fp = pixel_footprint(px, py, pixels);
+                const glm::vec3 wo(glm::normalize(kCamera - glm::dvec3(fp.uv.x, fp.uv.y, 0.0)));
+                const double le = explicit_environment_radiance(models.field, fp, wo, env).x;
+                // jakob2014: two independent estimates X1, X2 of
+                // ∫ L_env G2 D_P / (4 cos_o) dwi with its own sampling (002 §4);
+                // E[X1 X2] = L², so the second moment carries no MC noise.
+                double x[2] = {0.0, 0.0};
+                for (double& xi : x) {
+                    for (int k = 0; k < samples; ++k) {
+                        const float uc = rng.next_float();
+                        const float u1 = rng.next_float();
+                        const glm::vec2 u(u1, rng.next_float());
+                        const auto wi = jakob2014_sample_wi(models.desc, wo, uc, u);
+                        if (!wi) continue;
+                        const float pdf = jakob2014_pdf(models.desc, wo, *wi, true);
+                        if (!(pdf > 0.0f)) continue;
+                        const glm::vec3 h = glm::normalize(*wi + wo);
+                        const double d = jakob2014_footprint_ndf(wo, *wi, h, fp, models.desc);
+                        if (d == 0.0) continue;
+                        const double g2 = shader::G2_SmithCorrelated(ndf, wo, *wi, alpha, alpha);
+                        xi += env(*wi).x * g2 * d / (4.0 * wo.z * pdf);
+                    }
+                    xi /= samples;
+                }
+                e += glm::dvec2(le, le * le);
+                j += glm::dvec2(0.5 * (x[0] + x[1]), x[0] * x[1]);
+                j1 += x[0], j2 += x[1];
+            }
+        const double np = double(pixels) * pixels;
+        expl.push_back(e / np);
+        jak.push_back(j / np);
+        // Per-pixel variance within the realization, unbiased for both: the
+        // mean of L_p² minus the mean over pixel pairs p != q of L_p L_q
+        // (jakob2014: X1_p X2_q, independent estimates, so MC noise adds no bias).
+        const double pairs = np * (np - 1.0);
+        var.push_back({e.y / np - (e.x * e.x - e.y) / pairs, j.y / np - (j1 * j2 - j.y) / pairs});
+    }
+    return summarize(expl, jak, var);
 }
 
 }  // namespace glintlab::jakob2014

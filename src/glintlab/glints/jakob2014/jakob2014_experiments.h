@@ -74,21 +74,40 @@ std::vector<Table1Row> table1_statistics(int pixels, uint64_t seed);
 
 namespace glintlab::jakob2014 {
 
-// jakob2014 against explicitly generated particles (an in-folder reference:
-// N i.i.d. particles, positions uniform on the unit uv square, normals drawn
-// from D(m)(m·n) by visible-normal sampling at wo = n, counted by brute force
-// in each query). A plane of `pixels`² square footprints tiling the uv square
-// is seen by a camera and lit by a point light at finite distance (per-pixel
-// directions); the per-pixel D_P of both models is compared by its first and
-// second moments over the pixels and `realizations` seeds.
+// jakob2014 against the `explicit` ground truth (glints/explicit/explicit.h:
+// N facets per unit uv area, uniform positions, normals D(m)(m·n)), both on
+// the same material and seeded per realization. A plane of `pixels`² square
+// footprints tiling the uv square (z = 0) is seen by a camera at finite
+// distance; per-pixel values are compared by their first and second moments
+// over the pixels and `realizations` seeds, with standard errors from the
+// spread over realizations.
 struct ExplicitComparison {
     double mean_explicit = 0.0, mean_jakob = 0.0;
     double m2_explicit = 0.0, m2_jakob = 0.0;
     double mean_rel_err = 0.0, m2_rel_err = 0.0;
     double mean_std_err = 0.0, m2_std_err = 0.0;  // relative standard errors of the difference
+    // Per-pixel variance m2 - mean² (the glint statistics proper: m2 alone
+    // is dominated by mean² when footprints hold many particles).
+    double var_explicit = 0.0, var_jakob = 0.0, var_rel_err = 0.0;
 };
+// Under a point light at finite distance: per-pixel D_P
+// (explicit_footprint_ndf vs jakob2014_footprint_ndf).
 ExplicitComparison compare_with_explicit_particles(int ndf, float alpha, double gamma_deg,
                                                    double log_density, int pixels, int realizations,
                                                    uint64_t seed);
+
+// The environment of the comparison below (radiance of a local direction):
+// smooth at the scale of γ, so jakob2014's cone average of each particle's
+// reflection leaves the per-pixel law unchanged to O(γ²).
+float smooth_test_environment(glm::vec3 d);
+
+// Under that environment: per-pixel reflected radiance (F = 1). explicit:
+// explicit_environment_radiance (exact sum over the footprint's facets);
+// jakob2014: Monte Carlo with its own importance sampling (002 §4),
+// `samples` per estimate and two independent estimates per pixel whose
+// product is an unbiased estimate of the squared radiance.
+ExplicitComparison compare_with_explicit_environment(int ndf, float alpha, double gamma_deg,
+                                                     double log_density, int pixels,
+                                                     int realizations, int samples, uint64_t seed);
 
 }  // namespace glintlab::jakob2014

@@ -16,8 +16,11 @@ struct Jakob2014ValidationOptions {
     double convergence_count = 1000.0;  // expected particles per query (>= 1e3)
     int table1_pixels = 20000;          // queries per Table 1 setting
     int robustness_queries = 4000;
-    int explicit_pixels = 128;       // footprints per side of the explicit comparison
-    int explicit_realizations = 16;  // particle sets (seeds) per model
+    int explicit_pixels = 128;         // footprints per side of the explicit comparison
+    int explicit_realizations = 16;    // particle sets (seeds) per model
+    int environment_pixels = 24;       // footprints per side under the environment
+    int environment_realizations = 4;  // seeds per model under the environment
+    int environment_samples = 256;     // jakob2014 MC samples per estimate (2 per pixel)
 };
 
 ValidationReport validate_jakob2014(const Jakob2014ValidationOptions& options);
