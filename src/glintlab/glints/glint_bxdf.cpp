@@ -3,8 +3,8 @@
 #include "glintlab/glints/chermain2020/chermain2020.h"
 #include "glintlab/glints/deliot2023/deliot2023.h"
 #include "glintlab/glints/explicit/explicit_model.h"
-#include "glintlab/glints/kneiphof2025/kneiphof2025.h"
 #include "glintlab/glints/jakob2014/jakob2014.h"
+#include "glintlab/glints/kneiphof2025/kneiphof2025.h"
 #include "glintlab/glints/zirr2016/zirr2016.h"
 #include "glintlab/microfacet/microfacet.h"
 #include "glintlab/scene/scene.h"
@@ -77,24 +77,45 @@ glm::vec3 GlintBxdf::fresnel(float cos_oh) const {
     return glm::vec3(1.0f);
 }
 
+glm::vec3 GlintBxdf::base_f(glm::vec3 wo, glm::vec3 wi) const {
+    if (!desc->has_base() || wo.z <= 0.0f || wi.z <= 0.0f) return glm::vec3(0.0f);
+    const float eta = desc->fresnel.eta.x;
+    const float fo = shader::F_Dielectric(wo.z, eta), fi = shader::F_Dielectric(wi.z, eta);
+    return desc->base_albedo * (shader::INV_PI * (1.0f - fo) * (1.0f - fi));
+}
+
+float GlintBxdf::glint_lobe_probability(glm::vec3 wo) const {
+    if (!desc->has_base()) return 1.0f;
+    const float fo = shader::F_Dielectric(std::abs(wo.z), desc->fresnel.eta.x);
+    const glm::vec3& a = desc->base_albedo;
+    const float wd = (1.0f - fo) * std::max(a.x, std::max(a.y, a.z));
+    return fo + wd > 0.0f ? fo / (fo + wd) : 1.0f;
+}
+
 glm::vec3 GlintBxdf::f(glm::vec3 wo, glm::vec3 wi) const {
     if (wo.z <= 0.0f || wi.z <= 0.0f) return glm::vec3(0.0f);
     glm::vec3 h = wo + wi;
-    if (glm::dot(h, h) == 0.0f) return glm::vec3(0.0f);
+    if (glm::dot(h, h) == 0.0f) return base_f(wo, wi);
     h = glm::normalize(h);
     const glm::vec3 d =
         has_footprint
             ? footprint_ndf_rgb(wo, wi, h)
             : glm::vec3(shader::D_Microfacet(ndf_id(desc->ndf), h, desc->alpha_x, desc->alpha_y));
     const float g = masking(*desc, wo, wi, h);
-    return desc->color * fresnel(glm::dot(wo, h)) * d * (g / (4.0f * wo.z * wi.z));
+    return desc->color * fresnel(glm::dot(wo, h)) * d * (g / (4.0f * wo.z * wi.z)) + base_f(wo, wi);
 }
 
 float GlintBxdf::pdf(glm::vec3 wo, glm::vec3 wi) const {
     if (wo.z <= 0.0f || wi.z <= 0.0f) return 0.0f;
+    const float pg = glint_lobe_probability(wo);
+    return pg * glint_lobe_pdf(wo, wi) + (1.0f - pg) * wi.z * shader::INV_PI;
+}
+
+float GlintBxdf::glint_lobe_pdf(glm::vec3 wo, glm::vec3 wi) const {
     // jakob2014 samples its discrete model by 002 §4 (2α lobe ⊛ γ cone); its
     // later bounces (no footprint) use the smooth model.
-    if (desc->model_id == GlintModelId::Jakob2014 && has_footprint) return jakob2014_pdf(*desc, wo, wi);
+    if (desc->model_id == GlintModelId::Jakob2014 && has_footprint)
+        return jakob2014_pdf(*desc, wo, wi);
     glm::vec3 h = wo + wi;
     if (glm::dot(h, h) == 0.0f) return 0.0f;
     h = glm::normalize(h);
@@ -106,12 +127,19 @@ float GlintBxdf::pdf(glm::vec3 wo, glm::vec3 wi) const {
 std::optional<BsdfSample> GlintBxdf::sample(glm::vec3 wo, float uc, glm::vec2 u) const {
     if (wo.z <= 0.0f) return std::nullopt;
     glm::vec3 wi;
-    if (desc->model_id == GlintModelId::Jakob2014 && has_footprint) {
+    const float pg = glint_lobe_probability(wo);
+    if (uc >= pg) {
+        // The diffuse base: cosine-weighted hemisphere (Malley).
+        const float r = std::sqrt(u.x), phi = 2.0f * shader::PI * u.y;
+        wi = glm::vec3(r * std::cos(phi), r * std::sin(phi), std::sqrt(std::max(0.0f, 1.0f - u.x)));
+    } else if (desc->model_id == GlintModelId::Jakob2014 && has_footprint) {
+        uc = std::min(uc / pg, 0x1.fffffep-1f);  // reuse the lobe choice's uniform
         const std::optional<glm::vec3> w = jakob2014_sample_wi(*desc, wo, uc, u);
         if (!w) return std::nullopt;
         wi = *w;
     } else {
-        const glm::vec3 h = shader::sample_vndf(ndf_id(desc->ndf), wo, desc->alpha_x, desc->alpha_y, u);
+        const glm::vec3 h =
+            shader::sample_vndf(ndf_id(desc->ndf), wo, desc->alpha_x, desc->alpha_y, u);
         wi = glm::reflect(-wo, h);
     }
     if (wi.z <= 0.0f) return std::nullopt;

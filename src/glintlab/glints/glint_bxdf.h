@@ -5,6 +5,12 @@
 // The `smooth` model has D_P = D. Without a footprint (secondary bounces)
 // every model falls back to its smooth limit D. Sampling uses the smooth
 // visible normals, so the estimator stays unbiased for any D_P.
+// With a diffuse base (GlintDesc::base_albedo, 002 Fig. 7) the plastic
+// layering of microfacet/bxdfs.h is added:
+//     f += base_albedo / π · (1 − F(cos_o)) (1 − F(cos_i)),
+// F the coating's dielectric Fresnel, and sampling picks the glint lobe with
+// PlasticBxdf's probability F(cos_o) / (F(cos_o) + (1 − F(cos_o)) max(base)),
+// else the cosine lobe.
 #pragma once
 
 #include <optional>
@@ -30,9 +36,15 @@ struct GlintBxdf {
     // D_P in every channel otherwise.
     glm::vec3 footprint_ndf_rgb(glm::vec3 wo, glm::vec3 wi, glm::vec3 h) const;
     glm::vec3 fresnel(float cos_oh) const;
+    // The diffuse base's term (0 without a base) and the glint lobe's
+    // selection probability in sampling (1 without a base).
+    glm::vec3 base_f(glm::vec3 wo, glm::vec3 wi) const;
+    float glint_lobe_probability(glm::vec3 wo) const;
 
     glm::vec3 f(glm::vec3 wo, glm::vec3 wi) const;
     float pdf(glm::vec3 wo, glm::vec3 wi) const;
+    // The glint lobe's own sampling density (without the base's mixture).
+    float glint_lobe_pdf(glm::vec3 wo, glm::vec3 wi) const;
     std::optional<BsdfSample> sample(glm::vec3 wo, float uc, glm::vec2 u) const;
     bool is_specular() const { return false; }
 };

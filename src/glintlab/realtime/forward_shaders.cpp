@@ -76,6 +76,7 @@ uniform vec3 u_emission;  // sphere-light shapes (outer side)
 // Glint material: colour and Fresnel (FresnelDesc: 0 none, 1 Schlick,
 // 2 conductor, 3 dielectric).
 uniform vec3 u_glint_color;
+uniform vec3 u_glint_base_albedo;  // diffuse base under a dielectric coat (0: none)
 uniform int u_fresnel_mode;
 uniform vec3 u_fresnel_f0;
 uniform vec3 u_fresnel_eta;
@@ -203,7 +204,15 @@ vec3 eval_bsdf(vec3 wo, vec3 wi, Footprint fp) {
         // f = color F(wo.h) G2 D_P(h) / (4 cos_o cos_i), D_P over the footprint.
         vec3 d = glint_ndf(h, fp);
         float g = glint_masking(wo, wi, h);
-        return u_glint_color * glint_fresnel(dot(wo, h)) * d * (g / (4.0f * wo.z * wi.z));
+        vec3 f = u_glint_color * glint_fresnel(dot(wo, h)) * d * (g / (4.0f * wo.z * wi.z));
+        // Diffuse base (glint_bxdf.h): the plastic layering, coat eta = u_fresnel_eta.x
+        // (the loader requires a dielectric Fresnel whenever the base is set).
+        if (max(u_glint_base_albedo.x, max(u_glint_base_albedo.y, u_glint_base_albedo.z)) > 0.0f) {
+            float bo = F_Dielectric(wo.z, u_fresnel_eta.x);
+            float bi = F_Dielectric(wi.z, u_fresnel_eta.x);
+            f += u_glint_base_albedo * INV_PI * (1.0f - bo) * (1.0f - bi);
+        }
+        return f;
     }
     bool smooth_lobe = max(u_alpha.x, u_alpha.y) < 1e-3f;  // kSmoothAlpha: a delta lobe
     float dg = smooth_lobe ? 0.0f
@@ -230,7 +239,8 @@ vec3 environment_lighting(vec3 wo, vec3 t, vec3 b, vec3 n, Footprint fp) {
     bool glint = u_material_type == 4;
     int ndf = glint ? u_glint_ndf : u_ndf;
     vec2 alpha = glint ? u_glint_alpha : u_alpha;
-    bool has_diffuse = u_material_type == 0 || u_material_type == 3;
+    bool has_diffuse = u_material_type == 0 || u_material_type == 3 ||
+                       (glint && max(u_glint_base_albedo.x, max(u_glint_base_albedo.y, u_glint_base_albedo.z)) > 0.0f);
     bool has_lobe = u_material_type != 0;
     bool mirror = max(alpha.x, alpha.y) < 1e-3f;
     vec3 sum = vec3(0.0f);

@@ -328,6 +328,7 @@ struct GpuRenderer::Impl {
         glProgramUniform1f(p, loc("u_glint_log_density"), g.log_density);
         glProgramUniform1ui(p, loc("u_glint_seed"), g.seed);
         glProgramUniform3fv(p, loc("u_glint_color"), 1, glm::value_ptr(g.color));
+        glProgramUniform3fv(p, loc("u_glint_base_albedo"), 1, glm::value_ptr(g.base_albedo));
         glProgramUniform1i(p, loc("u_fresnel_mode"), static_cast<int>(g.fresnel.mode));
         glProgramUniform3fv(p, loc("u_fresnel_f0"), 1, glm::value_ptr(g.fresnel.f0));
         glProgramUniform3fv(p, loc("u_fresnel_eta"), 1, glm::value_ptr(g.fresnel.eta));

@@ -39,6 +39,11 @@ struct GlintDesc {
     float log_density = 20.0f;  // ln(microfacets per unit uv area)
     FresnelDesc fresnel;
     glm::vec3 color{1.0f};  // glint tint, multiplies the BRDF
+    // Lambertian base under the flakes' dielectric coating (002 Fig. 7's
+    // "dielectric flakes on a diffuse base"); 0 = none. Needs a dielectric
+    // Fresnel: its eta is the coating interface (glint_bxdf.h).
+    glm::vec3 base_albedo{0.0f};
+    bool has_base() const { return base_albedo != glm::vec3(0.0f); }
     uint32_t seed = 0;
     nlohmann::json model_params = nlohmann::json::object();  // the active model's block, as written
     GlintModelParams params;  // the active model's parameters, as read

@@ -106,6 +106,17 @@ GlintDesc read_glint(JsonObject& o) {
     g.log_density = static_cast<float>(o.number("log_density", 20.0, -20.0, 60.0));
     g.fresnel = read_fresnel(o);
     g.color = o.color("color", glm::vec3(1.0f), 0.0f, 1.0f);
+    g.base_albedo = o.color("base_albedo", glm::vec3(0.0f), 0.0f, 1.0f);
+    if (g.has_base() && g.fresnel.mode != FresnelDesc::Mode::Dielectric)
+        o.error("base_albedo",
+                "a diffuse base lies under a dielectric coating: it needs \"fresnel\": "
+                "{\"type\": \"dielectric\", \"eta\": ...} (the coating's interface)");
+    if (g.has_base() && info->shades_light != nullptr)
+        o.error("base_albedo",
+                fmt::format("glint model \"{}\" shades its lights itself (prefiltered or "
+                            "enumerated radiance) and has no diffuse base; use another model or "
+                            "omit base_albedo",
+                            model));
     g.seed = static_cast<uint32_t>(o.number("seed", 0.0, 0.0, 4294967295.0));
     // Every known model may keep its block (switching models is one word);
     // only the active one is read, the others are checked to be objects.
