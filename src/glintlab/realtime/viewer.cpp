@@ -142,8 +142,13 @@ void material_panel(MaterialDesc& m) {
         ImGui::DragFloat3("eta", &g.fresnel.eta.x, 0.01f, 0.01f, 10.0f);
         ImGui::DragFloat3("k", &g.fresnel.k.x, 0.01f, 0.0f, 20.0f);
     }
-    if (g.fresnel.mode == FresnelDesc::Mode::Dielectric)
+    if (g.fresnel.mode == FresnelDesc::Mode::Dielectric) {
         slider("eta", &g.fresnel.eta.x, 1.0f, 3.0f);
+        // The diffuse base lies under the dielectric coat (glint_bxdf.h).
+        ImGui::ColorEdit3("base albedo", &g.base_albedo.x);
+    } else {
+        g.base_albedo = glm::vec3(0.0f);  // the loader's rule: no coat, no base
+    }
     // The model's own block, with the ranges of its read_params.
     if (auto* p = std::get_if<Deliot2023Params>(&g.params)) {
         slider("microfacet roughness R", &p->microfacet_roughness, 1e-4f, 1.0f, true);
