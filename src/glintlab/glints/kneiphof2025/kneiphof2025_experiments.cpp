@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <memory>
 
 #include <glm/gtc/constants.hpp>
@@ -9,6 +10,7 @@
 #include "glintlab/core/error.h"
 #include "glintlab/core/glsl.h"
 #include "glintlab/core/rng.h"
+#include "glintlab/glints/explicit/explicit.h"
 #include "glintlab/glints/kneiphof2025/kneiphof2025.h"
 #include "glintlab/glints/kneiphof2025/kneiphof2025_prefilter.h"
 #include "glintlab/microfacet/microfacet.h"
@@ -352,6 +354,28 @@ std::vector<SphereComparison> kneiphof2025_sphere_comparison(const SphereCompari
                             grid.at(static_cast<int>(di) * 3 * res + 2 * res + p.x,
                                     row * res + p.y) = L * exposure;
                     }
+                // The `explicit` model on the same footprints: its own facet
+                // field (N = rho per unit uv area, exact counts, normals
+                // D(m)(m·n)), environment read in each pixel's local frame.
+                double ex_sq = 0.0, ex_sum = 0.0;
+                ExplicitFacetField field;
+                field.ndf = NdfType::GGX;
+                field.alpha_x = field.alpha_y = alpha;
+                field.log_density = log_density;
+                for (int r = 0; r < R; ++r) {
+                    field.seed = o.seed * 104729u + static_cast<uint32_t>(r);
+                    for (size_t i = 0; i < pixels.size(); ++i) {
+                        const SpherePixel& p = pixels[i];
+                        const glm::vec3 wo(glm::dot(wo_world, p.t), glm::dot(wo_world, p.b), p.n.z);
+                        const std::function<glm::vec3(glm::vec3)> local_env = [&](glm::vec3 d) {
+                            return env->eval(d.x * p.t + d.y * p.b + d.z * p.n);
+                        };
+                        const double l =
+                            luminance(explicit_environment_radiance(field, p.fp, wo, local_env));
+                        ex_sum += l;
+                        ex_sq += (l - gt_mean[i]) * (l - gt_mean[i]);
+                    }
+                }
                 for (int variant = 0; variant < 4; ++variant) {
                     const int K = variant % 2 == 0 ? 4 : 8;
                     const bool conditional = variant >= 2;
@@ -400,6 +424,8 @@ std::vector<SphereComparison> kneiphof2025_sphere_comparison(const SphereCompari
                     c.mean_gt_realized = gt_sum / (R * np);
                     c.mean_rel_err = std::abs(c.mean_ours - c.mean_gt) / c.mean_gt;
                     c.variance_ratio = gt_sq > 0.0 ? sq / gt_sq : 0.0;
+                    c.mean_explicit = ex_sum / (R * np);
+                    c.variance_ratio_explicit = ex_sq > 0.0 ? sq / ex_sq : 0.0;
                     out.push_back(c);
                 }
             }

@@ -52,6 +52,12 @@ struct SphereComparison {
     double mean_gt_realized = 0.0;
     double mean_rel_err = 0.0;    // |mean_ours - mean_gt| / mean_gt
     double variance_ratio = 0.0;  // sum of per-pixel squared deviations, ours / ground truth
+    // The same against glintlab's `explicit` model (glints/explicit/explicit.h):
+    // N = rho facets per unit uv area with normals D(m)(m·n) (its convention;
+    // the 003 ground truth above draws Poisson(rho |P|) facets with normals
+    // D(h)/D_H), realized with the same number of realizations.
+    double mean_explicit = 0.0;
+    double variance_ratio_explicit = 0.0;
     int nan_count = 0;
 };
 
