@@ -21,6 +21,16 @@ namespace glintlab {
 struct GlintDesc;
 struct Scene;
 
+// Radiance a model hands to a screen-space pass instead of returning it
+// (wang2020 §4.4: the glint layer and its directional occlusion are blurred
+// over the image). The renderer averages the samples of each pixel, runs the
+// pass and adds its result to the image (render/renderer.cpp).
+struct GlintPostSample {
+    glm::vec3 rgb{0.0f};      // radiance to post-process, without occlusion
+    float visibility = 1.0f;  // directional occlusion of this sample, 0 or 1
+    bool active = false;      // whether a model wrote this sample
+};
+
 struct GlintLightingContext {
     const Scene* scene = nullptr;
     const GlintDesc* desc = nullptr;
@@ -33,6 +43,9 @@ struct GlintLightingContext {
     // `t_max` (infinity for lights at infinity) without being blocked.
     std::function<bool(glm::vec3 wi, float t_max)> visible;
     Pcg32* rng = nullptr;  // for models that estimate by sampling
+    // Null where no image pass follows (e.g. validation calls): models then
+    // return all their radiance.
+    GlintPostSample* post = nullptr;
 
     glm::vec3 to_local(glm::vec3 v) const {
         return {glm::dot(v, t), glm::dot(v, b), glm::dot(v, n)};

@@ -85,7 +85,7 @@ OwnLights own_lights(const Scene& scene, const Shape& shape) {
 // The radiance the model computes itself for its own lights.
 glm::vec3 own_light_radiance(const IntegratorContext& ctx, const OwnLights& own,
                              const SurfaceHit& hit, const SurfaceBsdf& bsdf, glm::vec3 wo,
-                             const Footprint& footprint, Pcg32& rng) {
+                             const Footprint& footprint, Pcg32& rng, GlintPostSample* post) {
     GlintLightingContext lc;
     lc.scene = &ctx.scene;
     lc.desc = own.desc;
@@ -96,6 +96,7 @@ glm::vec3 own_light_radiance(const IntegratorContext& ctx, const OwnLights& own,
     lc.wo = bsdf.frame().to_local(wo);
     lc.footprint = footprint;
     lc.rng = &rng;
+    lc.post = post;
     if (lc.wo.z <= 0.0f) return glm::vec3(0.0f);
     glm::vec3 L(0.0f);
     for (int i = 0; i < static_cast<int>(ctx.scene.lights.size()); ++i) {
@@ -139,7 +140,8 @@ bool all_finite(const F& v) {
 
 }  // namespace
 
-glm::vec3 integrate_direct(const IntegratorContext& ctx, const RayDifferential& ray, Pcg32& rng) {
+glm::vec3 integrate_direct(const IntegratorContext& ctx, const RayDifferential& ray, Pcg32& rng,
+                           GlintPostSample* post) {
     const Scene& scene = ctx.scene;
     const auto hit = ctx.accel.intersect(ray.ray, kInfinity);
     if (!hit) return escaped(scene, ray.ray.d, [](int) { return 1.0f; });
@@ -153,7 +155,7 @@ glm::vec3 integrate_direct(const IntegratorContext& ctx, const RayDifferential& 
     const OwnLights own = own_lights(scene, shape);
     if (!bsdf.is_specular()) L += sample_lights(ctx, *hit, bsdf, wo, rng, own);
     if (own.model != nullptr)
-        L += own_light_radiance(ctx, own, *hit, bsdf, wo, diff.footprint, rng);
+        L += own_light_radiance(ctx, own, *hit, bsdf, wo, diff.footprint, rng, post);
 
     // One BSDF sample: MIS partner of light sampling for lights with area,
     // the only estimator for specular lobes.
@@ -186,7 +188,7 @@ glm::vec3 integrate_direct(const IntegratorContext& ctx, const RayDifferential& 
 }
 
 glm::vec3 integrate_path(const IntegratorContext& ctx, const RayDifferential& camera_ray,
-                         Pcg32& rng) {
+                         Pcg32& rng, GlintPostSample* post) {
     const Scene& scene = ctx.scene;
     glm::vec3 L(0.0f), beta(1.0f);
     Ray ray = camera_ray.ray;
@@ -232,7 +234,7 @@ glm::vec3 integrate_path(const IntegratorContext& ctx, const RayDifferential& ca
         const OwnLights own = depth == 0 ? own_lights(scene, shape) : OwnLights{};
         if (!bsdf.is_specular()) L += beta * sample_lights(ctx, *hit, bsdf, wo, rng, own);
         if (own.model != nullptr)
-            L += beta * own_light_radiance(ctx, own, *hit, bsdf, wo, *footprint, rng);
+            L += beta * own_light_radiance(ctx, own, *hit, bsdf, wo, *footprint, rng, post);
         prev_own = own;
 
         const float uc = rng.next_float();

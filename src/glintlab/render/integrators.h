@@ -11,6 +11,7 @@
 #include <glm/glm.hpp>
 
 #include "glintlab/core/rng.h"
+#include "glintlab/glints/glint_lighting.h"
 #include "glintlab/render/accel.h"
 #include "glintlab/scene/camera.h"
 #include "glintlab/scene/scene.h"
@@ -23,7 +24,12 @@ struct IntegratorContext {
     float differential_scale = 1.0f;
 };
 
-glm::vec3 integrate_direct(const IntegratorContext& ctx, const RayDifferential& ray, Pcg32& rng);
-glm::vec3 integrate_path(const IntegratorContext& ctx, const RayDifferential& ray, Pcg32& rng);
+// `post`, when given, receives the radiance a glint model defers to an image
+// pass at the camera's first hit (glints/glint_lighting.h, GlintPostSample);
+// that radiance is then not in the returned value.
+glm::vec3 integrate_direct(const IntegratorContext& ctx, const RayDifferential& ray, Pcg32& rng,
+                           GlintPostSample* post = nullptr);
+glm::vec3 integrate_path(const IntegratorContext& ctx, const RayDifferential& ray, Pcg32& rng,
+                         GlintPostSample* post = nullptr);
 
 }  // namespace glintlab

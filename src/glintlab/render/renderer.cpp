@@ -1,5 +1,6 @@
 #include "glintlab/render/renderer.h"
 
+#include <atomic>
 #include <cmath>
 
 #include <tbb/blocked_range.h>
@@ -8,6 +9,8 @@
 
 #include "glintlab/core/progress.h"
 #include "glintlab/core/rng.h"
+#include "glintlab/glints/glint_lighting.h"
+#include "glintlab/glints/wang2020/wang2020_postprocess.h"
 #include "glintlab/render/accel.h"
 #include "glintlab/render/integrators.h"
 
@@ -38,6 +41,17 @@ Image render_scene(const Scene& scene, const Accelerator& accel, const RenderOpt
     const IntegratorContext ctx{scene, accel, diff_scale};
 
     Image image(width, height);
+    // Radiance deferred to wang2020's §4.4 image pass (glint_lighting.h):
+    // per pixel the mean over samples of the glint layer (rgb) and of the
+    // directional-occlusion visibility (w); pixels no model wrote keep
+    // rgb = 0 and visibility 1, so they neither add glints nor darken a
+    // neighbour's occlusion blur.
+    wang2020::GlintBuffer post;
+    post.width = width;
+    post.height = height;
+    post.texels.assign(static_cast<size_t>(width) * static_cast<size_t>(height),
+                       glm::vec4(0.0f, 0.0f, 0.0f, 1.0f));
+    std::atomic<bool> any_post{false};
     const int tiles_x = (width + kTileSize - 1) / kTileSize;
     const int tiles_y = (height + kTileSize - 1) / kTileSize;
     ProgressReporter progress(static_cast<int64_t>(tiles_x) * tiles_y, "render", options.quiet);
@@ -53,21 +67,38 @@ Image render_scene(const Scene& scene, const Accelerator& accel, const RenderOpt
                     for (int x = x0; x < std::min(x0 + kTileSize, width); ++x) {
                         Pcg32 rng = pixel_stream(x, y, scene.render.seed);
                         glm::dvec3 sum(0.0);
+                        glm::dvec4 post_sum(0.0);
+                        bool post_active = false;
                         for (int s = 0; s < spp; ++s) {
                             glm::vec2 jitter(0.5f);
                             if (spp > 1) jitter = {rng.next_float(), rng.next_float()};
                             const RayDifferential ray = camera.generate(
                                 glm::vec2(static_cast<float>(x), static_cast<float>(y)) + jitter);
-                            const glm::vec3 L = path ? integrate_path(ctx, ray, rng)
-                                                     : integrate_direct(ctx, ray, rng);
+                            GlintPostSample ps;
+                            const glm::vec3 L = path ? integrate_path(ctx, ray, rng, &ps)
+                                                     : integrate_direct(ctx, ray, rng, &ps);
                             sum += glm::dvec3(L);
+                            post_sum += glm::dvec4(glm::dvec3(ps.rgb), ps.visibility);
+                            post_active = post_active || ps.active;
                         }
                         image.at(x, y) = glm::vec3(sum / static_cast<double>(spp));
+                        if (post_active) {
+                            post.texels[static_cast<size_t>(y) * static_cast<size_t>(width) +
+                                        static_cast<size_t>(x)] =
+                                glm::vec4(post_sum / static_cast<double>(spp));
+                            any_post.store(true, std::memory_order_relaxed);
+                        }
                     }
                 progress.update();
             }
         });
     progress.done();
+    if (any_post.load()) {
+        // 001 §4.4: δ = G9 * visibility, glints = G3 * (rgb · δ).
+        const wang2020::GlintBuffer blurred = wang2020::postprocess_glints(post);
+        for (size_t i = 0; i < image.pixels.size(); ++i)
+            image.pixels[i] += glm::vec3(blurred.texels[i]);
+    }
     return image;
 }
 

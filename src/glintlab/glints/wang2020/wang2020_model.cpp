@@ -98,6 +98,7 @@ void read_wang2020_params(JsonObject& block, GlintDesc& desc) {
     p.dpf_phi = block.integer("dpf_phi", p.dpf_phi, 2, 360);
     p.prefilter_samples = block.integer("prefilter_samples", p.prefilter_samples, 1, 4096);
     p.directional_occlusion = block.boolean("directional_occlusion", p.directional_occlusion);
+    p.blur = block.boolean("blur", p.blur);
     desc.params = p;
     block.finish();
 }
@@ -117,15 +118,26 @@ glm::vec3 wang2020_light_radiance(const GlintLightingContext& ctx, int light) {
     const glm::dvec3 tint(desc.color);
     if (const auto* e = std::get_if<EnvironmentLight>(&l)) {
         const auto model = model_for(desc, e->map);
-        // §4.4 directional occlusion: one ray along the mirror direction
-        // (unblurred: the 9-tap blur needs an image pass, see header).
-        if (params_of(desc).directional_occlusion) {
+        const Wang2020Params& params = params_of(desc);
+        // §4.4 directional occlusion: one ray along the mirror direction.
+        bool visible = true;
+        if (params.directional_occlusion) {
             const glm::vec3 r = ctx.to_world(glm::vec3(-ctx.wo.x, -ctx.wo.y, ctx.wo.z));
-            if (!ctx.visible(r, std::numeric_limits<float>::infinity())) return glm::vec3(0.0f);
+            visible = ctx.visible(r, std::numeric_limits<float>::infinity());
         }
-        const glm::dvec3 L =
-            model->environment_radiance(A, glm::dvec3(ctx.n), glm::dvec3(ctx.to_world(ctx.wo)));
-        return glm::vec3(L * tint);
+        // With an image pass behind (renders), the glint layer and its
+        // visibility go to the §4.4 blurs (δ = G9 * visibility, G3 * (rgb δ));
+        // otherwise the unblurred visibility multiplies the radiance.
+        const bool deferred = ctx.post != nullptr && params.blur;
+        if (!visible && !deferred) return glm::vec3(0.0f);
+        const glm::vec3 L = glm::vec3(
+            model->environment_radiance(A, glm::dvec3(ctx.n), glm::dvec3(ctx.to_world(ctx.wo))) *
+            tint);
+        if (!deferred) return L;
+        ctx.post->rgb += L;
+        ctx.post->visibility = std::min(ctx.post->visibility, visible ? 1.0f : 0.0f);
+        ctx.post->active = true;
+        return glm::vec3(0.0f);
     }
     const auto model = model_for(desc, {});
     glm::vec3 wi_world;

@@ -16,6 +16,7 @@ struct Wang2020Params {
     int dpf_phi = 180;                  // DPF table Δφ resolution (Table 2), [2, 360]
     int prefilter_samples = 64;         // K of Eq. 16, [1, 4096]
     bool directional_occlusion = true;  // §4.4: one mirror-direction visibility ray
+    bool blur = true;                   // §4.4: the two Gaussian blurs (9 and 3 taps) in renders
 };
 
 }  // namespace glintlab
