@@ -233,11 +233,6 @@ ValidationReport validate_jakob2014(const Jakob2014ValidationOptions& o) {
     text += "\n";
 
     // 4. Against the `explicit` ground truth (glints/explicit/explicit.h).
-    text += "Per-pixel D_P moments over a plane under a point light: jakob2014 vs explicit\n";
-    text += fmt::format("{:<34} {:>10} {:>10} {:>8} {:>10} {:>10} {:>8}\n", "setting", "mean expl",
-                        "mean jak", "err", "m2 expl", "m2 jak", "err");
-    nlohmann::json jex = nlohmann::json::array();
-    double ex_mean = 0.0, ex_m2 = 0.0;
     struct ExCase {
         const char* name;
         int ndf;
@@ -245,67 +240,60 @@ ValidationReport validate_jakob2014(const Jakob2014ValidationOptions& o) {
         double gamma;
         double n;
     };
-    const ExCase ex_cases[] = {{"beckmann a=0.3 g=3 N=1e6", shader::NDF_BECKMANN, 0.3f, 3.0, 1e6},
-                               {"ggx a=0.1 g=1 N=4e6", shader::NDF_GGX, 0.1f, 1.0, 4e6}};
-    int exi = 0;
-    for (const ExCase& c : ex_cases) {
-        const ExplicitComparison r = compare_with_explicit_particles(
-            c.ndf, c.alpha, c.gamma, std::log(c.n), o.explicit_pixels, o.explicit_realizations,
-            o.seed * 31 + uint64_t(exi++));
-        ex_mean = std::max(ex_mean, r.mean_rel_err);
-        ex_m2 = std::max(ex_m2, r.m2_rel_err);
-        text += fmt::format("{:<34} {:>10.4f} {:>10.4f} {:>8.4f} {:>10.3f} {:>10.3f} {:>8.4f}\n",
-                            c.name, r.mean_explicit, r.mean_jakob, r.mean_rel_err, r.m2_explicit,
-                            r.m2_jakob, r.m2_rel_err);
-        jex.push_back({{"setting", c.name},
-                       {"mean_explicit", r.mean_explicit},
-                       {"mean_jakob", r.mean_jakob},
-                       {"mean_rel_err", r.mean_rel_err},
-                       {"mean_std_err", r.mean_std_err},
-                       {"m2_explicit", r.m2_explicit},
-                       {"m2_jakob", r.m2_jakob},
-                       {"m2_rel_err", r.m2_rel_err},
-                       {"m2_std_err", r.m2_std_err}});
-    }
-    report.details["explicit_particles"] = jex;
-    text += "\n";
-
+    double ex_mean = 0.0, ex_m2 = 0.0, env_var = 0.0;
+    // One table and one JSON array per light: both models' moments, the
+    // relative differences and standard errors (variances for the environment).
+    const auto compare = [&](const char* title, const char* key, const ExCase* cases, int count,
+                             bool environment) {
+        text += title;
+        text += fmt::format("{:<34} {:>10} {:>10} {:>8} {:>10} {:>10} {:>8} {:>9} {:>9} {:>8}\n",
+                            "setting", "mean expl", "mean jak", "err", "m2 expl", "m2 jak", "err",
+                            "var expl", "var jak", "err");
+        nlohmann::json rows = nlohmann::json::array();
+        for (int i = 0; i < count; ++i) {
+            const ExCase& c = cases[i];
+            const ExplicitComparison r =
+                environment ? compare_with_explicit_environment(
+                                  c.ndf, c.alpha, c.gamma, std::log(c.n), o.environment_pixels,
+                                  o.environment_realizations, o.environment_samples,
+                                  o.seed * 37 + uint64_t(i))
+                            : compare_with_explicit_particles(
+                                  c.ndf, c.alpha, c.gamma, std::log(c.n), o.explicit_pixels,
+                                  o.explicit_realizations, o.seed * 31 + uint64_t(i));
+            ex_mean = std::max(ex_mean, r.mean_rel_err);
+            ex_m2 = std::max(ex_m2, r.m2_rel_err);
+            if (environment) env_var = std::max(env_var, r.var_rel_err);
+            text += fmt::format(
+                "{:<34} {:>10.4f} {:>10.4f} {:>8.4f} {:>10.4f} {:>10.4f} {:>8.4f} {:>9.4f} "
+                "{:>9.4f} {:>8.4f}\n",
+                c.name, r.mean_explicit, r.mean_jakob, r.mean_rel_err, r.m2_explicit, r.m2_jakob,
+                r.m2_rel_err, r.var_explicit, r.var_jakob, r.var_rel_err);
+            rows.push_back({{"setting", c.name},
+                            {"mean_explicit", r.mean_explicit},
+                            {"mean_jakob", r.mean_jakob},
+                            {"mean_rel_err", r.mean_rel_err},
+                            {"mean_std_err", r.mean_std_err},
+                            {"m2_explicit", r.m2_explicit},
+                            {"m2_jakob", r.m2_jakob},
+                            {"m2_rel_err", r.m2_rel_err},
+                            {"m2_std_err", r.m2_std_err},
+                            {"var_explicit", r.var_explicit},
+                            {"var_jakob", r.var_jakob},
+                            {"var_rel_err", r.var_rel_err}});
+        }
+        report.details[key] = rows;
+        text += "\n";
+    };
+    const ExCase point_cases[] = {
+        {"beckmann a=0.3 g=3 N=1e6", shader::NDF_BECKMANN, 0.3f, 3.0, 1e6},
+        {"ggx a=0.1 g=1 N=4e6", shader::NDF_GGX, 0.1f, 1.0, 4e6}};
+    compare("Per-pixel D_P moments over a plane under a point light: jakob2014 vs explicit\n",
+            "explicit_particles", point_cases, 2, false);
     // 4b. The same under a smooth environment (per-pixel reflected radiance).
-    text += "Per-pixel radiance moments over a plane under an environment: jakob2014 vs explicit\n";
-    text += fmt::format("{:<34} {:>10} {:>10} {:>8} {:>10} {:>10} {:>8} {:>9} {:>9} {:>8}\n",
-                        "setting", "mean expl", "mean jak", "err", "m2 expl", "m2 jak", "err",
-                        "var expl", "var jak", "err");
-    double env_var = 0.0;
-    nlohmann::json jenv = nlohmann::json::array();
     const ExCase env_cases[] = {{"beckmann a=0.3 g=3 N=4e4", shader::NDF_BECKMANN, 0.3f, 3.0, 4e4},
                                 {"ggx a=0.2 g=2 N=8e4", shader::NDF_GGX, 0.2f, 2.0, 8e4}};
-    for (const ExCase& c : env_cases) {
-        const ExplicitComparison r = compare_with_explicit_environment(
-            c.ndf, c.alpha, c.gamma, std::log(c.n), o.environment_pixels,
-            o.environment_realizations, o.environment_samples, o.seed * 37 + uint64_t(exi++));
-        ex_mean = std::max(ex_mean, r.mean_rel_err);
-        ex_m2 = std::max(ex_m2, r.m2_rel_err);
-        env_var = std::max(env_var, r.var_rel_err);
-        text += fmt::format(
-            "{:<34} {:>10.4f} {:>10.4f} {:>8.4f} {:>10.4f} {:>10.4f} {:>8.4f} {:>9.4f} {:>9.4f} "
-            "{:>8.4f}\n",
-            c.name, r.mean_explicit, r.mean_jakob, r.mean_rel_err, r.m2_explicit, r.m2_jakob,
-            r.m2_rel_err, r.var_explicit, r.var_jakob, r.var_rel_err);
-        jenv.push_back({{"setting", c.name},
-                        {"var_explicit", r.var_explicit},
-                        {"var_jakob", r.var_jakob},
-                        {"var_rel_err", r.var_rel_err},
-                        {"mean_explicit", r.mean_explicit},
-                        {"mean_jakob", r.mean_jakob},
-                        {"mean_rel_err", r.mean_rel_err},
-                        {"mean_std_err", r.mean_std_err},
-                        {"m2_explicit", r.m2_explicit},
-                        {"m2_jakob", r.m2_jakob},
-                        {"m2_rel_err", r.m2_rel_err},
-                        {"m2_std_err", r.m2_std_err}});
-    }
-    report.details["explicit_environment"] = jenv;
-    text += "\n";
+    compare("Per-pixel radiance moments over a plane under an environment: jakob2014 vs explicit\n",
+            "explicit_environment", env_cases, 2, true);
 
     thread_stats() = QueryStats{};
     nan_count += robustness(o.robustness_queries, o.seed);
