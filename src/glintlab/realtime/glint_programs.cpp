@@ -7,6 +7,7 @@
 #include "glintlab/core/error.h"
 #include "glintlab/glints/chermain2020/dictionary.h"
 #include "glintlab/glints/deliot2023/deliot2023.h"
+#include "glintlab/realtime/gpu_wang2020.h"
 #include "glintlab/realtime/uniform_cache.h"
 #include "glintlab/scene/scene.h"
 
@@ -102,6 +103,7 @@ bool gpu_supports_model(GlintModelId model) {
         case GlintModelId::Deliot2023:
         case GlintModelId::Zirr2016:
         case GlintModelId::Chermain2020:
+        case GlintModelId::Wang2020:  // gpu_wang2020.h
             return true;
         default:
             return false;
@@ -130,13 +132,15 @@ std::string glint_model_glsl(GlintModelId model, bool noise_texture) {
             return kZirr2016Glue;
         case GlintModelId::Chermain2020:
             return kChermain2020Glue;
+        case GlintModelId::Wang2020:
+            return wang2020_glsl();
         default:
             break;
     }
     const GlintModelInfo* info = find_glint_model(model);
     fail(
         "OpenGL renderer: glint model \"{}\" has no GPU implementation (GPU models: smooth, "
-        "deliot2023, zirr2016, chermain2020)",
+        "deliot2023, zirr2016, chermain2020, wang2020)",
         info != nullptr ? info->name : "?");
 }
 
