@@ -1,5 +1,6 @@
 #include "glintlab/realtime/glint_programs.h"
 
+#include <algorithm>
 #include <variant>
 
 #include <epoxy/gl.h>
@@ -263,6 +264,14 @@ void reset_model_params(GlintDesc& desc, GlintModelId model) {
             // (the scene loader rejects chermain2020 with GGX).
             desc.ndf = NdfType::Beckmann;
             desc.params = Chermain2020Params{};
+            break;
+        case GlintModelId::Wang2020:
+            // read_wang2020_params' domain: isotropic Beckmann, alpha in
+            // [0.02, 1] (the DPF roughness set, 001 §4.4), ln N <= 19.4.
+            desc.ndf = NdfType::Beckmann;
+            desc.alpha_x = desc.alpha_y = std::clamp(desc.alpha_x, 0.02f, 1.0f);
+            desc.log_density = std::clamp(desc.log_density, 0.0f, 19.4f);
+            desc.params = Wang2020Params{};
             break;
         default:
             desc.params = SmoothParams{};
