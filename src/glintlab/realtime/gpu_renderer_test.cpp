@@ -486,7 +486,7 @@ TEST(GpuRenderer, ExampleScenesRenderOrNameTheMissingModel) {
 // Limits: mean 2%, blocks 5%, 2% mismatching pixels overall and on even
 // rows (the chermain2020 limits with 2x room for the acceptance flips); a
 // wrong table, seed, hash or scale rule moves the pixel pattern or the
-// energy far beyond these.
+// energy beyond these (the seed off by one: 6.5% / 3.1% mismatching).
 class GpuWang2020 : public ::testing::TestWithParam<std::string> {};
 
 TEST_P(GpuWang2020, MatchesCpuDirect) {
