@@ -30,6 +30,9 @@ void add_bench_command(CLI::App& app, int* status) {
         "default resolution 1920x1080");
     sub->add_flag("--noise-texture", o->gpu_noise_texture,
                   "GPU: deliot2023 with its noise texture (000 6.3) instead of the hash");
+    sub->add_option("--log-density", o->log_densities,
+                    "ln N values of the sweep (default 8 12 16 20; wang2020 needs <= 19.4)")
+        ->check(CLI::Range(0.0f, 40.0f));
     sub->add_option("--warmup", o->gpu_warmup, "GPU: untimed frames before the timed ones")
         ->check(CLI::Range(0, 1000));
     sub->callback([o, res, json, status, sub] {

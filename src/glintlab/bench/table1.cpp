@@ -121,7 +121,7 @@ std::vector<Table1Row> run_table1(const Table1Options& options) {
     std::vector<Table1Row> rows;
     for (const std::string& scene_name : scenes) {
         for (const std::string& model : models) {
-            Table1Row row{scene_name, model, {}, 0.0, 0.0, {}, {}, {}, {}};
+            Table1Row row{scene_name, model, {}, 0.0, 0.0, {}, {}, {}, {}, {}};
             for (float log_density : options.log_densities) {
                 nlohmann::json j = scene_json(scene_name);
                 j["film"] = {{"width", options.width}, {"height", options.height}};
@@ -181,6 +181,7 @@ nlohmann::json table1_to_json(const Table1Options& o, const std::vector<Table1Ro
             row["frame_ms_per_density"] = r.frame_ms_per_density;
             row["shadow_ms_per_density"] = r.shadow_ms_per_density;
             row["background_ms_per_density"] = r.background_ms_per_density;
+            if (!r.pass_ms_per_density.empty()) row["pass_ms_per_density"] = r.pass_ms_per_density;
         }
         arr.push_back(row);
     }

@@ -4,6 +4,7 @@
 // a density sweep; reports the min and max time per frame over the sweep.
 #pragma once
 
+#include <map>
 #include <string>
 #include <vector>
 
@@ -37,6 +38,9 @@ struct Table1Row {
     std::vector<double> frame_ms_per_density;
     // GPU only: median GL_TIME_ELAPSED of the other passes per density.
     std::vector<double> shadow_ms_per_density, background_ms_per_density;
+    // GPU only, model-specific passes per density (empty for most models;
+    // wang2020: 001 Table 3's passes, realtime/gpu_wang2020_passes.h).
+    std::map<std::string, std::vector<double>> pass_ms_per_density;
 };
 
 // PLANE_90, PLANE_25, HEIGHTMAP_90, HEIGHTMAP_25, SPHERE, MONKEY (the

@@ -334,10 +334,23 @@ void main() {
             if (wi.z <= 0.0f) continue;
             float visible = point_visibility(i, p, ng, -d);
             if (visible <= 0.0f) continue;
+#ifdef GLINTLAB_GLINT_OWN_LIGHTS
+            // Models that shade their lights themselves (glint_lighting.h;
+            // wang2020 Eq. 21, gpu_wang2020.h), untinted.
+            if (u_material_type == 4) {
+                radiance += u_glint_color * glint_own_light(wo, wi, u_point_intensity[i] * (visible / r2), fp);
+                continue;
+            }
+#endif
             radiance += eval_bsdf(wo, wi, fp) * u_point_intensity[i] * (wi.z * visible / r2);
         }
 #endif
-#if GLINTLAB_ENVIRONMENT
+#if GLINTLAB_ENVIRONMENT && defined(GLINTLAB_GLINT_OWN_LIGHTS)
+        if (u_material_type == 4)
+            radiance += u_glint_color * glint_own_environment(n, wo_world, fp);
+        else
+            radiance += environment_lighting(wo, t, b, n, fp);
+#elif GLINTLAB_ENVIRONMENT
         radiance += environment_lighting(wo, t, b, n, fp);
 #endif
 #if GLINTLAB_DIRECTIONAL_LIGHTS > 0
@@ -347,6 +360,12 @@ void main() {
             if (wi.z <= 0.0f) continue;
             float visible = directional_visibility(i, p, ng);
             if (visible <= 0.0f) continue;
+#ifdef GLINTLAB_GLINT_OWN_LIGHTS
+            if (u_material_type == 4) {
+                radiance += u_glint_color * glint_own_light(wo, wi, u_directional_irradiance[i] * visible, fp);
+                continue;
+            }
+#endif
             radiance += eval_bsdf(wo, wi, fp) * u_directional_irradiance[i] * (wi.z * visible);
         }
 #endif

@@ -14,4 +14,7 @@ namespace glintlab::gl {
 unsigned link_program(const AssembledShader& vertex, const AssembledShader& fragment,
                       const std::string& what);
 
+// A compute program (same error conventions).
+unsigned link_compute_program(const AssembledShader& compute, const std::string& what);
+
 }  // namespace glintlab::gl

@@ -1,5 +1,6 @@
 #include "glintlab/realtime/glint_programs.h"
 
+#include <algorithm>
 #include <variant>
 
 #include <epoxy/gl.h>
@@ -7,6 +8,7 @@
 #include "glintlab/core/error.h"
 #include "glintlab/glints/chermain2020/dictionary.h"
 #include "glintlab/glints/deliot2023/deliot2023.h"
+#include "glintlab/realtime/gpu_wang2020.h"
 #include "glintlab/realtime/uniform_cache.h"
 #include "glintlab/scene/scene.h"
 
@@ -102,6 +104,7 @@ bool gpu_supports_model(GlintModelId model) {
         case GlintModelId::Deliot2023:
         case GlintModelId::Zirr2016:
         case GlintModelId::Chermain2020:
+        case GlintModelId::Wang2020:  // gpu_wang2020.h
             return true;
         default:
             return false;
@@ -130,13 +133,15 @@ std::string glint_model_glsl(GlintModelId model, bool noise_texture) {
             return kZirr2016Glue;
         case GlintModelId::Chermain2020:
             return kChermain2020Glue;
+        case GlintModelId::Wang2020:
+            return wang2020_glsl();
         default:
             break;
     }
     const GlintModelInfo* info = find_glint_model(model);
     fail(
         "OpenGL renderer: glint model \"{}\" has no GPU implementation (GPU models: smooth, "
-        "deliot2023, zirr2016, chermain2020)",
+        "deliot2023, zirr2016, chermain2020, wang2020)",
         info != nullptr ? info->name : "?");
 }
 
@@ -259,6 +264,14 @@ void reset_model_params(GlintDesc& desc, GlintModelId model) {
             // (the scene loader rejects chermain2020 with GGX).
             desc.ndf = NdfType::Beckmann;
             desc.params = Chermain2020Params{};
+            break;
+        case GlintModelId::Wang2020:
+            // read_wang2020_params' domain: isotropic Beckmann, alpha in
+            // [0.02, 1] (the DPF roughness set, 001 §4.4), ln N <= 19.4.
+            desc.ndf = NdfType::Beckmann;
+            desc.alpha_x = desc.alpha_y = std::clamp(desc.alpha_x, 0.02f, 1.0f);
+            desc.log_density = std::clamp(desc.log_density, 0.0f, 19.4f);
+            desc.params = Wang2020Params{};
             break;
         default:
             desc.params = SmoothParams{};

@@ -118,6 +118,33 @@ TEST(GpuCli, EglDevicePlatformGivesTheSurfacelessImage) {
         ASSERT_EQ(a.pixels[i], b.pixels[i]) << "pixel " << i;
 }
 
+// `bench --gpu --model wang2020` reports 001 Table 3's passes per density
+// (gpu_wang2020_passes.h) next to the frame times; ln N outside the model's
+// domain is the loader's clear error.
+TEST(GpuCli, BenchGpuWang2020ReportsItsPasses) {
+    GLINTLAB_REQUIRE_GL();
+    const RunResult r = run(cli() +
+                            " bench --gpu --model wang2020 --scene SPHERE --res 32x18 --frames 1 "
+                            "--warmup 0 --log-density 6 10 --json");
+    ASSERT_EQ(r.status, 0) << r.output;
+    const nlohmann::json j = nlohmann::json::parse(r.output.substr(r.output.find('{')));
+    const nlohmann::json& row = j.at("results").at(0);
+    EXPECT_EQ(row.at("model"), "wang2020");
+    EXPECT_EQ(row.at("frame_ms_per_density").size(), 2u);
+    const nlohmann::json& passes = row.at("pass_ms_per_density");
+    for (const char* key : {"dpf_extract_ms", "quadtree_ms", "blur_ms"}) {
+        ASSERT_EQ(passes.at(key).size(), 2u) << key;
+        for (const auto& v : passes.at(key)) EXPECT_GE(v.get<double>(), 0.0) << key;
+    }
+    EXPECT_GT(passes.at("blur_ms").at(0).get<double>(), 0.0);
+    EXPECT_FALSE(passes.contains("prefilter_ms"));  // the Table 1 scenes have no environment
+    const RunResult bad = run(cli() +
+                              " bench --gpu --model wang2020 --scene SPHERE --res 32x18 "
+                              "--frames 1 --warmup 0 --log-density 20");
+    EXPECT_NE(bad.status, 0);
+    EXPECT_NE(bad.output.find("19.4"), std::string::npos) << bad.output;
+}
+
 TEST(GpuCli, MissingEnvironmentMapIsAClearError) {
     testing::ScratchDir dir;
     nlohmann::json s = small_scene();

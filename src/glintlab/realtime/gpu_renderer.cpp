@@ -16,6 +16,7 @@
 #include "glintlab/realtime/glint_programs.h"
 #include "glintlab/realtime/gpu_geometry.h"
 #include "glintlab/realtime/gpu_timer.h"
+#include "glintlab/realtime/gpu_wang2020.h"
 #include "glintlab/realtime/uniform_cache.h"
 
 namespace glintlab {
@@ -97,6 +98,7 @@ struct GpuRenderer::Impl {
     gl::Program background;
     gl::UniformCache uniforms;
     gl::GlintResources glint_resources;
+    gl::Wang2020Resources wang2020_resources;  // gpu_wang2020.h
     gl::Framebuffer fbo;
     gl::Texture color, depth;
     int width = 0, height = 0;
@@ -335,6 +337,7 @@ struct GpuRenderer::Impl {
         glProgramUniform3fv(p, loc("u_fresnel_k"), 1, glm::value_ptr(g.fresnel.k));
         gl::set_glint_uniforms(p, uniforms, g);
         glint_resources.bind(g.model_id, noise_texture);
+        if (g.model_id == GlintModelId::Wang2020) wang2020_resources.bind(p, uniforms, g, scene);
     }
 
     void set_lights(GLuint p, const Scene& scene) {

@@ -469,6 +469,73 @@ TEST(GpuRenderer, ExampleScenesRenderOrNameTheMissingModel) {
     EXPECT_GE(rendered, 8);  // default, plane/heightmap/sphere/monkey, sweeps, car paint
 }
 
+// wang2020 (papers/001, gpu_wang2020.h): CPU `direct` vs GPU at 128x128 on
+// the SPHERE view, from the same CPU-built tables (reduced DPF resolution;
+// alpha 0.4 selects Table 2's small prefilter grid), under the forest map
+// (or a constant environment without blender-data) and under a point light.
+// The GLSL reads equal the CPU's (wang2020_tables_test.cpp); what differs
+// is the footprint: equal on even rows, up to 3% off on odd rows, where the
+// scale choice (expected count vs 4 and 64) and the micro scale's
+// per-particle acceptance (lambda < P) are thresholds that can flip.
+// Measured (llvmpipe): environment mean 0.00%, 8x8 blocks 0.24%, 0.60% of
+// the pixels mismatching (even rows 0.61%); point light 0.14%, 0.40%, 0.24%
+// (0.23%); N a(A) is about 4.5 at the centre, so micro and meso pixels
+// mix. Mismatches occur on even rows too, most likely because the GPU's interpolated
+// normals of the 192 x 96 tessellation move n, hence P-hat and the micro
+// acceptance lambda < P, a little (a flipped particle is one pixel).
+// Limits: mean 2%, blocks 5%, 2% mismatching pixels overall and on even
+// rows (the chermain2020 limits with 2x room for the acceptance flips); a
+// wrong table, seed, hash or scale rule moves the pixel pattern or the
+// energy beyond these (the seed off by one: 6.5% / 3.1% mismatching).
+class GpuWang2020 : public ::testing::TestWithParam<std::string> {};
+
+TEST_P(GpuWang2020, MatchesCpuDirect) {
+    GLINTLAB_REQUIRE_GL();
+    const std::string forest = "/usr/share/blender/datafiles/studiolights/world/forest.exr";
+    nlohmann::json j = test_scene("sphere", "wang2020", 13.0f);
+    j["materials"][0]["roughness"] = 0.4;
+    j["materials"][0]["fresnel"] = {{"type", "none"}};
+    j["materials"][0]["color"] = {0.9, 0.8, 0.6};
+    // The GPU renderer does not run the §4.4 blurs on its frames (MODELS.md):
+    // compare with the CPU's unblurred image.
+    j["materials"][0]["wang2020"] = {
+        {"gamma_deg", 4}, {"dpf_theta", 30}, {"dpf_phi", 60}, {"blur", false}};
+    if (GetParam() == "environment") {
+        nlohmann::json env = {{"type", "environment"}};
+        if (std::filesystem::exists(forest))
+            env["file"] = forest;
+        else
+            env["radiance"] = {1.0, 1.0, 1.0};
+        j["lights"] = {env};
+    } else {
+        j["lights"] = {{{"type", "point"}, {"position", {0.6, 1.2, 2.0}}, {"intensity", 4.0}}};
+    }
+    const Scene scene = parse_scene(j, "test:wang2020");
+    GpuRenderer renderer(scene);
+    renderer.render(scene);
+    const Image gpu = renderer.read_image();
+    const Image cpu = render_scene(scene, RenderOptions{1, true});
+    const ImageAgreement a = compare_images(gpu, cpu, 8, 0.02f, 0.1f);
+    const ImageAgreement even =
+        compare_images(rows_of_parity(gpu, 0), rows_of_parity(cpu, 0), 8, 0.02f, 0.1f);
+    ASSERT_GT(a.mean_b, 0.01);  // the view is lit
+    fmt::print(
+        "wang2020 {}: mean gpu {:.5f} cpu {:.5f} rel {:.4f}, block L1 {:.4f}, mismatch {:.4f} "
+        "(even rows {:.4f})\n",
+        GetParam(), a.mean_a, a.mean_b, a.mean_relative_error, a.smoothed_relative_l1,
+        a.mismatch_fraction, even.mismatch_fraction);
+    RecordProperty("mean_rel", std::to_string(a.mean_relative_error));
+    RecordProperty("smoothed", std::to_string(a.smoothed_relative_l1));
+    RecordProperty("mismatch", std::to_string(a.mismatch_fraction));
+    RecordProperty("mismatch_even_rows", std::to_string(even.mismatch_fraction));
+    EXPECT_LT(a.mean_relative_error, 0.02);
+    EXPECT_LT(a.smoothed_relative_l1, 0.05);
+    EXPECT_LT(even.mismatch_fraction, 0.02);
+    EXPECT_LT(a.mismatch_fraction, 0.02);
+}
+
+INSTANTIATE_TEST_SUITE_P(Lights, GpuWang2020, ::testing::Values("environment", "point"));
+
 TEST(GpuRenderer, ShaderErrorNamesTheSourceLine) {
     GLINTLAB_REQUIRE_GL();
     // Line 3 of the inline root calls a shared function with a wrong argument.

@@ -6,6 +6,7 @@
 #include "glintlab/realtime/gl_context.h"
 #include "glintlab/realtime/gpu_renderer.h"
 #include "glintlab/realtime/gpu_timer.h"
+#include "glintlab/realtime/gpu_wang2020_passes.h"
 #include "glintlab/scene/scene_loader.h"
 
 namespace glintlab {
@@ -52,6 +53,10 @@ std::vector<Table1Row> run_table1_gpu(const Table1Options& options,
                     shadow_ms.push_back(t.shadow_ms);
                     background_ms.push_back(t.background_ms);
                 }
+                // wang2020: 001 Table 3's passes (gpu_wang2020_passes.h).
+                if (model == "wang2020")
+                    gl::time_wang2020_passes(scene, renderer.read_image(), options.frames,
+                                             row.pass_ms_per_density);
                 row.shadow_ms_per_density.push_back(gl::timing_stats(shadow_ms).median_ms);
                 row.background_ms_per_density.push_back(gl::timing_stats(background_ms).median_ms);
                 row.frame_ms_per_density.push_back(gl::timing_stats(frame_ms).median_ms);

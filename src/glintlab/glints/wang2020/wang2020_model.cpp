@@ -81,6 +81,11 @@ UvBox box_of(const Footprint& fp) {
 
 }  // namespace
 
+std::shared_ptr<const wang2020::Wang2020Model> wang2020_model_for(
+    const GlintDesc& desc, const std::shared_ptr<const EnvironmentMap>& env) {
+    return model_for(desc, env);
+}
+
 void read_wang2020_params(JsonObject& block, GlintDesc& desc) {
     if (desc.ndf != NdfType::Beckmann || desc.alpha_x != desc.alpha_y || desc.alpha_x < 0.02f ||
         desc.alpha_x > 1.0f)

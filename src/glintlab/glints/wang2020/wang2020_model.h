@@ -8,10 +8,16 @@
 // renderer (no per-model image pass there); see docs/MODELS.md.
 #pragma once
 
+#include <memory>
+
 #include <glm/glm.hpp>
 
 namespace glintlab {
 
+namespace wang2020 {
+class Wang2020Model;
+}
+class EnvironmentMap;
 class JsonObject;
 struct GlintDesc;
 struct GlintLightingContext;
@@ -20,5 +26,11 @@ struct Scene;
 void read_wang2020_params(JsonObject& block, GlintDesc& desc);
 bool wang2020_shades_light(const GlintDesc& desc, const Scene& scene, int light);
 glm::vec3 wang2020_light_radiance(const GlintLightingContext& ctx, int light);
+
+// The cached tables of a wang2020 material (built on first use): the ones
+// the CPU renderer shades with, so the GPU renderer uploads the same arrays.
+// `env` may be null (no prefiltered tables: point and directional lights only).
+std::shared_ptr<const wang2020::Wang2020Model> wang2020_model_for(
+    const GlintDesc& desc, const std::shared_ptr<const EnvironmentMap>& env);
 
 }  // namespace glintlab

@@ -55,6 +55,8 @@ class PrefilterTable {
 
     const PrefilterResolution& resolution() const { return res_; }
     size_t memory_bytes() const { return data_.size() * sizeof(glm::vec4); }
+    // The texels, index ((θn · φn + φn) · θo + θo) · φo + φo (the GPU's buffer).
+    const std::vector<glm::vec4>& data() const { return data_; }
     double build_seconds() const { return build_seconds_; }
 
   private:

@@ -81,10 +81,12 @@ class Wang2020Model {
     Wang2020Material m_;
     double gamma_rad_;
     double sigma_o_;
+    // Declared before dpf_, whose initialiser writes it (members initialise
+    // in declaration order: declared after, its `= 0.0` overwrote the time).
+    double extract_seconds_ = 0.0;
     DpfTable dpf_;
     ParticleQuadtree tree_;
     std::unique_ptr<PrefilterTable> prefiltered_;
-    double extract_seconds_ = 0.0;
 };
 
 }  // namespace glintlab::wang2020
