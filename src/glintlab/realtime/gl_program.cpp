@@ -33,7 +33,9 @@ Shader compile(GLenum stage, const AssembledShader& source, const std::string& w
     glGetShaderiv(shader.get(), GL_COMPILE_STATUS, &ok);
     if (!ok)
         fail("{}: {} shader does not compile:\n{}", what,
-             stage == GL_VERTEX_SHADER ? "vertex" : "fragment",
+             stage == GL_VERTEX_SHADER    ? "vertex"
+             : stage == GL_COMPUTE_SHADER ? "compute"
+                                          : "fragment",
              map_shader_log(source, shader_log(shader.get())));
     return shader;
 }
@@ -55,6 +57,20 @@ unsigned link_program(const AssembledShader& vertex, const AssembledShader& frag
              map_shader_log(fragment, program_log(program.get())));
     glDetachShader(program.get(), vs.get());
     glDetachShader(program.get(), fs.get());
+    return program.release();
+}
+
+unsigned link_compute_program(const AssembledShader& compute, const std::string& what) {
+    const Shader cs = compile(GL_COMPUTE_SHADER, compute, what);
+    Program program(glCreateProgram());
+    glAttachShader(program.get(), cs.get());
+    glLinkProgram(program.get());
+    GLint ok = 0;
+    glGetProgramiv(program.get(), GL_LINK_STATUS, &ok);
+    if (!ok)
+        fail("{}: the program does not link:\n{}", what,
+             map_shader_log(compute, program_log(program.get())));
+    glDetachShader(program.get(), cs.get());
     return program.release();
 }
 
