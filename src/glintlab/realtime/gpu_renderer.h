@@ -14,7 +14,9 @@
 // visible sphere); cone (sun) lights at their axis; the environment lights
 // surfaces through a deterministic filtered-importance-sampling estimate
 // (forward_shaders.h) without occlusion; the dielectric shows its
-// reflection only.
+// reflection only. kneiphof2025 materials shade the environment (Eq. 17 over
+// prefiltered maps), sphere lights and sun cones themselves, as the CPU does
+// at the first hit (realtime/kneiphof2025_gpu.h).
 #pragma once
 
 #include <memory>
