@@ -35,6 +35,11 @@ void add_bench_command(CLI::App& app, int* status) {
         ->check(CLI::Range(0.0f, 40.0f));
     sub->add_option("--warmup", o->gpu_warmup, "GPU: untimed frames before the timed ones")
         ->check(CLI::Range(0, 1000));
+    sub->add_option("--table", o->table,
+                    "Which paper's Table 1: 000 (deliot2023, default) or 003 (kneiphof2025: "
+                    "IBL_STATIC IBL_DYNAMIC DIRECTIONAL x smooth wang2020_style kneiphof2025_k4 "
+                    "kneiphof2025_k8; needs --gpu)")
+        ->check(CLI::IsMember({"000", "003"}));
     sub->callback([o, res, json, status, sub] {
         // GPU frames are cheap: by default the median of 20 after the warm-up.
         if (o->gpu && sub->count("--frames") == 0) o->frames = 20;

@@ -14,6 +14,7 @@
 #include "glintlab/scene/scene_loader.h"
 #if GLINTLAB_WITH_GL
 #include "glintlab/realtime/gpu_table1.h"
+#include "glintlab/realtime/gpu_table1_003.h"
 #endif
 
 namespace glintlab {
@@ -102,6 +103,16 @@ std::vector<std::string> table1_scene_names() {
 }
 
 std::vector<Table1Row> run_table1(const Table1Options& options) {
+    if (options.table == "003") {
+        if (!options.gpu) fail("bench --table 003: 003 Table 1 is a GPU table (add --gpu)");
+#if GLINTLAB_WITH_GL
+        return run_table1_003_gpu(options);
+#else
+        fail("bench --gpu: this glintlab was built without OpenGL (GLINTLAB_WITH_GL=OFF)");
+#endif
+    }
+    if (options.table != "000")
+        fail("bench: unknown --table \"{}\" (known: 000, 003)", options.table);
     std::vector<std::string> scenes =
         options.scenes.empty() ? table1_scene_names() : options.scenes;
     std::vector<std::string> models = options.models;
@@ -158,7 +169,7 @@ std::vector<Table1Row> run_table1(const Table1Options& options) {
 
 nlohmann::json table1_to_json(const Table1Options& o, const std::vector<Table1Row>& rows) {
     nlohmann::json j;
-    j["benchmark"] = o.gpu ? "table1_gpu" : "table1_cpu";
+    j["benchmark"] = o.table == "003" ? "table1_003_gpu" : o.gpu ? "table1_gpu" : "table1_cpu";
     j["integrator"] = o.gpu ? "opengl_forward" : "direct";
 #if GLINTLAB_WITH_GL
     if (o.gpu) {
@@ -191,8 +202,9 @@ nlohmann::json table1_to_json(const Table1Options& o, const std::vector<Table1Ro
 
 std::string table1_to_text(const Table1Options& o, const std::vector<Table1Row>& rows) {
     std::string s = fmt::format(
-        "000 Table 1 {}, {}x{}, median of {} frames, min-max over "
+        "{} Table 1 {}, {}x{}, median of {} frames, min-max over "
         "log_density {}\n",
+        o.table,
         o.gpu ? "on the GPU: OpenGL forward pass (GL_TIME_ELAPSED)"
               : "on the CPU: direct integrator",
         o.width, o.height, o.frames, fmt::join(o.log_densities, ", "));

@@ -25,6 +25,10 @@ struct Table1Options {
     bool gpu = false;
     int gpu_warmup = 5;
     bool gpu_noise_texture = false;  // deliot2023 rows: the 000 §6.3 noise-texture variant
+    // "000": deliot2023's Table 1 (above); "003": Kneiphof & Klein 2025's
+    // Table 1 (GPU only; realtime/gpu_table1_003.h: IBL static / dynamic /
+    // directional rows, smooth / wang2020-style / K = 4 / K = 8 columns).
+    std::string table = "000";
 };
 
 struct Table1Row {

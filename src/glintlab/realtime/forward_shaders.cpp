@@ -90,6 +90,21 @@ uniform vec3 u_point_intensity[GLINTLAB_POINT_LIGHTS];
 uniform vec3 u_directional_direction[GLINTLAB_DIRECTIONAL_LIGHTS];  // towards the light
 uniform vec3 u_directional_irradiance[GLINTLAB_DIRECTIONAL_LIGHTS];
 #endif
+#ifdef GLINTLAB_GLINT_SHADES_AREA_LIGHTS
+// Glint models that shade area lights themselves (glue: glint_area_light)
+// need the lights' shapes: sphere lights' radius (0 for point lights) and
+// radiance, sun cones' solid angle (0 for delta lights), half-angle cosine
+// and radiance.
+#if GLINTLAB_POINT_LIGHTS > 0
+uniform float u_point_radius[GLINTLAB_POINT_LIGHTS];
+uniform vec3 u_point_radiance[GLINTLAB_POINT_LIGHTS];
+#endif
+#if GLINTLAB_DIRECTIONAL_LIGHTS > 0
+uniform float u_directional_solid_angle[GLINTLAB_DIRECTIONAL_LIGHTS];  // 0: delta light
+uniform float u_directional_cos_max[GLINTLAB_DIRECTIONAL_LIGHTS];
+uniform vec3 u_directional_radiance[GLINTLAB_DIRECTIONAL_LIGHTS];
+#endif
+#endif
 
 #if GLINTLAB_ENVIRONMENT
 layout(binding = 0) uniform sampler2D u_environment;  // lat-long, full mip chain
@@ -328,6 +343,21 @@ void main() {
 #if GLINTLAB_POINT_LIGHTS > 0
         for (int i = 0; i < GLINTLAB_POINT_LIGHTS; ++i) {
             vec3 d = u_point_position[i] - p;
+#ifdef GLINTLAB_GLINT_SHADES_AREA_LIGHTS
+            if (u_material_type == 4 && u_point_radius[i] > 0.0f) {
+                // A sphere light as the cone it subtends (kneiphof2025.cpp
+                // light_radiance), shadowed by its centre's cube map.
+                float dist = length(d);
+                if (!(dist > u_point_radius[i])) continue;
+                float sin_max = u_point_radius[i] / dist;
+                float cos_max = sqrt(max(0.0f, 1.0f - sin_max * sin_max));
+                float area_visible = point_visibility(i, p, ng, -d);
+                if (area_visible <= 0.0f) continue;
+                radiance += area_visible * glint_area_light(d / dist, cos_max, u_point_radiance[i],
+                                                            t, b, n, wo, u_glint_color, fp);
+                continue;
+            }
+#endif
             float r2 = dot(d, d);
             vec3 w = d * inversesqrt(r2);
             vec3 wi = vec3(dot(w, t), dot(w, b), dot(w, n));
@@ -346,8 +376,16 @@ void main() {
         }
 #endif
 #if GLINTLAB_ENVIRONMENT && defined(GLINTLAB_GLINT_OWN_LIGHTS)
+        // wang2020 (gpu_wang2020.h): Eqs. 18-20, untinted.
         if (u_material_type == 4)
             radiance += u_glint_color * glint_own_environment(n, wo_world, fp);
+        else
+            radiance += environment_lighting(wo, t, b, n, fp);
+#elif GLINTLAB_ENVIRONMENT && defined(GLINTLAB_GLINT_SHADES_ENVIRONMENT)
+        // The model's own image-based lighting (kneiphof2025: Eq. 17) instead
+        // of the smooth filtered-importance-sampling estimate.
+        if (u_material_type == 4)
+            radiance += glint_environment(wo, t, b, n, u_glint_color, fp);
         else
             radiance += environment_lighting(wo, t, b, n, fp);
 #elif GLINTLAB_ENVIRONMENT
@@ -356,6 +394,17 @@ void main() {
 #if GLINTLAB_DIRECTIONAL_LIGHTS > 0
         for (int i = 0; i < GLINTLAB_DIRECTIONAL_LIGHTS; ++i) {
             vec3 w = u_directional_direction[i];
+#ifdef GLINTLAB_GLINT_SHADES_AREA_LIGHTS
+            if (u_material_type == 4 && u_directional_solid_angle[i] > 0.0f) {
+                // A sun cone as an area light (kneiphof2025.cpp light_radiance).
+                float area_visible = directional_visibility(i, p, ng);
+                if (area_visible <= 0.0f) continue;
+                radiance += area_visible * glint_area_light(normalize(w), u_directional_cos_max[i],
+                                                            u_directional_radiance[i], t, b, n,
+                                                            wo, u_glint_color, fp);
+                continue;
+            }
+#endif
             vec3 wi = vec3(dot(w, t), dot(w, b), dot(w, n));
             if (wi.z <= 0.0f) continue;
             float visible = directional_visibility(i, p, ng);

@@ -13,8 +13,7 @@ namespace glintlab::gl {
 // `what` names the program in error messages, e.g. "forward[deliot2023, 1 point]".
 unsigned link_program(const AssembledShader& vertex, const AssembledShader& fragment,
                       const std::string& what);
-
-// A compute program (same error conventions).
+// The same for one compute shader.
 unsigned link_compute_program(const AssembledShader& compute, const std::string& what);
 
 }  // namespace glintlab::gl

@@ -92,6 +92,69 @@ vec3 glint_ndf(vec3 h, Footprint fp) {
 float glint_masking(vec3 wo, vec3 wi, vec3 h) { return G2_VCavity(wo, wi, h); }
 )";
 
+// kneiphof2025 (papers/003): the shared file's GLSL fetch functions read the
+// CPU-prefiltered maps bound by realtime/kneiphof2025_gpu.h. Point and delta
+// directional lights: deliot2023's D_P with the reused grid parameters (003
+// Table 1: "identical to [DB23]"; kneiphof2025.cpp kneiphof2025_footprint_ndf).
+// The environment and the area lights (sphere lights, sun cones) are shaded
+// by the model itself, as kneiphof2025.cpp light_radiance does at the CPU's
+// first hit: the forward shader calls glint_environment / glint_area_light
+// when the glue defines GLINTLAB_GLINT_SHADES_ENVIRONMENT /
+// GLINTLAB_GLINT_SHADES_AREA_LIGHTS.
+constexpr const char* kKneiphof2025Glue = R"(
+#include "glintlab/glints/kneiphof2025/kneiphof2025.glsl"
+uniform int u_kneiphof2025_levels;         // K
+uniform vec4 u_kneiphof2025_levels_a;      // L^(1..4) (Eq. 18)
+uniform vec4 u_kneiphof2025_levels_b;      // L^(5..8)
+uniform bool u_kneiphof2025_wang2020_style;
+uniform float u_kneiphof2025_gamma_solid_angle;
+uniform bool u_kneiphof2025_conditional;
+uniform float u_kneiphof2025_microfacet_roughness;
+uniform float u_kneiphof2025_screen_space_scale;
+uniform float u_kneiphof2025_density_randomization;
+uniform vec3 u_kneiphof2025_f0;             // kneiphof2025_f0(desc)
+uniform float u_kneiphof2025_radiance_scale; // current environment scale / prefiltered one
+float kneiphof2025_glue_alpha() { return clamp(u_glint_alpha.x, 1e-4f, 1.0f); }  // alpha_of
+vec3 glint_ndf(vec3 h, Footprint fp) {
+    return vec3(deliot2023_ndf(h, fp, NDF_GGX, u_glint_alpha.x, u_glint_alpha.y,
+                               u_glint_log_density, u_glint_seed,
+                               u_kneiphof2025_microfacet_roughness,
+                               u_kneiphof2025_screen_space_scale,
+                               u_kneiphof2025_density_randomization, false));
+}
+float glint_masking(vec3 wo, vec3 wi, vec3 h) {
+    return G2_SmithCorrelated(u_glint_ndf, wo, wi, u_glint_alpha.x, u_glint_alpha.y);
+}
+#define GLINTLAB_GLINT_SHADES_ENVIRONMENT 1
+// Eq. 17 under the environment (unshadowed, 003 §7); wo local, (t, b, n) the
+// world shading frame; wr the mirror direction in world space.
+vec3 glint_environment(vec3 wo, vec3 t, vec3 b, vec3 n, vec3 color, Footprint fp) {
+    if (wo.z <= 0.0f) return vec3(0.0f);
+    vec3 wr = (-wo.x) * t + (-wo.y) * b + wo.z * n;
+    return u_kneiphof2025_radiance_scale *
+           kneiphof2025_environment(n, wr, wo.z, kneiphof2025_glue_alpha(), u_kneiphof2025_f0,
+                                    color, fp, u_glint_log_density, u_glint_seed,
+                                    u_kneiphof2025_screen_space_scale,
+                                    u_kneiphof2025_density_randomization, u_kneiphof2025_levels,
+                                    u_kneiphof2025_levels_a, u_kneiphof2025_levels_b,
+                                    u_kneiphof2025_wang2020_style ? KNEIPHOF2025_VARIANT_WANG2020
+                                                                  : KNEIPHOF2025_VARIANT_OURS,
+                                    u_kneiphof2025_gamma_solid_angle, u_kneiphof2025_conditional);
+}
+#define GLINTLAB_GLINT_SHADES_AREA_LIGHTS 1
+// One area light (K = 1): a cone around the world direction `axis`; the
+// caller multiplies by the shadow test towards the axis.
+vec3 glint_area_light(vec3 axis, float cos_max, vec3 radiance, vec3 t, vec3 b, vec3 n, vec3 wo,
+                      vec3 color, Footprint fp) {
+    if (wo.z <= 0.0f) return vec3(0.0f);
+    return kneiphof2025_area_light(axis, cos_max, radiance, t, b, n, wo, kneiphof2025_glue_alpha(),
+                                   u_kneiphof2025_f0, color, fp, u_glint_log_density,
+                                   u_glint_seed, u_kneiphof2025_microfacet_roughness,
+                                   u_kneiphof2025_screen_space_scale,
+                                   u_kneiphof2025_density_randomization);
+}
+)";
+
 constexpr int kChermain2020DictionaryUnit = kFirstModelTextureUnit;
 constexpr int kDeliot2023NoiseUnit = kFirstModelTextureUnit + 1;  // binding = 5 in the glue
 static_assert(kDeliot2023NoiseUnit == 5);
@@ -105,6 +168,7 @@ bool gpu_supports_model(GlintModelId model) {
         case GlintModelId::Zirr2016:
         case GlintModelId::Chermain2020:
         case GlintModelId::Wang2020:  // gpu_wang2020.h
+        case GlintModelId::Kneiphof2025:
             return true;
         default:
             return false;
@@ -135,13 +199,15 @@ std::string glint_model_glsl(GlintModelId model, bool noise_texture) {
             return kChermain2020Glue;
         case GlintModelId::Wang2020:
             return wang2020_glsl();
+        case GlintModelId::Kneiphof2025:
+            return kKneiphof2025Glue;
         default:
             break;
     }
     const GlintModelInfo* info = find_glint_model(model);
     fail(
         "OpenGL renderer: glint model \"{}\" has no GPU implementation (GPU models: smooth, "
-        "deliot2023, zirr2016, chermain2020, wang2020)",
+        "deliot2023, zirr2016, chermain2020, kneiphof2025, wang2020)",
         info != nullptr ? info->name : "?");
 }
 
@@ -272,6 +338,13 @@ void reset_model_params(GlintDesc& desc, GlintModelId model) {
             desc.alpha_x = desc.alpha_y = std::clamp(desc.alpha_x, 0.02f, 1.0f);
             desc.log_density = std::clamp(desc.log_density, 0.0f, 19.4f);
             desc.params = Wang2020Params{};
+            break;
+        case GlintModelId::Kneiphof2025:
+            // 003 §7-8: the split-sum tables are isotropic GGX with alpha <= 1
+            // (read_kneiphof2025_params rejects anything else).
+            desc.ndf = NdfType::GGX;
+            desc.alpha_x = desc.alpha_y = std::min(desc.alpha_x, 1.0f);
+            desc.params = Kneiphof2025Params{};
             break;
         default:
             desc.params = SmoothParams{};

@@ -17,6 +17,7 @@
 #include "glintlab/realtime/gpu_geometry.h"
 #include "glintlab/realtime/gpu_timer.h"
 #include "glintlab/realtime/gpu_wang2020.h"
+#include "glintlab/realtime/kneiphof2025_gpu.h"
 #include "glintlab/realtime/uniform_cache.h"
 
 namespace glintlab {
@@ -99,6 +100,7 @@ struct GpuRenderer::Impl {
     gl::UniformCache uniforms;
     gl::GlintResources glint_resources;
     gl::Wang2020Resources wang2020_resources;  // gpu_wang2020.h
+    gl::Kneiphof2025Resources kneiphof2025;    // prefiltered environment, DFG table
     gl::Framebuffer fbo;
     gl::Texture color, depth;
     int width = 0, height = 0;
@@ -338,22 +340,35 @@ struct GpuRenderer::Impl {
         gl::set_glint_uniforms(p, uniforms, g);
         glint_resources.bind(g.model_id, noise_texture);
         if (g.model_id == GlintModelId::Wang2020) wang2020_resources.bind(p, uniforms, g, scene);
+        if (g.model_id == GlintModelId::Kneiphof2025)
+            kneiphof2025.prepare(p, uniforms, scene, g, environment_scale, environment_rotation);
     }
 
     void set_lights(GLuint p, const Scene& scene) {
         std::vector<glm::vec3> point_position, point_intensity, dir_direction, dir_irradiance;
+        // The shapes of area lights, for glint models that shade them as
+        // cones (GLINTLAB_GLINT_SHADES_AREA_LIGHTS in forward_shaders.cpp).
+        std::vector<float> point_radius, dir_solid_angle, dir_cos_max;
+        std::vector<glm::vec3> point_radiance, dir_radiance;
         for (const Light& light : scene.lights) {
             if (const auto* l = std::get_if<PointLight>(&light)) {
                 point_position.push_back(l->position);
                 point_intensity.push_back(l->intensity);
+                point_radius.push_back(0.0f);
+                point_radiance.push_back(glm::vec3(0.0f));
             } else if (const auto* l = std::get_if<SphereLight>(&light)) {
                 // A sphere of radiance L seen whole from distance d gives the
                 // irradiance pi L r^2 / d^2 cos: a point of intensity pi r^2 L.
                 point_position.push_back(l->center);
                 point_intensity.push_back(glm::pi<float>() * l->radius * l->radius * l->radiance);
+                point_radius.push_back(l->radius);
+                point_radiance.push_back(l->radiance);
             } else if (const auto* l = std::get_if<DirectionalLight>(&light)) {
                 dir_direction.push_back(l->direction);
                 dir_irradiance.push_back(l->irradiance);
+                dir_solid_angle.push_back(l->solid_angle);
+                dir_cos_max.push_back(l->cos_max);
+                dir_radiance.push_back(l->radiance);
             }
         }
         auto loc = [&](const char* name) { return uniforms.location(p, name); };
@@ -366,6 +381,15 @@ struct GpuRenderer::Impl {
         set("u_point_intensity", point_intensity);
         set("u_directional_direction", dir_direction);
         set("u_directional_irradiance", dir_irradiance);
+        set("u_point_radiance", point_radiance);
+        set("u_directional_radiance", dir_radiance);
+        auto set_floats = [&](const char* name, const std::vector<float>& v) {
+            if (!v.empty())
+                glProgramUniform1fv(p, loc(name), static_cast<GLsizei>(v.size()), v.data());
+        };
+        set_floats("u_point_radius", point_radius);
+        set_floats("u_directional_solid_angle", dir_solid_angle);
+        set_floats("u_directional_cos_max", dir_cos_max);
     }
 };
 
@@ -460,6 +484,12 @@ void GpuRenderer::render(const Scene& scene) {
 
     glDisable(GL_BLEND);
     glDisable(GL_CULL_FACE);  // two-sided materials
+
+    // kneiphof2025's dynamic IBL (003 §5): the environment prefiltered on the
+    // GPU in every frame, when enabled (before the passes: it rebinds units).
+    if (r.environment)
+        r.kneiphof2025.begin_frame(scene, r.environment.get(), r.environment_width,
+                                   r.environment_height, r.environment_scale);
 
     // Pass 0: shadow maps of the directional lights.
     r.shadow_timer.begin();
@@ -598,6 +628,10 @@ bool GpuRenderer::has_environment() const {
 
 void GpuRenderer::set_deliot2023_noise_texture(bool on) {
     impl_->noise_texture = on;
+}
+
+void GpuRenderer::set_kneiphof2025_dynamic_environment(bool on) {
+    impl_->kneiphof2025.set_dynamic(on);
 }
 
 void GpuRenderer::set_shadows(bool on) {

@@ -14,7 +14,9 @@
 // visible sphere); cone (sun) lights at their axis; the environment lights
 // surfaces through a deterministic filtered-importance-sampling estimate
 // (forward_shaders.h) without occlusion; the dielectric shows its
-// reflection only.
+// reflection only. kneiphof2025 materials shade the environment (Eq. 17 over
+// prefiltered maps), sphere lights and sun cones themselves, as the CPU does
+// at the first hit (realtime/kneiphof2025_gpu.h).
 #pragma once
 
 #include <memory>
@@ -65,6 +67,10 @@ class GpuRenderer {
     // deliot2023 materials use the noise-texture variant (000 §6.3) instead
     // of the hash (off by default, the CPU's choice).
     void set_deliot2023_noise_texture(bool on);
+    // kneiphof2025 materials: prefilter the environment on the GPU in every
+    // frame (003 §5 "dynamic IBL", compute passes) instead of once on the CPU
+    // (off by default).
+    void set_kneiphof2025_dynamic_environment(bool on);
     // Shadow maps (on by default).
     void set_shadows(bool on);
 

@@ -76,4 +76,8 @@ std::string gpu_bench_device() {
     return device_name();
 }
 
+void set_gpu_bench_device(const std::string& device) {
+    device_name() = device;
+}
+
 }  // namespace glintlab

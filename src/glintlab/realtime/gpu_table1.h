@@ -17,5 +17,7 @@ std::vector<Table1Row> run_table1_gpu(const Table1Options& options,
 
 // "OpenGL ... | renderer" of the EGL context the GPU bench uses.
 std::string gpu_bench_device();
+// Records it (the other GPU tables, e.g. gpu_table1_003.h).
+void set_gpu_bench_device(const std::string& device);
 
 }  // namespace glintlab

@@ -32,6 +32,10 @@ struct FetchCache {
 };
 thread_local FetchCache t_fetch;
 
+// The pixel's stream for the area-light quadrature of one shading call (the
+// jitter of kneiphof2025_cone_jitter), set by the host like t_env.
+thread_local Pcg32* t_rng = nullptr;
+
 const float* fetch_all(glm::vec3 dir, float roughness) {
     FetchCache& c = t_fetch;
     if (c.env != t_env || c.dir != dir || c.roughness != roughness) {
@@ -67,6 +71,12 @@ vec4 kneiphof2025_weights_fetch(vec3 dir, float roughness, int group) {
 vec3 kneiphof2025_dfg_fetch(float cos_o, float roughness) {
     return Kneiphof2025DfgLut::get().lookup(cos_o, roughness);
 }
+// Two draws in sequence (ring position, then sector position).
+vec2 kneiphof2025_cone_jitter() {
+    const float u1 = t_rng->next_float();
+    const float u2 = t_rng->next_float();
+    return vec2(u1, u2);
+}
 #include "glintlab/glints/kneiphof2025/kneiphof2025.glsl"
 #include "glintlab/microfacet/fresnel.glsl"
 #include "glintlab/microfacet/masking.glsl"
@@ -97,58 +107,20 @@ struct Cone {
     float t_max;  // shadow-ray length (short of the emitter: it is geometry too)
 };
 
-// Eq. 8-9 and the smooth reflected radiance of one cone, by a stratified
-// (n_r x n_phi, jittered from the pixel's stream) quadrature uniform in solid
-// angle: p = int_cone D / (4 <h, wi>) dwi / D_H and
-// L = int_cone F G2 D / (4 cos_o) L_i dwi. Returns L, sets p and the local
-// half vector towards the cone's axis.
-glm::vec3 integrate_cone(const GlintLightingContext& ctx, const Cone& cone, float* p,
-                         glm::vec3* h_center) {
-    constexpr int kRings = 8, kSectors = 8;
-    const GlintDesc& desc = *ctx.desc;
-    const float alpha = alpha_of(desc);
-    const glm::vec3 wo = ctx.wo;
-    const glm::vec3 n = cone.axis;
-    const float sign = std::copysign(1.0f, n.z);
-    const float a = -1.0f / (sign + n.z);
-    const float b = n.x * n.y * a;
-    const glm::vec3 t(1.0f + sign * n.x * n.x * a, sign * b, -sign * n.x);
-    const glm::vec3 bt(b, sign + n.y * n.y * a, -n.y);
-    const float omega = 2.0f * glm::pi<float>() * (1.0f - cone.cos_max);
-    const float d_omega = omega / static_cast<float>(kRings * kSectors);
-    const glm::vec3 f0 = kneiphof2025_f0(desc);
-    float p_sum = 0.0f;
-    glm::vec3 L(0.0f);
-    for (int i = 0; i < kRings; ++i)
-        for (int j = 0; j < kSectors; ++j) {
-            const float u1 = (static_cast<float>(i) + ctx.rng->next_float()) / kRings;
-            const float u2 = (static_cast<float>(j) + ctx.rng->next_float()) / kSectors;
-            const float cos_t = 1.0f - u1 * (1.0f - cone.cos_max);
-            const float sin_t = std::sqrt(std::max(0.0f, 1.0f - cos_t * cos_t));
-            const float phi = 2.0f * glm::pi<float>() * u2;
-            const glm::vec3 w = sin_t * std::cos(phi) * t + sin_t * std::sin(phi) * bt + cos_t * n;
-            const glm::vec3 wi = ctx.to_local(w);
-            if (wi.z <= 0.0f) continue;
-            const glm::vec3 h = glm::normalize(wo + wi);
-            const float d = shader::D_Microfacet(shader::NDF_GGX, h, alpha, alpha);
-            const float hi = std::max(glm::dot(h, wi), 1e-6f);
-            p_sum += d / (4.0f * hi) * d_omega;
-            const float g = shader::G2_SmithCorrelated(shader::NDF_GGX, wo, wi, alpha, alpha);
-            const glm::vec3 f = shader::F_Schlick(f0, hi);
-            L += f * (g * d / (4.0f * wo.z) * d_omega) * cone.radiance;
-        }
-    *p = std::clamp(p_sum / kneiphof2025_total_facet_area(alpha), 0.0f, 1.0f);
-    *h_center = glm::normalize(wo + ctx.to_local(cone.axis));
-    return desc.color * L;
-}
-
+// One area light (K = 1): the shared quadrature and factor of
+// kneiphof2025.glsl (kneiphof2025_area_light), jittered from the pixel's
+// stream, behind one shadow ray towards the cone's axis.
 glm::vec3 area_light_radiance(const GlintLightingContext& ctx, const Cone& cone) {
     if (!ctx.visible(cone.axis, cone.t_max)) return glm::vec3(0.0f);
-    float p = 0.0f;
-    glm::vec3 h_center;
-    const glm::vec3 L = integrate_cone(ctx, cone, &p, &h_center);
-    if (L == glm::vec3(0.0f) || h_center.z <= 0.0f) return glm::vec3(0.0f);
-    return L * kneiphof2025_area_factor(h_center, ctx.footprint, p, *ctx.desc);
+    const GlintDesc& desc = *ctx.desc;
+    const Kneiphof2025Params& k = params_of(desc);
+    t_rng = ctx.rng;
+    const glm::vec3 L = shader::kneiphof2025_area_light(
+        cone.axis, cone.cos_max, cone.radiance, ctx.t, ctx.b, ctx.n, ctx.wo, alpha_of(desc),
+        kneiphof2025_f0(desc), desc.color, ctx.footprint, desc.log_density, desc.seed,
+        k.microfacet_roughness, k.screen_space_scale, k.density_randomization);
+    t_rng = nullptr;
+    return L;
 }
 
 }  // namespace

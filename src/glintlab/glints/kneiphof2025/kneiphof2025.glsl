@@ -21,7 +21,11 @@
 //        integral of Eq. 21), group 0 or 1;
 //   vec3 kneiphof2025_dfg_fetch(float cos_o, float roughness)
 //        (A, B, E_D / D_H): split-sum albedo E_rho = F0 A + B (Eq. 11) and the
-//        visible reflecting facet area over the total facet area (Eq. 21, 8).
+//        visible reflecting facet area over the total facet area (Eq. 21, 8);
+//   vec2 kneiphof2025_cone_jitter()
+//        the position of the next sample of an area light's quadrature within
+//        its stratum, in [0, 1)^2 (the CPU draws it from the pixel's stream,
+//        the GPU takes the stratum's centre).
 // The C++ back end (kneiphof2025.cpp) defines them over its CPU prefiltered
 // maps before including this file; the GLSL defaults below read lat-long
 // texture arrays whose layer i holds roughness i / (layers - 1).
@@ -33,6 +37,9 @@
 #include "glintlab/core/hash.glsl"
 #include "glintlab/counting/binomial_laws.glsl"
 #include "glintlab/glints/deliot2023/deliot2023.glsl"
+#include "glintlab/microfacet/fresnel.glsl"
+#include "glintlab/microfacet/masking.glsl"
+#include "glintlab/microfacet/ndf.glsl"
 
 #ifndef GLINTLAB_CPP
 // Texture arrays, one layer per roughness level (layer i: sqrt(alpha) =
@@ -74,6 +81,10 @@ vec3 kneiphof2025_dfg_fetch(float cos_o, float roughness) {
     vec4 t = textureLod(kneiphof2025_dfg_lut, vec2(cos_o, roughness), 0.0f);
     return vec3(t.x, t.y, t.z);
 }
+// A forward shader has no per-pixel stream: the midpoint of each stratum
+// (deterministic; differs from the CPU's jittered strata by the quadrature
+// error of 64 strata).
+vec2 kneiphof2025_cone_jitter() { return vec2(0.5f, 0.5f); }
 #endif
 
 const int KNEIPHOF2025_VARIANT_OURS = 0;
@@ -247,6 +258,73 @@ float kneiphof2025_area_factor(vec3 h_center, Footprint fp, float p, float log_d
                                       density_randomization, false);
     }
     return acc.y > 0.0f ? acc.x / (acc.y * p) : 1.0f;
+}
+
+// One area light (a sphere light, or the sun: a cone of constant radiance
+// around the world direction `axis` with half-angle cosine cos_max) seen from
+// a shading point with world frame (t, b, n) and local wo (wo.z > 0):
+// Eq. 8-9 and the smooth reflected radiance by a stratified quadrature,
+// uniform in solid angle, of KNEIPHOF2025_CONE_RINGS x _SECTORS strata
+// (sample positions from kneiphof2025_cone_jitter(), two draws per stratum,
+// ring-major):
+//   p = int_cone D / (4 <h, wi>) dwi / D_H,   L = color int_cone F G2 D / (4 cos_o) L_i dwi.
+// F is Schlick's with f0 (the split-sum convention, as for the environment).
+// Returns L and sets p and the local half vector towards the cone's axis.
+const int KNEIPHOF2025_CONE_RINGS = 8;
+const int KNEIPHOF2025_CONE_SECTORS = 8;
+vec3 kneiphof2025_integrate_cone(vec3 axis, float cos_max, vec3 radiance, vec3 t, vec3 b, vec3 n,
+                                 vec3 wo, float alpha, vec3 f0, vec3 color, OUT(float) p,
+                                 OUT(vec3) h_center) {
+    // Orthonormal basis around the axis (Duff et al. 2017).
+    vec3 c = axis;
+    float sign = c.z >= 0.0f ? 1.0f : -1.0f;
+    float a = -1.0f / (sign + c.z);
+    float bb = c.x * c.y * a;
+    vec3 ct = vec3(1.0f + sign * c.x * c.x * a, sign * bb, -sign * c.x);
+    vec3 cb = vec3(bb, sign + c.y * c.y * a, -c.y);
+    float omega = 2.0f * PI * (1.0f - cos_max);
+    float d_omega = omega / float(KNEIPHOF2025_CONE_RINGS * KNEIPHOF2025_CONE_SECTORS);
+    float p_sum = 0.0f;
+    vec3 L = vec3(0.0f);
+    for (int i = 0; i < KNEIPHOF2025_CONE_RINGS; ++i) {
+        for (int j = 0; j < KNEIPHOF2025_CONE_SECTORS; ++j) {
+            vec2 jitter = kneiphof2025_cone_jitter();
+            float u1 = (float(i) + jitter.x) / float(KNEIPHOF2025_CONE_RINGS);
+            float u2 = (float(j) + jitter.y) / float(KNEIPHOF2025_CONE_SECTORS);
+            float cos_t = 1.0f - u1 * (1.0f - cos_max);
+            float sin_t = sqrt(max(1.0f - cos_t * cos_t, 0.0f));
+            float phi = 2.0f * PI * u2;
+            vec3 w = ct * (sin_t * cos(phi)) + cb * (sin_t * sin(phi)) + c * cos_t;
+            vec3 wi = vec3(dot(w, t), dot(w, b), dot(w, n));
+            if (wi.z <= 0.0f) continue;
+            vec3 h = normalize(wo + wi);
+            float d = D_Microfacet(NDF_GGX, h, alpha, alpha);
+            float hi = max(dot(h, wi), 1e-6f);
+            p_sum += d / (4.0f * hi) * d_omega;
+            float g = G2_SmithCorrelated(NDF_GGX, wo, wi, alpha, alpha);
+            vec3 f = F_Schlick(f0, hi);
+            L += f * (g * d / (4.0f * wo.z) * d_omega) * radiance;
+        }
+    }
+    p = clamp(p_sum / kneiphof2025_total_facet_area(alpha), 0.0f, 1.0f);
+    h_center = normalize(wo + vec3(dot(axis, t), dot(axis, b), dot(axis, n)));
+    return color * L;
+}
+
+// The area light's glint radiance (K = 1, kneiphof2024 / 003 Eq. 6-9, 23):
+// the smooth radiance of the cone times b / (E[N_P] p). Visibility is the
+// caller's (one shadow test towards the axis).
+vec3 kneiphof2025_area_light(vec3 axis, float cos_max, vec3 radiance, vec3 t, vec3 b, vec3 n,
+                             vec3 wo, float alpha, vec3 f0, vec3 color, Footprint fp,
+                             float log_density, uint seed, float microfacet_roughness,
+                             float screen_space_scale, float density_randomization) {
+    float p = 0.0f;
+    vec3 h_center = vec3(0.0f, 0.0f, 1.0f);
+    vec3 L = kneiphof2025_integrate_cone(axis, cos_max, radiance, t, b, n, wo, alpha, f0, color, p,
+                                         h_center);
+    if ((L.x == 0.0f && L.y == 0.0f && L.z == 0.0f) || h_center.z <= 0.0f) return vec3(0.0f);
+    return L * kneiphof2025_area_factor(h_center, fp, p, log_density, seed, microfacet_roughness,
+                                        screen_space_scale, density_randomization);
 }
 
 // The direction at which the prefiltered maps are read: the split-sum kernel

@@ -12,9 +12,15 @@
 #include <glm/gtc/constants.hpp>
 
 #include "glintlab/core/error.h"
+#include "glintlab/core/glsl.h"
 #include "glintlab/core/image.h"
 #include "glintlab/microfacet/microfacet.h"
 #include "glintlab/scene/environment.h"
+
+// Eq. 19, one source with the GPU's per-frame prefilter.
+GLINTLAB_SHADER_FUNCTIONS_BEGIN
+#include "glintlab/glints/kneiphof2025/kneiphof2025_partition.glsl"
+GLINTLAB_SHADER_FUNCTIONS_END
 
 namespace glintlab {
 namespace {
@@ -158,14 +164,8 @@ Kneiphof2025Environment::Kneiphof2025Environment(const EnvironmentMap& env,
     // k > 1, lo = max(min L, black level), hi = max L (luminance, Rec.709).
     min_luminance_ = *std::min_element(lum.begin(), lum.end());
     max_luminance_ = *std::max_element(lum.begin(), lum.end());
-    const float lo = std::max(min_luminance_, o.black_level);
-    const float hi = std::max(max_luminance_, lo);
-    radiance_levels_.fill(0.0f);
-    for (int k = 1; k < levels_; ++k) {
-        const float a = static_cast<float>(k) / static_cast<float>(levels_ - 1);
-        radiance_levels_[k] = std::exp(std::log(lo) + a * (std::log(hi) - std::log(lo)));
-    }
-    radiance_levels_[levels_ - 1] = hi;  // exactly the max: no texel above the top level
+    radiance_levels_ =
+        kneiphof2025_radiance_levels(min_luminance_, max_luminance_, levels_, o.black_level);
     for (size_t i = 0; i < lum.size(); ++i) partition(lum[i], &base.data[i * C + 3]);
 
     // Source pyramid for filtered importance sampling: 2 x 2 box reductions.
@@ -208,28 +208,14 @@ Kneiphof2025Environment::Kneiphof2025Environment(const EnvironmentMap& env,
     // sqrt(alpha) = 0.5-0.7 (forest.exr); without it <= 3 % except ~10 %
     // just below the horizon.
     mips_.push_back(std::move(base));
-    const float texel_solid_angle = 4.0f * kPi / (static_cast<float>(W) * static_cast<float>(H));
     for (int m = 1; m < o.mip_count; ++m) {
         const float r = static_cast<float>(m) / static_cast<float>(o.mip_count - 1);
-        const float alpha = std::max(r * r, 1e-4f);
         Kneiphof2025Level lvl;
         lvl.width = W;
         lvl.height = H;
         lvl.data.assign(size_t(lvl.width) * lvl.height * C, 0.0f);
-        struct KernelSample {
-            glm::vec3 l;
-            float weight, lod;
-        };
-        std::vector<KernelSample> kernel;
-        for (int s = 0; s < o.samples; ++s) {
-            const glm::vec3 h = sample_ggx_cos(alpha, hammersley(s, o.samples));
-            const glm::vec3 l = 2.0f * h.z * h - glm::vec3(0, 0, 1);
-            if (l.z <= 0.0f) continue;
-            const float pdf = d_ggx(h, alpha) * 0.25f;  // D(h) <n,h> / (4 <v,h>), n = v
-            const float omega_s = 1.0f / (static_cast<float>(o.samples) * pdf);
-            kernel.push_back(
-                {l, l.z, std::max(0.5f * std::log2(omega_s / texel_solid_angle), 0.0f)});
-        }
+        const std::vector<Kneiphof2025KernelSample> kernel =
+            kneiphof2025_prefilter_kernel(r, o.samples, W, H);
         parallel_rows(lvl.height, [&](int y) {
             std::vector<float> acc(C), val(C), tmp(C);
             for (int x = 0; x < lvl.width; ++x) {
@@ -243,7 +229,7 @@ Kneiphof2025Environment::Kneiphof2025Environment(const EnvironmentMap& env,
                 const glm::vec3 bt(b, sign + n.y * n.y * a, -n.y);
                 std::fill(acc.begin(), acc.end(), 0.0f);
                 float wsum = 0.0f;
-                for (const KernelSample& k : kernel) {
+                for (const Kneiphof2025KernelSample& k : kernel) {
                     const glm::vec3 d = k.l.x * t + k.l.y * bt + k.l.z * n;
                     pyramid_fetch(map_uv(d, 0.0f), k.lod, val.data(), tmp.data());
                     for (int c = 0; c < C; ++c) acc[c] += k.weight * val[c];
@@ -258,21 +244,47 @@ Kneiphof2025Environment::Kneiphof2025Environment(const EnvironmentMap& env,
 }
 
 void Kneiphof2025Environment::partition(float L, float* w) const {
-    // Eq. 19 in linear space: the hat functions of the two levels around L.
-    for (int k = 0; k < levels_; ++k) w[k] = 0.0f;
-    const float l = std::clamp(L, 0.0f, radiance_levels_[levels_ - 1]);
-    for (int j = 0; j + 1 < levels_; ++j) {
-        const float a = radiance_levels_[j], b = radiance_levels_[j + 1];
-        if (l <= b) {
-            // Equal levels (a constant environment: all k > 1 equal) give the
-            // whole weight to the upper one.
-            const float t = b > a ? (l - a) / (b - a) : 1.0f;
-            w[j] = 1.0f - t;
-            w[j + 1] = t;
-            return;
-        }
+    // Eq. 19 (kneiphof2025_partition.glsl).
+    const auto& lv = radiance_levels_;
+    glm::vec4 wa, wb;
+    shader::kneiphof2025_partition(L, levels_, glm::vec4(lv[0], lv[1], lv[2], lv[3]),
+                                   glm::vec4(lv[4], lv[5], lv[6], lv[7]), wa, wb);
+    for (int k = 0; k < levels_; ++k) w[k] = k < 4 ? wa[k] : wb[k - 4];
+}
+
+std::array<float, 8> kneiphof2025_radiance_levels(float min_luminance, float max_luminance,
+                                                  int levels, float black_level) {
+    // Eq. 18: L^(1) = 0, L^(k) = exp(lerp(log lo, log hi, (k-1)/(K-1))) for
+    // k > 1, lo = max(min L, black level), hi = max L (luminance, Rec.709).
+    const float lo = std::max(min_luminance, black_level);
+    const float hi = std::max(max_luminance, lo);
+    std::array<float, 8> L{};
+    for (int k = 1; k < levels; ++k) {
+        const float a = static_cast<float>(k) / static_cast<float>(levels - 1);
+        L[static_cast<size_t>(k)] = std::exp(std::log(lo) + a * (std::log(hi) - std::log(lo)));
     }
-    w[levels_ - 1] = 1.0f;
+    L[static_cast<size_t>(levels - 1)] = hi;  // exactly the max: no texel above the top level
+    return L;
+}
+
+std::vector<Kneiphof2025KernelSample> kneiphof2025_prefilter_kernel(float roughness, int samples,
+                                                                    int width, int height) {
+    // Eq. 11 / 21: p(wi) ~ D(h) <n, wi> with n = v = r, GGX alpha = roughness^2.
+    // Sample solid angle vs texel solid angle gives the LOD (Colbert &
+    // Krivanek 2007), without Karis' +1 bias (see the constructor).
+    const float alpha = std::max(roughness * roughness, 1e-4f);
+    const float texel_solid_angle =
+        4.0f * kPi / (static_cast<float>(width) * static_cast<float>(height));
+    std::vector<Kneiphof2025KernelSample> kernel;
+    for (int s = 0; s < samples; ++s) {
+        const glm::vec3 h = sample_ggx_cos(alpha, hammersley(s, samples));
+        const glm::vec3 l = 2.0f * h.z * h - glm::vec3(0, 0, 1);
+        if (l.z <= 0.0f) continue;
+        const float pdf = d_ggx(h, alpha) * 0.25f;  // D(h) <n,h> / (4 <v,h>), n = v
+        const float omega_s = 1.0f / (static_cast<float>(samples) * pdf);
+        kernel.push_back({l, l.z, std::max(0.5f * std::log2(omega_s / texel_solid_angle), 0.0f)});
+    }
+    return kernel;
 }
 
 void Kneiphof2025Environment::fetch_level(int level, glm::vec2 uv, float* out) const {

@@ -81,6 +81,24 @@ class Kneiphof2025Environment {
     std::vector<Kneiphof2025Level> mips_;
 };
 
+// Eq. 18: the K radiance levels (L^(1) = 0, then log-spaced from
+// max(min luminance, black level) to the max luminance), entries >= K zero.
+std::array<float, 8> kneiphof2025_radiance_levels(float min_luminance, float max_luminance,
+                                                  int levels, float black_level);
+
+// One sample of the split-sum prefilter kernel (Eq. 11, 21) in the frame of
+// n = v = r (z up): direction, weight <n, wi>, and the LOD in the box
+// pyramid of a width x height lat-long level whose texels match the
+// sample's solid angle.
+struct Kneiphof2025KernelSample {
+    glm::vec3 l;
+    float weight, lod;
+};
+// The kernel of the level of roughness sqrt(alpha) (the CPU prefilter's and
+// the GPU's per-frame prefilter's).
+std::vector<Kneiphof2025KernelSample> kneiphof2025_prefilter_kernel(float roughness, int samples,
+                                                                    int width, int height);
+
 // The split-sum tables of isotropic GGX (built once, thread-safe).
 class Kneiphof2025DfgLut {
   public:

@@ -1,0 +1,68 @@
+// kneiphof2025's environment prefilter as OpenGL compute passes (003 §5,
+// "dynamic IBL": redone every frame), the GPU counterpart of
+// Kneiphof2025Environment (glints/kneiphof2025/kneiphof2025_prefilter.h)
+// with the same options, layout and algorithm:
+//   1. base level: the radiance resampled to W x H (ss x ss bilinear source
+//      samples per texel), its luminance, and the luminance range (atomic
+//      min / max on the float bits; luminance >= 0);
+//   2. the K radiance levels (Eq. 18) from that range, on the host (two
+//      floats read back; kneiphof2025_radiance_levels, the CPU's function);
+//   3. the fuzzy partition of every texel (Eq. 19, kneiphof2025_partition.glsl);
+//   4. the box pyramid (2 x 2 averages down to 2 x 1) of the RGB and K weight
+//      channels;
+//   5. the split-sum GGX prefilter of every channel with one kernel (Eq. 11,
+//      20-21; kneiphof2025_prefilter_kernel, the CPU's samples and LODs),
+//      read from the pyramid by trilinear lookups, into layers 1 .. M-1 of
+//      three lat-long texture arrays (RGB radiance, weights 1-4, weights 5-8);
+//      layer 0 is the base level (the mirror).
+// The arrays are what kneiphof2025.glsl's GLSL fetch functions read.
+#pragma once
+
+#include <array>
+#include <vector>
+
+#include "glintlab/glints/kneiphof2025/kneiphof2025_prefilter.h"
+#include "glintlab/realtime/gl_handles.h"
+
+namespace glintlab::gl {
+
+class Kneiphof2025GpuPrefilter {
+  public:
+    // Compiles the passes and allocates the textures (needs a current GL 4.5
+    // context). Throws glintlab::Error for out-of-range options (the CPU's
+    // ranges).
+    explicit Kneiphof2025GpuPrefilter(const Kneiphof2025PrefilterOptions& options);
+    ~Kneiphof2025GpuPrefilter();
+    Kneiphof2025GpuPrefilter(const Kneiphof2025GpuPrefilter&) = delete;
+    Kneiphof2025GpuPrefilter& operator=(const Kneiphof2025GpuPrefilter&) = delete;
+
+    // Prefilters `source` (a lat-long RGB(A) float texture in the
+    // EnvironmentMap convention, read at level 0 with GL_REPEAT in u and
+    // GL_CLAMP_TO_EDGE in v, bilinear) of source_width x source_height
+    // texels, radiance = texel x scale. Reads back the luminance range (a
+    // sync point: 8 bytes).
+    void run(unsigned source, int source_width, int source_height, float scale);
+
+    int levels() const { return options_.levels; }
+    int layers() const { return options_.mip_count; }
+    // L^(k) of the last run (Eq. 18).
+    const std::array<float, 8>& radiance_levels() const { return radiance_levels_; }
+    unsigned radiance() const { return radiance_.get(); }
+    unsigned weights_a() const { return weights_a_.get(); }
+    unsigned weights_b() const { return weights_b_.get(); }
+    // One layer read back in the CPU's interleaved layout (3 + K channels).
+    Kneiphof2025Level read_layer(int layer) const;
+
+  private:
+    Kneiphof2025PrefilterOptions options_;
+    int width_, height_, pyramid_levels_;
+    std::array<float, 8> radiance_levels_{};
+    Program base_, partition_, reduce_, filter_;
+    Buffer range_;                                  // 2 uints: min, max luminance bits
+    Buffer kernels_;                                // every layer's kernel (pass 5)
+    std::vector<int> kernel_first_, kernel_count_;  // per layer, in samples
+    Texture pyramid_[3];                            // RGB + luminance, weights 1-4, weights 5-8
+    Texture radiance_, weights_a_, weights_b_;      // the output arrays
+};
+
+}  // namespace glintlab::gl
