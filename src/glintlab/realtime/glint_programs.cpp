@@ -332,6 +332,7 @@ void reset_model_params(GlintDesc& desc, GlintModelId model) {
             desc.params = Chermain2020Params{};
             break;
         case GlintModelId::Wang2020:
+            desc.base_albedo = glm::vec3(0.0f);  // it shades its lights itself: no base
             // read_wang2020_params' domain: isotropic Beckmann, alpha in
             // [0.02, 1] (the DPF roughness set, 001 §4.4), ln N <= 19.4.
             desc.ndf = NdfType::Beckmann;
@@ -340,6 +341,7 @@ void reset_model_params(GlintDesc& desc, GlintModelId model) {
             desc.params = Wang2020Params{};
             break;
         case GlintModelId::Kneiphof2025:
+            desc.base_albedo = glm::vec3(0.0f);  // it shades its lights itself: no base
             // 003 §7-8: the split-sum tables are isotropic GGX with alpha <= 1
             // (read_kneiphof2025_params rejects anything else).
             desc.ndf = NdfType::GGX;
