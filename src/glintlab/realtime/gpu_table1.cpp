@@ -36,33 +36,11 @@ std::vector<Table1Row> run_table1_gpu(const Table1Options& options,
                                                 "bench:" + scene_name);
                 GpuRenderer renderer(scene);
                 renderer.set_deliot2023_noise_texture(options.gpu_noise_texture);
-                for (int f = 0; f < options.gpu_warmup; ++f) {
-                    renderer.render(scene);
-                    (void)renderer.pass_times();
-                }
-                std::vector<double> ms, frame_ms, shadow_ms, background_ms;
-                for (int f = 0; f < options.frames; ++f) {
-                    const auto t0 = std::chrono::steady_clock::now();
-                    renderer.render(scene);
-                    renderer.finish();
-                    frame_ms.push_back(std::chrono::duration<double, std::milli>(
-                                           std::chrono::steady_clock::now() - t0)
-                                           .count());
-                    const GpuPassTimes t = renderer.pass_times();
-                    ms.push_back(t.forward_ms);
-                    shadow_ms.push_back(t.shadow_ms);
-                    background_ms.push_back(t.background_ms);
-                }
+                time_gpu_frames(renderer, scene, options.gpu_warmup, options.frames, row);
                 // wang2020: 001 Table 3's passes (gpu_wang2020_passes.h).
                 if (model == "wang2020")
                     gl::time_wang2020_passes(scene, renderer.read_image(), options.frames,
                                              row.pass_ms_per_density);
-                row.shadow_ms_per_density.push_back(gl::timing_stats(shadow_ms).median_ms);
-                row.background_ms_per_density.push_back(gl::timing_stats(background_ms).median_ms);
-                row.frame_ms_per_density.push_back(gl::timing_stats(frame_ms).median_ms);
-                const gl::TimingStats s = gl::timing_stats(ms);
-                row.ms_per_density.push_back(s.median_ms);
-                row.p90_ms_per_density.push_back(s.p90_ms);
             }
             row.min_ms = *std::min_element(row.ms_per_density.begin(), row.ms_per_density.end());
             row.max_ms = *std::max_element(row.ms_per_density.begin(), row.ms_per_density.end());
@@ -70,6 +48,33 @@ std::vector<Table1Row> run_table1_gpu(const Table1Options& options,
         }
     }
     return rows;
+}
+
+void time_gpu_frames(GpuRenderer& renderer, const Scene& scene, int warmup, int frames,
+                     Table1Row& row) {
+    for (int f = 0; f < warmup; ++f) {
+        renderer.render(scene);
+        (void)renderer.pass_times();
+    }
+    std::vector<double> ms, frame_ms, shadow_ms, background_ms;
+    for (int f = 0; f < frames; ++f) {
+        const auto t0 = std::chrono::steady_clock::now();
+        renderer.render(scene);
+        renderer.finish();
+        frame_ms.push_back(
+            std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0)
+                .count());
+        const GpuPassTimes t = renderer.pass_times();
+        ms.push_back(t.forward_ms);
+        shadow_ms.push_back(t.shadow_ms);
+        background_ms.push_back(t.background_ms);
+    }
+    row.shadow_ms_per_density.push_back(gl::timing_stats(shadow_ms).median_ms);
+    row.background_ms_per_density.push_back(gl::timing_stats(background_ms).median_ms);
+    row.frame_ms_per_density.push_back(gl::timing_stats(frame_ms).median_ms);
+    const gl::TimingStats s = gl::timing_stats(ms);
+    row.ms_per_density.push_back(s.median_ms);
+    row.p90_ms_per_density.push_back(s.p90_ms);
 }
 
 std::string gpu_bench_device() {

@@ -11,6 +11,9 @@
 
 namespace glintlab {
 
+class GpuRenderer;
+struct Scene;
+
 std::vector<Table1Row> run_table1_gpu(const Table1Options& options,
                                       const std::vector<std::string>& scenes,
                                       const std::vector<std::string>& models);
@@ -19,5 +22,12 @@ std::vector<Table1Row> run_table1_gpu(const Table1Options& options,
 std::string gpu_bench_device();
 // Records it (the other GPU tables, e.g. gpu_table1_003.h).
 void set_gpu_bench_device(const std::string& device);
+
+// One density point of a GPU table: `warmup` untimed frames, then `frames`
+// timed ones; appends to `row` the medians of the forward, shadow and
+// background passes (GL_TIME_ELAPSED) and of the frame's wall time (render +
+// glFinish), and the forward pass's 90th percentile.
+void time_gpu_frames(GpuRenderer& renderer, const Scene& scene, int warmup, int frames,
+                     Table1Row& row);
 
 }  // namespace glintlab
