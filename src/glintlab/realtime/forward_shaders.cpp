@@ -51,6 +51,13 @@ in vec3 v_normal;
 in vec2 v_uv;
 in vec3 v_dpdu;
 out vec4 o_radiance;
+// wang2020's §4.4 glint layer (gpu_renderer.cpp): rgb = the environment
+// glints of shapes with u_glint_layer set (left out of o_radiance), a = the
+// directional-occlusion visibility (1: no occlusion ray here). Every shape
+// writes it, so a shape in front clears the layer to (0, 0, 0, 1); it is
+// discarded when the framebuffer has no second draw buffer.
+layout(location = 1) out vec4 o_glint_layer;
+uniform bool u_glint_layer;
 
 // Per-triangle data of meshes (pbrt-v4 Triangle, as render/accel.cpp):
 // dp/du of the triangle's uv mapping and the geometric normal.
@@ -298,6 +305,7 @@ void main() {
     vec3 p = v_position;
     vec3 wo_world = u_orthographic ? -u_view_forward : normalize(u_eye - p);
     vec3 radiance = vec3(0.0f);
+    vec3 glint_layer = vec3(0.0f);
 
     vec3 ng;
     vec3 dpdu;
@@ -377,9 +385,13 @@ void main() {
 #endif
 #if GLINTLAB_ENVIRONMENT && defined(GLINTLAB_GLINT_OWN_LIGHTS)
         // wang2020 (gpu_wang2020.h): Eqs. 18-20, untinted.
-        if (u_material_type == 4)
-            radiance += u_glint_color * glint_own_environment(n, wo_world, fp);
-        else
+        if (u_material_type == 4) {
+            vec3 env = u_glint_color * glint_own_environment(n, wo_world, fp);
+            if (u_glint_layer)
+                glint_layer = env;
+            else
+                radiance += env;
+        } else
             radiance += environment_lighting(wo, t, b, n, fp);
 #elif GLINTLAB_ENVIRONMENT && defined(GLINTLAB_GLINT_SHADES_ENVIRONMENT)
         // The model's own image-based lighting (kneiphof2025: Eq. 17) instead
@@ -421,7 +433,9 @@ void main() {
     }
     // Non-finite results are dropped as the CPU integrators do.
     if (any(isnan(radiance)) || any(isinf(radiance))) radiance = vec3(0.0f);
+    if (any(isnan(glint_layer)) || any(isinf(glint_layer))) glint_layer = vec3(0.0f);
     o_radiance = vec4(radiance, 1.0f);
+    o_glint_layer = vec4(glint_layer, 1.0f);
 }
 )";
 

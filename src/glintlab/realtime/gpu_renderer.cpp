@@ -17,6 +17,7 @@
 #include "glintlab/realtime/gpu_geometry.h"
 #include "glintlab/realtime/gpu_timer.h"
 #include "glintlab/realtime/gpu_wang2020.h"
+#include "glintlab/realtime/gpu_wang2020_blur.h"
 #include "glintlab/realtime/kneiphof2025_gpu.h"
 #include "glintlab/realtime/uniform_cache.h"
 
@@ -83,6 +84,14 @@ gl::ProgramKey program_key(const Scene& scene, const Shape& shape, bool noise_te
     return key;
 }
 
+// wang2020 material whose §4.4 blurs run on the frame ("blur", default on).
+bool wang2020_blurred(const MaterialDesc& m) {
+    if (m.type != MaterialDesc::Type::Glint || m.glint.model_id != GlintModelId::Wang2020)
+        return false;
+    const auto* p = std::get_if<Wang2020Params>(&m.glint.params);
+    return p != nullptr && p->blur;
+}
+
 int ndf_code(NdfType t) {
     return t == NdfType::GGX ? 1 : 0;
 }  // ndf.glsl NDF_GGX / NDF_BECKMANN
@@ -104,7 +113,14 @@ struct GpuRenderer::Impl {
     gl::Framebuffer fbo;
     gl::Texture color, depth;
     int width = 0, height = 0;
-    gl::PassTimer shadow_timer, background_timer, forward_timer;
+    gl::PassTimer shadow_timer, background_timer, forward_timer, wang2020_blur_timer;
+    // wang2020's §4.4 post-process (gpu_wang2020_blur.h): the forward pass
+    // writes the environment glints of blurred wang2020 materials into
+    // `glint_layer` (colour attachment 1, created on first use), which the
+    // blurs add into `color`.
+    gl::Texture glint_layer;
+    std::unique_ptr<gl::GpuWang2020Blur> wang2020_blur;
+    bool wang2020_blurred_frame = false;  // the last render() ran the blurs
     // Shadow maps (forward_shaders.cpp directional_visibility).
     bool shadows = true;
     bool noise_texture = false;  // deliot2023's noise-texture variant
@@ -276,6 +292,7 @@ struct GpuRenderer::Impl {
         glTextureParameteri(color.get(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
         depth = gl::make_texture(GL_TEXTURE_2D);
         glTextureStorage2D(depth.get(), 1, GL_DEPTH_COMPONENT32F, w, h);
+        glint_layer = {};
         fbo = gl::make_framebuffer();
         glNamedFramebufferTexture(fbo.get(), GL_COLOR_ATTACHMENT0, color.get(), 0);
         glNamedFramebufferTexture(fbo.get(), GL_DEPTH_ATTACHMENT, depth.get(), 0);
@@ -285,6 +302,18 @@ struct GpuRenderer::Impl {
                  static_cast<unsigned>(status));
         width = w;
         height = h;
+    }
+
+    // Colour attachment 1 (RGBA32F, this size): rgb glints, a visibility.
+    void attach_glint_layer() {
+        if (glint_layer) return;
+        glint_layer = gl::make_texture(GL_TEXTURE_2D);
+        glTextureStorage2D(glint_layer.get(), 1, GL_RGBA32F, width, height);
+        glNamedFramebufferTexture(fbo.get(), GL_COLOR_ATTACHMENT1, glint_layer.get(), 0);
+        const GLenum status = glCheckNamedFramebufferStatus(fbo.get(), GL_FRAMEBUFFER);
+        if (status != GL_FRAMEBUFFER_COMPLETE)
+            fail("OpenGL renderer: framebuffer with the wang2020 glint layer incomplete (0x{:x})",
+                 static_cast<unsigned>(status));
     }
 
     void set_material(GLuint p, const Scene& scene, const Shape& shape) {
@@ -481,6 +510,15 @@ void GpuRenderer::render(const Scene& scene) {
     }
     const glm::mat4 view_projection = projection * view;
     const bool ortho = c.type == Camera::Type::Orthographic;
+    // wang2020's §4.4 blurs (render_scene's postprocess_glints): only the
+    // environment term is deferred, so only scenes with an environment and a
+    // shape of a wang2020 material with "blur" on pay for them.
+    bool blur = false;
+    if (r.environment)
+        for (const Shape& shape : scene.shapes)
+            if (shape.material >= 0 &&
+                wang2020_blurred(scene.materials[static_cast<size_t>(shape.material)]))
+                blur = true;
 
     glDisable(GL_BLEND);
     glDisable(GL_CULL_FACE);  // two-sided materials
@@ -499,6 +537,7 @@ void GpuRenderer::render(const Scene& scene) {
 
     glBindFramebuffer(GL_FRAMEBUFFER, r.fbo.get());
     glViewport(0, 0, r.width, r.height);
+    glNamedFramebufferDrawBuffer(r.fbo.get(), GL_COLOR_ATTACHMENT0);
 
     // Pass 1: background (environment or black).
     r.background_timer.begin();
@@ -525,6 +564,16 @@ void GpuRenderer::render(const Scene& scene) {
     glDepthFunc(GL_LESS);
     glClearDepth(1.0);
     glClear(GL_DEPTH_BUFFER_BIT);
+    if (blur) {
+        // The glint layer: cleared to rgb 0, visibility 1 (render_scene's
+        // convention), so pixels without wang2020 neither add glints nor
+        // darken a neighbour's occlusion blur.
+        r.attach_glint_layer();
+        const GLenum buffers[2] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1};
+        glNamedFramebufferDrawBuffers(r.fbo.get(), 2, buffers);
+        const GLfloat clear[4] = {0.0f, 0.0f, 0.0f, 1.0f};
+        glClearNamedFramebufferfv(r.fbo.get(), GL_COLOR, 1, clear);
+    }
     for (size_t i = 0; i < r.shapes.size(); ++i) {
         const Shape& shape = scene.shapes[i];
         const GpuShape& g = r.shapes[i];
@@ -546,6 +595,10 @@ void GpuRenderer::render(const Scene& scene) {
                                static_cast<float>(r.environment_height));
         }
         r.set_lights(p, scene);
+        const bool deferred =
+            blur && shape.material >= 0 &&
+            wang2020_blurred(scene.materials[static_cast<size_t>(shape.material)]);
+        glProgramUniform1i(p, loc("u_glint_layer"), deferred ? 1 : 0);
         const bool shadowed = !r.shadow_matrices.empty();
         glProgramUniform1i(p, loc("u_shadows"), shadowed ? 1 : 0);
         if (shadowed) {
@@ -576,6 +629,17 @@ void GpuRenderer::render(const Scene& scene) {
     glBindVertexArray(0);
     glUseProgram(0);
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
+
+    // Pass 3: wang2020's §4.4 blurs of the glint layer, added into the colour
+    // target (before any read-back, tone map or bloom).
+    r.wang2020_blurred_frame = blur;
+    if (blur) {
+        glNamedFramebufferDrawBuffer(r.fbo.get(), GL_COLOR_ATTACHMENT0);
+        if (!r.wang2020_blur) r.wang2020_blur = std::make_unique<gl::GpuWang2020Blur>();
+        r.wang2020_blur_timer.begin();
+        r.wang2020_blur->apply_add(r.glint_layer.get(), r.color.get(), r.width, r.height);
+        r.wang2020_blur_timer.end();
+    }
 }
 
 Image GpuRenderer::read_image() const {
@@ -639,8 +703,10 @@ void GpuRenderer::set_shadows(bool on) {
 }
 
 GpuPassTimes GpuRenderer::pass_times() {
-    return {impl_->shadow_timer.elapsed_ms(), impl_->background_timer.elapsed_ms(),
-            impl_->forward_timer.elapsed_ms()};
+    Impl& r = *impl_;
+    return {r.shadow_timer.elapsed_ms(), r.background_timer.elapsed_ms(),
+            r.forward_timer.elapsed_ms(),
+            r.wang2020_blurred_frame ? r.wang2020_blur_timer.elapsed_ms() : 0.0};
 }
 
 Image render_scene_gpu(const Scene& scene) {

@@ -16,7 +16,11 @@
 // (forward_shaders.h) without occlusion; the dielectric shows its
 // reflection only. kneiphof2025 materials shade the environment (Eq. 17 over
 // prefiltered maps), sphere lights and sun cones themselves, as the CPU does
-// at the first hit (realtime/kneiphof2025_gpu.h).
+// at the first hit (realtime/kneiphof2025_gpu.h). wang2020 materials with
+// "blur" on defer their environment glints to a second colour attachment,
+// blurred by the §4.4 passes and added into the colour target after the
+// forward pass (as render_scene's postprocess_glints), with visibility 1:
+// no directional-occlusion ray here.
 #pragma once
 
 #include <memory>
@@ -27,9 +31,10 @@
 namespace glintlab {
 
 struct GpuPassTimes {
-    double shadow_ms = 0.0;      // depth maps of the directional lights
-    double background_ms = 0.0;  // environment / clear pass
-    double forward_ms = 0.0;     // geometry + shading (the glint evaluation)
+    double shadow_ms = 0.0;         // depth maps of the directional lights
+    double background_ms = 0.0;     // environment / clear pass
+    double forward_ms = 0.0;        // geometry + shading (the glint evaluation)
+    double wang2020_blur_ms = 0.0;  // wang2020's §4.4 blurs (0: none this frame)
 };
 
 class GpuRenderer {

@@ -50,6 +50,19 @@ void main() {
 }
 )";
 
+// target.rgb += src.rgb (the blurred glints into the image).
+constexpr const char* kAdd = R"(
+layout(local_size_x = 16, local_size_y = 16) in;
+layout(rgba32f, binding = 0) uniform readonly image2D u_src;
+layout(rgba32f, binding = 1) uniform image2D u_target;
+void main() {
+    ivec2 p = ivec2(gl_GlobalInvocationID.xy);
+    if (any(greaterThanEqual(p, imageSize(u_target)))) return;
+    vec4 t = imageLoad(u_target, p);
+    imageStore(u_target, p, vec4(t.rgb + imageLoad(u_src, p).rgb, t.a));
+}
+)";
+
 // wang2020_postprocess.cpp gaussian_blur's taps: σ = size / 6, normalised
 // in double.
 std::vector<float> taps_of(int size) {
@@ -68,7 +81,7 @@ std::vector<float> taps_of(int size) {
 }  // namespace
 
 struct GpuWang2020Blur::Impl {
-    Program program;
+    Program program, add;
     Texture a, delta, b, out;
     int width = 0, height = 0;
 
@@ -106,6 +119,8 @@ struct GpuWang2020Blur::Impl {
 GpuWang2020Blur::GpuWang2020Blur() : impl_(std::make_unique<Impl>()) {
     impl_->program =
         Program(link_compute_program(assemble_shader(kBlur, true), "wang2020 post-process blur"));
+    impl_->add =
+        Program(link_compute_program(assemble_shader(kAdd, true), "wang2020 post-process add"));
 }
 
 GpuWang2020Blur::~GpuWang2020Blur() = default;
@@ -122,6 +137,21 @@ unsigned GpuWang2020Blur::apply(unsigned glints, int width, int height, int occl
     m.pass(m.b.get(), m.delta.get(), m.out.get(), g3, 1, 1, true);  // out = G3 * (rgb·δ), a = δ
     glUseProgram(0);
     return m.out.get();
+}
+
+void GpuWang2020Blur::apply_add(unsigned glints, unsigned target, int width, int height,
+                                int occlusion_size, int glint_size) {
+    const GLuint blurred = apply(glints, width, height, occlusion_size, glint_size);
+    glBindImageTexture(0, blurred, 0, GL_FALSE, 0, GL_READ_ONLY, GL_RGBA32F);
+    glBindImageTexture(1, target, 0, GL_FALSE, 0, GL_READ_WRITE, GL_RGBA32F);
+    glUseProgram(impl_->add.get());
+    glDispatchCompute(static_cast<GLuint>((width + 15) / 16),
+                      static_cast<GLuint>((height + 15) / 16), 1);
+    // Later readers of the target: read-back, sampling (tone map, bloom),
+    // rendering into it.
+    glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT |
+                    GL_TEXTURE_UPDATE_BARRIER_BIT | GL_FRAMEBUFFER_BARRIER_BIT);
+    glUseProgram(0);
 }
 
 wang2020::GlintBuffer GpuWang2020Blur::apply(const wang2020::GlintBuffer& in, int occlusion_size,

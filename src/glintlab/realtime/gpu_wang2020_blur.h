@@ -6,10 +6,12 @@
 // same normalised taps as gaussian_blur. Four passes: δ along x, δ along y,
 // rgb·δ along x, along y (the last also stores δ in a).
 //
-// Not applied by GpuRenderer: the forward pass has no directional occlusion
-// (visibility 1, δ = 1) and the CPU renderer applies no post-process either
-// (wang2020_model.h), so both renderers' images stay comparable; the pass is
-// tested against postprocess_glints and timed by `bench --gpu`.
+// GpuRenderer runs it on the glint layer of its forward pass (wang2020
+// materials with "blur" on, under an environment) and adds the result into
+// its colour target (apply_add), as render_scene does with
+// postprocess_glints; the forward pass has no directional occlusion, so its
+// visibility is 1 (δ = 1) where the CPU traces a ray. Tested against
+// postprocess_glints and timed by `bench --gpu`.
 #pragma once
 
 #include <memory>
@@ -29,6 +31,10 @@ class GpuWang2020Blur {
     // RGBA32F result texture (owned, valid until the next call). Sizes odd,
     // in [1, 31] (glintlab::Error otherwise).
     unsigned apply(unsigned glints, int width, int height, int occlusion_size = 9,
+                   int glint_size = 3);
+    // apply(), then adds the rgb of the result to the rgb of the RGBA32F
+    // texture `target` (same size; its alpha is kept).
+    void apply_add(unsigned glints, unsigned target, int width, int height, int occlusion_size = 9,
                    int glint_size = 3);
     // Upload, apply, read back (tests).
     wang2020::GlintBuffer apply(const wang2020::GlintBuffer& in, int occlusion_size = 9,

@@ -255,7 +255,7 @@ void run_viewer(Scene scene, const ViewerOptions& options) {
     const std::filesystem::path shot_path = options.screenshot.empty()
                                                 ? std::filesystem::path("glintlab_screenshot.png")
                                                 : options.screenshot;
-    PassHistory shadow_ms, background_ms, forward_ms, bloom_ms, display_ms;
+    PassHistory shadow_ms, background_ms, forward_ms, blur_ms, bloom_ms, display_ms;
     bool shadows = true;
     bool noise_texture = false;
     std::string status;
@@ -322,7 +322,8 @@ void run_viewer(Scene scene, const ViewerOptions& options) {
             ImGui::Text("GPU ms, median of 60 frames (GL_TIME_ELAPSED)");
             ImGui::Text("shadow %.3f  background %.3f  forward %.3f", shadow_ms.median(),
                         background_ms.median(), forward_ms.median());
-            ImGui::Text("bloom %.3f  display %.3f", bloom_ms.median(), display_ms.median());
+            ImGui::Text("wang2020 blur %.3f  bloom %.3f  display %.3f", blur_ms.median(),
+                        bloom_ms.median(), display_ms.median());
             if (ImGui::Checkbox("shadows", &shadows)) renderer.set_shadows(shadows);
             ImGui::SliderFloat("exposure (stops)", &scene.film.exposure, -10.0f, 10.0f);
             if (ImGui::CollapsingHeader("bloom")) {
@@ -379,6 +380,7 @@ void run_viewer(Scene scene, const ViewerOptions& options) {
         shadow_ms.add(t.shadow_ms);
         background_ms.add(t.background_ms);
         forward_ms.add(t.forward_ms);
+        blur_ms.add(t.wang2020_blur_ms);
         bloom_ms.add(bloom_timer.elapsed_ms());
         display_ms.add(display_timer.elapsed_ms());
 

@@ -4,8 +4,10 @@
 // environment, point and directional lights itself (Eqs. 18–21); the tables
 // (DPF set, extracted DPF, prefiltered environment, quadtree) are built lazily
 // once per (material parameters, environment map) and cached, thread-safe.
-// Post-process blurs (wang2020_postprocess.h) are not applied by the CPU
-// renderer (no per-model image pass there); see docs/MODELS.md.
+// In renders with "blur" on, the environment term goes through
+// GlintPostSample to the §4.4 blurs (wang2020_postprocess.h), which
+// render_scene (and GpuRenderer, realtime/gpu_wang2020_blur.h) run on the
+// image; see docs/MODELS.md.
 #pragma once
 
 #include <memory>
