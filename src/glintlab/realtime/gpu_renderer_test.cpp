@@ -140,19 +140,34 @@ Image rows_of_parity(const Image& image, int parity) {
     return out;
 }
 
+// The same view on both renderers: the GPU frame, the CPU `direct` image
+// (one sample at each pixel centre) and their agreement over all rows and
+// over the even rows (where the footprints agree to 1e-6).
+struct CpuGpuViews {
+    Image gpu, cpu;
+    ImageAgreement all, even;
+};
+
+CpuGpuViews render_on_both(const Scene& scene) {
+    CpuGpuViews v;
+    GpuRenderer renderer(scene);
+    renderer.render(scene);
+    v.gpu = renderer.read_image();
+    v.cpu = render_scene(scene, RenderOptions{1, true});
+    v.all = compare_images(v.gpu, v.cpu, 8, 0.02f, 0.1f);
+    v.even = compare_images(rows_of_parity(v.gpu, 0), rows_of_parity(v.cpu, 0), 8, 0.02f, 0.1f);
+    return v;
+}
+
 TEST_P(GpuVsCpu, SameViewAgrees) {
     GLINTLAB_REQUIRE_GL();
     for (const std::string which : {"plane", "sphere"}) {
         SCOPED_TRACE(which);
         const Scene scene = parse_scene(test_scene(which, GetParam(), 12.0f), "test:" + which);
-        GpuRenderer renderer(scene);
-        renderer.render(scene);
-        const Image gpu = renderer.read_image();
-        const Image cpu = render_scene(scene, RenderOptions{1, true});
-        const ImageAgreement a = compare_images(gpu, cpu, 8, 0.02f, 0.1f);
+        const CpuGpuViews views = render_on_both(scene);
+        const ImageAgreement& a = views.all;
+        const ImageAgreement& even = views.even;
         ASSERT_GT(a.mean_b, 0.01);  // the view is lit
-        const ImageAgreement even =
-            compare_images(rows_of_parity(gpu, 0), rows_of_parity(cpu, 0), 8, 0.02f, 0.1f);
         RecordProperty(which + "_mean_rel", std::to_string(a.mean_relative_error));
         RecordProperty(which + "_smoothed", std::to_string(a.smoothed_relative_l1));
         RecordProperty(which + "_mismatch", std::to_string(a.mismatch_fraction));
@@ -326,13 +341,9 @@ class GpuKneiphof2025 : public ::testing::TestWithParam<std::string> {};
 TEST_P(GpuKneiphof2025, MatchesCpuDirect) {
     GLINTLAB_REQUIRE_GL();
     const Scene scene = parse_scene(kneiphof2025_scene(GetParam()), "test:kneiphof2025");
-    GpuRenderer renderer(scene);
-    renderer.render(scene);
-    const Image gpu = renderer.read_image();
-    const Image cpu = render_scene(scene, RenderOptions{1, true});
-    const ImageAgreement a = compare_images(gpu, cpu, 8, 0.02f, 0.1f);
-    const ImageAgreement even =
-        compare_images(rows_of_parity(gpu, 0), rows_of_parity(cpu, 0), 8, 0.02f, 0.1f);
+    const CpuGpuViews views = render_on_both(scene);
+    const ImageAgreement& a = views.all;
+    const ImageAgreement& even = views.even;
     RecordProperty("mean_rel", std::to_string(a.mean_relative_error));
     RecordProperty("smoothed", std::to_string(a.smoothed_relative_l1));
     RecordProperty("mismatch", std::to_string(a.mismatch_fraction));
@@ -616,13 +627,9 @@ TEST_P(GpuWang2020, MatchesCpuDirect) {
         j["lights"] = {{{"type", "point"}, {"position", {0.6, 1.2, 2.0}}, {"intensity", 4.0}}};
     }
     const Scene scene = parse_scene(j, "test:wang2020");
-    GpuRenderer renderer(scene);
-    renderer.render(scene);
-    const Image gpu = renderer.read_image();
-    const Image cpu = render_scene(scene, RenderOptions{1, true});
-    const ImageAgreement a = compare_images(gpu, cpu, 8, 0.02f, 0.1f);
-    const ImageAgreement even =
-        compare_images(rows_of_parity(gpu, 0), rows_of_parity(cpu, 0), 8, 0.02f, 0.1f);
+    const CpuGpuViews views = render_on_both(scene);
+    const ImageAgreement& a = views.all;
+    const ImageAgreement& even = views.even;
     ASSERT_GT(a.mean_b, 0.01);  // the view is lit
     fmt::print(
         "wang2020 {}: mean gpu {:.5f} cpu {:.5f} rel {:.4f}, block L1 {:.4f}, mismatch {:.4f} "
@@ -642,8 +649,9 @@ TEST_P(GpuWang2020, MatchesCpuDirect) {
         // in many pixels, with the same mean (the blurs keep the energy).
         Scene unblurred = scene;
         std::get<Wang2020Params>(unblurred.materials[0].glint.params).blur = false;
+        GpuRenderer renderer(unblurred);
         renderer.render(unblurred);
-        const ImageAgreement b = compare_images(gpu, renderer.read_image(), 8, 0.02f, 0.1f);
+        const ImageAgreement b = compare_images(views.gpu, renderer.read_image(), 8, 0.02f, 0.1f);
         fmt::print("wang2020 GPU blurred vs unblurred: mean rel {:.5f}, mismatch {:.4f}\n",
                    b.mean_relative_error, b.mismatch_fraction);
         EXPECT_GT(b.mismatch_fraction, 0.03);
