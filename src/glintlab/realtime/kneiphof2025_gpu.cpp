@@ -20,20 +20,6 @@
 namespace glintlab::gl {
 namespace {
 
-// A lat-long texture array in the layout kneiphof2025.glsl reads: layer i
-// holds sqrt(alpha) = i / (layers - 1); bilinear within a layer (u wraps,
-// v clamps at texel centres, as the CPU's bilinear()); the shader blends the
-// two layers around the roughness itself.
-Texture make_layers(int width, int height, int layers) {
-    Texture t = make_texture(GL_TEXTURE_2D_ARRAY);
-    glTextureStorage3D(t.get(), 1, GL_RGBA32F, width, height, layers);
-    glTextureParameteri(t.get(), GL_TEXTURE_MIN_FILTER, GL_LINEAR);
-    glTextureParameteri(t.get(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-    glTextureParameteri(t.get(), GL_TEXTURE_WRAP_S, GL_REPEAT);
-    glTextureParameteri(t.get(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
-    return t;
-}
-
 // Four channels [first, first + 4) of the interleaved CPU level (3 + K
 // channels per texel; channels past the last are 0) into RGBA texels.
 std::vector<float> rgba_channels(const Kneiphof2025Level& l, int channels, int first) {
@@ -64,9 +50,9 @@ const Kneiphof2025Resources::Maps& Kneiphof2025Resources::maps_for(
         if (l.width != w || l.height != h)
             fail("kneiphof2025 (GPU): prefiltered levels of unequal size ({}x{} vs {}x{})", l.width,
                  l.height, w, h);
-    m.radiance = make_layers(w, h, layers);
-    m.weights_a = make_layers(w, h, layers);
-    m.weights_b = make_layers(w, h, layers);
+    m.radiance = make_latlong_array(w, h, layers);
+    m.weights_a = make_latlong_array(w, h, layers);
+    m.weights_b = make_latlong_array(w, h, layers);
     glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
     const int C = env.channels();
     for (int i = 0; i < layers; ++i) {

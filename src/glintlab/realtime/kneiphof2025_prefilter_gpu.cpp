@@ -167,21 +167,21 @@ GLuint compile(const char* source, const char* what) {
     return link_compute_program(assemble_shader(source, true), what);
 }
 
-Texture make_array(int w, int h, int layers) {
+GLuint groups(int n) {
+    return static_cast<GLuint>((n + kGroup - 1) / kGroup);
+}
+
+}  // namespace
+
+Texture make_latlong_array(int width, int height, int layers) {
     Texture t = make_texture(GL_TEXTURE_2D_ARRAY);
-    glTextureStorage3D(t.get(), 1, GL_RGBA32F, w, h, layers);
+    glTextureStorage3D(t.get(), 1, GL_RGBA32F, width, height, layers);
     glTextureParameteri(t.get(), GL_TEXTURE_MIN_FILTER, GL_LINEAR);
     glTextureParameteri(t.get(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
     glTextureParameteri(t.get(), GL_TEXTURE_WRAP_S, GL_REPEAT);
     glTextureParameteri(t.get(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
     return t;
 }
-
-GLuint groups(int n) {
-    return static_cast<GLuint>((n + kGroup - 1) / kGroup);
-}
-
-}  // namespace
 
 Kneiphof2025GpuPrefilter::Kneiphof2025GpuPrefilter(const Kneiphof2025PrefilterOptions& o)
     : options_(o), width_(o.base_width), height_(o.base_width / 2), pyramid_levels_(0) {
@@ -234,9 +234,9 @@ Kneiphof2025GpuPrefilter::Kneiphof2025GpuPrefilter(const Kneiphof2025PrefilterOp
     if (kernels.empty()) kernels.assign(8, 0.0f);
     glNamedBufferStorage(kernels_.get(), static_cast<GLsizeiptr>(kernels.size() * sizeof(float)),
                          kernels.data(), 0);
-    radiance_ = make_array(width_, height_, o.mip_count);
-    weights_a_ = make_array(width_, height_, o.mip_count);
-    weights_b_ = make_array(width_, height_, o.mip_count);
+    radiance_ = make_latlong_array(width_, height_, o.mip_count);
+    weights_a_ = make_latlong_array(width_, height_, o.mip_count);
+    weights_b_ = make_latlong_array(width_, height_, o.mip_count);
 }
 
 Kneiphof2025GpuPrefilter::~Kneiphof2025GpuPrefilter() = default;

@@ -26,6 +26,13 @@
 
 namespace glintlab::gl {
 
+// An RGBA32F lat-long texture array in the layout kneiphof2025.glsl reads:
+// layer i holds sqrt(alpha) = i / (layers - 1); bilinear within a layer (u
+// wraps, v clamps at texel centres, as the CPU's bilinear()); the shader
+// blends the two layers around the roughness itself. Used for the static
+// (uploaded) and the dynamic (compute-prefiltered) maps alike.
+Texture make_latlong_array(int width, int height, int layers);
+
 class Kneiphof2025GpuPrefilter {
   public:
     // Compiles the passes and allocates the textures (needs a current GL 4.5
