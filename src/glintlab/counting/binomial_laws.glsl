@@ -137,18 +137,50 @@ vec2 binomial_dual_gated(float N, float p, float xi1, float xi2, bool integer_ga
                 b_all_neg * (n2 - 1.0f) + b_neg + b_gauss * g_bar);       // line 22
 }
 
+// The interior case of b(n, p) exactly: the k in [1, n - 1] with
+// P(k | 1 <= k <= n - 1) = C(n, k) p^k (1 - p)^(n - k) / z, by inverting its CDF
+// with xi from k = 1 upwards on the side of the smaller probability q =
+// min(p, 1 - p) (pmf(k + 1) = pmf(k) (n - k) / (k + 1) q / (1 - q), from
+// pmf(1) = n q (1 - q)^(n - 1)); pow_q = (1 - q)^n as the gates computed it.
+// Integer n >= 2. At most 64 steps: callers use it where n q <= 16,
+// where P(k > 64) < 1e-14.
+float binomial_interior_inverse(float n, float p, float pow_pos, float pow_neg, float z, float xi) {
+    bool mirror = p > 0.5f;
+    float q = mirror ? 1.0f - p : p;
+    float pow_q = mirror ? pow_pos : pow_neg;  // (1 - q)^n
+    float pmf = n * q * pow_q / max(1.0f - q, 1e-30f);
+    float ratio = q / max(1.0f - q, 1e-30f);
+    float target = xi * z;
+    float cdf = 0.0f;
+    float k = 1.0f;
+    for (int i = 0; i < 64; ++i) {
+        cdf += pmf;
+        if (cdf >= target || k >= n - 1.0f) break;
+        pmf *= (n - k) / (k + 1.0f) * ratio;
+        k += 1.0f;
+    }
+    return mirror ? n - k : k;
+}
+
 // Law 6b (an extension, not in 003; used by kneiphof2025's "conditional"
-// option): Algorithm 1 with the Gaussian given the moments of b(N, p)
-// conditioned on its interior case 1 <= n <= N - 1, instead of Algorithm 1's
-// 1 + (N - 2) p and (N - 2) p (1 - p) ("one known positive and one known
-// negative, N - 2 free"). With Z = 1 - p^N - (1 - p)^N (the gate of the
-// Gaussian case, computed as in lines 5-6):
-//   E[n | interior] = (N p - N p^N) / Z,
-//   E[n^2 | interior] = (N p (1 - p) + N^2 p^2 - N^2 p^N) / Z.
-// Algorithm 1's mean overestimates E[b] by up to ~20 % where N p ~ 1-10
-// (e.g. N = 10, p = 0.1: +21 %); with these moments E[b] = N p for integer
-// N >= 2 up to the clamp to [1, N - 1] and rounding (residual <= 5.4 %,
-// Kneiphof2025.ConditionalGaussianIsUnbiased). Gating is unchanged.
+// option): Algorithm 1's gates with its Gaussian case drawn from b(N, p)
+// conditioned on the interior 1 <= n <= N - 1, instead of Algorithm 1's
+// Gaussian of mean 1 + (N - 2) p and variance (N - 2) p (1 - p) ("one known
+// positive and one known negative, N - 2 free"), which overestimates E[b] by
+// up to ~20 % where N p ~ 1-10 (e.g. N = 10, p = 0.1: +21 %).
+//  - Integer N with N min(p, 1 - p) <= 16 (and integer_gaussian): the
+//    interior law exactly, by inversion (binomial_interior_inverse): the law
+//    is then b(N, p) exactly. A Gaussian with the interior moments, rounded
+//    and clamped to [1, N - 1], was 4-6 % high at N p ~ 0.3-2 (the clamp
+//    at 1 of a distribution piled up there) and is kept only for the case below.
+//  - Otherwise a Gaussian with the interior case's moments, with
+//    Z = 1 - p^N - (1 - p)^N (the gate of the Gaussian case, lines 5-6):
+//      E[n | interior] = (N p - N p^N) / Z,
+//      E[n^2 | interior] = (N p (1 - p) + N^2 p^2 - N^2 p^N) / Z;
+//    residual bias < 0.1 % for N min(p, 1 - p) > 16
+//    (Kneiphof2025.ConditionalLawIsUnbiased).
+// Gating is unchanged. Non-integer N keeps Algorithm 1's interpolated gates;
+// kneiphof2025 rounds N stochastically first (kneiphof2025.glsl).
 vec2 binomial_dual_gated_conditional(float N, float p, float xi1, float xi2, bool integer_gaussian) {
     float n = max(N, 0.0f);
     float n2 = max(2.0f, n);
@@ -167,12 +199,17 @@ vec2 binomial_dual_gated_conditional(float N, float p, float xi1, float xi2, boo
     float b_neg = 1.0f - p_all_neg - p_one_neg <= xi1 ? 1.0f : 0.0f;
     float b_gauss = (n > 1.0f ? 1.0f : 0.0f) * (1.0f - b_pos) * (1.0f - b_neg);
     float z = max(1.0f - pow_pos - pow_neg, 1e-30f);
-    float mean = (n2 * p - n2 * pow_pos) / z;
-    float second = (n2 * p * (1.0f - p) + n2 * n2 * p * p - n2 * n2 * pow_pos) / z;
-    mean = clamp(mean, 1.0f, n2 - 1.0f);
-    float variance = max(second - mean * mean, 0.0f);
-    float g = gaussian_deviate(mean, variance, xi2);
-    if (integer_gaussian) g = floor(g + 0.5f);
+    float g;
+    if (integer_gaussian && n == floor(n) && n2 * min(p, 1.0f - p) <= 16.0f) {
+        g = b_gauss > 0.0f ? binomial_interior_inverse(n2, p, pow_pos, pow_neg, z, xi2) : 1.0f;
+    } else {
+        float mean = (n2 * p - n2 * pow_pos) / z;
+        float second = (n2 * p * (1.0f - p) + n2 * n2 * p * p - n2 * n2 * pow_pos) / z;
+        mean = clamp(mean, 1.0f, n2 - 1.0f);
+        float variance = max(second - mean * mean, 0.0f);
+        g = gaussian_deviate(mean, variance, xi2);
+        if (integer_gaussian) g = floor(g + 0.5f);
+    }
     g = clamp(g, 1.0f, n2 - 1.0f);
     float g_bar = n2 - g;
     return vec2(b_all_pos * (n2 - 1.0f) + b_pos + b_gauss * g,

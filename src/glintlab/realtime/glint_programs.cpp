@@ -109,6 +109,7 @@ uniform vec4 u_kneiphof2025_levels_b;      // L^(5..8)
 uniform bool u_kneiphof2025_wang2020_style;
 uniform float u_kneiphof2025_gamma_solid_angle;
 uniform bool u_kneiphof2025_conditional;
+uniform int u_kneiphof2025_smooth;  // KNEIPHOF2025_SMOOTH_*
 uniform float u_kneiphof2025_microfacet_roughness;
 uniform float u_kneiphof2025_screen_space_scale;
 uniform float u_kneiphof2025_density_randomization;
@@ -139,7 +140,8 @@ vec3 glint_environment(vec3 wo, vec3 t, vec3 b, vec3 n, vec3 color, Footprint fp
                                     u_kneiphof2025_levels_a, u_kneiphof2025_levels_b,
                                     u_kneiphof2025_wang2020_style ? KNEIPHOF2025_VARIANT_WANG2020
                                                                   : KNEIPHOF2025_VARIANT_OURS,
-                                    u_kneiphof2025_gamma_solid_angle, u_kneiphof2025_conditional);
+                                    u_kneiphof2025_gamma_solid_angle, u_kneiphof2025_conditional,
+                                    u_kneiphof2025_smooth);
 }
 #define GLINTLAB_GLINT_SHADES_AREA_LIGHTS 1
 // One area light (K = 1): a cone around the world direction `axis`; the

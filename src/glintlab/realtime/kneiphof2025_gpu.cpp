@@ -112,6 +112,7 @@ void Kneiphof2025Resources::prepare(unsigned program, UniformCache& u, const Sce
     glProgramUniform1f(program, loc("u_kneiphof2025_gamma_solid_angle"),
                        2.0f * glm::pi<float>() * (1.0f - std::cos(glm::radians(k.gamma_deg))));
     glProgramUniform1i(program, loc("u_kneiphof2025_conditional"), k.conditional_gaussian ? 1 : 0);
+    glProgramUniform1i(program, loc("u_kneiphof2025_smooth"), kneiphof2025_smooth_mode(k));
     glProgramUniform1f(program, loc("u_kneiphof2025_microfacet_roughness"), k.microfacet_roughness);
     glProgramUniform1f(program, loc("u_kneiphof2025_screen_space_scale"), k.screen_space_scale);
     glProgramUniform1f(program, loc("u_kneiphof2025_density_randomization"),

@@ -22,8 +22,9 @@ namespace {
 // the textures a GPU back end binds).
 thread_local const Kneiphof2025Environment* t_env = nullptr;
 
-// The last fetch on this thread: one shading call reads the radiance and the
-// weight groups at the same (dir, roughness), one bilinear fetch serves them.
+// The last fetch on this thread: one shading call reads both weight groups
+// (and, for the split sum, the radiance) at the same (dir, roughness); one
+// bilinear fetch serves them.
 struct FetchCache {
     const Kneiphof2025Environment* env = nullptr;
     glm::vec3 dir{0.0f};
@@ -55,8 +56,7 @@ const float* fetch_all(glm::vec3 dir, float roughness) {
 // through fetch functions each back end defines).
 GLINTLAB_SHADER_FUNCTIONS_BEGIN
 vec3 kneiphof2025_radiance_fetch(vec3 dir, float roughness) {
-    const float* c = fetch_all(dir, roughness);
-    return vec3(c[0], c[1], c[2]);
+    return t_env->fetch_radiance(dir, roughness);
 }
 vec4 kneiphof2025_weights_fetch(vec3 dir, float roughness, int group) {
     const float* c = fetch_all(dir, roughness);
@@ -158,19 +158,24 @@ glm::vec3 kneiphof2025_environment_radiance(const Kneiphof2025Environment& env, 
         p.variant == Kneiphof2025Params::Variant::Wang2020Style
             ? shader::KNEIPHOF2025_VARIANT_WANG2020
             : shader::KNEIPHOF2025_VARIANT_OURS,
-        gamma_solid_angle(p), p.conditional_gaussian);
+        gamma_solid_angle(p), p.conditional_gaussian, kneiphof2025_smooth_mode(p));
     t_env = nullptr;
     return r;
 }
 
 glm::vec3 kneiphof2025_environment_smooth(const Kneiphof2025Environment& env, glm::vec3 n,
                                           glm::vec3 wr, float cos_o, const GlintDesc& desc) {
-    const float roughness = std::sqrt(alpha_of(desc));
-    const glm::vec3 dfg = Kneiphof2025DfgLut::get().lookup(cos_o, roughness);
-    float c[11];
-    env.fetch(shader::kneiphof2025_lookup_direction(n, wr, alpha_of(desc)), roughness, c);
-    return desc.color * (kneiphof2025_f0(desc) * dfg.x + glm::vec3(dfg.y)) *
-           glm::vec3(c[0], c[1], c[2]);
+    t_env = &env;
+    const glm::vec3 r =
+        shader::kneiphof2025_smooth_radiance(n, wr, cos_o, alpha_of(desc), kneiphof2025_f0(desc),
+                                             desc.color, kneiphof2025_smooth_mode(params_of(desc)));
+    t_env = nullptr;
+    return r;
+}
+
+int kneiphof2025_smooth_mode(const Kneiphof2025Params& p) {
+    return p.smooth == Kneiphof2025Params::Smooth::Lobe ? shader::KNEIPHOF2025_SMOOTH_LOBE
+                                                        : shader::KNEIPHOF2025_SMOOTH_SPLIT_SUM;
 }
 
 float kneiphof2025_area_factor(glm::vec3 h_center, const Footprint& footprint, float p,
@@ -257,6 +262,9 @@ void read_kneiphof2025_params(JsonObject& block, GlintDesc& desc) {
                                             : Kneiphof2025Params::Variant::Kneiphof2025;
     p.conditional_gaussian =
         block.string("gaussian", "conditional", {"conditional", "algorithm1"}) == "conditional";
+    p.smooth = block.string("smooth", "lobe", {"lobe", "split_sum"}) == "split_sum"
+                   ? Kneiphof2025Params::Smooth::SplitSum
+                   : Kneiphof2025Params::Smooth::Lobe;
     // Cone half-angle of the wang2020-style probability: 0.01-45 deg.
     p.gamma_deg = static_cast<float>(block.number("gamma_deg", p.gamma_deg, 0.01, 45.0));
     // Same ranges as deliot2023's block (deliot2023.cpp).

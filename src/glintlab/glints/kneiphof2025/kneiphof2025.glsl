@@ -40,6 +40,7 @@
 #include "glintlab/microfacet/fresnel.glsl"
 #include "glintlab/microfacet/masking.glsl"
 #include "glintlab/microfacet/ndf.glsl"
+#include "glintlab/microfacet/vndf.glsl"
 
 #ifndef GLINTLAB_CPP
 // Texture arrays, one layer per roughness level (layer i: sqrt(alpha) =
@@ -139,7 +140,16 @@ void kneiphof2025_probabilities(vec4 w_a, vec4 w_b, int levels, float p_visible,
 // rest; the Gaussian part is rounded so integer N gives counts summing to N),
 // weighted by the level radiances. The uniforms (2 per level) come from the
 // vertex's stream. `conditional` selects binomial_dual_gated_conditional
-// (counting/binomial_laws.glsl) instead of Algorithm 1 as published.
+// (counting/binomial_laws.glsl) instead of Algorithm 1 as published, and two
+// fixes of ours that make the multinomial's mean exact (docs/MODELS.md):
+//  - N is rounded stochastically to an integer first (floor(N + u), one more
+//    uniform before the levels'; E = N): with a real N the Gaussian's
+//    fractional part n2 - g flows down the chain into the last, brightest
+//    level, +20-50 % on its count where it is rare (a sun);
+//  - where p_k / (p_k + ... + p_K) > 1/2 the binomial is drawn for the
+//    complement, with its probability (p_(k+1) + ... + p_K) / (p_k + ... + p_K)
+//    from the suffix sums: 1 - q loses all precision in fp32 when the rest is
+//    a rare bright level.
 float kneiphof2025_weighted_multinomial(float N, int levels, vec4 p_a, vec4 p_b, vec4 L_a, vec4 L_b,
                                         bool conditional, INOUT(uint) vs) {
     float p[8];
@@ -158,13 +168,22 @@ float kneiphof2025_weighted_multinomial(float N, int levels, vec4 p_a, vec4 p_b,
         rest[k] = acc;
     }
     float remaining = max(N, 0.0f);
+    if (conditional) remaining = floor(remaining + hash_random(vs));
     float value = 0.0f;
     for (int k = 0; k < levels - 1; ++k) {
         float q = rest[k] > 0.0f ? clamp(p[k] / rest[k], 0.0f, 1.0f) : 0.0f;
         float xi1 = hash_random(vs);
         float xi2 = hash_random(vs);
-        vec2 c = conditional ? binomial_dual_gated_conditional(remaining, q, xi1, xi2, true)
-                             : binomial_dual_gated(remaining, q, xi1, xi2, true);
+        vec2 c;
+        if (!conditional) {
+            c = binomial_dual_gated(remaining, q, xi1, xi2, true);
+        } else if (q > 0.5f) {
+            float q_rest = rest[k] > 0.0f ? clamp(rest[k + 1] / rest[k], 0.0f, 1.0f) : 0.0f;
+            c = binomial_dual_gated_conditional(remaining, q_rest, xi1, xi2, true);
+            c = vec2(c.y, c.x);
+        } else {
+            c = binomial_dual_gated_conditional(remaining, q, xi1, xi2, true);
+        }
         value += L[k] * c.x;
         remaining = c.y;
     }
@@ -231,9 +250,12 @@ float kneiphof2025_binomial_factor_no_h(Footprint fp, float p, float log_density
             if (bv <= 0.0f) continue;
             uint vs = s.vertex_seed[v];
             float N = deliot2023_vertex_trials(s.log_trials, density_randomization, vs);
+            // As in the multinomial: an integer count (mean N) for the
+            // conditional law, whose interior case is then exact.
+            float n_trials = conditional ? floor(N + hash_random(vs)) : N;
             float xi1 = hash_random(vs);
             float xi2 = hash_random(vs);
-            vec2 c = conditional ? binomial_dual_gated_conditional(N, p, xi1, xi2, false)
+            vec2 c = conditional ? binomial_dual_gated_conditional(n_trials, p, xi1, xi2, true)
                                  : binomial_dual_gated(N, p, xi1, xi2, false);
             acc += bv * vec2(c.x, N);
         }
@@ -342,22 +364,99 @@ vec3 kneiphof2025_lookup_direction(vec3 n, vec3 wr, float alpha) {
     return normalize(n + (wr - n) * f);
 }
 
+// The smooth radiance L_o of Eq. 11 (the term the glint factor multiplies).
+//  - SPLIT_SUM (003 as published): E_rho(wo) times the prefiltered radiance at
+//    the lookup direction, whose kernel assumes n = v = r.
+//  - LOBE (default; an improvement over 003, docs/MODELS.md): E_rho(wo) times
+//    the radiance averaged over the true reflection lobe of wo, estimated by
+//    filtered importance sampling (Colbert & Krivanek, GPU Gems 3 ch. 20) of
+//    the same prefiltered maps. The split sum's kernel ignores the lobe's
+//    stretching at oblique views and its clipping by the horizon: on the
+//    003 Fig. 6 sphere at sqrt(alpha) = 0.7 its image mean is 6.7 % off the
+//    exact integral (+18 % near the silhouette), the lobe estimate's 2.2 %
+//    (docs/VALIDATION.md).
+const int KNEIPHOF2025_SMOOTH_SPLIT_SUM = 0;
+const int KNEIPHOF2025_SMOOTH_LOBE = 1;
+const int KNEIPHOF2025_LOBE_SAMPLES = 32;
+
+// The lobe's mean radiance sum_j G2_j L(wi_j) / sum_j G2_j over visible
+// normals h_j ~ G1(wo) <wo, h> D(h) / cos_o (Heitz 2018): wi_j = reflect(wo, h_j)
+// has pdf G1(wo) D(h) / (4 cos_o) and weight F G2 / G1(wo); the constant
+// G1(wo) cancels in the ratio, and F is left to E_rho, so a constant
+// environment stays exact (the furnace). Samples below the horizon have
+// G2 = 0: the clipping the split sum misses.
+// Sample positions: a Fibonacci lattice ((j + 1/2) / M, frac(j / phi)), the
+// same for every pixel (a smooth, noise-free term). Each sample reads the
+// level whose GGX kernel (solid angle ~ 4 pi alpha_l^2 at n = v = r) covers its
+// share of the lobe, 1 / (M pdf), capped at the lobe's own roughness.
+// Measured on the validation sphere (docs/VALIDATION.md): M = 32 halves the
+// error of M = 16 at sqrt(alpha) >= 0.5; more blur per sample (4x the solid
+// angle) biases the centre of the sphere upwards by up to 28 % under a sun
+// (GGX kernel tails), and a 2 x 2 box pyramid instead of the GGX levels
+// aliases the suns (-10 %).
+vec3 kneiphof2025_lobe_radiance(vec3 n, vec3 wr, float cos_o, float alpha) {
+    float sign = n.z >= 0.0f ? 1.0f : -1.0f;
+    float a = -1.0f / (sign + n.z);
+    float bb = n.x * n.y * a;
+    vec3 t = vec3(1.0f + sign * n.x * n.x * a, sign * bb, -sign * n.x);
+    vec3 b = vec3(bb, sign + n.y * n.y * a, -n.y);
+    vec3 wo_world = 2.0f * cos_o * n - wr;
+    vec3 wo = normalize(vec3(dot(wo_world, t), dot(wo_world, b), max(cos_o, 1e-4f)));
+    float roughness = sqrt(alpha);
+    float g1 = G1_Smith(NDF_GGX, wo, alpha, alpha);
+    vec3 sum = vec3(0.0f);
+    float weight = 0.0f;
+    for (int j = 0; j < KNEIPHOF2025_LOBE_SAMPLES; ++j) {
+        float fj = float(j);
+        vec2 u = vec2((fj + 0.5f) / float(KNEIPHOF2025_LOBE_SAMPLES), fract(fj * 0.6180339887f));
+        vec3 h = sample_vndf_ggx(wo, alpha, alpha, u);
+        float oh = dot(wo, h);
+        if (!(oh > 0.0f)) continue;
+        vec3 wi = 2.0f * oh * h - wo;
+        if (!(wi.z > 0.0f)) continue;
+        float g2 = G2_SmithCorrelated(NDF_GGX, wo, wi, alpha, alpha);
+        float pdf = g1 * D_Microfacet(NDF_GGX, h, alpha, alpha) / (4.0f * wo.z);
+        float omega = 1.0f / (float(KNEIPHOF2025_LOBE_SAMPLES) * max(pdf, 1e-6f));
+        float level = min(sqrt(sqrt(omega / (4.0f * PI))), roughness);
+        sum += g2 * kneiphof2025_radiance_fetch(wi.x * t + wi.y * b + wi.z * n, level);
+        weight += g2;
+    }
+    if (!(weight > 0.0f))
+        return kneiphof2025_radiance_fetch(kneiphof2025_lookup_direction(n, wr, alpha), roughness);
+    return sum / weight;
+}
+
+// L_o of Eq. 11 (see the SMOOTH constants above); color and F0 enter through
+// E_rho = color (F0 A + B) of the DFG table.
+vec3 kneiphof2025_smooth_radiance(vec3 n, vec3 wr, float cos_o, float alpha, vec3 f0, vec3 color,
+                                  int smooth_mode) {
+    float roughness = sqrt(clamp(alpha, 0.0f, 1.0f));
+    vec3 dfg = kneiphof2025_dfg_fetch(cos_o, roughness);
+    vec3 e_rho = color * (f0 * dfg.x + vec3(dfg.y));  // Eq. 11, first integral
+    vec3 radiance = smooth_mode == KNEIPHOF2025_SMOOTH_LOBE
+                        ? kneiphof2025_lobe_radiance(n, wr, cos_o, alpha)
+                        : kneiphof2025_radiance_fetch(kneiphof2025_lookup_direction(n, wr, alpha),
+                                                      roughness);
+    return e_rho * radiance;
+}
+
 // Environment lighting of one footprint (Eq. 11, 15, 17, 21).
 // n, wr: world normal and mirror direction of wo; cos_o = n.wo > 0; alpha = GGX roughness;
 // f0: Schlick reflectance at normal incidence (split-sum E_rho = F0 A + B);
 // levels K (4 or 8) and radiance levels L_a (k = 1-4), L_b (k = 5-8);
 // variant: ours, or the wang2020 style with a fixed cone of solid angle
 // gamma_solid_angle around the mirror direction; conditional: the Gaussian
-// moments of binomial_dual_gated_conditional instead of Algorithm 1's.
+// moments of binomial_dual_gated_conditional instead of Algorithm 1's;
+// smooth_mode: KNEIPHOF2025_SMOOTH_SPLIT_SUM or _LOBE (the smooth term).
 vec3 kneiphof2025_environment(vec3 n, vec3 wr, float cos_o, float alpha, vec3 f0, vec3 color, Footprint fp,
                               float log_density, uint seed, float screen_space_scale,
                               float density_randomization, int levels, vec4 L_a, vec4 L_b,
-                              int variant, float gamma_solid_angle, bool conditional) {
+                              int variant, float gamma_solid_angle, bool conditional,
+                              int smooth_mode) {
     float roughness = sqrt(clamp(alpha, 0.0f, 1.0f));
     vec3 dir = kneiphof2025_lookup_direction(n, wr, alpha);
     vec3 dfg = kneiphof2025_dfg_fetch(cos_o, roughness);
-    vec3 e_rho = color * (f0 * dfg.x + vec3(dfg.y));                          // Eq. 11, first integral
-    vec3 smooth_radiance = e_rho * kneiphof2025_radiance_fetch(dir, roughness);  // Eq. 11
+    vec3 smooth_radiance = kneiphof2025_smooth_radiance(n, wr, cos_o, alpha, f0, color, smooth_mode);
     float factor;
     if (variant == KNEIPHOF2025_VARIANT_WANG2020) {
         // 003 Fig. 8: p from a user cone, not from the environment. We take the

@@ -34,9 +34,12 @@ glm::vec3 kneiphof2025_f0(const GlintDesc& desc);
 glm::vec3 kneiphof2025_environment_radiance(const Kneiphof2025Environment& env, glm::vec3 n,
                                             glm::vec3 wr, float cos_o, const Footprint& footprint,
                                             const GlintDesc& desc);
-// Its smooth limit L_o (Eq. 11, split sum), the mean of the above.
+// Its smooth limit L_o (Eq. 11; the lobe estimate or the split sum, by the
+// params' `smooth`), the mean of the above.
 glm::vec3 kneiphof2025_environment_smooth(const Kneiphof2025Environment& env, glm::vec3 n,
                                           glm::vec3 wr, float cos_o, const GlintDesc& desc);
+// The shared GLSL's KNEIPHOF2025_SMOOTH_* constant for the params' `smooth`.
+int kneiphof2025_smooth_mode(const Kneiphof2025Params& p);
 
 // One area light of constant radiance (K = 1): the factor b(N_P, p) / (E[N_P] p)
 // for the light's centre half vector h_c (local) and probability p (Eq. 8-9).

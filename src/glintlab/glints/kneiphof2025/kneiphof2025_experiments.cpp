@@ -390,7 +390,8 @@ std::vector<SphereComparison> kneiphof2025_sphere_comparison(const SphereCompari
                     c.conditional = conditional;
                     c.facets_per_pixel = fpp;
                     c.realizations = R;
-                    double sum = 0.0, sq = 0.0, sum_means = 0.0, sum_means2 = 0.0;
+                    double sum = 0.0, sq = 0.0, sum_means = 0.0, sum_means2 = 0.0,
+                           sum_smooth = 0.0;
                     for (int r = 0; r < R; ++r) {
                         const double sum_before = sum;
                         desc.seed = o.seed * 7919u + static_cast<uint32_t>(r);
@@ -405,6 +406,7 @@ std::vector<SphereComparison> kneiphof2025_sphere_comparison(const SphereCompari
                             const double m = luminance(
                                 kneiphof2025_environment_smooth(*pre, p.n, p.wr, p.n.z, desc));
                             sum += l;
+                            sum_smooth += m;
                             sq += (l - m) * (l - m);
                             if (r == 0 && conditional)
                                 grid.at(
@@ -423,6 +425,8 @@ std::vector<SphereComparison> kneiphof2025_sphere_comparison(const SphereCompari
                     c.mean_gt = gt_mean_sum / np;
                     c.mean_gt_realized = gt_sum / (R * np);
                     c.mean_rel_err = std::abs(c.mean_ours - c.mean_gt) / c.mean_gt;
+                    c.mean_smooth = sum_smooth / (R * np);
+                    c.smooth_rel_err = std::abs(c.mean_smooth - c.mean_gt) / c.mean_gt;
                     c.variance_ratio = gt_sq > 0.0 ? sq / gt_sq : 0.0;
                     c.mean_explicit = ex_sum / (R * np);
                     c.variance_ratio_explicit = ex_sq > 0.0 ? sq / ex_sq : 0.0;

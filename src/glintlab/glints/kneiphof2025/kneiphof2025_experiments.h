@@ -51,6 +51,10 @@ struct SphereComparison {
     double mean_gt = 0.0;       // exact expectation of the explicit ground truth
     double mean_gt_realized = 0.0;
     double mean_rel_err = 0.0;    // |mean_ours - mean_gt| / mean_gt
+    // Image mean of our smooth term L_o (Eq. 11) and its relative error
+    // against mean_gt: the part of mean_rel_err that is not the glint factor's.
+    double mean_smooth = 0.0;
+    double smooth_rel_err = 0.0;
     double variance_ratio = 0.0;  // sum of per-pixel squared deviations, ours / ground truth
     // The same against glintlab's `explicit` model (glints/explicit/explicit.h):
     // N = rho facets per unit uv area with normals D(m)(m·n) (its convention;

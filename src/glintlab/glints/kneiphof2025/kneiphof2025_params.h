@@ -21,6 +21,13 @@ struct Kneiphof2025Params {
     // E[b] by up to ~20 % where N p ~ 1-10; docs/VALIDATION.md). Like
     // deliot2023's original_defects, the published form is an option.
     bool conditional_gaussian = true;
+    // The smooth radiance the glint factor multiplies (Eq. 11): "lobe"
+    // (default: the reflection lobe of wo by 16 filtered importance samples
+    // of the prefiltered maps, an improvement over 003) or "split_sum" (003
+    // as published: one lookup whose kernel assumes n = v = r, up to 8 % off
+    // at sqrt(alpha) = 0.7; docs/MODELS.md).
+    enum class Smooth { Lobe, SplitSum };
+    Smooth smooth = Smooth::Lobe;
     // Reused deliot2023 grid parameters (000; see Deliot2023Params): R for the
     // angular grid of point / directional / sphere lights, the minimum glint
     // size in pixels, and the per-cell log-density jitter.

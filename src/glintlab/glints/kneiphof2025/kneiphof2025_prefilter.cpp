@@ -71,7 +71,8 @@ glm::vec2 map_uv(glm::vec3 d, float rotation_rad) {
 }
 
 // Bilinear lookup of C channels in a lat-long level (u wraps, v clamps).
-void bilinear(const Kneiphof2025Level& l, int channels, glm::vec2 uv, float* out) {
+// `count` <= channels: the first `count` channels only (the radiance alone).
+void bilinear(const Kneiphof2025Level& l, int channels, glm::vec2 uv, float* out, int count) {
     const float fx = uv.x * static_cast<float>(l.width) - 0.5f;
     const float fy = uv.y * static_cast<float>(l.height) - 0.5f;
     const float x0f = std::floor(fx), y0f = std::floor(fy);
@@ -83,7 +84,7 @@ void bilinear(const Kneiphof2025Level& l, int channels, glm::vec2 uv, float* out
     const size_t idx[4] = {
         (size_t(ya) * l.width + xa) * channels, (size_t(ya) * l.width + xb) * channels,
         (size_t(yb) * l.width + xa) * channels, (size_t(yb) * l.width + xb) * channels};
-    for (int c = 0; c < channels; ++c) {
+    for (int c = 0; c < count; ++c) {
         float s = 0.0f;
         for (int k = 0; k < 4; ++k) s += w[k] * l.data[idx[k] + c];
         out[c] = s;
@@ -193,9 +194,9 @@ Kneiphof2025Environment::Kneiphof2025Environment(const EnvironmentMap& env,
         const int l0 = static_cast<int>(std::floor(l));
         const int l1 = std::min(l0 + 1, static_cast<int>(pyramid.size()) - 1);
         const float t = l - static_cast<float>(l0);
-        bilinear(pyramid[l0], C, uv, out);
+        bilinear(pyramid[l0], C, uv, out, C);
         if (t > 0.0f && l1 != l0) {
-            bilinear(pyramid[l1], C, uv, tmp);
+            bilinear(pyramid[l1], C, uv, tmp, C);
             for (int c = 0; c < C; ++c) out[c] += t * (tmp[c] - out[c]);
         }
     };
@@ -287,22 +288,33 @@ std::vector<Kneiphof2025KernelSample> kneiphof2025_prefilter_kernel(float roughn
     return kernel;
 }
 
-void Kneiphof2025Environment::fetch_level(int level, glm::vec2 uv, float* out) const {
-    bilinear(mips_[level], channels(), uv, out);
+void Kneiphof2025Environment::fetch_level(int level, glm::vec2 uv, float* out, int count) const {
+    bilinear(mips_[level], channels(), uv, out, count);
 }
 
 void Kneiphof2025Environment::fetch(glm::vec3 dir, float roughness, float* out) const {
+    fetch_channels(dir, roughness, out, channels());
+}
+
+glm::vec3 Kneiphof2025Environment::fetch_radiance(glm::vec3 dir, float roughness) const {
+    float c[3];
+    fetch_channels(dir, roughness, c, 3);
+    return {c[0], c[1], c[2]};
+}
+
+void Kneiphof2025Environment::fetch_channels(glm::vec3 dir, float roughness, float* out,
+                                             int count) const {
     const glm::vec2 uv = map_uv(dir, rotation_rad_);
     const int last = static_cast<int>(mips_.size()) - 1;
     const float l = std::clamp(roughness, 0.0f, 1.0f) * static_cast<float>(last);
     const int l0 = std::min(static_cast<int>(std::floor(l)), last);
     const int l1 = std::min(l0 + 1, last);
     const float t = l - static_cast<float>(l0);
-    fetch_level(l0, uv, out);
+    fetch_level(l0, uv, out, count);
     if (t > 0.0f && l1 != l0) {
         float tmp[11];
-        fetch_level(l1, uv, tmp);
-        for (int c = 0; c < channels(); ++c) out[c] += t * (tmp[c] - out[c]);
+        fetch_level(l1, uv, tmp, count);
+        for (int c = 0; c < count; ++c) out[c] += t * (tmp[c] - out[c]);
     }
 }
 

@@ -66,13 +66,16 @@ class Kneiphof2025Environment {
     // [0, 1]: out[0..2] RGB radiance, out[3 .. 3+K) the weights (not
     // renormalised). Bilinear within a level, linear between levels.
     void fetch(glm::vec3 dir, float roughness, float* out) const;
+    // The RGB radiance alone (out[0..2] of fetch).
+    glm::vec3 fetch_radiance(glm::vec3 dir, float roughness) const;
 
     // Fuzzy indicator weights of Eq. 19 for a luminance (linear space),
     // into w[0 .. K).
     void partition(float luminance, float* w) const;
 
   private:
-    void fetch_level(int level, glm::vec2 uv, float* out) const;
+    void fetch_channels(glm::vec3 dir, float roughness, float* out, int count) const;
+    void fetch_level(int level, glm::vec2 uv, float* out, int count) const;
 
     float rotation_rad_ = 0.0f;
     int levels_;
@@ -80,6 +83,7 @@ class Kneiphof2025Environment {
     float min_luminance_ = 0.0f, max_luminance_ = 0.0f;
     std::vector<Kneiphof2025Level> mips_;
 };
+
 
 // Eq. 18: the K radiance levels (L^(1) = 0, then log-spaced from
 // max(min luminance, black level) to the max luminance), entries >= K zero.
