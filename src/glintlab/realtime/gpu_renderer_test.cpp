@@ -296,7 +296,9 @@ INSTANTIATE_TEST_SUITE_P(Materials, GpuEnvironment,
 // within 5% (environment: dense glints in every block) or 12% (area lights:
 // sparse single-gated glints, a flipped glint moves a block by several
 // percent); mismatching pixels at ~2x the measured values
-// (docs/VALIDATION.md "CPU vs GPU").
+// (docs/VALIDATION.md "CPU vs GPU"). `environment_lobe`: (a) with the smooth
+// term's lobe estimate (32 reads of the radiance layers per pixel) instead of
+// the split sum.
 nlohmann::json kneiphof2025_scene(const std::string& light) {
     nlohmann::json j;
     j["film"] = {{"width", 128}, {"height", 128}};
@@ -317,7 +319,9 @@ nlohmann::json kneiphof2025_scene(const std::string& light) {
             {{"type", "quad"}, {"size", {8, 8}}, {"uv_scale", {8, 8}}, {"material", "g"}}};
     }
     const std::string forest = "/usr/share/blender/datafiles/studiolights/world/forest.exr";
-    if (light == "environment" || light == "environment_plane") {
+    if (light == "environment_lobe")
+        j["materials"][0]["kneiphof2025"]["smooth"] = "lobe";
+    if (light == "environment" || light == "environment_plane" || light == "environment_lobe") {
         nlohmann::json env = {{"type", "environment"}};
         if (std::filesystem::exists(forest))
             env.update({{"file", forest}, {"rotation_deg", 90}});
@@ -352,7 +356,7 @@ TEST_P(GpuKneiphof2025, MatchesCpuDirect) {
     // Measured (llvmpipe): environment 0.13% / 1.6% / 4.0% (even rows 4.0%),
     // on the plane 0.43% / 1.8% / 3.8% (0.012%), sun 0.35% / 3.5% / 1.1%
     // (1.0%), sphere light 0.94% / 6.6% / 0.5% (0.5%).
-    const bool env = GetParam() == "environment";
+    const bool env = GetParam() == "environment" || GetParam() == "environment_lobe";
     EXPECT_LT(a.mean_relative_error, 0.03);
     if (GetParam() == "environment_plane") {
         // Exact normals and uv: the even rows, where the footprints agree
@@ -368,7 +372,8 @@ TEST_P(GpuKneiphof2025, MatchesCpuDirect) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Lights, GpuKneiphof2025,
-                         ::testing::Values("environment", "environment_plane", "sun", "sphere"));
+                         ::testing::Values("environment", "environment_lobe", "environment_plane",
+                                           "sun", "sphere"));
 
 // The viewer's model switcher: the same material switched to every GPU model
 // (with that model's defaults) renders a lit, finite image.

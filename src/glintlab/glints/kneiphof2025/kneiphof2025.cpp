@@ -262,9 +262,9 @@ void read_kneiphof2025_params(JsonObject& block, GlintDesc& desc) {
                                             : Kneiphof2025Params::Variant::Kneiphof2025;
     p.conditional_gaussian =
         block.string("gaussian", "conditional", {"conditional", "algorithm1"}) == "conditional";
-    p.smooth = block.string("smooth", "lobe", {"lobe", "split_sum"}) == "split_sum"
-                   ? Kneiphof2025Params::Smooth::SplitSum
-                   : Kneiphof2025Params::Smooth::Lobe;
+    p.smooth = block.string("smooth", "split_sum", {"split_sum", "lobe"}) == "lobe"
+                   ? Kneiphof2025Params::Smooth::Lobe
+                   : Kneiphof2025Params::Smooth::SplitSum;
     // Cone half-angle of the wang2020-style probability: 0.01-45 deg.
     p.gamma_deg = static_cast<float>(block.number("gamma_deg", p.gamma_deg, 0.01, 45.0));
     // Same ranges as deliot2023's block (deliot2023.cpp).

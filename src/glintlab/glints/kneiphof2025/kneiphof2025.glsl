@@ -365,9 +365,9 @@ vec3 kneiphof2025_lookup_direction(vec3 n, vec3 wr, float alpha) {
 }
 
 // The smooth radiance L_o of Eq. 11 (the term the glint factor multiplies).
-//  - SPLIT_SUM (003 as published): E_rho(wo) times the prefiltered radiance at
-//    the lookup direction, whose kernel assumes n = v = r.
-//  - LOBE (default; an improvement over 003, docs/MODELS.md): E_rho(wo) times
+//  - SPLIT_SUM (default; 003 as published): E_rho(wo) times the prefiltered
+//    radiance at the lookup direction, whose kernel assumes n = v = r.
+//  - LOBE (an option; an improvement over 003, docs/MODELS.md): E_rho(wo) times
 //    the radiance averaged over the true reflection lobe of wo, estimated by
 //    filtered importance sampling (Colbert & Krivanek, GPU Gems 3 ch. 20) of
 //    the same prefiltered maps. The split sum's kernel ignores the lobe's

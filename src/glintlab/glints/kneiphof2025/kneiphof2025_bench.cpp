@@ -94,13 +94,16 @@ void BM_Deliot2023Directional(benchmark::State& state) {
 }
 BENCHMARK(BM_Deliot2023Directional)->Name("kneiphof2025/deliot2023_directional");
 
-// kneiphof2025 under the environment (Eq. 17): LUT, 2-3 prefiltered fetches,
-// 12 multinomials of K bins.
+// kneiphof2025 under the environment (Eq. 17): LUT, the smooth term (the
+// default lobe estimate: 32 samples of the prefiltered radiance; or 003's
+// split sum: 1 fetch), the weights' fetch, 12 multinomials of K bins.
 void BM_Kneiphof2025Environment(benchmark::State& state) {
     const Inputs& in = inputs();
     const int K = static_cast<int>(state.range(0));
     const auto env = kneiphof2025_environment_for(forest(), K, 1e-2f);
     GlintDesc d = desc_for(K);
+    if (state.range(1) != 0)
+        std::get<Kneiphof2025Params>(d.params).smooth = Kneiphof2025Params::Smooth::SplitSum;
     size_t i = 0;
     for (auto _ : state) {
         d.log_density = in.log_density[i];
@@ -110,7 +113,13 @@ void BM_Kneiphof2025Environment(benchmark::State& state) {
         i = (i + 1) & 1023u;
     }
 }
-BENCHMARK(BM_Kneiphof2025Environment)->Name("kneiphof2025/environment")->Arg(4)->Arg(8);
+BENCHMARK(BM_Kneiphof2025Environment)
+    ->Name("kneiphof2025/environment")
+    ->ArgNames({"K", "split_sum"})
+    ->Args({4, 0})
+    ->Args({8, 0})
+    ->Args({4, 1})
+    ->Args({8, 1});
 
 // The wang2020-style variant (K = 1 on the grid without h).
 void BM_Kneiphof2025Wang(benchmark::State& state) {

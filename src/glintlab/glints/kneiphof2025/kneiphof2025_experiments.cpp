@@ -420,8 +420,15 @@ std::vector<SphereComparison> kneiphof2025_sphere_comparison(const SphereCompari
                     const double np = static_cast<double>(pixels.size());
                     c.mean_ours = sum / (R * np);
                     const double mm = sum_means / R;
-                    c.mean_ours_se =
+                    // Two estimates of the standard error, the larger is kept:
+                    // the spread of the R image means (1 degree of freedom
+                    // at R = 2, where a rare sun glint is easily missed by
+                    // both), and the pixels' squared deviations from the
+                    // smooth mean taken as independent, sqrt(sum sq) / (np R).
+                    const double se_realizations =
                         std::sqrt(std::max(sum_means2 / R - mm * mm, 0.0) / std::max(R - 1, 1));
+                    const double se_pixels = std::sqrt(sq) / (np * R);
+                    c.mean_ours_se = std::max(se_realizations, se_pixels);
                     c.mean_gt = gt_mean_sum / np;
                     c.mean_gt_realized = gt_sum / (R * np);
                     c.mean_rel_err = std::abs(c.mean_ours - c.mean_gt) / c.mean_gt;

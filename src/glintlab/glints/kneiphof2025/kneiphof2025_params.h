@@ -21,13 +21,14 @@ struct Kneiphof2025Params {
     // E[b] by up to ~20 % where N p ~ 1-10; docs/VALIDATION.md). Like
     // deliot2023's original_defects, the published form is an option.
     bool conditional_gaussian = true;
-    // The smooth radiance the glint factor multiplies (Eq. 11): "lobe"
-    // (default: the reflection lobe of wo by 16 filtered importance samples
-    // of the prefiltered maps, an improvement over 003) or "split_sum" (003
-    // as published: one lookup whose kernel assumes n = v = r, up to 8 % off
-    // at sqrt(alpha) = 0.7; docs/MODELS.md).
+    // The smooth radiance the glint factor multiplies (Eq. 11): "split_sum"
+    // (default: 003 as published, one prefiltered lookup whose kernel assumes
+    // n = v = r; 7 % high on the validation sphere at sqrt(alpha) = 0.7) or
+    // "lobe" (an improvement over 003: the reflection lobe of wo by 32
+    // filtered importance samples of the same maps, 2-3 % there, ~4x the
+    // CPU cost per footprint; docs/MODELS.md).
     enum class Smooth { Lobe, SplitSum };
-    Smooth smooth = Smooth::Lobe;
+    Smooth smooth = Smooth::SplitSum;
     // Reused deliot2023 grid parameters (000; see Deliot2023Params): R for the
     // angular grid of point / directional / sphere lights, the minimum glint
     // size in pixels, and the per-cell log-density jitter.
