@@ -94,16 +94,17 @@ void BM_Deliot2023Directional(benchmark::State& state) {
 }
 BENCHMARK(BM_Deliot2023Directional)->Name("kneiphof2025/deliot2023_directional");
 
-// kneiphof2025 under the environment (Eq. 17): LUT, the smooth term (the
-// default lobe estimate: 32 samples of the prefiltered radiance; or 003's
-// split sum: 1 fetch), the weights' fetch, 12 multinomials of K bins.
+// kneiphof2025 under the environment (Eq. 17): LUT, the smooth term (003's
+// split sum, the default: 1 fetch; or the lobe estimate: 32 reads of the
+// prefiltered radiance), the weights' fetch, 12 multinomials of K bins.
 void BM_Kneiphof2025Environment(benchmark::State& state) {
     const Inputs& in = inputs();
     const int K = static_cast<int>(state.range(0));
     const auto env = kneiphof2025_environment_for(forest(), K, 1e-2f);
     GlintDesc d = desc_for(K);
-    if (state.range(1) != 0)
-        std::get<Kneiphof2025Params>(d.params).smooth = Kneiphof2025Params::Smooth::SplitSum;
+    std::get<Kneiphof2025Params>(d.params).smooth = state.range(1) != 0
+                                                        ? Kneiphof2025Params::Smooth::Lobe
+                                                        : Kneiphof2025Params::Smooth::SplitSum;
     size_t i = 0;
     for (auto _ : state) {
         d.log_density = in.log_density[i];
@@ -115,7 +116,7 @@ void BM_Kneiphof2025Environment(benchmark::State& state) {
 }
 BENCHMARK(BM_Kneiphof2025Environment)
     ->Name("kneiphof2025/environment")
-    ->ArgNames({"K", "split_sum"})
+    ->ArgNames({"K", "lobe"})
     ->Args({4, 0})
     ->Args({8, 0})
     ->Args({4, 1})
