@@ -17,6 +17,7 @@ void add_view_command(CLI::App& app, int* status) {
         std::string res;
         std::optional<float> exposure;
         bool no_ui = false;
+        bool dynamic_ibl = false;
     };
     auto a = std::make_shared<Args>();
     CLI::App* sub = app.add_subcommand(
@@ -36,6 +37,9 @@ void add_view_command(CLI::App& app, int* status) {
     sub->add_option("--exposure", a->exposure, "Exposure in stops (overrides the scene)")
         ->check(CLI::Range(-20.0f, 20.0f));
     sub->add_flag("--no-ui", a->no_ui, "Hide the Dear ImGui panel");
+    sub->add_flag("--dynamic-ibl", a->dynamic_ibl,
+                  "kneiphof2025: prefilter the environment on the GPU every frame (003 5; the "
+                  "panel's checkbox)");
     sub->callback([a, status] {
         Scene scene = load_scene(a->scene);
         if (!a->res.empty()) {
@@ -58,6 +62,7 @@ void add_view_command(CLI::App& app, int* status) {
         o.screenshot = a->screenshot;
         o.window_screenshot = a->window_screenshot;
         o.show_ui = !a->no_ui;
+        o.dynamic_ibl = a->dynamic_ibl;
         run_viewer(std::move(scene), o);
         *status = 0;
     });

@@ -177,50 +177,102 @@ TEST(GpuCli, UnknownEglPlatformIsAClearError) {
         << r.output;
 }
 
-// The viewer under Xvfb (GLX, llvmpipe) renders --frames 3 and writes its
-// screenshot through the same readback + write_png as `render --gpu` (EGL):
-// same driver and shaders, so the two PNGs agree to 8-bit rounding. Limits:
-// mean luminance within 0.5%, at most 0.5% of the pixels off by more than
-// 2/255 (the sRGB quantum near mid-grey is ~1/255 in linear luminance terms
-// of these bright glints; 0.5% allows a flipped glint or two of 7680 pixels).
-TEST(GpuViewer, ScreenshotUnderXvfbMatchesTheHeadlessRender) {
-    GLINTLAB_REQUIRE_GL();
-    if (run("command -v xvfb-run").status != 0) GTEST_SKIP() << "xvfb-run is not installed";
-    testing::ScratchDir dir;
-    std::ofstream(dir / "s.json") << small_scene().dump();
-    const RunResult headless = run(cli() + " render --gpu -q " + (dir / "s.json").string() +
-                                   " -o " + (dir / "headless.exr").string());
-    ASSERT_EQ(headless.status, 0) << headless.output;
-    // Under the sanitizers: Mesa's GLX driver, unloaded by glfwTerminate,
-    // leaves 112 bytes that LeakSanitizer reports from an "<unknown module>"
-    // (measured with a 20-line GLFW + ImGui program), which no suppression
-    // can name; leak checking stays on for everything else (and for our GL
-    // code in this process, through EGL).
-    const RunResult viewer = run(
+// Runs `glintlab view ARGS` under Xvfb (GLX, llvmpipe) into *out; returns
+// why it cannot run here ("" when it ran). Under the sanitizers: Mesa's GLX
+// driver, unloaded by glfwTerminate, leaves 112 bytes that LeakSanitizer
+// reports from an "<unknown module>" (measured with a 20-line GLFW + ImGui
+// program), which no suppression can name; leak checking stays on for
+// everything else (and for our GL code in this process, through EGL).
+std::string view_under_xvfb(const std::string& args, RunResult* out) {
+    if (run("command -v xvfb-run").status != 0) return "xvfb-run is not installed";
+    *out = run(
         "ASAN_OPTIONS=\"${ASAN_OPTIONS}:detect_leaks=0\" xvfb-run -a -s "
         "\"-screen 0 640x480x24\" " +
-        cli() + " view " + (dir / "s.json").string() + " --frames 3 --no-ui --screenshot " +
-        (dir / "viewer.png").string() + " --window-screenshot " + (dir / "window.png").string());
-    if (viewer.output.find("cannot create a window") != std::string::npos ||
-        viewer.output.find("cannot initialise GLFW") != std::string::npos)
-        GTEST_SKIP() << "no OpenGL 4.5 window under Xvfb: " << viewer.output;
-    ASSERT_EQ(viewer.status, 0) << viewer.output;
-    const Image a = read_image(dir / "viewer.png");
-    const Image b = read_image(dir / "headless.png");
+        cli() + " view " + args);
+    if (out->output.find("cannot create a window") != std::string::npos ||
+        out->output.find("cannot initialise GLFW") != std::string::npos)
+        return "no OpenGL 4.5 window under Xvfb: " + out->output;
+    return "";
+}
+
+// The viewer's frame against `render --gpu` (EGL) of the same scene: the
+// same readback + write_png, driver and shaders, so the two PNGs agree to
+// 8-bit rounding. Limits: mean luminance within 0.5%, at most 0.5% of the
+// pixels off by more than 2/255 (the sRGB quantum near mid-grey is ~1/255 in
+// linear luminance terms of these bright glints; 0.5% allows a flipped glint
+// or two of 7680 pixels).
+void expect_same_frame(const std::filesystem::path& viewer, const std::filesystem::path& headless) {
+    const Image a = read_image(viewer);
+    const Image b = read_image(headless);
     ASSERT_EQ(a.width, b.width);
     ASSERT_EQ(a.height, b.height);
     const ImageAgreement m = compare_images(a, b, 8, 2.0f / 255.0f, 0.0f);
     EXPECT_GT(m.mean_b, 0.01);
     EXPECT_LT(m.mean_relative_error, 0.005);
     EXPECT_LT(m.mismatch_fraction, 0.005);
+}
+
+// The viewer renders --frames 3 and writes its screenshot as `render --gpu`
+// does (expect_same_frame), and its window as displayed.
+TEST(GpuViewer, ScreenshotUnderXvfbMatchesTheHeadlessRender) {
+    GLINTLAB_REQUIRE_GL();
+    testing::ScratchDir dir;
+    std::ofstream(dir / "s.json") << small_scene().dump();
+    const RunResult headless = run(cli() + " render --gpu -q " + (dir / "s.json").string() +
+                                   " -o " + (dir / "headless.exr").string());
+    ASSERT_EQ(headless.status, 0) << headless.output;
+    RunResult viewer;
+    const std::string why =
+        view_under_xvfb((dir / "s.json").string() + " --frames 3 --no-ui --screenshot " +
+                            (dir / "viewer.png").string() + " --window-screenshot " +
+                            (dir / "window.png").string(),
+                        &viewer);
+    if (!why.empty()) GTEST_SKIP() << why;
+    ASSERT_EQ(viewer.status, 0) << viewer.output;
+    expect_same_frame(dir / "viewer.png", dir / "headless.png");
     // The window itself: GPU bloom + tonemap pass into an 8-bit sRGB back
     // buffer, read back and re-encoded, vs CPU bloom + write_png. Rounding
     // of the two 8-bit encodings differs by at most one step each; 3 steps
     // near white are 0.03 in linear luminance.
     const Image window = read_image(dir / "window.png");
-    const ImageAgreement w = compare_images(window, b, 8, 0.03f, 0.0f);
+    const ImageAgreement w = compare_images(window, read_image(dir / "headless.png"), 8, 0.03f, 0.0f);
     EXPECT_LT(w.mean_relative_error, 0.01);
     EXPECT_LT(w.mismatch_fraction, 0.005);
+}
+
+// kneiphof2025 in the viewer with --dynamic-ibl (the panel's checkbox; 003
+// §5: the prefilter as compute passes every frame) and the panel shown (its
+// kneiphof2025 block drawn): the frame equals the headless render, which
+// reads the CPU-prefiltered maps (the dynamic maps equal them to 6e-4 of
+// range, GpuKneiphof2025Prefilter; a frame to 3e-5 in the mean), within
+// expect_same_frame's limits; the window screenshot (panel included) is
+// written at the window's size.
+TEST(GpuViewer, Kneiphof2025DynamicIblMatchesTheHeadlessRender) {
+    GLINTLAB_REQUIRE_GL();
+    const std::string forest = "/usr/share/blender/datafiles/studiolights/world/forest.exr";
+    ASSERT_TRUE(std::filesystem::exists(forest)) << forest << ": install blender-data";
+    nlohmann::json scene = small_scene();
+    scene["film"]["bloom"] = {{"strength", 0.0}};
+    scene["materials"][0]["model"] = "kneiphof2025";
+    scene["materials"][0]["ndf"] = "ggx";
+    scene["materials"][0]["kneiphof2025"] = {{"levels", 4}};
+    scene["lights"] = {{{"type", "environment"}, {"file", forest}, {"rotation_deg", 90}}};
+    testing::ScratchDir dir;
+    std::ofstream(dir / "s.json") << scene.dump();
+    const RunResult headless = run(cli() + " render --gpu -q " + (dir / "s.json").string() +
+                                   " -o " + (dir / "headless.exr").string());
+    ASSERT_EQ(headless.status, 0) << headless.output;
+    RunResult viewer;
+    const std::string why = view_under_xvfb(
+        (dir / "s.json").string() + " --frames 3 --dynamic-ibl --screenshot " +
+            (dir / "viewer.png").string() + " --window-screenshot " + (dir / "window.png").string(),
+        &viewer);
+    if (!why.empty()) GTEST_SKIP() << why;
+    ASSERT_EQ(viewer.status, 0) << viewer.output;
+    expect_same_frame(dir / "viewer.png", dir / "headless.png");
+    const Image window = read_image(dir / "window.png");
+    EXPECT_EQ(window.width, 96);
+    EXPECT_EQ(window.height, 80);
 }
 
 }  // namespace

@@ -167,6 +167,32 @@ void material_panel(MaterialDesc& m) {
         for (int i = 0; i < p->colour_count; ++i)
             ImGui::ColorEdit3(fmt::format("colour {}", i).c_str(),
                               &p->colour_table[static_cast<size_t>(i)].x);
+    } else if (auto* p = std::get_if<Kneiphof2025Params>(&g.params)) {
+        // K and the black level select a prefiltered map (cached per value:
+        // a change costs one CPU prefilter, ~0.5 s, unless the dynamic IBL
+        // is on); the black level moves by decades so that dragging does not
+        // prefilter every intermediate value. The ranges are the loader's.
+        int k8 = p->levels == 8 ? 1 : 0;
+        if (ImGui::Combo("levels K", &k8, "4\0" "8\0")) p->levels = k8 == 1 ? 8 : 4;
+        int decade = static_cast<int>(std::lround(std::log10(p->black_level)));
+        if (ImGui::SliderInt("black level 10^", &decade, -8, 0))
+            p->black_level = std::pow(10.0f, static_cast<float>(decade));
+        int variant = p->variant == Kneiphof2025Params::Variant::Wang2020Style ? 1 : 0;
+        if (ImGui::Combo("variant", &variant, "kneiphof2025\0" "wang2020_style\0"))
+            p->variant = variant == 1 ? Kneiphof2025Params::Variant::Wang2020Style
+                                      : Kneiphof2025Params::Variant::Kneiphof2025;
+        if (p->variant == Kneiphof2025Params::Variant::Wang2020Style)
+            slider("gamma (deg)", &p->gamma_deg, 0.01f, 45.0f, true);
+        int gaussian = p->conditional_gaussian ? 0 : 1;
+        if (ImGui::Combo("gaussian", &gaussian, "conditional\0" "algorithm1\0"))
+            p->conditional_gaussian = gaussian == 0;
+        int smooth = p->smooth == Kneiphof2025Params::Smooth::Lobe ? 1 : 0;
+        if (ImGui::Combo("smooth", &smooth, "split_sum\0" "lobe\0"))
+            p->smooth = smooth == 1 ? Kneiphof2025Params::Smooth::Lobe
+                                    : Kneiphof2025Params::Smooth::SplitSum;
+        slider("microfacet roughness R", &p->microfacet_roughness, 1e-4f, 1.0f, true);
+        slider("screen-space scale", &p->screen_space_scale, 0.5f, 8.0f);
+        slider("density randomization", &p->density_randomization, 0.0f, 50.0f);
     }
 }
 
@@ -258,6 +284,8 @@ void run_viewer(Scene scene, const ViewerOptions& options) {
     PassHistory shadow_ms, background_ms, forward_ms, blur_ms, bloom_ms, display_ms;
     bool shadows = true;
     bool noise_texture = false;
+    bool dynamic_ibl = options.dynamic_ibl;
+    renderer.set_kneiphof2025_dynamic_environment(dynamic_ibl);
     std::string status;
     int selected_material = 0;
     bool p_was_down = false;
@@ -347,6 +375,11 @@ void run_viewer(Scene scene, const ViewerOptions& options) {
                     m.glint.model_id == GlintModelId::Deliot2023 &&
                     ImGui::Checkbox("noise texture (000 6.3)", &noise_texture))
                     renderer.set_deliot2023_noise_texture(noise_texture);
+                // 003 §5: the prefilter as compute passes every frame.
+                if (m.type == MaterialDesc::Type::Glint &&
+                    m.glint.model_id == GlintModelId::Kneiphof2025 &&
+                    ImGui::Checkbox("dynamic IBL (003 5)", &dynamic_ibl))
+                    renderer.set_kneiphof2025_dynamic_environment(dynamic_ibl);
             }
             if (ImGui::CollapsingHeader("lights")) {
                 for (size_t i = 0; i < scene.lights.size(); ++i) {

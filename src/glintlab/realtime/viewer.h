@@ -22,6 +22,10 @@ struct ViewerOptions {
     std::filesystem::path
         window_screenshot;  // the window as shown (panel included), after the last frame
     bool show_ui = true;
+    // kneiphof2025's environment prefiltered by compute passes every frame
+    // (003 §5, GpuRenderer::set_kneiphof2025_dynamic_environment); the
+    // panel's "dynamic IBL" checkbox toggles it.
+    bool dynamic_ibl = false;
 };
 
 // Runs until the window closes (or `frames` frames). Throws glintlab::Error
