@@ -166,9 +166,11 @@ glm::vec3 kneiphof2025_environment_radiance(const Kneiphof2025Environment& env, 
 glm::vec3 kneiphof2025_environment_smooth(const Kneiphof2025Environment& env, glm::vec3 n,
                                           glm::vec3 wr, float cos_o, const GlintDesc& desc) {
     t_env = &env;
-    const glm::vec3 r =
-        shader::kneiphof2025_smooth_radiance(n, wr, cos_o, alpha_of(desc), kneiphof2025_f0(desc),
-                                             desc.color, kneiphof2025_smooth_mode(params_of(desc)));
+    const float alpha = alpha_of(desc);
+    const glm::vec3 dfg = shader::kneiphof2025_dfg_fetch(cos_o, std::sqrt(alpha));
+    const glm::vec3 r = shader::kneiphof2025_smooth_radiance(
+        n, wr, cos_o, alpha, kneiphof2025_f0(desc), desc.color, dfg,
+        kneiphof2025_smooth_mode(params_of(desc)));
     t_env = nullptr;
     return r;
 }

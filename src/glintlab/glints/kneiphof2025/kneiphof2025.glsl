@@ -34,6 +34,7 @@
 
 #include "glintlab/core/constants.glsl"
 #include "glintlab/core/footprint.glsl"
+#include "glintlab/core/frame.glsl"
 #include "glintlab/core/hash.glsl"
 #include "glintlab/counting/binomial_laws.glsl"
 #include "glintlab/glints/deliot2023/deliot2023.glsl"
@@ -297,13 +298,10 @@ const int KNEIPHOF2025_CONE_SECTORS = 8;
 vec3 kneiphof2025_integrate_cone(vec3 axis, float cos_max, vec3 radiance, vec3 t, vec3 b, vec3 n,
                                  vec3 wo, float alpha, vec3 f0, vec3 color, OUT(float) p,
                                  OUT(vec3) h_center) {
-    // Orthonormal basis around the axis (Duff et al. 2017).
     vec3 c = axis;
-    float sign = c.z >= 0.0f ? 1.0f : -1.0f;
-    float a = -1.0f / (sign + c.z);
-    float bb = c.x * c.y * a;
-    vec3 ct = vec3(1.0f + sign * c.x * c.x * a, sign * bb, -sign * c.x);
-    vec3 cb = vec3(bb, sign + c.y * c.y * a, -c.y);
+    vec3 ct;
+    vec3 cb;
+    tangent_frame(c, ct, cb);
     float omega = 2.0f * PI * (1.0f - cos_max);
     float d_omega = omega / float(KNEIPHOF2025_CONE_RINGS * KNEIPHOF2025_CONE_SECTORS);
     float p_sum = 0.0f;
@@ -395,11 +393,9 @@ const int KNEIPHOF2025_LOBE_SAMPLES = 32;
 // (GGX kernel tails), and a 2 x 2 box pyramid instead of the GGX levels
 // aliases the suns (-10 %).
 vec3 kneiphof2025_lobe_radiance(vec3 n, vec3 wr, float cos_o, float alpha) {
-    float sign = n.z >= 0.0f ? 1.0f : -1.0f;
-    float a = -1.0f / (sign + n.z);
-    float bb = n.x * n.y * a;
-    vec3 t = vec3(1.0f + sign * n.x * n.x * a, sign * bb, -sign * n.x);
-    vec3 b = vec3(bb, sign + n.y * n.y * a, -n.y);
+    vec3 t;
+    vec3 b;
+    tangent_frame(n, t, b);
     vec3 wo_world = 2.0f * cos_o * n - wr;
     vec3 wo = normalize(vec3(dot(wo_world, t), dot(wo_world, b), max(cos_o, 1e-4f)));
     float roughness = sqrt(alpha);
@@ -427,11 +423,11 @@ vec3 kneiphof2025_lobe_radiance(vec3 n, vec3 wr, float cos_o, float alpha) {
 }
 
 // L_o of Eq. 11 (see the SMOOTH constants above); color and F0 enter through
-// E_rho = color (F0 A + B) of the DFG table.
+// E_rho = color (F0 A + B), dfg = kneiphof2025_dfg_fetch(cos_o, sqrt(alpha))
+// (the caller's, which also needs E_D / D_H).
 vec3 kneiphof2025_smooth_radiance(vec3 n, vec3 wr, float cos_o, float alpha, vec3 f0, vec3 color,
-                                  int smooth_mode) {
+                                  vec3 dfg, int smooth_mode) {
     float roughness = sqrt(clamp(alpha, 0.0f, 1.0f));
-    vec3 dfg = kneiphof2025_dfg_fetch(cos_o, roughness);
     vec3 e_rho = color * (f0 * dfg.x + vec3(dfg.y));  // Eq. 11, first integral
     vec3 radiance = smooth_mode == KNEIPHOF2025_SMOOTH_LOBE
                         ? kneiphof2025_lobe_radiance(n, wr, cos_o, alpha)
@@ -456,7 +452,8 @@ vec3 kneiphof2025_environment(vec3 n, vec3 wr, float cos_o, float alpha, vec3 f0
     float roughness = sqrt(clamp(alpha, 0.0f, 1.0f));
     vec3 dir = kneiphof2025_lookup_direction(n, wr, alpha);
     vec3 dfg = kneiphof2025_dfg_fetch(cos_o, roughness);
-    vec3 smooth_radiance = kneiphof2025_smooth_radiance(n, wr, cos_o, alpha, f0, color, smooth_mode);
+    vec3 smooth_radiance =
+        kneiphof2025_smooth_radiance(n, wr, cos_o, alpha, f0, color, dfg, smooth_mode);
     float factor;
     if (variant == KNEIPHOF2025_VARIANT_WANG2020) {
         // 003 Fig. 8: p from a user cone, not from the environment. We take the

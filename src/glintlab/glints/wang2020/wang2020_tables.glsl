@@ -21,6 +21,7 @@
 
 #include "glintlab/core/constants.glsl"
 #include "glintlab/core/footprint.glsl"
+#include "glintlab/core/frame.glsl"
 #include "glintlab/glints/wang2020/wang2020.glsl"
 #include "glintlab/microfacet/masking.glsl"
 
@@ -92,15 +93,6 @@ float wang2020_dpf_lookup(ivec3 res, vec3 wi, vec3 wo) {
     return wang2020_dpf_lookup_angles(res, acos(min(1.0f, wi.z)), acos(min(1.0f, wo.z)), dphi);
 }
 
-// wang2020_prefilter.cpp tangent_frame (Duff et al. 2017).
-void wang2020_tangent_frame(vec3 n, OUT(vec3) t, OUT(vec3) b) {
-    float s = n.z >= 0.0f ? 1.0f : -1.0f;
-    float a = -1.0f / (s + n.z);
-    float c = n.x * n.y * a;
-    t = vec3(1.0f + s * n.x * n.x * a, s * c, -s * n.x);
-    b = vec3(c, s + n.y * n.y * a, -n.y);
-}
-
 vec4 wang2020_prefilter_texel(ivec4 res, int tn, int pn, int to, int po) {
     return wang2020_prefilter_value(((tn * res.y + pn) * res.z + to) * res.w + po);
 }
@@ -127,7 +119,7 @@ vec4 wang2020_prefilter_lookup(ivec4 res, vec3 n, vec3 o_world) {
     wang2020_cell(tn / PI * float(res.x) - 0.5f, res.x, false, a0, a1, fa);
     wang2020_cell(pn / TWO_PI * float(res.y) - 0.5f, res.y, true, b0, b1, fb);
     vec3 t, b;
-    wang2020_tangent_frame(n, t, b);
+    tangent_frame(n, t, b);  // wang2020_prefilter.cpp's tangent_frame
     vec3 ol = vec3(dot(o_world, t), dot(o_world, b), max(dot(o_world, n), 0.0f));
     float to = acos(clamp(ol.z / max(length(ol), 1e-12f), 0.0f, 1.0f));
     float po = atan(ol.y, ol.x);
