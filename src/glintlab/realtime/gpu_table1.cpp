@@ -19,9 +19,11 @@ std::string& device_name() {
 
 }  // namespace
 
-std::vector<Table1Row> run_table1_gpu(const Table1Options& options,
-                                      const std::vector<std::string>& scenes,
-                                      const std::vector<std::string>& models) {
+std::vector<Table1Row> run_gpu_table(const Table1Options& options,
+                                     const std::vector<std::string>& scenes,
+                                     const std::vector<std::string>& models,
+                                     const GpuTableScene& make_scene,
+                                     const GpuTableMeasure& measure) {
     HeadlessContext context;
     device_name() = gl_description() + " (EGL " + context.platform() + ")";
     std::vector<Table1Row> rows;
@@ -31,16 +33,9 @@ std::vector<Table1Row> run_table1_gpu(const Table1Options& options,
             row.scene = scene_name;
             row.model = model;
             for (float log_density : options.log_densities) {
-                const Scene scene = parse_scene(table1_scene_json(scene_name, model, log_density,
-                                                                  options.width, options.height),
-                                                "bench:" + scene_name);
+                const Scene scene = make_scene(scene_name, model, log_density);
                 GpuRenderer renderer(scene);
-                renderer.set_deliot2023_noise_texture(options.gpu_noise_texture);
-                time_gpu_frames(renderer, scene, options.gpu_warmup, options.frames, row);
-                // wang2020: 001 Table 3's passes (gpu_wang2020_passes.h).
-                if (model == "wang2020")
-                    gl::time_wang2020_passes(scene, renderer.read_image(), options.frames,
-                                             row.pass_ms_per_density);
+                measure(renderer, scene, scene_name, model, row);
             }
             row.min_ms = *std::min_element(row.ms_per_density.begin(), row.ms_per_density.end());
             row.max_ms = *std::max_element(row.ms_per_density.begin(), row.ms_per_density.end());
@@ -48,6 +43,27 @@ std::vector<Table1Row> run_table1_gpu(const Table1Options& options,
         }
     }
     return rows;
+}
+
+std::vector<Table1Row> run_table1_gpu(const Table1Options& options,
+                                      const std::vector<std::string>& scenes,
+                                      const std::vector<std::string>& models) {
+    return run_gpu_table(
+        options, scenes, models,
+        [&](const std::string& scene_name, const std::string& model, float log_density) {
+            return parse_scene(
+                table1_scene_json(scene_name, model, log_density, options.width, options.height),
+                "bench:" + scene_name);
+        },
+        [&](GpuRenderer& renderer, const Scene& scene, const std::string&,
+            const std::string& model, Table1Row& row) {
+            renderer.set_deliot2023_noise_texture(options.gpu_noise_texture);
+            time_gpu_frames(renderer, scene, options.gpu_warmup, options.frames, row);
+            // wang2020: 001 Table 3's passes (gpu_wang2020_passes.h).
+            if (model == "wang2020")
+                gl::time_wang2020_passes(scene, renderer.read_image(), options.frames,
+                                         row.pass_ms_per_density);
+        });
 }
 
 void time_gpu_frames(GpuRenderer& renderer, const Scene& scene, int warmup, int frames,
@@ -79,10 +95,6 @@ void time_gpu_frames(GpuRenderer& renderer, const Scene& scene, int warmup, int 
 
 std::string gpu_bench_device() {
     return device_name();
-}
-
-void set_gpu_bench_device(const std::string& device) {
-    device_name() = device;
 }
 
 }  // namespace glintlab

@@ -1,17 +1,13 @@
 #include "glintlab/realtime/gpu_table1_003.h"
 
-#include <algorithm>
-#include <chrono>
 #include <filesystem>
 
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
 #include "glintlab/core/error.h"
-#include "glintlab/realtime/gl_context.h"
 #include "glintlab/realtime/gpu_renderer.h"
 #include "glintlab/realtime/gpu_table1.h"
-#include "glintlab/realtime/gpu_timer.h"
 #include "glintlab/scene/scene_loader.h"
 
 namespace glintlab {
@@ -83,32 +79,21 @@ std::vector<Table1Row> run_table1_003_gpu(const Table1Options& options) {
         options.models.empty() ? table1_003_model_names() : options.models;
     for (const std::string& s : scenes) (void)table1_003_scene_json(s, models[0], 8.0f, 1, 1);
     for (const std::string& m : models) (void)table1_003_scene_json(scenes[0], m, 8.0f, 1, 1);
-    HeadlessContext context;
-    set_gpu_bench_device(gl_description() + " (EGL " + context.platform() + ")");
-    std::vector<Table1Row> rows;
-    for (const std::string& scene_name : scenes) {
-        for (const std::string& model : models) {
-            Table1Row row;
-            row.scene = scene_name;
-            row.model = model;
-            for (float log_density : options.log_densities) {
-                const Scene scene =
-                    parse_scene(table1_003_scene_json(scene_name, model, log_density, options.width,
-                                                      options.height),
-                                "bench:003:" + scene_name);
-                GpuRenderer renderer(scene);
-                // 003 Table 1 "Dynamic IBL": the environment prefiltered in
-                // every frame (kneiphof2025 materials; the smooth model reads
-                // the map's mip chain and has nothing to redo).
-                renderer.set_kneiphof2025_dynamic_environment(scene_name == "IBL_DYNAMIC");
-                time_gpu_frames(renderer, scene, options.gpu_warmup, options.frames, row);
-            }
-            row.min_ms = *std::min_element(row.ms_per_density.begin(), row.ms_per_density.end());
-            row.max_ms = *std::max_element(row.ms_per_density.begin(), row.ms_per_density.end());
-            rows.push_back(std::move(row));
-        }
-    }
-    return rows;
+    return run_gpu_table(
+        options, scenes, models,
+        [&](const std::string& scene_name, const std::string& model, float log_density) {
+            return parse_scene(table1_003_scene_json(scene_name, model, log_density, options.width,
+                                                     options.height),
+                               "bench:003:" + scene_name);
+        },
+        [&](GpuRenderer& renderer, const Scene& scene, const std::string& scene_name,
+            const std::string&, Table1Row& row) {
+            // 003 Table 1 "Dynamic IBL": the environment prefiltered in every
+            // frame (kneiphof2025 materials; the smooth model reads the map's
+            // mip chain and has nothing to redo).
+            renderer.set_kneiphof2025_dynamic_environment(scene_name == "IBL_DYNAMIC");
+            time_gpu_frames(renderer, scene, options.gpu_warmup, options.frames, row);
+        });
 }
 
 }  // namespace glintlab
