@@ -194,11 +194,9 @@ TEST(GpuRenderer, GlintDiffuseBaseMatchesCpu) {
         j["materials"][0]["base_albedo"] = {0.6, 0.3, 0.1};
         j["materials"][0]["fresnel"] = {{"type", "dielectric"}, {"eta", 1.5}};
         const Scene scene = parse_scene(j, "test:base");
-        GpuRenderer renderer(scene);
-        renderer.render(scene);
-        const Image gpu = renderer.read_image();
-        const Image cpu = render_scene(scene, RenderOptions{1, true});
-        const ImageAgreement a = compare_images(gpu, cpu, 8, 0.02f, 0.1f);
+        const CpuGpuViews views = render_on_both(scene);
+        const Image& cpu = views.cpu;
+        const ImageAgreement& a = views.all;
         j["materials"][0]["base_albedo"] = 0.0;
         const Scene flakes_only = parse_scene(j, "test:flakes");
         const Image cpu_flakes = render_scene(flakes_only, RenderOptions{1, true});
@@ -255,11 +253,7 @@ TEST_P(GpuEnvironment, MatchesCpuDirect) {
             env["radiance"] = {1.0, 1.0, 1.0};
         j["lights"] = {env};
         const Scene scene = parse_scene(j, "test:env");
-        GpuRenderer renderer(scene);
-        renderer.render(scene);
-        const Image gpu = renderer.read_image();
-        const Image cpu = render_scene(scene, RenderOptions{1, true});
-        const ImageAgreement a = compare_images(gpu, cpu, 8, 0.02f, 0.1f);
+        const ImageAgreement a = render_on_both(scene).all;
         ASSERT_GT(a.mean_b, 0.01);
         EXPECT_LT(a.mean_relative_error, map ? 0.06 : 0.02)
             << "gpu " << a.mean_a << " cpu " << a.mean_b;
