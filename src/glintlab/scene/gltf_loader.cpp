@@ -56,6 +56,24 @@ class GltfReader {
         : model_(model), name_(std::move(name)) {}
 
     TriangleMesh read_scene() {
+        // glTF 2.0 (§3.5.3): the node graph is a forest, every node has at
+        // most one parent. A node with two parents would be instanced once
+        // per path, and chains of such nodes multiply the paths
+        // exponentially, so it is an error like a cycle.
+        const int count = static_cast<int>(model_.nodes.size());
+        std::vector<int> parent(model_.nodes.size(), -1);
+        for (int i = 0; i < count; ++i)
+            for (int child : model_.nodes[i].children) {
+                if (child < 0 || child >= count)
+                    fail("{}: node {} has child index {} out of range [0, {})", name_, i, child,
+                         count);
+                if (parent[child] >= 0)
+                    fail(
+                        "{}: node {} is a child of both node {} and node {} (glTF nodes have at "
+                        "most one parent)",
+                        name_, child, parent[child], i);
+                parent[child] = i;
+            }
         std::vector<int> roots;
         if (!model_.scenes.empty()) {
             const int scene = model_.defaultScene >= 0 ? model_.defaultScene : 0;
@@ -65,29 +83,20 @@ class GltfReader {
             roots = model_.scenes[scene].nodes;
         } else {
             // No scene: every node that is nobody's child is a root.
-            std::vector<bool> is_child(model_.nodes.size(), false);
-            for (const tinygltf::Node& node : model_.nodes)
-                for (int child : node.children)
-                    if (child >= 0 && child < static_cast<int>(is_child.size()))
-                        is_child[child] = true;
-            for (size_t i = 0; i < model_.nodes.size(); ++i)
-                if (!is_child[i]) roots.push_back(static_cast<int>(i));
-            if (roots.empty() && !model_.nodes.empty()) {
-                // Every node has a parent, so following parents from node 0
+            for (int i = 0; i < count; ++i)
+                if (parent[i] < 0) roots.push_back(i);
+            if (roots.empty() && count > 0) {
+                // Every node has one parent, so following parents from node 0
                 // must end on a cycle; n steps land on a node of it.
-                std::vector<int> parent(model_.nodes.size(), -1);
-                for (size_t i = 0; i < model_.nodes.size(); ++i)
-                    for (int child : model_.nodes[i].children)
-                        if (child >= 0 && child < static_cast<int>(parent.size()))
-                            parent[child] = static_cast<int>(i);
                 int node = 0;
-                for (size_t step = 0; step < model_.nodes.size(); ++step) node = parent[node];
+                for (int step = 0; step < count; ++step) node = parent[node];
                 fail(
                     "{}: node hierarchy contains a cycle (through node {}): every node is "
                     "another node's child",
                     name_, node);
             }
         }
+        on_path_.assign(model_.nodes.size(), 0);
         for (int root : roots) visit(root);
         if (mesh_.triangles.empty()) fail("{}: glTF scene has no triangles", name_);
         mesh_.validate(name_);
@@ -106,7 +115,7 @@ class GltfReader {
             size_t next_child;
         };
         const int count = static_cast<int>(model_.nodes.size());
-        std::vector<char> on_path(model_.nodes.size(), 0);
+        std::vector<char>& on_path = on_path_;  // all 0 between walks
         std::vector<Frame> stack;
         auto enter = [&](int node, const glm::dmat4& parent, int parent_node) {
             if (node < 0 || node >= count) {
@@ -447,6 +456,7 @@ class GltfReader {
     const tinygltf::Model& model_;
     std::string name_;
     TriangleMesh mesh_;
+    std::vector<char> on_path_;  // per node: on the path of the current walk
 };
 
 }  // namespace

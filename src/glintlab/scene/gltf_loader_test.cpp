@@ -270,22 +270,25 @@ TEST_F(MeshGltf, DeepNodeChainLoads) {
     }
 }
 
-// A node graph with a cycle is not a tree: the error names the file and a
-// node of the cycle, both when a scene lists a root and when there is no
-// scene (then no node is a root).
+// A node graph with a cycle is not a forest: the error names the file and a
+// node of the cycle, both when the scene's root lies on the cycle and when
+// there is no scene (then every node is a child, none is a root). A node
+// with two parents (which a path into a cycle needs, and which would
+// instance subtrees once per path, exponentially many in a chain) and an
+// out-of-range child are errors too.
 TEST_F(MeshGltf, NodeCycleIsAnError) {
     Asset a = quad_asset(kU16);
     a.doc["nodes"] =
-        json::array({{{"children", {1}}}, {{"children", {2}}, {"mesh", 0}}, {{"children", {1}}}});
+        json::array({{{"children", {1}}}, {{"children", {2}}, {"mesh", 0}}, {{"children", {0}}}});
     a.doc["scenes"] = json::array({{{"nodes", {0}}}});
     expect_error(write_gltf("cycle.gltf", a), "cycle");
-    expect_error(write_gltf("cycle.gltf", a), "node 1");
+    expect_error(write_gltf("cycle.gltf", a), "node 0 is its own ancestor");
     a.doc.erase("scenes");
-    a.doc["nodes"][0]["children"] = {1};
-    a.doc["nodes"][2]["children"] = {0};  // 0 → 1 → 2 → 0: every node is a child
     expect_error(write_gltf("cycle_noscene.gltf", a), "cycle");
-    a.doc["nodes"][2]["children"] = {7};
+    a.doc["nodes"][2]["children"] = {1};  // 0 → 1 → 2 → 1
     a.doc["scenes"] = json::array({{{"nodes", {0}}}});
+    expect_error(write_gltf("two_parents.gltf", a), "node 1 is a child of both node 0 and node 2");
+    a.doc["nodes"][2]["children"] = {7};
     expect_error(write_gltf("bad_child.gltf", a), "node 2 has child index 7 out of range");
 }
 
