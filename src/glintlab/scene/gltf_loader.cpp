@@ -2,7 +2,11 @@
 
 #include <cstring>
 #include <fstream>
+#include <iterator>
+#include <limits>
+#include <optional>
 #include <string>
+#include <string_view>
 #include <system_error>
 #include <vector>
 
@@ -18,12 +22,18 @@
 #define TINYGLTF_NO_EXTERNAL_IMAGE
 #include <tiny_gltf.h>
 
+#include <draco/compression/decode.h>
+#include <draco/core/decoder_buffer.h>
+#include <nlohmann/json.hpp>
+
 #include "glintlab/core/error.h"
 #include "glintlab/scene/transform.h"
 
 namespace glintlab {
 
 namespace {
+
+constexpr const char* kDracoExtension = "KHR_draco_mesh_compression";
 
 bool skip_image(tinygltf::Image*, const int, std::string*, std::string*, int, int,
                 const unsigned char*, int, void*) {
@@ -46,6 +56,24 @@ class GltfReader {
         : model_(model), name_(std::move(name)) {}
 
     TriangleMesh read_scene() {
+        // glTF 2.0 (§3.5.3): the node graph is a forest, every node has at
+        // most one parent. A node with two parents would be instanced once
+        // per path, and chains of such nodes multiply the paths
+        // exponentially, so it is an error like a cycle.
+        const int count = static_cast<int>(model_.nodes.size());
+        std::vector<int> parent(model_.nodes.size(), -1);
+        for (int i = 0; i < count; ++i)
+            for (int child : model_.nodes[i].children) {
+                if (child < 0 || child >= count)
+                    fail("{}: node {} has child index {} out of range [0, {})", name_, i, child,
+                         count);
+                if (parent[child] >= 0)
+                    fail(
+                        "{}: node {} is a child of both node {} and node {} (glTF nodes have at "
+                        "most one parent)",
+                        name_, child, parent[child], i);
+                parent[child] = i;
+            }
         std::vector<int> roots;
         if (!model_.scenes.empty()) {
             const int scene = model_.defaultScene >= 0 ? model_.defaultScene : 0;
@@ -55,31 +83,72 @@ class GltfReader {
             roots = model_.scenes[scene].nodes;
         } else {
             // No scene: every node that is nobody's child is a root.
-            std::vector<bool> is_child(model_.nodes.size(), false);
-            for (const tinygltf::Node& node : model_.nodes)
-                for (int child : node.children)
-                    if (child >= 0 && child < static_cast<int>(is_child.size()))
-                        is_child[child] = true;
-            for (size_t i = 0; i < model_.nodes.size(); ++i)
-                if (!is_child[i]) roots.push_back(static_cast<int>(i));
+            for (int i = 0; i < count; ++i)
+                if (parent[i] < 0) roots.push_back(i);
+            if (roots.empty() && count > 0) {
+                // Every node has one parent, so following parents from node 0
+                // must end on a cycle; n steps land on a node of it.
+                int node = 0;
+                for (int step = 0; step < count; ++step) node = parent[node];
+                fail(
+                    "{}: node hierarchy contains a cycle (through node {}): every node is "
+                    "another node's child",
+                    name_, node);
+            }
         }
-        for (int root : roots) visit(root, glm::dmat4(1.0), 0);
+        on_path_.assign(model_.nodes.size(), 0);
+        for (int root : roots) visit(root);
         if (mesh_.triangles.empty()) fail("{}: glTF scene has no triangles", name_);
         mesh_.validate(name_);
         return std::move(mesh_);
     }
 
   private:
-    void visit(int node_index, const glm::dmat4& parent, int depth) {
-        // A valid glTF node graph is a forest; the depth bound catches cycles.
-        if (depth > static_cast<int>(model_.nodes.size()))
-            fail("{}: node hierarchy contains a cycle", name_);
-        if (node_index < 0 || node_index >= static_cast<int>(model_.nodes.size()))
-            fail("{}: node index {} out of range [0, {})", name_, node_index, model_.nodes.size());
-        const tinygltf::Node& node = model_.nodes[node_index];
-        const glm::dmat4 world = parent * local_matrix(node);
-        if (node.mesh >= 0) add_mesh(node.mesh, world);
-        for (int child : node.children) visit(child, world, depth + 1);
+    // Depth-first walk of the hierarchy under `root` with an explicit stack:
+    // chains tens of thousands of nodes deep are legal glTF and would
+    // overflow the call stack if walked recursively. A valid node graph is a
+    // forest; a child that is already on the current path closes a cycle.
+    void visit(int root) {
+        struct Frame {
+            int node;
+            glm::dmat4 world;
+            size_t next_child;
+        };
+        const int count = static_cast<int>(model_.nodes.size());
+        std::vector<char>& on_path = on_path_;  // all 0 between walks
+        std::vector<Frame> stack;
+        auto enter = [&](int node, const glm::dmat4& parent, int parent_node) {
+            if (node < 0 || node >= count) {
+                if (parent_node < 0)
+                    fail("{}: root node index {} out of range [0, {})", name_, node, count);
+                fail("{}: node {} has child index {} out of range [0, {})", name_, parent_node,
+                     node, count);
+            }
+            if (on_path[node])
+                fail(
+                    "{}: node hierarchy contains a cycle: node {} is its own ancestor "
+                    "(reached again as a child of node {})",
+                    name_, node, parent_node);
+            on_path[node] = 1;
+            const tinygltf::Node& n = model_.nodes[node];
+            stack.push_back({node, parent * local_matrix(n), 0});
+            if (n.mesh >= 0) add_mesh(n.mesh, stack.back().world);
+        };
+        enter(root, glm::dmat4(1.0), -1);
+        while (!stack.empty()) {
+            Frame& top = stack.back();
+            const std::vector<int>& children = model_.nodes[top.node].children;
+            if (top.next_child == children.size()) {
+                on_path[top.node] = 0;
+                stack.pop_back();
+                continue;
+            }
+            const int child = children[top.next_child++];
+            // Copy: enter() may reallocate the stack.
+            const glm::dmat4 world = top.world;
+            const int parent = top.node;
+            enter(child, world, parent);
+        }
     }
 
     glm::dmat4 local_matrix(const tinygltf::Node& node) const {
@@ -124,6 +193,8 @@ class GltfReader {
                  prim.mode, mode_name(prim.mode));
         const auto pos_it = prim.attributes.find("POSITION");
         if (pos_it == prim.attributes.end()) fail("{}: {} has no POSITION", name_, what);
+        if (auto ext = prim.extensions.find(kDracoExtension); ext != prim.extensions.end())
+            return read_draco_primitive(prim, ext->second, what);
 
         TriangleMesh part;
         const AccessorView pos = view(pos_it->second, TINYGLTF_TYPE_VEC3, what + " POSITION");
@@ -162,6 +233,109 @@ class GltfReader {
             part.triangles.emplace_back(indices[i], indices[i + 1], indices[i + 2]);
         // Check indices and values before the part is transformed and merged,
         // so the message names the primitive.
+        part.validate(fmt::format("{}: {}", name_, what));
+        return part;
+    }
+
+    // KHR_draco_mesh_compression: the extension names a bufferView holding
+    // one Draco-encoded mesh and maps glTF attribute names to Draco unique
+    // attribute ids. Attributes the extension does not name are read from
+    // their accessors as usual; they must have one element per Draco point.
+    // Draco dequantises positions/uvs and unpacks octahedral normals itself.
+    TriangleMesh read_draco_primitive(const tinygltf::Primitive& prim, const tinygltf::Value& ext,
+                                      const std::string& what) const {
+        const std::string where = fmt::format("{}: {} {}", name_, what, kDracoExtension);
+        if (!ext.IsObject()) fail("{} is not an object", where);
+        const tinygltf::Value& bv_value = ext.Get("bufferView");
+        if (!bv_value.IsInt()) fail("{}: \"bufferView\" must be an integer", where);
+        const int bv_index = bv_value.Get<int>();
+        if (bv_index < 0 || bv_index >= static_cast<int>(model_.bufferViews.size()))
+            fail("{}: bufferView {} out of range [0, {})", where, bv_index,
+                 model_.bufferViews.size());
+        const tinygltf::BufferView& bv = model_.bufferViews[bv_index];
+        if (bv.buffer < 0 || bv.buffer >= static_cast<int>(model_.buffers.size()))
+            fail("{}: bufferView {} has no valid buffer", where, bv_index);
+        const tinygltf::Buffer& buffer = model_.buffers[bv.buffer];
+        if (bv.byteOffset > buffer.data.size() ||
+            bv.byteLength > buffer.data.size() - bv.byteOffset)
+            fail("{}: bufferView {} reads past the end of its buffer", where, bv_index);
+        const tinygltf::Value& attributes = ext.Get("attributes");
+        if (!attributes.IsObject()) fail("{}: \"attributes\" must be an object", where);
+
+        draco::DecoderBuffer input;
+        input.Init(reinterpret_cast<const char*>(buffer.data.data() + bv.byteOffset),
+                   bv.byteLength);
+        draco::Decoder decoder;
+        auto decoded = decoder.DecodeMeshFromBuffer(&input);
+        if (!decoded.ok())
+            fail("{}: Draco cannot decode bufferView {}: {}", where, bv_index,
+                 decoded.status().error_msg_string());
+        const std::unique_ptr<draco::Mesh> draco_mesh = std::move(decoded).value();
+        if (!draco_mesh) fail("{}: Draco decoded no mesh from bufferView {}", where, bv_index);
+        const size_t points = draco_mesh->num_points();
+
+        // One attribute: from Draco when the extension names it, else from
+        // its accessor; empty when the primitive has no such attribute.
+        auto read = [&]<int Dim>(const char* semantic, int type) {
+            std::vector<glm::vec<Dim, float>> out;
+            const auto it = prim.attributes.find(semantic);
+            if (!attributes.Has(semantic)) {
+                if (it == prim.attributes.end()) return out;
+                const AccessorView v = view(it->second, type, what + " " + semantic);
+                if (std::string(semantic) != "TEXCOORD_0") require_float(v, what + " " + semantic);
+                if (v.count != points)
+                    fail("{}: {} accessor has {} elements for {} Draco points", where, semantic,
+                         v.count, points);
+                out.resize(points);
+                for (size_t i = 0; i < points; ++i) out[i] = read_vec<Dim>(v, i);
+                return out;
+            }
+            if (it == prim.attributes.end())
+                fail("{}: attribute {} is not among the primitive's attributes", where, semantic);
+            const tinygltf::Value& id = attributes.Get(semantic);
+            if (!id.IsInt() || id.Get<int>() < 0)
+                fail("{}: attribute {} must map to a non-negative Draco attribute id", where,
+                     semantic);
+            const draco::PointAttribute* a =
+                draco_mesh->GetAttributeByUniqueId(static_cast<uint32_t>(id.Get<int>()));
+            if (!a)
+                fail("{}: the Draco mesh has no attribute with id {} (for {})", where,
+                     id.Get<int>(), semantic);
+            if (a->num_components() != Dim)
+                fail("{}: Draco attribute {} ({}) has {} components, expected {}", where,
+                     id.Get<int>(), semantic, a->num_components(), Dim);
+            // The accessor stays the authority on the element count.
+            const tinygltf::Accessor& acc = model_.accessors.at(static_cast<size_t>(it->second));
+            if (acc.count != points)
+                fail("{}: {} accessor count {} differs from the {} decoded Draco points", where,
+                     semantic, acc.count, points);
+            out.resize(points);
+            for (size_t i = 0; i < points; ++i) {
+                const draco::AttributeValueIndex value =
+                    a->mapped_index(draco::PointIndex(static_cast<uint32_t>(i)));
+                if (value.value() >= a->size() ||
+                    !a->ConvertValue<float>(value, Dim, glm::value_ptr(out[i])))
+                    fail("{}: Draco attribute {} ({}) cannot be read at point {}", where,
+                         id.Get<int>(), semantic, i);
+            }
+            return out;
+        };
+        // Accessor indices of attributes were range-checked by tinygltf's
+        // parser only when they have a bufferView; check them here.
+        for (const auto& [semantic, index] : prim.attributes)
+            if (index < 0 || index >= static_cast<int>(model_.accessors.size()))
+                fail("{}: {} accessor {} out of range [0, {})", where, semantic, index,
+                     model_.accessors.size());
+
+        TriangleMesh part;
+        part.positions = read.template operator()<3>("POSITION", TINYGLTF_TYPE_VEC3);
+        part.normals = read.template operator()<3>("NORMAL", TINYGLTF_TYPE_VEC3);
+        part.uvs = read.template operator()<2>("TEXCOORD_0", TINYGLTF_TYPE_VEC2);
+        part.triangles.reserve(draco_mesh->num_faces());
+        for (draco::FaceIndex f(0); f < draco_mesh->num_faces(); ++f) {
+            const draco::Mesh::Face& face = draco_mesh->face(f);
+            part.triangles.emplace_back(face[0].value(), face[1].value(), face[2].value());
+        }
         part.validate(fmt::format("{}: {}", name_, what));
         return part;
     }
@@ -282,7 +456,83 @@ class GltfReader {
     const tinygltf::Model& model_;
     std::string name_;
     TriangleMesh mesh_;
+    std::vector<char> on_path_;  // per node: on the path of the current walk
 };
+
+}  // namespace
+
+namespace {
+
+// Extensions a file may list as required. Material and texture extensions
+// only change how surfaces look in other renderers; glintlab reads geometry
+// alone, so they do not change what it loads.
+bool extension_supported(const std::string& name) {
+    return name == kDracoExtension || name.starts_with("KHR_materials_") ||
+           name.starts_with("KHR_texture_") || name.starts_with("EXT_texture_");
+}
+
+uint32_t get32(const std::string& bytes, size_t offset) {
+    uint32_t v = 0;
+    for (int b = 0; b < 4; ++b)
+        v |= static_cast<uint32_t>(static_cast<unsigned char>(bytes[offset + b])) << (8 * b);
+    return v;
+}
+
+void put32(std::string& bytes, uint32_t v) {
+    for (int b = 0; b < 4; ++b) bytes.push_back(static_cast<char>((v >> (8 * b)) & 0xff));
+}
+
+// tinygltf's parser rejects a primitive whose "indices" accessor has no
+// bufferView, which is how KHR_draco_mesh_compression stores its indices
+// (inside the Draco stream). Unless tinygltf decodes Draco itself
+// (TINYGLTF_ENABLE_DRACO, which indexes bufferViews and Draco attributes
+// without range checks), such files cannot be parsed. So the "indices" of
+// Draco primitives are dropped from the JSON before tinygltf sees it; the
+// reader takes the indices from the decoded Draco faces. Returns the
+// rewritten file, or nothing when the file has no Draco primitive with
+// indices (or is malformed: then tinygltf reports the problem).
+std::optional<std::string> strip_draco_indices(const std::string& file, bool binary) {
+    // GLB: 12-byte header, then the JSON chunk (length, "JSON", text).
+    size_t json_begin = 0, json_length = file.size();
+    if (binary) {
+        if (file.size() < 20 || get32(file, 16) != 0x4E4F534Au) return std::nullopt;
+        json_begin = 20;
+        json_length = get32(file, 12);
+        if (json_length > file.size() - json_begin) return std::nullopt;
+    }
+    const std::string_view text(file.data() + json_begin, json_length);
+    if (text.find(kDracoExtension) == std::string_view::npos) return std::nullopt;
+    nlohmann::json doc = nlohmann::json::parse(text, nullptr, /*allow_exceptions=*/false);
+    if (doc.is_discarded() || !doc.is_object() || !doc.contains("meshes") ||
+        !doc["meshes"].is_array())
+        return std::nullopt;
+    bool changed = false;
+    for (nlohmann::json& mesh : doc["meshes"]) {
+        if (!mesh.is_object() || !mesh.contains("primitives") || !mesh["primitives"].is_array())
+            continue;
+        for (nlohmann::json& prim : mesh["primitives"]) {
+            if (!prim.is_object() || !prim.contains("indices") || !prim.contains("extensions") ||
+                !prim["extensions"].is_object() || !prim["extensions"].contains(kDracoExtension))
+                continue;
+            prim.erase("indices");
+            changed = true;
+        }
+    }
+    if (!changed) return std::nullopt;
+    std::string json_text = doc.dump();
+    if (!binary) return json_text;
+    while (json_text.size() % 4 != 0) json_text += ' ';
+    // The chunks after the JSON chunk (BIN) are kept byte for byte.
+    const size_t rest = json_begin + ((json_length + 3) / 4) * 4;
+    const std::string tail = rest < file.size() ? file.substr(rest) : std::string();
+    std::string out = file.substr(0, 8);
+    put32(out, static_cast<uint32_t>(12 + 8 + json_text.size() + tail.size()));
+    put32(out, static_cast<uint32_t>(json_text.size()));
+    put32(out, 0x4E4F534Au);  // "JSON"
+    out += json_text;
+    out += tail;
+    return out;
+}
 
 }  // namespace
 
@@ -291,21 +541,41 @@ TriangleMesh load_gltf(const std::filesystem::path& path) {
     std::error_code ec;
     if (!std::filesystem::is_regular_file(path, ec)) fail("{}: glTF file not found", name);
 
-    // Binary glTF starts with the magic "glTF" (glTF 2.0 §4.4.3.1).
-    char magic[4] = {};
+    std::string file;
     {
         std::ifstream in(path, std::ios::binary);
-        in.read(magic, 4);
+        if (!in) fail("{}: cannot open glTF file", name);
+        file.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
     }
-    const bool binary = std::memcmp(magic, "glTF", 4) == 0;
+    // Binary glTF starts with the magic "glTF" (glTF 2.0 §4.4.3.1).
+    const bool binary = file.size() >= 4 && std::memcmp(file.data(), "glTF", 4) == 0;
 
     tinygltf::TinyGLTF loader;
     loader.SetImageLoader(skip_image, nullptr);
     tinygltf::Model model;
     std::string err, warn;
-    const bool ok = binary ? loader.LoadBinaryFromFile(&model, &err, &warn, name)
-                           : loader.LoadASCIIFromFile(&model, &err, &warn, name);
+    bool ok = false;
+    if (const std::optional<std::string> rewritten = strip_draco_indices(file, binary)) {
+        if (rewritten->size() > std::numeric_limits<unsigned int>::max())
+            fail("{}: glTF file too large", name);
+        const std::string base_dir = path.parent_path().string();
+        const auto size = static_cast<unsigned int>(rewritten->size());
+        ok = binary ? loader.LoadBinaryFromMemory(
+                          &model, &err, &warn,
+                          reinterpret_cast<const unsigned char*>(rewritten->data()), size, base_dir)
+                    : loader.LoadASCIIFromString(&model, &err, &warn, rewritten->data(), size,
+                                                 base_dir);
+    } else {
+        ok = binary ? loader.LoadBinaryFromFile(&model, &err, &warn, name)
+                    : loader.LoadASCIIFromFile(&model, &err, &warn, name);
+    }
     if (!ok) fail("{}: cannot parse glTF: {}", name, err.empty() ? warn : err);
+    for (const std::string& ext : model.extensionsRequired)
+        if (!extension_supported(ext))
+            fail(
+                "{}: required glTF extension \"{}\" is not supported (supported: {}; material "
+                "and texture extensions are accepted and ignored)",
+                name, ext, kDracoExtension);
     return GltfReader(model, name).read_scene();
 }
 

@@ -16,9 +16,13 @@ namespace glintlab {
 // only if every primitive has them. Index types u8/u16/u32 and non-indexed
 // primitives are supported; textures and materials are ignored.
 // The format (JSON or binary) is chosen from the file's first bytes.
+// The node hierarchy is walked with an explicit stack (any depth).
+// KHR_draco_mesh_compression primitives are decoded with libdraco.
 // Throws glintlab::Error naming the file: missing file, parse error (with
-// tinygltf's message), unsupported primitive mode or accessor layout,
-// out-of-range indices, non-finite values, no triangles.
+// tinygltf's message), a cycle in the node graph (naming a node of it), an
+// unsupported required extension (naming it), a malformed Draco primitive,
+// unsupported primitive mode or accessor layout, out-of-range indices,
+// non-finite values, no triangles.
 TriangleMesh load_gltf(const std::filesystem::path& path);
 
 }  // namespace glintlab

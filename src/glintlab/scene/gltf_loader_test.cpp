@@ -8,13 +8,18 @@
 #include <string>
 #include <vector>
 
+#include <draco/compression/encode.h>
+#include <draco/mesh/mesh.h>
 #include <gtest/gtest.h>
 #include <unistd.h>
+#include <glm/gtc/constants.hpp>
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/type_ptr.hpp>
 #include <nlohmann/json.hpp>
 
 #include "glintlab/core/error.h"
+#include "glintlab/render/renderer.h"
+#include "glintlab/scene/scene_loader.h"
 
 namespace glintlab {
 namespace {
@@ -236,6 +241,303 @@ TEST_F(MeshGltf, MirroringNodeFlipsWinding) {
     const TriangleMesh m = load_gltf(write_gltf("mirror.gltf", a));
     for (size_t t = 0; t < m.triangles.size(); ++t)
         EXPECT_GT(glm::dot(geometric_normal(m, t), m.normals[m.triangles[t].x]), 0.0f);
+}
+
+// Issue 14: a 60,000-deep chain of nodes (each translating by 1e-4 along x)
+// with the quad at the leaf. A recursive walk overflowed the stack; the
+// iterative one must place the quad at x + 60000·1e-4 = x + 6.
+TEST_F(MeshGltf, DeepNodeChainLoads) {
+    constexpr int kDepth = 60000;
+    Asset a = quad_asset(kU16);
+    json nodes = json::array();
+    for (int i = 0; i < kDepth; ++i) {
+        json node = {{"translation", {1e-4, 0, 0}}};
+        if (i + 1 < kDepth)
+            node["children"] = {i + 1};
+        else
+            node["mesh"] = 0;
+        nodes.push_back(std::move(node));
+    }
+    a.doc["nodes"] = std::move(nodes);
+    a.doc["scenes"] = json::array({{{"nodes", {0}}}});
+    const TriangleMesh m = load_gltf(write_gltf("deep.gltf", a));
+    ASSERT_EQ(m.positions.size(), 4u);
+    for (size_t i = 0; i < 4; ++i) {
+        // The sum of 60000 steps of 1e-4 in double precision is exact to
+        // ~1e-12; the float result carries ~1 ulp of 6 (5e-7).
+        EXPECT_NEAR(m.positions[i].x, kQuadPositions[i].x + 6.0f, 2e-6f);
+        EXPECT_EQ(m.positions[i].y, kQuadPositions[i].y);
+    }
+}
+
+// A node graph with a cycle is not a forest: the error names the file and a
+// node of the cycle, both when the scene's root lies on the cycle and when
+// there is no scene (then every node is a child, none is a root). A node
+// with two parents (which a path into a cycle needs, and which would
+// instance subtrees once per path, exponentially many in a chain) and an
+// out-of-range child are errors too.
+TEST_F(MeshGltf, NodeCycleIsAnError) {
+    Asset a = quad_asset(kU16);
+    a.doc["nodes"] =
+        json::array({{{"children", {1}}}, {{"children", {2}}, {"mesh", 0}}, {{"children", {0}}}});
+    a.doc["scenes"] = json::array({{{"nodes", {0}}}});
+    expect_error(write_gltf("cycle.gltf", a), "cycle");
+    expect_error(write_gltf("cycle.gltf", a), "node 0 is its own ancestor");
+    a.doc.erase("scenes");
+    expect_error(write_gltf("cycle_noscene.gltf", a), "cycle");
+    a.doc["nodes"][2]["children"] = {1};  // 0 → 1 → 2 → 1
+    a.doc["scenes"] = json::array({{{"nodes", {0}}}});
+    expect_error(write_gltf("two_parents.gltf", a), "node 1 is a child of both node 0 and node 2");
+    a.doc["nodes"][2]["children"] = {7};
+    expect_error(write_gltf("bad_child.gltf", a), "node 2 has child index 7 out of range");
+}
+
+// --- KHR_draco_mesh_compression ---------------------------------------------
+
+// A wavy 12x12-vertex grid over [-1, 1]² (z = 0.2 sin·cos), with analytic
+// normals and uvs = 1.5·(x + 1, y + 1) ∈ [0, 3]².
+struct SourceMesh {
+    std::vector<glm::vec3> positions, normals;
+    std::vector<glm::vec2> uvs;
+    std::vector<glm::uvec3> triangles;
+};
+
+SourceMesh wavy_grid() {
+    constexpr int n = 12;
+    SourceMesh m;
+    for (int j = 0; j < n; ++j)
+        for (int i = 0; i < n; ++i) {
+            const float x = -1.0f + 2.0f * i / (n - 1), y = -1.0f + 2.0f * j / (n - 1);
+            const float z = 0.2f * std::sin(3.0f * x) * std::cos(2.0f * y);
+            m.positions.emplace_back(x, y, z);
+            const float dzdx = 0.6f * std::cos(3.0f * x) * std::cos(2.0f * y);
+            const float dzdy = -0.4f * std::sin(3.0f * x) * std::sin(2.0f * y);
+            m.normals.push_back(glm::normalize(glm::vec3(-dzdx, -dzdy, 1.0f)));
+            m.uvs.emplace_back(1.5f * (x + 1.0f), 1.5f * (y + 1.0f));
+        }
+    for (int j = 0; j + 1 < n; ++j)
+        for (int i = 0; i + 1 < n; ++i) {
+            const unsigned a = j * n + i, b = a + 1, c = a + n + 1, d = a + n;
+            m.triangles.emplace_back(a, b, c);
+            m.triangles.emplace_back(a, c, d);
+        }
+    return m;
+}
+
+constexpr int kPositionBits = 14, kUvBits = 12, kNormalBits = 10;
+
+// Encodes `m` with Draco's encoder (edgebreaker, which reorders points and
+// faces) and returns the bytes and the unique ids of position/normal/uv.
+std::vector<uint8_t> draco_encode(const SourceMesh& m, int ids[3]) {
+    draco::Mesh dm;
+    const auto n = static_cast<uint32_t>(m.positions.size());
+    dm.set_num_points(n);
+    auto add = [&](draco::GeometryAttribute::Type type, int comps, const float* data) {
+        draco::GeometryAttribute ga;
+        ga.Init(type, nullptr, static_cast<uint8_t>(comps), draco::DT_FLOAT32, false,
+                sizeof(float) * comps, 0);
+        const int att = dm.AddAttribute(ga, /*identity_mapping=*/true, n);
+        for (uint32_t i = 0; i < n; ++i)
+            dm.attribute(att)->SetAttributeValue(draco::AttributeValueIndex(i), data + comps * i);
+        return static_cast<int>(dm.attribute(att)->unique_id());
+    };
+    ids[0] = add(draco::GeometryAttribute::POSITION, 3, &m.positions[0].x);
+    ids[1] = add(draco::GeometryAttribute::NORMAL, 3, &m.normals[0].x);
+    ids[2] = add(draco::GeometryAttribute::TEX_COORD, 2, &m.uvs[0].x);
+    for (glm::uvec3 t : m.triangles)
+        dm.AddFace({draco::PointIndex(t.x), draco::PointIndex(t.y), draco::PointIndex(t.z)});
+    draco::Encoder encoder;
+    encoder.SetAttributeQuantization(draco::GeometryAttribute::POSITION, kPositionBits);
+    encoder.SetAttributeQuantization(draco::GeometryAttribute::TEX_COORD, kUvBits);
+    encoder.SetAttributeQuantization(draco::GeometryAttribute::NORMAL, kNormalBits);
+    draco::EncoderBuffer buffer;
+    const draco::Status status = encoder.EncodeMeshToBuffer(dm, &buffer);
+    EXPECT_TRUE(status.ok()) << status.error_msg_string();
+    return {reinterpret_cast<const uint8_t*>(buffer.data()),
+            reinterpret_cast<const uint8_t*>(buffer.data()) + buffer.size()};
+}
+
+// A glTF whose one primitive is Draco-compressed: accessors without
+// bufferViews (count and type only, as the extension prescribes).
+Asset draco_asset(const SourceMesh& m) {
+    int ids[3];
+    const std::vector<uint8_t> bytes = draco_encode(m, ids);
+    Asset a;
+    a.doc = {{"asset", {{"version", "2.0"}}},
+             {"extensionsUsed", {"KHR_draco_mesh_compression"}},
+             {"extensionsRequired", {"KHR_draco_mesh_compression"}}};
+    const size_t view = a.add_view(bytes.data(), bytes.size());
+    const size_t n = m.positions.size();
+    a.doc["accessors"] = json::array({
+        {{"componentType", kFloat}, {"type", "VEC3"}, {"count", n}},
+        {{"componentType", kFloat}, {"type", "VEC3"}, {"count", n}},
+        {{"componentType", kFloat}, {"type", "VEC2"}, {"count", n}},
+        {{"componentType", kU32}, {"type", "SCALAR"}, {"count", 3 * m.triangles.size()}},
+    });
+    json prim = {
+        {"attributes", {{"POSITION", 0}, {"NORMAL", 1}, {"TEXCOORD_0", 2}}},
+        {"indices", 3},
+        {"extensions",
+         {{"KHR_draco_mesh_compression",
+           {{"bufferView", view},
+            {"attributes", {{"POSITION", ids[0]}, {"NORMAL", ids[1]}, {"TEXCOORD_0", ids[2]}}}}}}}};
+    a.doc["meshes"] = json::array({{{"name", "wavy"}, {"primitives", json::array({prim})}}});
+    a.doc["nodes"] = json::array({{{"mesh", 0}}});
+    a.doc["scenes"] = json::array({{{"nodes", {0}}}});
+    return a;
+}
+
+// The decoded mesh must be the source mesh up to Draco's quantisation and
+// its reordering of points and faces (and rotation of a face's corners,
+// orientation kept). Tolerances from the quantisation: a q-bit attribute is
+// quantised on a uniform grid of step range/(2^q − 1) over its bounding box
+// (range = the largest extent over components), so each component is off by
+// at most half a step, plus float rounding (≤ 1e-6 here). Positions: range 2
+// (x, y ∈ [-1, 1]), q = 14 → 6.1e-5. Uvs: range 3, q = 12 → 3.7e-4. Normals
+// are octahedrally quantised: a grid of step 2/(2^q − 1) on the square
+// [-1, 1]², mapped to the sphere by normalising (s, t, 1 − |s| − |t|),
+// whose length is ≥ 1/√3; half a step in s and t moves that vector by at
+// most √6/2 steps, and normalising stretches by ≤ √3: angle ≤ 2.13 steps =
+// 4.2e-3 rad for q = 10.
+void expect_matches_source(const TriangleMesh& got, const SourceMesh& src) {
+    const float pos_tol = 0.5f * 2.0f / ((1 << kPositionBits) - 1) + 1e-6f;
+    const float uv_tol = 0.5f * 3.0f / ((1 << kUvBits) - 1) + 1e-6f;
+    const float normal_angle = 2.13f * 2.0f / ((1 << kNormalBits) - 1);
+    ASSERT_EQ(got.triangles.size(), src.triangles.size());
+    ASSERT_TRUE(got.has_normals() && got.has_uvs());
+    std::vector<int> matched(src.triangles.size(), 0);
+    for (size_t t = 0; t < got.triangles.size(); ++t) {
+        const glm::uvec3 g = got.triangles[t];
+        const glm::vec3 centroid =
+            (got.positions[g.x] + got.positions[g.y] + got.positions[g.z]) / 3.0f;
+        size_t best = 0;
+        float best_d = 1e30f;
+        for (size_t s = 0; s < src.triangles.size(); ++s) {
+            const glm::uvec3 v = src.triangles[s];
+            const float d = glm::distance(
+                centroid, (src.positions[v.x] + src.positions[v.y] + src.positions[v.z]) / 3.0f);
+            if (d < best_d) best_d = d, best = s;
+        }
+        ++matched[best];
+        const glm::uvec3 v = src.triangles[best];
+        int rotation = -1;
+        for (int r = 0; r < 3; ++r)
+            if (glm::distance(got.positions[g[0]], src.positions[v[r]]) < 2.0f * pos_tol)
+                rotation = r;
+        ASSERT_GE(rotation, 0) << "triangle " << t;
+        for (int k = 0; k < 3; ++k) {
+            const unsigned gi = g[k], si = v[(k + rotation) % 3];
+            for (int c = 0; c < 3; ++c)
+                EXPECT_NEAR(got.positions[gi][c], src.positions[si][c], pos_tol);
+            for (int c = 0; c < 2; ++c) EXPECT_NEAR(got.uvs[gi][c], src.uvs[si][c], uv_tol);
+            const float cos_angle = glm::dot(glm::normalize(got.normals[gi]), src.normals[si]);
+            EXPECT_GE(cos_angle, std::cos(normal_angle));
+        }
+    }
+    for (size_t s = 0; s < matched.size(); ++s) EXPECT_EQ(matched[s], 1) << "source " << s;
+}
+
+TEST_F(MeshGltf, DracoCompressedPrimitiveDecodes) {
+    const SourceMesh src = wavy_grid();
+    const Asset a = draco_asset(src);
+    {
+        SCOPED_TRACE("gltf");
+        expect_matches_source(load_gltf(write_gltf("draco.gltf", a)), src);
+    }
+    {
+        SCOPED_TRACE("glb");
+        expect_matches_source(load_gltf(write_glb("draco.glb", a)), src);
+    }
+}
+
+// The same grid uncompressed, for the render comparison.
+Asset plain_asset(const SourceMesh& m) {
+    Asset a;
+    a.doc = {{"asset", {{"version", "2.0"}}}};
+    const size_t n = m.positions.size();
+    std::vector<uint32_t> indices;
+    for (glm::uvec3 t : m.triangles) indices.insert(indices.end(), {t.x, t.y, t.z});
+    json prim = {{"attributes", json::object()}};
+    prim["attributes"]["POSITION"] = a.add_accessor(m.positions.data(), n * 12, kFloat, "VEC3", n);
+    prim["attributes"]["NORMAL"] = a.add_accessor(m.normals.data(), n * 12, kFloat, "VEC3", n);
+    prim["attributes"]["TEXCOORD_0"] = a.add_accessor(m.uvs.data(), n * 8, kFloat, "VEC2", n);
+    prim["indices"] =
+        a.add_accessor(indices.data(), indices.size() * 4, kU32, "SCALAR", indices.size());
+    a.doc["meshes"] = json::array({{{"name", "wavy"}, {"primitives", json::array({prim})}}});
+    a.doc["nodes"] = json::array({{{"mesh", 0}}});
+    a.doc["scenes"] = json::array({{{"nodes", {0}}}});
+    return a;
+}
+
+// Rendered, the Draco mesh equals the uncompressed one within what the
+// quantisation allows. Setup: orthographic view straight down (−z) on the
+// interior of the grid (no silhouette), Lambertian albedo 0.5 lit by a
+// directional light of irradiance 1 along +z (no self-shadowing: the
+// slopes stay below 45°), direct integrator, 1 spp at pixel centres:
+// L = (0.5/π)·cos(n, z) is deterministic. cos moves by at most the normal
+// error: 4.2e-3 rad of octahedral quantisation plus the interpolated
+// normal's change over the ≤ 6.1e-5 position error (its gradient is
+// bounded by the height's Hessian, |z_xx| + |z_xy| ≤ 1.8 + 1.2 = 3 rad per
+// unit: 1.8e-4 rad): |ΔL| ≤ 0.5/π · 4.4e-3 = 7e-4.
+TEST_F(MeshGltf, DracoRenderMatchesUncompressed) {
+    const SourceMesh src = wavy_grid();
+    write_gltf("plain.gltf", plain_asset(src));
+    write_glb("draco.glb", draco_asset(src));
+    auto render = [&](const std::string& file) {
+        const json scene = {
+            {"film", {{"width", 24}, {"height", 24}}},
+            {"camera",
+             {{"type", "orthographic"},
+              {"eye", {0, 0, 5}},
+              {"target", {0, 0, 0}},
+              {"up", {0, 1, 0}},
+              {"height", 1.6}}},
+            {"render", {{"integrator", "direct"}, {"spp", 1}}},
+            {"materials", {{{"name", "clay"}, {"type", "diffuse"}, {"albedo", 0.5}}}},
+            {"shapes", {{{"type", "gltf"}, {"file", file}, {"material", "clay"}}}},
+            {"lights", {{{"type", "directional"}, {"direction", {0, 0, 1}}, {"irradiance", 1}}}}};
+        return render_scene(parse_scene(scene, dir_ / "scene.json"), RenderOptions{1, true});
+    };
+    const Image plain = render("plain.gltf"), draco = render("draco.glb");
+    ASSERT_EQ(plain.pixels.size(), draco.pixels.size());
+    const float bound = 0.5f / glm::pi<float>() * 4.4e-3f;
+    float worst = 0.0f, brightest = 0.0f;
+    for (size_t i = 0; i < plain.pixels.size(); ++i)
+        for (int c = 0; c < 3; ++c) {
+            worst = std::max(worst, std::abs(plain.pixels[i][c] - draco.pixels[i][c]));
+            brightest = std::max(brightest, plain.pixels[i][c]);
+        }
+    EXPECT_LE(worst, bound);
+    EXPECT_GT(brightest, 0.1f);  // the grid is lit and in view
+}
+
+TEST_F(MeshGltf, DracoAndExtensionErrors) {
+    const SourceMesh src = wavy_grid();
+    Asset unknown_id = draco_asset(src);
+    unknown_id.doc["meshes"][0]["primitives"][0]["extensions"]["KHR_draco_mesh_compression"]
+                  ["attributes"]["TEXCOORD_0"] = 42;
+    expect_error(write_gltf("draco_id.gltf", unknown_id), "no attribute with id 42");
+
+    Asset bad_view = draco_asset(src);
+    bad_view.doc["meshes"][0]["primitives"][0]["extensions"]["KHR_draco_mesh_compression"]
+                ["bufferView"] = 9;
+    expect_error(write_gltf("draco_view.gltf", bad_view), "bufferView 9 out of range");
+
+    Asset corrupt = draco_asset(src);
+    for (size_t i = 0; i < 16; ++i) corrupt.bin[i] = 0xff;  // the Draco header
+    expect_error(write_gltf("draco_corrupt.gltf", corrupt), "Draco cannot decode");
+
+    Asset count = draco_asset(src);
+    count.doc["accessors"][0]["count"] = 3;
+    expect_error(write_gltf("draco_count.gltf", count), "POSITION accessor count 3");
+
+    Asset required = quad_asset(kU16);
+    add_hierarchy(required, false);
+    required.doc["extensionsRequired"] = {"KHR_materials_clearcoat", "EXT_meshopt_compression"};
+    expect_error(write_gltf("meshopt.gltf", required), "\"EXT_meshopt_compression\"");
+    // Material extensions alone do not change the geometry: accepted.
+    required.doc["extensionsRequired"] = {"KHR_materials_clearcoat"};
+    EXPECT_EQ(load_gltf(write_gltf("clearcoat.gltf", required)).triangles.size(), 2u);
 }
 
 TEST_F(MeshGltf, Errors) {

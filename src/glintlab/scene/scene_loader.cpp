@@ -11,12 +11,14 @@
 #include "glintlab/core/error.h"
 #include "glintlab/core/image.h"
 #include "glintlab/glints/registry.h"
+#include "glintlab/scene/environment_file.h"
 #include "glintlab/scene/gltf_loader.h"
 #include "glintlab/scene/json_reader.h"
 #include "glintlab/scene/obj_loader.h"
 #include "glintlab/scene/shapes.h"
 #include "glintlab/scene/shapes_heightfield.h"
 #include "glintlab/scene/transform.h"
+#include "glintlab/scene/uv_projection.h"
 
 namespace glintlab {
 namespace {
@@ -230,6 +232,28 @@ TriangleMesh read_heightfield(JsonObject& o) {
     return make_heightfield(s);
 }
 
+// "uv": a generated parameterization (uv_projection.h), in the shape's
+// object space (before "transform"); it replaces the mesh's own uvs.
+UvProjection read_uv_projection(JsonObject& o) {
+    UvProjection p;
+    const std::string type =
+        o.required_string("projection", {"box", "planar", "cylindrical", "spherical"});
+    p.type = type == "box"           ? UvProjection::Type::Box
+             : type == "planar"      ? UvProjection::Type::Planar
+             : type == "cylindrical" ? UvProjection::Type::Cylindrical
+                                     : UvProjection::Type::Spherical;
+    p.scale = static_cast<float>(o.number("scale", 1.0, 1e-6, 1e6));
+    if (p.type != UvProjection::Type::Box) {
+        const std::string axis = o.string("axis", "y", {"x", "y", "z"});
+        p.axis = axis[0] - 'x';
+    }
+    p.center = o.vec3("center", glm::vec3(0.0f), -kMaxCoord, kMaxCoord);
+    if (p.type == UvProjection::Type::Cylindrical || p.type == UvProjection::Type::Spherical)
+        p.radius = static_cast<float>(o.number("radius", 0.0, 0.0, kMaxCoord));
+    o.finish();
+    return p;
+}
+
 void read_shape(JsonObject& o, LoadContext& ctx) {
     Shape shape;
     const std::string type = o.required_string(
@@ -264,6 +288,10 @@ void read_shape(JsonObject& o, LoadContext& ctx) {
         s.radius = radius * sx;
         s.rotation = m / sx;
         shape.geometry = s;
+        if (o.has("uv"))
+            o.error("uv",
+                    "spheres are analytic with their own uvs (u = φ/2π, v = θ/π); a uv "
+                    "projection applies to mesh shapes");
     } else {
         TriangleMesh mesh;
         if (type == "quad") {
@@ -289,6 +317,7 @@ void read_shape(JsonObject& o, LoadContext& ctx) {
         } else {
             mesh = load_gltf(o.file_path("file"));
         }
+        if (auto uv = o.object("uv")) project_uvs(mesh, read_uv_projection(*uv));
         transform_mesh(mesh, transform);
         mesh.validate(where);
         if (ctx.scene->materials[shape.material].needs_uv() && !mesh.has_uvs())
@@ -346,7 +375,7 @@ void read_light(JsonObject& o, Scene& scene) {
                     "\"radiance\"");
         if (o.has("file")) {
             l.file = o.file_path("file");
-            Image image = read_image(l.file);
+            Image image = read_environment_image(l.file, scale);
             l.map = std::make_shared<EnvironmentMap>(std::move(image), scale, rotation);
         } else {
             l.map = std::make_shared<EnvironmentMap>(
