@@ -1,6 +1,6 @@
-// The GPU host part of each glint model: the GLSL glue that includes the
-// model's shared .glsl (never a GPU-only copy) and exposes it to the forward
-// shader as
+// The GPU host part of each glint model: the GLSL glue file beside the model
+// (glints/<model>/<model>_gpu.glsl) that includes the model's shared .glsl
+// (never a GPU-only copy) and exposes it to the forward shader as
 //     vec3  glint_ndf(vec3 h, Footprint fp);          // D_P(h), RGB
 //     float glint_masking(vec3 wo, vec3 wi, vec3 h);   // the model's G2
 // and the C++ that feeds its uniforms and resources (chermain2020's
@@ -21,12 +21,14 @@ namespace gl {
 
 class UniformCache;
 
-// GLSL text of the model's glue (includes resolved by assemble_shader).
+// The embedded path of the model's glue file, and the GLSL line including it
+// (resolved by assemble_shader).
 // Throws glintlab::Error for a model the GPU renderer does not implement.
 // `noise_texture` (deliot2023 only): the uniforms of the gated-Gaussian
 // evaluations come from a 64 x 64 RG32F noise texture (000 §6.3, the
 // shared file's GLINTLAB_DELIOT2023_NOISE_TEXTURE variant) instead of two
 // hash rounds.
+std::string glint_model_glue_path(GlintModelId model, bool noise_texture = false);
 std::string glint_model_glsl(GlintModelId model, bool noise_texture = false);
 
 // Whether the GPU renderer implements `model`.
