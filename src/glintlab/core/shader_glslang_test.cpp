@@ -26,7 +26,8 @@ struct ValidatorResult {
     std::string log;
 };
 
-// `stage`: glslangValidator's stage name (vert, frag, comp).
+// `stage`: glslangValidator's stage name (vert, frag, comp). -l links the
+// stage, as a driver does: a called function without a body is an error.
 ValidatorResult run_glslang(const std::string& text, const std::string& name,
                             const std::string& stage = "frag") {
     const auto dir =
@@ -35,8 +36,8 @@ ValidatorResult run_glslang(const std::string& text, const std::string& name,
     const auto src = dir / (name + "." + stage);
     const auto log = dir / (name + ".log");
     std::ofstream(src) << text;
-    const std::string cmd = std::string(GLSLANG_VALIDATOR) + " -S " + stage + " " + src.string() +
-                            " > " + log.string() + " 2>&1";
+    const std::string cmd = std::string(GLSLANG_VALIDATOR) + " -l -S " + stage + " " +
+                            src.string() + " > " + log.string() + " 2>&1";
     const int status = std::system(cmd.c_str());
     std::ifstream in(log);
     std::string out((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
@@ -138,12 +139,18 @@ TEST(ShaderGlslang, EveryStageFileCompilesAsItsStage) {
     EXPECT_GE(checked, 14 + 2 * 7 - 1);
 }
 
-TEST(ShaderGlslang, StageFileWithoutItsDefinesIsRejected) {
-    // Guards the prefix table: the forward pass needs the light-count defines
-    // and a glue's glint_ndf, so on its own it must fail.
-    const AssembledShader shader = assemble_shader("glintlab/realtime/shaders/forward.frag.glsl");
+TEST(ShaderGlslang, ForwardPassWithoutGlueIsRejected) {
+    // Guards the prefix table and the linking: with lights, the forward pass
+    // calls eval_bsdf, which needs a glue's glint_ndf (material.glsl only
+    // declares it), so without a glue it must fail to link.
+    const AssembledShader shader = assemble_shader(
+        "#define GLINTLAB_POINT_LIGHTS 1\n#define GLINTLAB_DIRECTIONAL_LIGHTS 0\n"
+        "#define GLINTLAB_ENVIRONMENT 0\n"
+        "#include \"glintlab/realtime/shaders/forward.frag.glsl\"\n",
+        true);
     const ValidatorResult r = run_glslang(shader.text, "forward_without_glue", "frag");
     EXPECT_NE(r.status, 0) << r.log;
+    EXPECT_NE(r.log.find("glint_ndf"), std::string::npos) << r.log;
 }
 
 TEST(ShaderGlslang, CppOnlyConstructIsRejected) {

@@ -9,7 +9,7 @@
 // glue defines GLINTLAB_GLINT_OWN_LIGHTS and
 //     vec3 glint_own_light(vec3 wo, vec3 wi, vec3 li, Footprint fp);   // Eq. 21
 //     vec3 glint_own_environment(vec3 n, vec3 o_world, Footprint fp);  // Eqs. 18-20
-// which forward_shaders.cpp calls instead of the BRDF for glint materials
+// which realtime/shaders/forward.frag.glsl calls instead of the BRDF for glint materials
 // (both before the material tint). Directional occlusion (§4.4) of the
 // environment has no ray tracer here and is left out (docs/MODELS.md).
 #pragma once

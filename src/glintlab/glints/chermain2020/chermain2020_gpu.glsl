@@ -1,16 +1,14 @@
 // GPU glue of chermain2020 (papers/004) for the forward pass (realtime/forward_shaders.h):
 // defines, from the model's shared .glsl and the uniforms set by
-// realtime/glint_programs.cpp,
-//     vec3  glint_ndf(vec3 h, Footprint fp);          // D_P(h), RGB
-//     float glint_masking(vec3 wo, vec3 wi, vec3 h);   // the model's G2
+// realtime/glint_programs.cpp (glint_model_glue_path selects this file),
+//     vec3 glint_ndf(vec3 h, Footprint fp);  // D_P(h), RGB (glints/material.glsl)
 // RGB D_P of Eq. 13 with the colour table, the dictionary through
-// chermain2020.glsl's own sampler `chermain2020_dictionary`, V-cavity
-// masking (004 Eq. 14-16) as GlintBxdf uses.
+// chermain2020.glsl's own sampler `chermain2020_dictionary` (its V-cavity
+// masking, 004 Eq. 14-16, is material.glsl's GLINT_G2_VCAVITY).
 #ifndef GLINTLAB_GLINTS_CHERMAIN2020_CHERMAIN2020_GPU_GLSL
 #define GLINTLAB_GLINTS_CHERMAIN2020_CHERMAIN2020_GPU_GLSL
 
 #include "glintlab/glints/glint_uniforms.glsl"
-#include "glintlab/microfacet/masking.glsl"
 #include "glintlab/microfacet/ndf.glsl"
 #include "glintlab/glints/chermain2020/chermain2020.glsl"
 uniform ivec3 u_chermain2020_dict_shape;  // n_levels, n_dists, table_size
@@ -35,6 +33,5 @@ vec3 glint_ndf(vec3 h, Footprint fp) {
                                 u_chermain2020_max_anisotropy,
                                 u_chermain2020_density_randomization, colours);
 }
-float glint_masking(vec3 wo, vec3 wi, vec3 h) { return G2_VCavity(wo, wi, h); }
 
 #endif

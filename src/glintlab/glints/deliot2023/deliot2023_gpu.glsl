@@ -1,15 +1,13 @@
 // GPU glue of deliot2023 (papers/000) for the forward pass (realtime/forward_shaders.h):
 // defines, from the model's shared .glsl and the uniforms set by
-// realtime/glint_programs.cpp,
-//     vec3  glint_ndf(vec3 h, Footprint fp);          // D_P(h), RGB
-//     float glint_masking(vec3 wo, vec3 wi, vec3 h);   // the model's G2
+// realtime/glint_programs.cpp (glint_model_glue_path selects this file),
+//     vec3 glint_ndf(vec3 h, Footprint fp);  // D_P(h), RGB (glints/material.glsl)
 // D_P of Eq. 3-4 with the hash uniforms (the CPU default; the 64x64
 // noise-table variant is deliot2023_noise_texture_gpu.glsl).
 #ifndef GLINTLAB_GLINTS_DELIOT2023_DELIOT2023_GPU_GLSL
 #define GLINTLAB_GLINTS_DELIOT2023_DELIOT2023_GPU_GLSL
 
 #include "glintlab/glints/glint_uniforms.glsl"
-#include "glintlab/microfacet/masking.glsl"
 #include "glintlab/microfacet/ndf.glsl"
 #include "glintlab/glints/deliot2023/deliot2023.glsl"
 uniform float u_deliot2023_microfacet_roughness;
@@ -21,9 +19,6 @@ vec3 glint_ndf(vec3 h, Footprint fp) {
                                u_glint_log_density, u_glint_seed,
                                u_deliot2023_microfacet_roughness, u_deliot2023_screen_space_scale,
                                u_deliot2023_density_randomization, u_deliot2023_original_defects));
-}
-float glint_masking(vec3 wo, vec3 wi, vec3 h) {
-    return G2_SmithCorrelated(u_glint_ndf, wo, wi, u_glint_alpha.x, u_glint_alpha.y);
 }
 
 #endif

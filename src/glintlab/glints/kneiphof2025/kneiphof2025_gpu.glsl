@@ -1,8 +1,7 @@
 // GPU glue of kneiphof2025 (papers/003) for the forward pass (realtime/forward_shaders.h):
 // defines, from the model's shared .glsl and the uniforms set by
 // realtime/glint_programs.cpp and realtime/kneiphof2025_gpu.cpp,
-//     vec3  glint_ndf(vec3 h, Footprint fp);          // D_P(h), RGB
-//     float glint_masking(vec3 wo, vec3 wi, vec3 h);   // the model's G2
+//     vec3 glint_ndf(vec3 h, Footprint fp);  // D_P(h), RGB (glints/material.glsl)
 // The shared file's GLSL fetch functions read the CPU-prefiltered maps
 // bound by realtime/kneiphof2025_gpu.h. Point and delta directional
 // lights: deliot2023's D_P with the reused grid parameters (003 Table 1:
@@ -16,7 +15,6 @@
 #define GLINTLAB_GLINTS_KNEIPHOF2025_KNEIPHOF2025_GPU_GLSL
 
 #include "glintlab/glints/glint_uniforms.glsl"
-#include "glintlab/microfacet/masking.glsl"
 #include "glintlab/microfacet/ndf.glsl"
 #include "glintlab/glints/kneiphof2025/kneiphof2025.glsl"
 uniform int u_kneiphof2025_levels;         // K
@@ -38,9 +36,6 @@ vec3 glint_ndf(vec3 h, Footprint fp) {
                                u_kneiphof2025_microfacet_roughness,
                                u_kneiphof2025_screen_space_scale,
                                u_kneiphof2025_density_randomization, false));
-}
-float glint_masking(vec3 wo, vec3 wi, vec3 h) {
-    return G2_SmithCorrelated(u_glint_ndf, wo, wi, u_glint_alpha.x, u_glint_alpha.y);
 }
 #define GLINTLAB_GLINT_SHADES_ENVIRONMENT 1
 // Eq. 17 under the environment (unshadowed, 003 §7); wo local, (t, b, n) the

@@ -1,8 +1,7 @@
 // GPU glue of wang2020 (papers/001) for the forward pass (realtime/forward_shaders.h):
 // defines, from the model's shared .glsl and the uniforms set by
 // realtime/gpu_wang2020.cpp,
-//     vec3  glint_ndf(vec3 h, Footprint fp);          // D_P(h), RGB
-//     float glint_masking(vec3 wo, vec3 wi, vec3 h);   // the model's G2
+//     vec3 glint_ndf(vec3 h, Footprint fp);  // D_P(h), RGB (glints/material.glsl)
 // The model shades every light itself (GLINTLAB_GLINT_OWN_LIGHTS):
 //     vec3 glint_own_light(vec3 wo, vec3 wi, vec3 li, Footprint fp);
 //     vec3 glint_own_environment(vec3 n, vec3 o_world, Footprint fp);
@@ -11,7 +10,6 @@
 #define GLINTLAB_GLINTS_WANG2020_WANG2020_GPU_GLSL
 
 #include "glintlab/glints/glint_uniforms.glsl"
-#include "glintlab/microfacet/masking.glsl"
 #include "glintlab/microfacet/ndf.glsl"
 #include "glintlab/glints/wang2020/wang2020_tables.glsl"
 #define GLINTLAB_GLINT_OWN_LIGHTS 1
@@ -52,14 +50,9 @@ vec3 glint_own_environment(vec3 n, vec3 o_world, Footprint fp) {
     wang2020_footprint_box(fp, lo, hi);
     return wang2020_environment(wang2020_tables(), lo, hi, n, o_world);
 }
-// The smooth Beckmann limit (the CPU GlintBxdf's wang2020 case). eval_bsdf
-// needs these, but every light of the forward pass (point, sphere as point,
-// directional, environment) goes through the functions above for wang2020.
-vec3 glint_ndf(vec3 h, Footprint fp) {
-    return vec3(D_Microfacet(u_glint_ndf, h, u_glint_alpha.x, u_glint_alpha.y));
-}
-float glint_masking(vec3 wo, vec3 wi, vec3 h) {
-    return G2_SmithCorrelated(u_glint_ndf, wo, wi, u_glint_alpha.x, u_glint_alpha.y);
-}
+// The smooth Beckmann limit (the CPU GlintBxdf's wang2020 case): eval_bsdf
+// needs glint_ndf, but every light of the forward pass (point, sphere as
+// point, directional, environment) goes through the functions above.
+#include "glintlab/glints/smooth_gpu.glsl"
 
 #endif

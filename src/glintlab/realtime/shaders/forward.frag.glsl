@@ -8,7 +8,7 @@
 //     #define GLINTLAB_ENV_DIFFUSE_SAMPLES N
 //     #include "<the model's GPU glue, glints/**/*_gpu.glsl>"
 //     #include "glintlab/realtime/shaders/forward.frag.glsl"
-// The glue defines glint_ndf / glint_masking and optionally
+// The glue defines glint_ndf (material.glsl's D_P) and optionally
 // GLINTLAB_GLINT_OWN_LIGHTS, GLINTLAB_GLINT_SHADES_ENVIRONMENT,
 // GLINTLAB_GLINT_SHADES_AREA_LIGHTS with their functions.
 #include "glintlab/core/constants.glsl"
@@ -18,6 +18,7 @@
 #include "glintlab/microfacet/fresnel.glsl"
 #include "glintlab/microfacet/vndf.glsl"
 #include "glintlab/glints/glint_uniforms.glsl"
+#include "glintlab/glints/material.glsl"
 
 in vec3 v_position;
 in vec3 v_normal;
@@ -61,6 +62,7 @@ uniform int u_fresnel_mode;
 uniform vec3 u_fresnel_f0;
 uniform vec3 u_fresnel_eta;
 uniform vec3 u_fresnel_k;
+uniform int u_glint_g2;  // GLINT_G2_*: the model's masking (glint_g2_mode, glint_bxdf.h)
 
 #if GLINTLAB_POINT_LIGHTS > 0
 uniform vec3 u_point_position[GLINTLAB_POINT_LIGHTS];
@@ -182,45 +184,28 @@ void orthonormal_basis(vec3 n, out vec3 t, out vec3 b) {
     b = vec3(c, s + n.y * n.y * a, -n.y);
 }
 
-vec3 glint_fresnel(float cos_oh) {
-    if (u_fresnel_mode == 1) return F_Schlick(u_fresnel_f0, cos_oh);
-    if (u_fresnel_mode == 2) return F_Conductor(cos_oh, u_fresnel_eta, u_fresnel_k);
-    if (u_fresnel_mode == 3) return vec3(F_Dielectric(cos_oh, u_fresnel_eta.x));
-    return vec3(1.0f);
-}
-
-// f(wo, wi) without the cosine, local frame, both directions above the
-// surface (microfacet/bxdfs.cpp, glints/glint_bxdf.cpp).
-vec3 eval_bsdf(vec3 wo, vec3 wi, Footprint fp) {
-    if (wo.z <= 0.0f || wi.z <= 0.0f) return vec3(0.0f);
-    vec3 h = normalize(wo + wi);
-    if (u_material_type == 0) return u_albedo * INV_PI;
-    if (u_material_type == 4) {
-        // f = color F(wo.h) G2 D_P(h) / (4 cos_o cos_i), D_P over the footprint.
-        vec3 d = glint_ndf(h, fp);
-        float g = glint_masking(wo, wi, h);
-        vec3 f = u_glint_color * glint_fresnel(dot(wo, h)) * d * (g / (4.0f * wo.z * wi.z));
-        // Diffuse base (glint_bxdf.h): the plastic layering, coat eta = u_fresnel_eta.x
-        // (the loader requires a dielectric Fresnel whenever the base is set).
-        if (max(u_glint_base_albedo.x, max(u_glint_base_albedo.y, u_glint_base_albedo.z)) > 0.0f) {
-            float bo = F_Dielectric(wo.z, u_fresnel_eta.x);
-            float bi = F_Dielectric(wi.z, u_fresnel_eta.x);
-            f += u_glint_base_albedo * INV_PI * (1.0f - bo) * (1.0f - bi);
-        }
-        return f;
-    }
-    bool smooth_lobe = max(u_alpha.x, u_alpha.y) < 1e-3f;  // kSmoothAlpha: a delta lobe
-    float dg = smooth_lobe ? 0.0f
-                           : D_Microfacet(u_ndf, h, u_alpha.x, u_alpha.y) *
-                                 G2_SmithCorrelated(u_ndf, wo, wi, u_alpha.x, u_alpha.y) /
-                                 (4.0f * wo.z * wi.z);
-    float cos_oh = abs(dot(wo, h));
-    if (u_material_type == 1) return F_Conductor(cos_oh, u_eta, u_k) * dg;
-    if (u_material_type == 2) return vec3(F_Dielectric(cos_oh, u_eta.x) * dg);  // reflection only
-    // Plastic: diffuse base under a dielectric coat.
-    float fo = F_Dielectric(wo.z, u_eta.x);
-    float fi = F_Dielectric(wi.z, u_eta.x);
-    return u_albedo * INV_PI * (1.0f - fo) * (1.0f - fi) + vec3(F_Dielectric(cos_oh, u_eta.x) * dg);
+// The material of the shape being drawn, from the uniforms (the CPU's
+// MaterialDesc / GlintDesc, scene.h).
+SurfaceMaterial surface_material() {
+    SurfaceMaterial s;
+    s.type = u_material_type;
+    s.albedo = u_albedo;
+    s.ndf = u_ndf;
+    s.alpha_x = u_alpha.x;
+    s.alpha_y = u_alpha.y;
+    s.eta = u_eta;
+    s.k = u_k;
+    s.glint.color = u_glint_color;
+    s.glint.base_albedo = u_glint_base_albedo;
+    s.glint.fresnel_mode = u_fresnel_mode;
+    s.glint.fresnel_f0 = u_fresnel_f0;
+    s.glint.fresnel_eta = u_fresnel_eta;
+    s.glint.fresnel_k = u_fresnel_k;
+    s.glint.ndf = u_glint_ndf;
+    s.glint.alpha_x = u_glint_alpha.x;
+    s.glint.alpha_y = u_glint_alpha.y;
+    s.glint.g2 = u_glint_g2;
+    return s;
 }
 
 #if GLINTLAB_ENVIRONMENT
@@ -230,12 +215,12 @@ vec3 eval_bsdf(vec3 wo, vec3 wi, Footprint fp) {
 // samples; every sample reads the environment prefiltered over its solid
 // angle, so the estimate is smooth instead of noisy. Mirrors (alpha below
 // kSmoothAlpha) reflect one filtered direction.
-vec3 environment_lighting(vec3 wo, vec3 t, vec3 b, vec3 n, Footprint fp) {
+vec3 environment_lighting(SurfaceMaterial mat, vec3 wo, vec3 t, vec3 b, vec3 n, Footprint fp) {
     bool glint = u_material_type == 4;
     int ndf = glint ? u_glint_ndf : u_ndf;
     vec2 alpha = glint ? u_glint_alpha : u_alpha;
     bool has_diffuse = u_material_type == 0 || u_material_type == 3 ||
-                       (glint && max(u_glint_base_albedo.x, max(u_glint_base_albedo.y, u_glint_base_albedo.z)) > 0.0f);
+                       (glint && glint_has_base(mat.glint));
     bool has_lobe = u_material_type != 0;
     bool mirror = max(alpha.x, alpha.y) < 1e-3f;
     vec3 sum = vec3(0.0f);
@@ -243,7 +228,7 @@ vec3 environment_lighting(vec3 wo, vec3 t, vec3 b, vec3 n, Footprint fp) {
         vec3 wi = vec3(-wo.x, -wo.y, wo.z);
         vec3 f = u_material_type == 1 ? F_Conductor(wo.z, u_eta, u_k)
                                       : vec3(F_Dielectric(wo.z, glint ? u_fresnel_eta.x : u_eta.x));
-        if (glint) f = u_glint_color * glint_fresnel(wo.z);
+        if (glint) f = u_glint_color * glint_fresnel(mat.glint, wo.z);
         sum += f * environment_radiance(wi.x * t + wi.y * b + wi.z * n, 0.0f);
         if (!has_diffuse) return sum;
     }
@@ -266,7 +251,7 @@ vec3 environment_lighting(vec3 wo, vec3 t, vec3 b, vec3 n, Footprint fp) {
         float p_cos = nd > 0 ? wi.z * INV_PI : 0.0f;
         float p_mix = float(ns) * p_lobe + float(nd) * p_cos;  // sum_k N_k p_k
         if (!(p_mix > 0.0f)) continue;
-        vec3 f = eval_bsdf(wo, wi, fp);
+        vec3 f = eval_bsdf(mat, wo, wi, fp);
         vec3 world = wi.x * t + wi.y * b + wi.z * n;
         sum += f * wi.z / p_mix * environment_radiance(world, 1.0f / p_mix);
     }
@@ -305,6 +290,7 @@ void main() {
     fp.duvdy = -dFdyFine(v_uv);
 
     if (u_material_type >= 0) {
+        SurfaceMaterial mat = surface_material();
         // Shading frame (render/surface_bsdf.cpp): tangent along dp/du,
         // two-sided (flipped towards wo).
         vec3 t = dpdu - n * dot(n, dpdu);
@@ -353,7 +339,7 @@ void main() {
                 continue;
             }
 #endif
-            radiance += eval_bsdf(wo, wi, fp) * u_point_intensity[i] * (wi.z * visible / r2);
+            radiance += eval_bsdf(mat, wo, wi, fp) * u_point_intensity[i] * (wi.z * visible / r2);
         }
 #endif
 #if GLINTLAB_ENVIRONMENT && defined(GLINTLAB_GLINT_OWN_LIGHTS)
@@ -365,16 +351,16 @@ void main() {
             else
                 radiance += env;
         } else
-            radiance += environment_lighting(wo, t, b, n, fp);
+            radiance += environment_lighting(mat, wo, t, b, n, fp);
 #elif GLINTLAB_ENVIRONMENT && defined(GLINTLAB_GLINT_SHADES_ENVIRONMENT)
         // The model's own image-based lighting (kneiphof2025: Eq. 17) instead
         // of the smooth filtered-importance-sampling estimate.
         if (u_material_type == 4)
             radiance += glint_environment(wo, t, b, n, u_glint_color, fp);
         else
-            radiance += environment_lighting(wo, t, b, n, fp);
+            radiance += environment_lighting(mat, wo, t, b, n, fp);
 #elif GLINTLAB_ENVIRONMENT
-        radiance += environment_lighting(wo, t, b, n, fp);
+        radiance += environment_lighting(mat, wo, t, b, n, fp);
 #endif
 #if GLINTLAB_DIRECTIONAL_LIGHTS > 0
         for (int i = 0; i < GLINTLAB_DIRECTIONAL_LIGHTS; ++i) {
@@ -400,7 +386,7 @@ void main() {
                 continue;
             }
 #endif
-            radiance += eval_bsdf(wo, wi, fp) * u_directional_irradiance[i] * (wi.z * visible);
+            radiance += eval_bsdf(mat, wo, wi, fp) * u_directional_irradiance[i] * (wi.z * visible);
         }
 #endif
     }
