@@ -10,7 +10,7 @@
 //  - no multi-component swizzles (`v.xy`): write vec2(v.x, v.y);
 //  - no reserved words of either language as names (sample, filter, input,
 //    output, and, or, not, this, new, delete, template, ...);
-//  - include guards in every file (#ifndef GLINTLAB_..._GLSL);
+//  - include guards in every library file (stage files *.frag.glsl... are roots);
 //  - textures and buffers reached only through fetch functions that each
 //    back end defines.
 //

@@ -9,21 +9,46 @@
 #include "glintlab/microfacet/microfacet.h"
 #include "glintlab/scene/scene.h"
 
+// The glint material's shading, shared with the GPU forward pass.
+GLINTLAB_SHADER_FUNCTIONS_BEGIN
+#include "glintlab/glints/material.glsl"
+GLINTLAB_SHADER_FUNCTIONS_END
+
 namespace glintlab {
 namespace {
+
+static_assert(static_cast<int>(FresnelDesc::Mode::None) == shader::GLINT_FRESNEL_NONE &&
+              static_cast<int>(FresnelDesc::Mode::Schlick) == shader::GLINT_FRESNEL_SCHLICK &&
+              static_cast<int>(FresnelDesc::Mode::Conductor) == shader::GLINT_FRESNEL_CONDUCTOR &&
+              static_cast<int>(FresnelDesc::Mode::Dielectric) == shader::GLINT_FRESNEL_DIELECTRIC);
 
 int ndf_id(NdfType t) {
     return t == NdfType::GGX ? shader::NDF_GGX : shader::NDF_BECKMANN;
 }
 
-// G2 of the model: chermain2020's P-NDF has no Smith masking, it uses the
-// V-cavity one (004 Eq. 14-16); the others the height-correlated Smith G2.
-float masking(const GlintDesc& desc, glm::vec3 wo, glm::vec3 wi, glm::vec3 h) {
-    if (desc.model_id == GlintModelId::Chermain2020) return shader::G2_VCavity(wo, wi, h);
-    return shader::G2_SmithCorrelated(ndf_id(desc.ndf), wo, wi, desc.alpha_x, desc.alpha_y);
+// The GlintDesc as material.glsl reads it (the GPU fills the same struct
+// from uniforms, realtime/gpu_renderer.cpp).
+shader::GlintMaterial material(const GlintDesc& desc) {
+    shader::GlintMaterial m;
+    m.color = desc.color;
+    m.base_albedo = desc.base_albedo;
+    m.fresnel_mode = static_cast<int>(desc.fresnel.mode);
+    m.fresnel_f0 = desc.fresnel.f0;
+    m.fresnel_eta = desc.fresnel.eta;
+    m.fresnel_k = desc.fresnel.k;
+    m.ndf = ndf_id(desc.ndf);
+    m.alpha_x = desc.alpha_x;
+    m.alpha_y = desc.alpha_y;
+    m.g2 = glint_g2_mode(desc.model_id);
+    return m;
 }
 
 }  // namespace
+
+int glint_g2_mode(GlintModelId model) {
+    return model == GlintModelId::Chermain2020 ? shader::GLINT_G2_VCAVITY
+                                               : shader::GLINT_G2_SMITH_CORRELATED;
+}
 
 float GlintBxdf::footprint_ndf(glm::vec3 wo, glm::vec3 wi, glm::vec3 h) const {
     // A closed set of models (ARCHITECTURE.md §5): each case calls the
@@ -63,46 +88,27 @@ glm::vec3 GlintBxdf::footprint_ndf_rgb(glm::vec3 wo, glm::vec3 wi, glm::vec3 h) 
 }
 
 glm::vec3 GlintBxdf::fresnel(float cos_oh) const {
-    const FresnelDesc& f = desc->fresnel;
-    switch (f.mode) {
-        case FresnelDesc::Mode::None:
-            return glm::vec3(1.0f);
-        case FresnelDesc::Mode::Schlick:
-            return shader::F_Schlick(f.f0, cos_oh);
-        case FresnelDesc::Mode::Conductor:
-            return shader::F_Conductor(cos_oh, f.eta, f.k);
-        case FresnelDesc::Mode::Dielectric:
-            return glm::vec3(shader::F_Dielectric(cos_oh, f.eta.x));
-    }
-    return glm::vec3(1.0f);
+    return shader::glint_fresnel(material(*desc), cos_oh);
 }
 
 glm::vec3 GlintBxdf::base_f(glm::vec3 wo, glm::vec3 wi) const {
-    if (!desc->has_base() || wo.z <= 0.0f || wi.z <= 0.0f) return glm::vec3(0.0f);
-    const float eta = desc->fresnel.eta.x;
-    const float fo = shader::F_Dielectric(wo.z, eta), fi = shader::F_Dielectric(wi.z, eta);
-    return desc->base_albedo * (shader::INV_PI * (1.0f - fo) * (1.0f - fi));
+    return shader::glint_base_f(material(*desc), wo, wi);
 }
 
 float GlintBxdf::glint_lobe_probability(glm::vec3 wo) const {
-    if (!desc->has_base()) return 1.0f;
-    const float fo = shader::F_Dielectric(std::abs(wo.z), desc->fresnel.eta.x);
-    const glm::vec3& a = desc->base_albedo;
-    const float wd = (1.0f - fo) * std::max(a.x, std::max(a.y, a.z));
-    return fo + wd > 0.0f ? fo / (fo + wd) : 1.0f;
+    return shader::glint_lobe_probability(material(*desc), wo);
 }
 
 glm::vec3 GlintBxdf::f(glm::vec3 wo, glm::vec3 wi) const {
     if (wo.z <= 0.0f || wi.z <= 0.0f) return glm::vec3(0.0f);
+    const shader::GlintMaterial m = material(*desc);
     glm::vec3 h = wo + wi;
-    if (glm::dot(h, h) == 0.0f) return base_f(wo, wi);
+    if (glm::dot(h, h) == 0.0f) return shader::glint_base_f(m, wo, wi);
     h = glm::normalize(h);
-    const glm::vec3 d =
-        has_footprint
-            ? footprint_ndf_rgb(wo, wi, h)
-            : glm::vec3(shader::D_Microfacet(ndf_id(desc->ndf), h, desc->alpha_x, desc->alpha_y));
-    const float g = masking(*desc, wo, wi, h);
-    return desc->color * fresnel(glm::dot(wo, h)) * d * (g / (4.0f * wo.z * wi.z)) + base_f(wo, wi);
+    const glm::vec3 d = has_footprint
+                            ? footprint_ndf_rgb(wo, wi, h)
+                            : glm::vec3(shader::D_Microfacet(m.ndf, h, m.alpha_x, m.alpha_y));
+    return shader::glint_brdf(m, wo, wi, h, d);
 }
 
 float GlintBxdf::pdf(glm::vec3 wo, glm::vec3 wi) const {

@@ -1,4 +1,6 @@
-// The BRDF of a glint material (ARCHITECTURE.md §4): a microfacet BRDF whose
+// The BRDF of a glint material (ARCHITECTURE.md §4; its shading, all but the
+// model dispatch of D_P, is glints/material.glsl, shared with the GPU forward
+// pass): a microfacet BRDF whose
 // NDF is replaced by the model's footprint NDF D_P(h) (000 Eq. 1–3; 002 Eq. 2;
 // 004 Eq. 1):
 //     f(wo, wi) = color · F(wo·h) · G2(wo, wi) · D_P(h) / (4 |wo·n| |wi·n|).
@@ -18,11 +20,16 @@
 #include <glm/glm.hpp>
 
 #include "glintlab/core/footprint.h"
+#include "glintlab/glints/registry.h"
 #include "glintlab/microfacet/bxdfs.h"
 
 namespace glintlab {
 
 struct GlintDesc;
+
+// The masking-shadowing G2 of `model` (material.glsl GLINT_G2_*): the CPU's
+// GlintBxdf and the GPU's u_glint_g2 both take it from here.
+int glint_g2_mode(GlintModelId model);
 
 struct GlintBxdf {
     const GlintDesc* desc = nullptr;

@@ -4,6 +4,11 @@
 
 #include "glintlab/microfacet/microfacet.h"
 
+// The BRDF values, shared with the GPU forward pass (glints/material.glsl).
+GLINTLAB_SHADER_FUNCTIONS_BEGIN
+#include "glintlab/microfacet/bxdfs.glsl"
+GLINTLAB_SHADER_FUNCTIONS_END
+
 namespace glintlab {
 namespace {
 
@@ -95,7 +100,7 @@ float MicrofacetDistribution::pdf(glm::vec3 wo, glm::vec3 wm) const {
 // --- Diffuse ------------------------------------------------------------------
 glm::vec3 DiffuseBxdf::f(glm::vec3 wo, glm::vec3 wi) const {
     if (!same_hemisphere(wo, wi)) return glm::vec3(0.0f);
-    return albedo * sh::INV_PI;
+    return sh::diffuse_f(albedo);
 }
 float DiffuseBxdf::pdf(glm::vec3 wo, glm::vec3 wi) const {
     if (!same_hemisphere(wo, wi)) return 0.0f;
@@ -112,14 +117,7 @@ std::optional<BsdfSample> DiffuseBxdf::sample(glm::vec3 wo, float /*uc*/, glm::v
 // --- Conductor ----------------------------------------------------------------
 glm::vec3 ConductorBxdf::f(glm::vec3 wo, glm::vec3 wi) const {
     if (!same_hemisphere(wo, wi) || dist.effectively_smooth()) return glm::vec3(0.0f);
-    const float cos_o = abs_cos(wo), cos_i = abs_cos(wi);
-    if (cos_o == 0.0f || cos_i == 0.0f) return glm::vec3(0.0f);
-    glm::vec3 wm = wi + wo;
-    if (glm::dot(wm, wm) == 0.0f) return glm::vec3(0.0f);
-    wm = face_up(glm::normalize(wm));
-    // Cook & Torrance 1982 / Walter et al. 2007 Eq. 20.
-    const glm::vec3 F = sh::F_Conductor(std::abs(glm::dot(wo, wm)), eta, k);
-    return dist.D(wm) * dist.G2(wo, wi) * F / (4.0f * cos_o * cos_i);
+    return sh::conductor_f(ndf_id(dist.ndf), dist.alpha_x, dist.alpha_y, eta, k, wo, wi);
 }
 float ConductorBxdf::pdf(glm::vec3 wo, glm::vec3 wi) const {
     if (!same_hemisphere(wo, wi) || dist.effectively_smooth()) return 0.0f;
@@ -171,10 +169,12 @@ glm::vec3 DielectricBxdf::f(glm::vec3 wo, glm::vec3 wi) const {
     if (is_specular()) return glm::vec3(0.0f);
     const auto h = dielectric_half_vector(wo, wi, eta);
     if (!h) return glm::vec3(0.0f);
+    if (h->reflect)
+        return glm::vec3(sh::dielectric_reflection_f(ndf_id(dist.ndf), dist.alpha_x, dist.alpha_y,
+                                                     eta, wo, wi, h->wm));
     const float cos_o = wo.z, cos_i = wi.z;
     const float F = sh::F_Dielectric(glm::dot(wo, h->wm), eta);
     const float DG = dist.D(h->wm) * dist.G2(wo, wi);
-    if (h->reflect) return glm::vec3(DG * F / std::abs(4.0f * cos_i * cos_o));
     // Walter et al. 2007 Eq. 21 with the generalised half vector; the 1/eta'^2
     // converts importance to radiance (Veach 1997 §5.2, pbrt-v4 radiance mode).
     const float idm = glm::dot(wi, h->wm), odm = glm::dot(wo, h->wm);
@@ -243,16 +243,7 @@ float PlasticBxdf::specular_probability(glm::vec3 wo) const {
 
 glm::vec3 PlasticBxdf::f(glm::vec3 wo, glm::vec3 wi) const {
     if (!same_hemisphere(wo, wi)) return glm::vec3(0.0f);
-    const float cos_o = abs_cos(wo), cos_i = abs_cos(wi);
-    if (cos_o == 0.0f || cos_i == 0.0f) return glm::vec3(0.0f);
-    const float Fo = sh::F_Dielectric(cos_o, eta), Fi = sh::F_Dielectric(cos_i, eta);
-    glm::vec3 result = diffuse * sh::INV_PI * (1.0f - Fo) * (1.0f - Fi);
-    if (!dist.effectively_smooth()) {
-        const glm::vec3 wm = face_up(glm::normalize(wo + wi));
-        const float F = sh::F_Dielectric(std::abs(glm::dot(wo, wm)), eta);
-        result += glm::vec3(dist.D(wm) * dist.G2(wo, wi) * F / (4.0f * cos_o * cos_i));
-    }
-    return result;
+    return sh::plastic_f(diffuse, eta, ndf_id(dist.ndf), dist.alpha_x, dist.alpha_y, wo, wi);
 }
 
 float PlasticBxdf::pdf(glm::vec3 wo, glm::vec3 wi) const {

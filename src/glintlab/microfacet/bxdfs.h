@@ -16,7 +16,8 @@ namespace glintlab {
 enum class NdfType { Beckmann, GGX };
 
 // Roughness below which a lobe is treated as a perfect mirror / refractor
-// (pbrt-v4 TrowbridgeReitzDistribution::EffectivelySmooth uses the same 1e-3).
+// (pbrt-v4 TrowbridgeReitzDistribution::EffectivelySmooth uses the same 1e-3;
+// the shared BRDF values, bxdfs.glsl microfacet_effectively_smooth, too).
 inline constexpr float kSmoothAlpha = 1e-3f;
 
 // Anisotropic microfacet distribution with Smith (height-correlated) masking;

@@ -4,6 +4,7 @@
 #include <variant>
 
 #include <epoxy/gl.h>
+#include <fmt/format.h>
 
 #include "glintlab/core/error.h"
 #include "glintlab/glints/chermain2020/dictionary.h"
@@ -15,151 +16,9 @@
 namespace glintlab::gl {
 namespace {
 
-// The forward shader declares the shared glint uniforms used below:
-// u_glint_ndf (NDF_BECKMANN / NDF_GGX), u_glint_alpha (alpha_x, alpha_y),
-// u_glint_log_density, u_glint_seed.
-constexpr const char* kSmoothGlue = R"(
-vec3 glint_ndf(vec3 h, Footprint fp) {
-    return vec3(D_Microfacet(u_glint_ndf, h, u_glint_alpha.x, u_glint_alpha.y));
-}
-float glint_masking(vec3 wo, vec3 wi, vec3 h) {
-    return G2_SmithCorrelated(u_glint_ndf, wo, wi, u_glint_alpha.x, u_glint_alpha.y);
-}
-)";
-
-// deliot2023 (papers/000): D_P of Eq. 3-4 with the hash uniforms (the CPU
-// default; the 64x64 noise-table variant is a CPU speed experiment).
-constexpr const char* kDeliot2023Glue = R"(
-#include "glintlab/glints/deliot2023/deliot2023.glsl"
-uniform float u_deliot2023_microfacet_roughness;
-uniform float u_deliot2023_screen_space_scale;
-uniform float u_deliot2023_density_randomization;
-uniform bool u_deliot2023_original_defects;
-vec3 glint_ndf(vec3 h, Footprint fp) {
-    return vec3(deliot2023_ndf(h, fp, u_glint_ndf, u_glint_alpha.x, u_glint_alpha.y,
-                               u_glint_log_density, u_glint_seed,
-                               u_deliot2023_microfacet_roughness, u_deliot2023_screen_space_scale,
-                               u_deliot2023_density_randomization, u_deliot2023_original_defects));
-}
-float glint_masking(vec3 wo, vec3 wi, vec3 h) {
-    return G2_SmithCorrelated(u_glint_ndf, wo, wi, u_glint_alpha.x, u_glint_alpha.y);
-}
-)";
-
-// zirr2016 (000's baseline [ZK16]).
-constexpr const char* kZirr2016Glue = R"(
-#include "glintlab/glints/zirr2016/zirr2016.glsl"
-uniform float u_zirr2016_microfacet_roughness;
-uniform float u_zirr2016_max_anisotropy;
-uniform float u_zirr2016_screen_space_scale;
-vec3 glint_ndf(vec3 h, Footprint fp) {
-    return vec3(zirr2016_ndf(h, fp, u_glint_ndf, u_glint_alpha.x, u_glint_alpha.y,
-                             u_glint_log_density, u_glint_seed, u_zirr2016_microfacet_roughness,
-                             u_zirr2016_max_anisotropy, u_zirr2016_screen_space_scale));
-}
-float glint_masking(vec3 wo, vec3 wi, vec3 h) {
-    return G2_SmithCorrelated(u_glint_ndf, wo, wi, u_glint_alpha.x, u_glint_alpha.y);
-}
-)";
-
-// chermain2020 (papers/004): RGB D_P of Eq. 13 with the colour table, the
-// dictionary through chermain2020.glsl's own sampler `chermain2020_dictionary`,
-// V-cavity masking (004 Eq. 14-16) as GlintBxdf uses.
-constexpr const char* kChermain2020Glue = R"(
-#include "glintlab/glints/chermain2020/chermain2020.glsl"
-uniform ivec3 u_chermain2020_dict_shape;  // n_levels, n_dists, table_size
-uniform vec2 u_chermain2020_dict_range;   // alpha_dict, slope_max
-uniform float u_chermain2020_relative_area;
-uniform float u_chermain2020_max_anisotropy;
-uniform float u_chermain2020_density_randomization;
-uniform int u_chermain2020_colour_count;
-uniform vec3 u_chermain2020_colours[CHERMAIN2020_MAX_COLOURS];
-vec3 glint_ndf(vec3 h, Footprint fp) {
-    Chermain2020Dict d;
-    d.n_levels = u_chermain2020_dict_shape.x;
-    d.n_dists = u_chermain2020_dict_shape.y;
-    d.table_size = u_chermain2020_dict_shape.z;
-    d.alpha_dict = u_chermain2020_dict_range.x;
-    d.slope_max = u_chermain2020_dict_range.y;
-    Chermain2020Colours colours;
-    colours.count = u_chermain2020_colour_count;
-    for (int i = 0; i < CHERMAIN2020_MAX_COLOURS; ++i) colours.table[i] = u_chermain2020_colours[i];
-    return chermain2020_ndf_rgb(h, fp, d, u_glint_alpha.x, u_glint_alpha.y, u_glint_log_density,
-                                u_glint_seed, u_chermain2020_relative_area,
-                                u_chermain2020_max_anisotropy,
-                                u_chermain2020_density_randomization, colours);
-}
-float glint_masking(vec3 wo, vec3 wi, vec3 h) { return G2_VCavity(wo, wi, h); }
-)";
-
-// kneiphof2025 (papers/003): the shared file's GLSL fetch functions read the
-// CPU-prefiltered maps bound by realtime/kneiphof2025_gpu.h. Point and delta
-// directional lights: deliot2023's D_P with the reused grid parameters (003
-// Table 1: "identical to [DB23]"; kneiphof2025.cpp kneiphof2025_footprint_ndf).
-// The environment and the area lights (sphere lights, sun cones) are shaded
-// by the model itself, as kneiphof2025.cpp light_radiance does at the CPU's
-// first hit: the forward shader calls glint_environment / glint_area_light
-// when the glue defines GLINTLAB_GLINT_SHADES_ENVIRONMENT /
-// GLINTLAB_GLINT_SHADES_AREA_LIGHTS.
-constexpr const char* kKneiphof2025Glue = R"(
-#include "glintlab/glints/kneiphof2025/kneiphof2025.glsl"
-uniform int u_kneiphof2025_levels;         // K
-uniform vec4 u_kneiphof2025_levels_a;      // L^(1..4) (Eq. 18)
-uniform vec4 u_kneiphof2025_levels_b;      // L^(5..8)
-uniform bool u_kneiphof2025_wang2020_style;
-uniform float u_kneiphof2025_gamma_solid_angle;
-uniform bool u_kneiphof2025_conditional;
-uniform int u_kneiphof2025_smooth;  // KNEIPHOF2025_SMOOTH_*
-uniform float u_kneiphof2025_microfacet_roughness;
-uniform float u_kneiphof2025_screen_space_scale;
-uniform float u_kneiphof2025_density_randomization;
-uniform vec3 u_kneiphof2025_f0;             // kneiphof2025_f0(desc)
-uniform float u_kneiphof2025_radiance_scale; // current environment scale / prefiltered one
-float kneiphof2025_glue_alpha() { return clamp(u_glint_alpha.x, 1e-4f, 1.0f); }  // alpha_of
-vec3 glint_ndf(vec3 h, Footprint fp) {
-    return vec3(deliot2023_ndf(h, fp, NDF_GGX, u_glint_alpha.x, u_glint_alpha.y,
-                               u_glint_log_density, u_glint_seed,
-                               u_kneiphof2025_microfacet_roughness,
-                               u_kneiphof2025_screen_space_scale,
-                               u_kneiphof2025_density_randomization, false));
-}
-float glint_masking(vec3 wo, vec3 wi, vec3 h) {
-    return G2_SmithCorrelated(u_glint_ndf, wo, wi, u_glint_alpha.x, u_glint_alpha.y);
-}
-#define GLINTLAB_GLINT_SHADES_ENVIRONMENT 1
-// Eq. 17 under the environment (unshadowed, 003 §7); wo local, (t, b, n) the
-// world shading frame; wr the mirror direction in world space.
-vec3 glint_environment(vec3 wo, vec3 t, vec3 b, vec3 n, vec3 color, Footprint fp) {
-    if (wo.z <= 0.0f) return vec3(0.0f);
-    vec3 wr = (-wo.x) * t + (-wo.y) * b + wo.z * n;
-    return u_kneiphof2025_radiance_scale *
-           kneiphof2025_environment(n, wr, wo.z, kneiphof2025_glue_alpha(), u_kneiphof2025_f0,
-                                    color, fp, u_glint_log_density, u_glint_seed,
-                                    u_kneiphof2025_screen_space_scale,
-                                    u_kneiphof2025_density_randomization, u_kneiphof2025_levels,
-                                    u_kneiphof2025_levels_a, u_kneiphof2025_levels_b,
-                                    u_kneiphof2025_wang2020_style ? KNEIPHOF2025_VARIANT_WANG2020
-                                                                  : KNEIPHOF2025_VARIANT_OURS,
-                                    u_kneiphof2025_gamma_solid_angle, u_kneiphof2025_conditional,
-                                    u_kneiphof2025_smooth);
-}
-#define GLINTLAB_GLINT_SHADES_AREA_LIGHTS 1
-// One area light (K = 1): a cone around the world direction `axis`; the
-// caller multiplies by the shadow test towards the axis.
-vec3 glint_area_light(vec3 axis, float cos_max, vec3 radiance, vec3 t, vec3 b, vec3 n, vec3 wo,
-                      vec3 color, Footprint fp) {
-    if (wo.z <= 0.0f) return vec3(0.0f);
-    return kneiphof2025_area_light(axis, cos_max, radiance, t, b, n, wo, kneiphof2025_glue_alpha(),
-                                   u_kneiphof2025_f0, color, fp, u_glint_log_density,
-                                   u_glint_seed, u_kneiphof2025_microfacet_roughness,
-                                   u_kneiphof2025_screen_space_scale,
-                                   u_kneiphof2025_density_randomization);
-}
-)";
-
 constexpr int kChermain2020DictionaryUnit = kFirstModelTextureUnit;
 constexpr int kDeliot2023NoiseUnit = kFirstModelTextureUnit + 1;  // binding = 5 in the glue
-static_assert(kDeliot2023NoiseUnit == 5);
+static_assert(kDeliot2023NoiseUnit == 5);  // deliot2023_noise_texture_gpu.glsl
 
 }  // namespace
 
@@ -177,32 +36,21 @@ bool gpu_supports_model(GlintModelId model) {
     }
 }
 
-// deliot2023's noise-texture variant: the fetch function the shared file
-// calls under GLINTLAB_DELIOT2023_NOISE_TEXTURE, ahead of its include.
-constexpr const char* kDeliot2023NoisePrefix = R"(
-#define GLINTLAB_DELIOT2023_NOISE_TEXTURE 1
-layout(binding = 5) uniform sampler2D u_deliot2023_noise;  // RG32F, 64 x 64
-vec2 deliot2023_noise_fetch(uint cell_hash) {
-    uint i = cell_hash % 4096u;
-    return texelFetch(u_deliot2023_noise, ivec2(int(i % 64u), int(i / 64u)), 0).rg;
-}
-)";
-
-std::string glint_model_glsl(GlintModelId model, bool noise_texture) {
+std::string glint_model_glue_path(GlintModelId model, bool noise_texture) {
     switch (model) {
         case GlintModelId::Smooth:
-            return kSmoothGlue;
+            return "glintlab/glints/smooth_gpu.glsl";
         case GlintModelId::Deliot2023:
-            return noise_texture ? std::string(kDeliot2023NoisePrefix) + kDeliot2023Glue
-                                 : std::string(kDeliot2023Glue);
+            return noise_texture ? "glintlab/glints/deliot2023/deliot2023_noise_texture_gpu.glsl"
+                                 : "glintlab/glints/deliot2023/deliot2023_gpu.glsl";
         case GlintModelId::Zirr2016:
-            return kZirr2016Glue;
+            return "glintlab/glints/zirr2016/zirr2016_gpu.glsl";
         case GlintModelId::Chermain2020:
-            return kChermain2020Glue;
+            return "glintlab/glints/chermain2020/chermain2020_gpu.glsl";
         case GlintModelId::Wang2020:
-            return wang2020_glsl();
+            return "glintlab/glints/wang2020/wang2020_gpu.glsl";
         case GlintModelId::Kneiphof2025:
-            return kKneiphof2025Glue;
+            return "glintlab/glints/kneiphof2025/kneiphof2025_gpu.glsl";
         default:
             break;
     }
@@ -211,6 +59,10 @@ std::string glint_model_glsl(GlintModelId model, bool noise_texture) {
         "OpenGL renderer: glint model \"{}\" has no GPU implementation (GPU models: smooth, "
         "deliot2023, zirr2016, chermain2020, kneiphof2025, wang2020)",
         info != nullptr ? info->name : "?");
+}
+
+std::string glint_model_glsl(GlintModelId model, bool noise_texture) {
+    return fmt::format("#include \"{}\"\n", glint_model_glue_path(model, noise_texture));
 }
 
 GlintResources::GlintResources() = default;

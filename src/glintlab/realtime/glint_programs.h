@@ -1,8 +1,8 @@
-// The GPU host part of each glint model: the GLSL glue that includes the
-// model's shared .glsl (never a GPU-only copy) and exposes it to the forward
-// shader as
-//     vec3  glint_ndf(vec3 h, Footprint fp);          // D_P(h), RGB
-//     float glint_masking(vec3 wo, vec3 wi, vec3 h);   // the model's G2
+// The GPU host part of each glint model: the GLSL glue file beside the model
+// (glints/<model>/<model>_gpu.glsl) that includes the model's shared .glsl
+// (never a GPU-only copy) and exposes it to the forward shader as
+//     vec3 glint_ndf(vec3 h, Footprint fp);  // D_P(h), RGB
+// (the rest of the BRDF, Fresnel, G2, the base, is glints/material.glsl)
 // and the C++ that feeds its uniforms and resources (chermain2020's
 // dictionary texture) from a GlintDesc. These mirror, term for term, what
 // glints/glint_bxdf.cpp evaluates on the CPU.
@@ -21,18 +21,20 @@ namespace gl {
 
 class UniformCache;
 
-// GLSL text of the model's glue (includes resolved by assemble_shader).
+// The embedded path of the model's glue file, and the GLSL line including it
+// (resolved by assemble_shader).
 // Throws glintlab::Error for a model the GPU renderer does not implement.
 // `noise_texture` (deliot2023 only): the uniforms of the gated-Gaussian
 // evaluations come from a 64 x 64 RG32F noise texture (000 §6.3, the
 // shared file's GLINTLAB_DELIOT2023_NOISE_TEXTURE variant) instead of two
 // hash rounds.
+std::string glint_model_glue_path(GlintModelId model, bool noise_texture = false);
 std::string glint_model_glsl(GlintModelId model, bool noise_texture = false);
 
 // Whether the GPU renderer implements `model`.
 bool gpu_supports_model(GlintModelId model);
 
-// Texture units 0..3 are the forward shader's (see forward_shaders.cpp);
+// Texture units 0..3 are the forward shader's (see forward_shaders.h);
 // models use units from 4 on.
 inline constexpr int kFirstModelTextureUnit = 4;
 

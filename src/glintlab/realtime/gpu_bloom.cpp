@@ -5,97 +5,20 @@
 #include <vector>
 
 #include <epoxy/gl.h>
+#include <fmt/format.h>
 
 #include "glintlab/core/error.h"
 #include "glintlab/core/shader_assembly.h"
 #include "glintlab/realtime/gl_handles.h"
+#include "glintlab/realtime/gl_program.h"
 
 namespace glintlab::gl {
 namespace {
 
-// core/image.cpp luminance (BT.709 Y).
-constexpr const char* kExtract = R"(
-layout(local_size_x = 16, local_size_y = 16) in;
-layout(rgba32f, binding = 0) uniform readonly image2D u_in;
-layout(rgba32f, binding = 1) uniform writeonly image2D u_bright;
-uniform float u_threshold;
-void main() {
-    ivec2 p = ivec2(gl_GlobalInvocationID.xy);
-    if (any(greaterThanEqual(p, imageSize(u_in)))) return;
-    vec3 c = imageLoad(u_in, p).rgb;
-    float y = 0.2126f * c.r + 0.7152f * c.g + 0.0722f * c.b;
-    vec3 b = y > u_threshold ? c * ((y - u_threshold) / y) : vec3(0.0f);
-    imageStore(u_bright, p, vec4(b, 0.0f));
-}
-)";
-
-// One axis of core/bloom_blur.cpp gaussian_blur_conserving: each source
-// pixel is scaled by 1 / (its taps inside the image), then convolved.
-// u_axis = 0: rows (x), 1: columns (y). Accumulates u_weight * result into
-// u_out when u_accumulate.
-constexpr const char* kBlur = R"(
-layout(local_size_x = 16, local_size_y = 16) in;
-layout(rgba32f, binding = 0) uniform readonly image2D u_src;
-layout(rgba32f, binding = 1) uniform image2D u_out;
-layout(std430, binding = 0) readonly buffer Taps { float u_taps[]; };
-layout(std430, binding = 1) readonly buffer Scales { float u_scales[]; };
-uniform int u_radius;
-uniform int u_axis;
-uniform bool u_accumulate;
-uniform float u_weight;
-void main() {
-    ivec2 p = ivec2(gl_GlobalInvocationID.xy);
-    ivec2 size = imageSize(u_src);
-    if (any(greaterThanEqual(p, size))) return;
-    int n = u_axis == 0 ? size.x : size.y;
-    int i = u_axis == 0 ? p.x : p.y;
-    vec3 sum = vec3(0.0f);
-    for (int k = -u_radius; k <= u_radius; ++k) {
-        int s = i - k;  // source index; tap k
-        if (s < 0 || s >= n) continue;
-        ivec2 q = u_axis == 0 ? ivec2(s, p.y) : ivec2(p.x, s);
-        sum += (u_taps[k + u_radius] * u_scales[s]) * imageLoad(u_src, q).rgb;
-    }
-    vec3 prev = u_accumulate ? imageLoad(u_out, p).rgb : vec3(0.0f);
-    imageStore(u_out, p, vec4(prev + u_weight * sum, 0.0f));
-}
-)";
-
-// out = image + strength (glow - bright).
-constexpr const char* kComposite = R"(
-layout(local_size_x = 16, local_size_y = 16) in;
-layout(rgba32f, binding = 0) uniform readonly image2D u_in;
-layout(rgba32f, binding = 1) uniform readonly image2D u_bright;
-layout(rgba32f, binding = 2) uniform readonly image2D u_glow;
-layout(rgba32f, binding = 3) uniform writeonly image2D u_result;
-uniform float u_strength;
-void main() {
-    ivec2 p = ivec2(gl_GlobalInvocationID.xy);
-    if (any(greaterThanEqual(p, imageSize(u_in)))) return;
-    vec3 c = imageLoad(u_in, p).rgb + u_strength * (imageLoad(u_glow, p).rgb - imageLoad(u_bright, p).rgb);
-    imageStore(u_result, p, vec4(c, 1.0f));
-}
-)";
-
-GLuint compute_program(const char* source, const char* what) {
-    const AssembledShader s = assemble_shader(source, true);
-    Shader shader(glCreateShader(GL_COMPUTE_SHADER));
-    const char* text = s.text.c_str();
-    glShaderSource(shader.get(), 1, &text, nullptr);
-    glCompileShader(shader.get());
-    GLint ok = 0;
-    glGetShaderiv(shader.get(), GL_COMPILE_STATUS, &ok);
-    if (!ok) {
-        char log[4096] = {};
-        glGetShaderInfoLog(shader.get(), sizeof(log), nullptr, log);
-        fail("{}: compute shader does not compile:\n{}", what, map_shader_log(s, log));
-    }
-    Program program(glCreateProgram());
-    glAttachShader(program.get(), shader.get());
-    glLinkProgram(program.get());
-    glGetProgramiv(program.get(), GL_LINK_STATUS, &ok);
-    if (!ok) fail("{}: compute program does not link", what);
-    return program.release();
+// One bloom pass, realtime/shaders/bloom_<pass>.comp.glsl.
+GLuint compute_program(const char* pass, const char* what) {
+    return link_compute_program(
+        assemble_shader(fmt::format("glintlab/realtime/shaders/bloom_{}.comp.glsl", pass)), what);
 }
 
 // core/bloom_blur.cpp gaussian_taps and source_scales, in the same precision.
@@ -140,9 +63,9 @@ struct GpuBloom::Impl {
 };
 
 GpuBloom::GpuBloom() : impl_(std::make_unique<Impl>()) {
-    impl_->extract = Program(compute_program(kExtract, "bloom extract"));
-    impl_->blur = Program(compute_program(kBlur, "bloom blur"));
-    impl_->composite = Program(compute_program(kComposite, "bloom composite"));
+    impl_->extract = Program(compute_program("extract", "bloom extract"));
+    impl_->blur = Program(compute_program("blur", "bloom blur"));
+    impl_->composite = Program(compute_program("composite", "bloom composite"));
 }
 
 GpuBloom::~GpuBloom() = default;

@@ -9,6 +9,7 @@
 #include <glm/gtc/type_ptr.hpp>
 
 #include "glintlab/core/error.h"
+#include "glintlab/glints/glint_bxdf.h"
 #include "glintlab/realtime/forward_shaders.h"
 #include "glintlab/realtime/gl_context.h"
 #include "glintlab/realtime/gl_handles.h"
@@ -121,7 +122,7 @@ struct GpuRenderer::Impl {
     gl::Texture glint_layer;
     std::unique_ptr<gl::GpuWang2020Blur> wang2020_blur;
     bool wang2020_blurred_frame = false;  // the last render() ran the blurs
-    // Shadow maps (forward_shaders.cpp directional_visibility).
+    // Shadow maps (realtime/shaders/forward.frag.glsl directional_visibility).
     bool shadows = true;
     bool noise_texture = false;  // deliot2023's noise-texture variant
     gl::Program shadow_program;
@@ -366,6 +367,7 @@ struct GpuRenderer::Impl {
         glProgramUniform3fv(p, loc("u_fresnel_f0"), 1, glm::value_ptr(g.fresnel.f0));
         glProgramUniform3fv(p, loc("u_fresnel_eta"), 1, glm::value_ptr(g.fresnel.eta));
         glProgramUniform3fv(p, loc("u_fresnel_k"), 1, glm::value_ptr(g.fresnel.k));
+        glProgramUniform1i(p, loc("u_glint_g2"), glint_g2_mode(g.model_id));
         gl::set_glint_uniforms(p, uniforms, g);
         glint_resources.bind(g.model_id, noise_texture);
         if (g.model_id == GlintModelId::Wang2020) wang2020_resources.bind(p, uniforms, g, scene);
@@ -376,7 +378,7 @@ struct GpuRenderer::Impl {
     void set_lights(GLuint p, const Scene& scene) {
         std::vector<glm::vec3> point_position, point_intensity, dir_direction, dir_irradiance;
         // The shapes of area lights, for glint models that shade them as
-        // cones (GLINTLAB_GLINT_SHADES_AREA_LIGHTS in forward_shaders.cpp).
+        // cones (GLINTLAB_GLINT_SHADES_AREA_LIGHTS in realtime/shaders/forward.frag.glsl).
         std::vector<float> point_radius, dir_solid_angle, dir_cos_max;
         std::vector<glm::vec3> point_radiance, dir_radiance;
         for (const Light& light : scene.lights) {

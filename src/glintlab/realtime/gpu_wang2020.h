@@ -1,5 +1,6 @@
-// wang2020 (papers/001) in the OpenGL renderer: the GLSL glue over the shared
-// wang2020_tables.glsl and the three table buffers it reads. The tables are
+// wang2020 (papers/001) in the OpenGL renderer: the GLSL glue
+// (glints/wang2020/wang2020_gpu.glsl) over the shared wang2020_tables.glsl
+// and the three table buffers it reads. The tables are
 // the CPU renderer's own (wang2020_model_for: the same DPF extraction,
 // prefiltered environment and quadtree, built by the CPU code and uploaded
 // unchanged as SSBOs), so CPU and GPU shade from identical data.
@@ -8,7 +9,7 @@
 // glue defines GLINTLAB_GLINT_OWN_LIGHTS and
 //     vec3 glint_own_light(vec3 wo, vec3 wi, vec3 li, Footprint fp);   // Eq. 21
 //     vec3 glint_own_environment(vec3 n, vec3 o_world, Footprint fp);  // Eqs. 18-20
-// which forward_shaders.cpp calls instead of the BRDF for glint materials
+// which realtime/shaders/forward.frag.glsl calls instead of the BRDF for glint materials
 // (both before the material tint). Directional occlusion (§4.4) of the
 // environment has no ray tracer here and is left out (docs/MODELS.md).
 #pragma once
@@ -34,9 +35,6 @@ class UniformCache;
 inline constexpr int kWang2020DpfBinding = 1;
 inline constexpr int kWang2020PrefilterBinding = 2;
 inline constexpr int kWang2020NodeBinding = 3;
-
-// The glue text (includes resolved by assemble_shader).
-std::string wang2020_glsl();
 
 class Wang2020Resources {
   public:

@@ -15,54 +15,6 @@ namespace {
 
 constexpr int kMaxSize = 31;
 
-// One axis of a clamped separable Gaussian. u_mode selects what is blurred:
-// 0: the source's visibility (a) -> r; 1: the source as is; 2: rgb of the
-// source times δ (r of u_aux). u_store_aux: a of the output = r of u_aux (δ).
-constexpr const char* kBlur = R"(
-layout(local_size_x = 16, local_size_y = 16) in;
-layout(rgba32f, binding = 0) uniform readonly image2D u_src;
-layout(rgba32f, binding = 1) uniform readonly image2D u_aux;
-layout(rgba32f, binding = 2) uniform writeonly image2D u_out;
-uniform float u_taps[31];
-uniform int u_radius;
-uniform int u_axis;  // 0: x, 1: y
-uniform int u_mode;
-uniform bool u_store_aux;
-vec4 fetch(ivec2 q) {
-    vec4 s = imageLoad(u_src, q);
-    if (u_mode == 0) return vec4(s.a, 0.0f, 0.0f, 0.0f);
-    if (u_mode == 2) return vec4(s.rgb * imageLoad(u_aux, q).r, 0.0f);
-    return s;
-}
-void main() {
-    ivec2 p = ivec2(gl_GlobalInvocationID.xy);
-    ivec2 size = imageSize(u_src);
-    if (any(greaterThanEqual(p, size))) return;
-    vec4 sum = vec4(0.0f);
-    for (int k = -u_radius; k <= u_radius; ++k) {
-        ivec2 q = p;
-        if (u_axis == 0) q.x = clamp(p.x + k, 0, size.x - 1);
-        else q.y = clamp(p.y + k, 0, size.y - 1);
-        sum += u_taps[k + u_radius] * fetch(q);
-    }
-    if (u_store_aux) sum.a = imageLoad(u_aux, p).r;
-    imageStore(u_out, p, sum);
-}
-)";
-
-// target.rgb += src.rgb (the blurred glints into the image).
-constexpr const char* kAdd = R"(
-layout(local_size_x = 16, local_size_y = 16) in;
-layout(rgba32f, binding = 0) uniform readonly image2D u_src;
-layout(rgba32f, binding = 1) uniform image2D u_target;
-void main() {
-    ivec2 p = ivec2(gl_GlobalInvocationID.xy);
-    if (any(greaterThanEqual(p, imageSize(u_target)))) return;
-    vec4 t = imageLoad(u_target, p);
-    imageStore(u_target, p, vec4(t.rgb + imageLoad(u_src, p).rgb, t.a));
-}
-)";
-
 // wang2020_postprocess.cpp gaussian_blur's taps: σ = size / 6, normalised
 // in double.
 std::vector<float> taps_of(int size) {
@@ -117,10 +69,12 @@ struct GpuWang2020Blur::Impl {
 };
 
 GpuWang2020Blur::GpuWang2020Blur() : impl_(std::make_unique<Impl>()) {
-    impl_->program =
-        Program(link_compute_program(assemble_shader(kBlur, true), "wang2020 post-process blur"));
-    impl_->add =
-        Program(link_compute_program(assemble_shader(kAdd, true), "wang2020 post-process add"));
+    impl_->program = Program(
+        link_compute_program(assemble_shader("glintlab/glints/wang2020/wang2020_blur.comp.glsl"),
+                             "wang2020 post-process blur"));
+    impl_->add = Program(
+        link_compute_program(assemble_shader("glintlab/glints/wang2020/wang2020_add.comp.glsl"),
+                             "wang2020 post-process add"));
 }
 
 GpuWang2020Blur::~GpuWang2020Blur() = default;

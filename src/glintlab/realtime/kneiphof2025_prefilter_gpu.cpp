@@ -16,155 +16,11 @@ namespace {
 
 constexpr int kGroup = 8;  // 8 x 8 invocations per work group
 
-// Pass 1: base level (Kneiphof2025Environment's level 0: ss x ss bilinear
-// source samples per texel, the CPU's source_sample), its luminance in
-// alpha, and the luminance range by atomics on the float bits (luminance
-// >= 0, so the unsigned order is the float order).
-constexpr const char* kBase = R"(
-layout(local_size_x = 8, local_size_y = 8) in;
-layout(binding = 0) uniform sampler2D u_source;
-layout(rgba32f, binding = 0) uniform writeonly image2D u_base;
-layout(std430, binding = 0) buffer Range { uint u_min_bits; uint u_max_bits; };
-uniform int u_ss;
-uniform float u_scale;
-void main() {
-    ivec2 p = ivec2(gl_GlobalInvocationID.xy);
-    ivec2 size = imageSize(u_base);
-    if (p.x >= size.x || p.y >= size.y) return;
-    vec3 c = vec3(0.0f);
-    for (int j = 0; j < u_ss; ++j)
-        for (int i = 0; i < u_ss; ++i) {
-            vec2 uv = vec2((float(p.x) + (float(i) + 0.5f) / float(u_ss)) / float(size.x),
-                           (float(p.y) + (float(j) + 0.5f) / float(u_ss)) / float(size.y));
-            c += textureLod(u_source, uv, 0.0f).rgb * u_scale;
-        }
-    c /= float(u_ss * u_ss);
-    float lum = max(0.2126f * c.r + 0.7152f * c.g + 0.0722f * c.b, 0.0f);  // core/image luminance
-    imageStore(u_base, p, vec4(c, lum));
-    atomicMin(u_min_bits, floatBitsToUint(lum));
-    atomicMax(u_max_bits, floatBitsToUint(lum));
-}
-)";
-
-// Pass 3: Eq. 19 per texel of the base level.
-constexpr const char* kPartition = R"(
-#include "glintlab/glints/kneiphof2025/kneiphof2025_partition.glsl"
-layout(local_size_x = 8, local_size_y = 8) in;
-layout(rgba32f, binding = 0) uniform readonly image2D u_base;
-layout(rgba32f, binding = 1) uniform writeonly image2D u_weights_a;
-layout(rgba32f, binding = 2) uniform writeonly image2D u_weights_b;
-uniform int u_levels;
-uniform vec4 u_levels_a;
-uniform vec4 u_levels_b;
-void main() {
-    ivec2 p = ivec2(gl_GlobalInvocationID.xy);
-    ivec2 size = imageSize(u_base);
-    if (p.x >= size.x || p.y >= size.y) return;
-    vec4 wa;
-    vec4 wb;
-    kneiphof2025_partition(imageLoad(u_base, p).a, u_levels, u_levels_a, u_levels_b, wa, wb);
-    imageStore(u_weights_a, p, wa);
-    imageStore(u_weights_b, p, wb);
-}
-)";
-
-// Pass 4: one 2 x 2 box reduction of the three pyramids (the CPU's order of
-// summation: row by row, then / 4).
-constexpr const char* kReduce = R"(
-layout(local_size_x = 8, local_size_y = 8) in;
-layout(rgba32f, binding = 0) uniform readonly image2D u_src0;
-layout(rgba32f, binding = 1) uniform readonly image2D u_src1;
-layout(rgba32f, binding = 2) uniform readonly image2D u_src2;
-layout(rgba32f, binding = 3) uniform writeonly image2D u_dst0;
-layout(rgba32f, binding = 4) uniform writeonly image2D u_dst1;
-layout(rgba32f, binding = 5) uniform writeonly image2D u_dst2;
-vec4 reduce(ivec2 q, int which) {
-    vec4 s = vec4(0.0f);
-    for (int j = 0; j < 2; ++j)
-        for (int i = 0; i < 2; ++i) {
-            ivec2 t = 2 * q + ivec2(i, j);
-            s += which == 0 ? imageLoad(u_src0, t) : which == 1 ? imageLoad(u_src1, t) : imageLoad(u_src2, t);
-        }
-    return s / 4.0f;
-}
-void main() {
-    ivec2 q = ivec2(gl_GlobalInvocationID.xy);
-    ivec2 size = imageSize(u_dst0);
-    if (q.x >= size.x || q.y >= size.y) return;
-    imageStore(u_dst0, q, reduce(q, 0));
-    imageStore(u_dst1, q, reduce(q, 1));
-    imageStore(u_dst2, q, reduce(q, 2));
-}
-)";
-
-// Pass 5: the split-sum prefilter of one layer (Eq. 11, 21): every channel
-// filtered by the same kernel around n = map direction of the texel
-// (Kneiphof2025Environment's loop: Duff et al. basis, map_uv without
-// rotation, trilinear pyramid lookups, weighted mean). Layer 0 (u_count = 0)
-// copies the base level.
-constexpr const char* kFilter = R"(
-#include "glintlab/core/constants.glsl"
-layout(local_size_x = 8, local_size_y = 8) in;
-layout(binding = 0) uniform sampler2D u_pyramid0;
-layout(binding = 1) uniform sampler2D u_pyramid1;
-layout(binding = 2) uniform sampler2D u_pyramid2;
-layout(rgba32f, binding = 0) uniform writeonly image2DArray u_out0;
-layout(rgba32f, binding = 1) uniform writeonly image2DArray u_out1;
-layout(rgba32f, binding = 2) uniform writeonly image2DArray u_out2;
-// The kernels of every layer: per sample (l.xyz, weight), (lod, 0, 0, 0).
-layout(std430, binding = 0) readonly buffer Kernels { vec4 u_kernels[]; };
-uniform int u_layer;
-uniform int u_first;  // first sample of this layer's kernel
-uniform int u_count;  // kernel samples (0: copy level 0)
-void main() {
-    ivec2 p = ivec2(gl_GlobalInvocationID.xy);
-    ivec3 size = imageSize(u_out0);
-    if (p.x >= size.x || p.y >= size.y) return;
-    vec4 a0 = vec4(0.0f);
-    vec4 a1 = vec4(0.0f);
-    vec4 a2 = vec4(0.0f);
-    if (u_count == 0) {
-        a0 = texelFetch(u_pyramid0, p, 0);
-        a1 = texelFetch(u_pyramid1, p, 0);
-        a2 = texelFetch(u_pyramid2, p, 0);
-    } else {
-        // kneiphof2025_prefilter.cpp map_direction at the texel centre.
-        float theta = (float(p.y) + 0.5f) / float(size.y) * PI;
-        float phi = ((float(p.x) + 0.5f) / float(size.x) - 0.5f) * 2.0f * PI;
-        float st = sin(theta);
-        vec3 n = vec3(st * sin(phi), cos(theta), -st * cos(phi));
-        float sgn = n.z >= 0.0f ? 1.0f : -1.0f;
-        float a = -1.0f / (sgn + n.z);
-        float b = n.x * n.y * a;
-        vec3 t = vec3(1.0f + sgn * n.x * n.x * a, sgn * b, -sgn * n.x);
-        vec3 bt = vec3(b, sgn + n.y * n.y * a, -n.y);
-        float wsum = 0.0f;
-        for (int k = 0; k < u_count; ++k) {
-            vec4 s = u_kernels[2 * (u_first + k)];
-            vec3 d = s.x * t + s.y * bt + s.z * n;
-            float u = 0.5f + atan(d.x, -d.z) / (2.0f * PI);
-            u -= floor(u);
-            vec2 uv = vec2(u, acos(clamp(d.y, -1.0f, 1.0f)) / PI);
-            float lod = u_kernels[2 * (u_first + k) + 1].x;
-            a0 += s.w * textureLod(u_pyramid0, uv, lod);
-            a1 += s.w * textureLod(u_pyramid1, uv, lod);
-            a2 += s.w * textureLod(u_pyramid2, uv, lod);
-            wsum += s.w;
-        }
-        if (wsum > 0.0f) {
-            a0 /= wsum;
-            a1 /= wsum;
-            a2 /= wsum;
-        }
-    }
-    imageStore(u_out0, ivec3(p, u_layer), vec4(a0.rgb, 0.0f));
-    imageStore(u_out1, ivec3(p, u_layer), a1);
-    imageStore(u_out2, ivec3(p, u_layer), a2);
-}
-)";
-
-GLuint compile(const char* source, const char* what) {
-    return link_compute_program(assemble_shader(source, true), what);
+GLuint compile(const char* pass, const char* what) {
+    return link_compute_program(
+        assemble_shader(
+            fmt::format("glintlab/glints/kneiphof2025/kneiphof2025_prefilter_{}.comp.glsl", pass)),
+        what);
 }
 
 GLuint groups(int n) {
@@ -199,10 +55,10 @@ Kneiphof2025GpuPrefilter::Kneiphof2025GpuPrefilter(const Kneiphof2025PrefilterOp
         fail("kneiphof2025 (GPU prefilter): mip_count must be in [2, 33], got {}", o.mip_count);
     if (o.samples < 1 || o.samples > 65536)
         fail("kneiphof2025 (GPU prefilter): samples must be in [1, 65536], got {}", o.samples);
-    base_ = Program(compile(kBase, "kneiphof2025 prefilter: base level"));
-    partition_ = Program(compile(kPartition, "kneiphof2025 prefilter: partition"));
-    reduce_ = Program(compile(kReduce, "kneiphof2025 prefilter: pyramid"));
-    filter_ = Program(compile(kFilter, "kneiphof2025 prefilter: GGX filter"));
+    base_ = Program(compile("base", "kneiphof2025 prefilter: base level"));
+    partition_ = Program(compile("partition", "kneiphof2025 prefilter: partition"));
+    reduce_ = Program(compile("reduce", "kneiphof2025 prefilter: pyramid"));
+    filter_ = Program(compile("filter", "kneiphof2025 prefilter: GGX filter"));
     range_ = make_buffer();
     glNamedBufferStorage(range_.get(), 2 * sizeof(GLuint), nullptr,
                          GL_DYNAMIC_STORAGE_BIT | GL_MAP_READ_BIT);

@@ -1,0 +1,37 @@
+// GPU glue of chermain2020 (papers/004) for the forward pass (realtime/forward_shaders.h):
+// defines, from the model's shared .glsl and the uniforms set by
+// realtime/glint_programs.cpp (glint_model_glue_path selects this file),
+//     vec3 glint_ndf(vec3 h, Footprint fp);  // D_P(h), RGB (glints/material.glsl)
+// RGB D_P of Eq. 13 with the colour table, the dictionary through
+// chermain2020.glsl's own sampler `chermain2020_dictionary` (its V-cavity
+// masking, 004 Eq. 14-16, is material.glsl's GLINT_G2_VCAVITY).
+#ifndef GLINTLAB_GLINTS_CHERMAIN2020_CHERMAIN2020_GPU_GLSL
+#define GLINTLAB_GLINTS_CHERMAIN2020_CHERMAIN2020_GPU_GLSL
+
+#include "glintlab/glints/glint_uniforms.glsl"
+#include "glintlab/microfacet/ndf.glsl"
+#include "glintlab/glints/chermain2020/chermain2020.glsl"
+uniform ivec3 u_chermain2020_dict_shape;  // n_levels, n_dists, table_size
+uniform vec2 u_chermain2020_dict_range;   // alpha_dict, slope_max
+uniform float u_chermain2020_relative_area;
+uniform float u_chermain2020_max_anisotropy;
+uniform float u_chermain2020_density_randomization;
+uniform int u_chermain2020_colour_count;
+uniform vec3 u_chermain2020_colours[CHERMAIN2020_MAX_COLOURS];
+vec3 glint_ndf(vec3 h, Footprint fp) {
+    Chermain2020Dict d;
+    d.n_levels = u_chermain2020_dict_shape.x;
+    d.n_dists = u_chermain2020_dict_shape.y;
+    d.table_size = u_chermain2020_dict_shape.z;
+    d.alpha_dict = u_chermain2020_dict_range.x;
+    d.slope_max = u_chermain2020_dict_range.y;
+    Chermain2020Colours colours;
+    colours.count = u_chermain2020_colour_count;
+    for (int i = 0; i < CHERMAIN2020_MAX_COLOURS; ++i) colours.table[i] = u_chermain2020_colours[i];
+    return chermain2020_ndf_rgb(h, fp, d, u_glint_alpha.x, u_glint_alpha.y, u_glint_log_density,
+                                u_glint_seed, u_chermain2020_relative_area,
+                                u_chermain2020_max_anisotropy,
+                                u_chermain2020_density_randomization, colours);
+}
+
+#endif

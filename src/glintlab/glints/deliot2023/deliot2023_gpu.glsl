@@ -1,0 +1,24 @@
+// GPU glue of deliot2023 (papers/000) for the forward pass (realtime/forward_shaders.h):
+// defines, from the model's shared .glsl and the uniforms set by
+// realtime/glint_programs.cpp (glint_model_glue_path selects this file),
+//     vec3 glint_ndf(vec3 h, Footprint fp);  // D_P(h), RGB (glints/material.glsl)
+// D_P of Eq. 3-4 with the hash uniforms (the CPU default; the 64x64
+// noise-table variant is deliot2023_noise_texture_gpu.glsl).
+#ifndef GLINTLAB_GLINTS_DELIOT2023_DELIOT2023_GPU_GLSL
+#define GLINTLAB_GLINTS_DELIOT2023_DELIOT2023_GPU_GLSL
+
+#include "glintlab/glints/glint_uniforms.glsl"
+#include "glintlab/microfacet/ndf.glsl"
+#include "glintlab/glints/deliot2023/deliot2023.glsl"
+uniform float u_deliot2023_microfacet_roughness;
+uniform float u_deliot2023_screen_space_scale;
+uniform float u_deliot2023_density_randomization;
+uniform bool u_deliot2023_original_defects;
+vec3 glint_ndf(vec3 h, Footprint fp) {
+    return vec3(deliot2023_ndf(h, fp, u_glint_ndf, u_glint_alpha.x, u_glint_alpha.y,
+                               u_glint_log_density, u_glint_seed,
+                               u_deliot2023_microfacet_roughness, u_deliot2023_screen_space_scale,
+                               u_deliot2023_density_randomization, u_deliot2023_original_defects));
+}
+
+#endif

@@ -1,0 +1,2 @@
+// Depth-only fragment stage (shadow maps): writes nothing but depth.
+void main() {}
