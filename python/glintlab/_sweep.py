@@ -253,7 +253,10 @@ def write_outputs(table, axis_names, metric_names, output, plots=True):
         for axis in axis_names:
             others = [a for a in axis_names if a != axis]
             fig, ax = plt.subplots(figsize=(6, 4))
-            groups = table.groupby(others, sort=False) if others else [((), table)]
+            if not others:
+                groups = [((), table)]
+            else:  # a single grouper as a name, not a list (pandas yields scalars for it)
+                groups = table.groupby(others if len(others) > 1 else others[0], sort=False)
             for key, group in groups:
                 key = key if isinstance(key, tuple) else (key,)
                 label = ", ".join(f"{a}={v}" for a, v in zip(others, key)) or None

@@ -29,6 +29,19 @@ def test_render_equals_cli_exr_bit_for_bit(tiny_scene, tmp_path):
     assert cli.max() > 0  # the sphere is lit: the comparison is not of two black images
 
 
+@pytest.mark.skipif(not glintlab.with_gl, reason="built with GLINTLAB_WITH_GL=OFF")
+def test_gpu_render_equals_cli_gpu_exr(tiny_scene, tmp_path):
+    # render_scene_gpu through the module and through `render --gpu`: the same
+    # driver (llvmpipe or the NVIDIA one) on the same input gives the same pixels.
+    scene_file = tmp_path / "tiny.json"
+    scene_file.write_text(json.dumps(tiny_scene))
+    exr = tmp_path / "gpu.exr"
+    subprocess.run([CLI, "render", "--gpu", str(scene_file), "-o", str(exr), "--res", "24x20",
+                    "--quiet"], check=True)
+    image = glintlab.render(scene_file, gpu=True, res=(24, 20))
+    assert image.max() > 0 and np.array_equal(image, glintlab.read_image(exr))
+
+
 def test_scene_error_names_file_and_json_path(tiny_scene, tmp_path):
     tiny_scene["materials"][0]["roughness"] = 7.0
     with pytest.raises(glintlab.SceneError, match=r"my_scene\.json: /materials/0/roughness"):
