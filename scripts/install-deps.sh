@@ -14,6 +14,8 @@ packages=(
     blender-data
     libepoxy-dev libglfw3-dev libimgui-dev libegl-dev libegl-mesa0 libgl1-mesa-dri
     xvfb xauth
+    python3-dev pybind11-dev python3-pybind11 python3-numpy python3-pytest
+    python3-pandas python3-matplotlib python3-distributed
 )
 
 missing=()

@@ -90,6 +90,9 @@ Image render_scene(const Scene& scene, const Accelerator& accel, const RenderOpt
                         }
                     }
                 progress.update();
+                if (options.progress)
+                    options.progress(static_cast<double>(progress.work_done()) /
+                                     static_cast<double>(tiles_x * tiles_y));
             }
         });
     progress.done();

@@ -1,0 +1,238 @@
+"""glintlab from Python: scenes as dicts or files, renders as NumPy arrays,
+direct evaluation of glint BRDFs, validation suites, image I/O and
+parameter sweeps on Dask distributed (docs/PYTHON.md).
+
+Scene documents follow docs/SCENE_FORMAT.md. Errors of the strict scene
+loader are raised as `SceneError` with the loader's message (file, JSON
+path, allowed range); other library errors as `Error`.
+"""
+
+import copy
+import json
+import os
+
+import numpy as np
+
+from . import _glintlab
+from ._glintlab import Error, Scene, SceneError
+
+__all__ = [
+    "Error", "SceneError", "OverrideError", "Scene", "parse_scene", "load_document",
+    "apply_overrides", "set_model", "render", "models", "eval_brdf", "eval_ndf", "validate",
+    "validation_suites", "read_image", "write_image", "sweep", "__version__",
+]
+__version__ = _glintlab.__version__
+with_gl = _glintlab.with_gl
+
+
+class OverrideError(SceneError):
+    """An override's JSON pointer is malformed or its parent does not exist."""
+
+
+def load_document(scene, file=None):
+    """(document dict, file name) of a scene given as a path or a dict.
+
+    A dict is deep-copied (the caller's dict is never modified); `file` names
+    it in error messages and anchors its relative paths (default "<dict>",
+    i.e. the current directory)."""
+    if isinstance(scene, (str, os.PathLike)):
+        path = os.fspath(scene)
+        try:
+            with open(path, encoding="utf-8") as f:
+                text = f.read()
+        except OSError as e:
+            raise SceneError(f"{path}: cannot open scene file: {e.strerror}") from None
+        try:
+            return json.loads(text), path if file is None else os.fspath(file)
+        except json.JSONDecodeError as e:
+            raise SceneError(f"{path}: invalid JSON: {e}") from None
+    if isinstance(scene, dict):
+        return copy.deepcopy(scene), "<dict>" if file is None else os.fspath(file)
+    raise TypeError(f"scene: expected a dict, a path or a glintlab.Scene, got {type(scene).__name__}")
+
+
+def _pointer_tokens(pointer):
+    """RFC 6901 reference tokens of `pointer` ("" is the whole document)."""
+    if not isinstance(pointer, str) or (pointer and not pointer.startswith("/")):
+        raise OverrideError(f"override {pointer!r}: a JSON pointer starts with '/' (RFC 6901)")
+    if pointer == "":
+        return []
+    return [t.replace("~1", "/").replace("~0", "~") for t in pointer[1:].split("/")]
+
+
+def _array_index(pointer, prefix, token, size, allow_end):
+    if token == "-" and allow_end:
+        return size
+    if not token.isdigit() or (len(token) > 1 and token[0] == "0"):
+        raise OverrideError(f"override {pointer}: {prefix or '/'} is an array, "
+                            f"{token!r} is not an index")
+    i = int(token)
+    if i >= size + (1 if allow_end else 0):
+        raise OverrideError(f"override {pointer}: {prefix or '/'} has {size} entries, "
+                            f"no index {i}")
+    return i
+
+
+def apply_overrides(document, overrides):
+    """Sets each JSON pointer (RFC 6901) of `overrides` to its value, in
+    order, in `document` (modified in place and returned). The pointer's
+    parent must exist; the last token may name a new object key (the strict
+    loader then checks it) or, in an array, an existing index or "-"
+    (append). Raises OverrideError naming the pointer otherwise."""
+    for pointer, value in (overrides or {}).items():
+        tokens = _pointer_tokens(pointer)
+        if not tokens:
+            raise OverrideError("override \"\": replacing the whole document is not an override")
+        node, prefix = document, ""
+        for token in tokens[:-1]:
+            if isinstance(node, dict):
+                if token not in node:
+                    raise OverrideError(f"override {pointer}: {prefix}/{token} does not exist")
+                node = node[token]
+            elif isinstance(node, list):
+                node = node[_array_index(pointer, prefix, token, len(node), False)]
+            else:
+                raise OverrideError(f"override {pointer}: {prefix or '/'} is neither an object "
+                                    f"nor an array")
+            prefix += "/" + token.replace("~", "~0").replace("/", "~1")
+        last = tokens[-1]
+        value = copy.deepcopy(value)
+        if isinstance(node, dict):
+            node[last] = value
+        elif isinstance(node, list):
+            i = _array_index(pointer, prefix, last, len(node), True)
+            if i == len(node):
+                node.append(value)
+            else:
+                node[i] = value
+        else:
+            raise OverrideError(f"override {pointer}: {prefix or '/'} is neither an object "
+                                f"nor an array")
+    return document
+
+
+def set_model(document, model):
+    """Sets `model` on every glint material of `document` (in place)."""
+    names = [m["name"] for m in models()]
+    if model not in names:
+        raise SceneError(f"model: unknown glint model \"{model}\" (known: {', '.join(names)})")
+    for material in document.get("materials", []):
+        if isinstance(material, dict) and material.get("type") == "glint":
+            material["model"] = model
+    return document
+
+
+def parse_scene(document, file=None, model=None, overrides=None):
+    """A validated `Scene` from a dict or a path, after `model` and
+    `overrides`; raises SceneError naming the file and JSON path."""
+    if isinstance(document, Scene):
+        if model is not None or overrides:
+            raise TypeError("model/overrides need a dict or a path, not a parsed Scene")
+        return document
+    doc, name = load_document(document, file)
+    if model is not None:
+        set_model(doc, model)
+    apply_overrides(doc, overrides)
+    return _glintlab.parse_scene(json.dumps(doc), name)
+
+
+def render(scene, model=None, overrides=None, gpu=False, spp=None, seed=None, res=None,
+           threads=0, progress=None, file=None):
+    """Renders `scene` (dict, path or Scene) to a linear float32 array of
+    shape (H, W, 3), like `glintlab render` (same seed and resolution: the
+    same pixels). `res` is (W, H); `progress(fraction)` is called as tiles
+    finish (CPU only). The GIL is released while rendering."""
+    parsed = parse_scene(scene, file=file, model=model, overrides=overrides)
+    width, height = (None, None) if res is None else _resolution(res)
+    return _glintlab.render(parsed, gpu=gpu, spp=spp, seed=seed, width=width, height=height,
+                            threads=threads, progress=progress)
+
+
+def _resolution(res):
+    if isinstance(res, str):
+        w, sep, h = res.partition("x")
+        if not sep or not w.isdigit() or not h.isdigit():
+            raise ValueError(f"res: expected 'WxH' or (W, H), got {res!r}")
+        return int(w), int(h)
+    w, h = res
+    return int(w), int(h)
+
+
+def models():
+    """Every glint model: list of dicts {name, description, lights, backends}."""
+    return _glintlab.models()
+
+
+def _material_scene(material):
+    """A one-material scene around `material` (a glint material dict), so
+    that the strict loader reads it exactly as in a scene file."""
+    if not isinstance(material, dict):
+        raise TypeError("material: expected a glint material dict (docs/SCENE_FORMAT.md)")
+    mat = copy.deepcopy(material)
+    mat.setdefault("name", "material")
+    info = {m["name"]: m for m in models()}.get(mat.get("model", "smooth"))
+    lights = info["lights"] if info else ["directional"]
+    if "directional" in lights:
+        light = {"type": "directional", "direction": [0, 1, 0], "irradiance": 1}
+    elif "point" in lights:
+        light = {"type": "point", "position": [0, 1, 0], "intensity": 1}
+    else:
+        light = {"type": "environment", "radiance": 1}
+    return {
+        "film": {"width": 1, "height": 1},
+        "camera": {"eye": [0, 0, 3], "target": [0, 0, 0], "fov_deg": 30},
+        "materials": [mat],
+        "shapes": [{"name": "sphere", "type": "sphere", "radius": 1, "material": mat["name"]}],
+        "lights": [light],
+    }
+
+
+def _eval(material, wo, wi, footprint, ndf, file):
+    scene = _glintlab.parse_scene(json.dumps(_material_scene(material)), file)
+    wo = np.atleast_2d(np.asarray(wo, dtype=np.float32))
+    wi = np.atleast_2d(np.asarray(wi, dtype=np.float32))
+    fp = {}
+    if footprint is not None:
+        n = wo.shape[0]
+        for key in ("uv", "duvdx", "duvdy"):
+            if key not in footprint:
+                raise ValueError(f"footprint: missing {key!r} (needs uv, duvdx, duvdy)")
+            a = np.asarray(footprint[key], dtype=np.float32)
+            fp[key] = np.broadcast_to(a, (n, 2)).copy() if a.ndim == 1 else a
+    return _glintlab.eval_glint(scene, 0, wo, wi, ndf=ndf, **fp)
+
+
+def eval_brdf(material, wo, wi, footprint=None, file="<material>"):
+    """f(wo, wi) (N, 3) of a glint material dict for (N, 3) direction arrays
+    in its shading frame (z = normal; normalised here). `footprint` is a
+    dict of uv, duvdx, duvdy, each (N, 2) or (2,); without it the model's
+    smooth limit is evaluated (as at secondary bounces)."""
+    return _eval(material, wo, wi, footprint, False, file)
+
+
+def eval_ndf(material, wo, wi, footprint=None, file="<material>"):
+    """The footprint NDF D_P(h), h = normalize(wo + wi), per channel (N, 3)."""
+    return _eval(material, wo, wi, footprint, True, file)
+
+
+def validation_suites():
+    return list(_glintlab.validation_suites())
+
+
+def validate(suite, seed=1):
+    """The report of a validation suite as `glintlab validate SUITE --json`
+    prints it (a dict; "passed" says whether every check passed)."""
+    return json.loads(_glintlab.validate_json(suite, seed))
+
+
+def read_image(path):
+    """A linear float32 (H, W, 3) array from .exr/.hdr/.png/.jpg."""
+    return _glintlab.read_image(os.fspath(path))
+
+
+def write_image(path, array, exposure=0.0):
+    """Writes a linear (H, W, 3) array as .exr (float32), .hdr or .png (sRGB)."""
+    _glintlab.write_image(os.fspath(path), np.asarray(array, dtype=np.float32), exposure)
+
+
+from ._sweep import sweep  # noqa: E402  (needs the functions above)
