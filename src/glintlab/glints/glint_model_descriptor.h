@@ -83,10 +83,14 @@ struct GlintParam {
 std::string glint_param_value_text(const GlintParamValue& value);
 
 // A key of the model's block that the table does not cover (read by the
-// model's check hook); documented with its descriptor.
+// model's check hook); documented with its descriptor. A list of RGB
+// colours may expose its storage for the viewer's panel.
 struct GlintExtraKey {
     std::string key;
     std::string doc;
+    int max_colours = 0;  // > 0: an RGB colour list of up to this many entries
+    std::function<int&(GlintModelParams&)> colour_count;
+    std::function<glm::vec3*(GlintModelParams&)> colours;
 };
 
 // A model's validation suite: `glintlab validate NAME`.

@@ -50,4 +50,14 @@ std::vector<GlintPanelWidget> glint_panel_model(GlintDesc& desc) {
     return widgets;
 }
 
+std::vector<GlintPanelColours> glint_panel_colours(GlintDesc& desc) {
+    std::vector<GlintPanelColours> lists;
+    for (const GlintExtraKey& k : glint_model(desc.model_id).extra_keys) {
+        if (k.max_colours <= 0) continue;
+        lists.push_back(
+            {k.key, k.max_colours, &k.colour_count(desc.params), k.colours(desc.params)});
+    }
+    return lists;
+}
+
 }  // namespace glintlab

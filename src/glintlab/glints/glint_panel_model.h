@@ -27,8 +27,19 @@ struct GlintPanelWidget {
     std::function<void(const GlintParamValue&)> set;
 };
 
+// An editable RGB colour list of the model (a descriptor extra key):
+// `*count` entries of `colours`, in [0, 1], count in [0, max_count].
+struct GlintPanelColours {
+    std::string key;
+    int max_count = 0;
+    int* count = nullptr;
+    glm::vec3* colours = nullptr;
+};
+
 // Widgets of desc's active model; setters write into desc.params (desc must
 // outlive them).
 std::vector<GlintPanelWidget> glint_panel_model(GlintDesc& desc);
+// The model's colour lists, pointing into desc.params.
+std::vector<GlintPanelColours> glint_panel_colours(GlintDesc& desc);
 
 }  // namespace glintlab

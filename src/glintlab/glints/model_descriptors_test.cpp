@@ -17,6 +17,9 @@
 #include "glintlab/glints/model_docs.h"
 #include "glintlab/glints/registry.h"
 #include "glintlab/scene/scene_loader.h"
+#if GLINTLAB_WITH_GL
+#include "glintlab/realtime/glint_programs.h"
+#endif
 
 namespace glintlab {
 namespace {
@@ -106,7 +109,7 @@ const GlintModelParams& params_of(const Scene& s) {
 }
 
 TEST(ModelDescriptors, ListIsCompleteAndConsistent) {
-    ASSERT_EQ(glint_models().size(), 8u);
+    ASSERT_FALSE(glint_models().empty());
     for (size_t i = 0; i < glint_models().size(); ++i) {
         const GlintModelDescriptor& m = glint_models()[i];
         EXPECT_EQ(static_cast<size_t>(m.id), i) << m.name;
@@ -122,6 +125,14 @@ TEST(ModelDescriptors, ListIsCompleteAndConsistent) {
         }
     }
 }
+
+#if GLINTLAB_WITH_GL
+// A descriptor's "gpu" back end is the GPU renderer's (realtime/) support.
+TEST(ModelDescriptors, GpuBackEndMatchesTheGpuRenderer) {
+    for (const GlintModelDescriptor& m : glint_models())
+        EXPECT_EQ(m.gpu, gl::gpu_supports_model(m.id)) << m.name;
+}
+#endif
 
 TEST(ModelDescriptors, EveryParameterReadsBackAndIsRangeChecked) {
     for (const GlintModelDescriptor& m : glint_models()) {
@@ -205,6 +216,31 @@ TEST(ModelDescriptors, EveryParameterIsInThePanelModelAndInfoJson) {
                 EXPECT_TRUE(p.accepts(p.get(desc.params)));
                 EXPECT_EQ(p.get(desc.params), stored(p, p.max));
             }
+        }
+    }
+}
+
+// Colour lists outside the table: read from the scene file, exposed to the
+// panel, rejected with more entries than allowed.
+TEST(ModelDescriptors, ColourListsReadAndAppearInThePanel) {
+    for (const GlintModelDescriptor& m : glint_models()) {
+        for (const GlintExtraKey& k : m.extra_keys) {
+            if (k.max_colours <= 0) continue;
+            SCOPED_TRACE(fmt::format("{}/{}", m.name, k.key));
+            nlohmann::json mat = base_material(m);
+            mat[std::string(m.name)][k.key] = {{1.0, 0.0, 0.0}, {0.0, 0.5, 1.0}};
+            Scene s = parse_scene(scene_json(mat, m.lights.front()), "walk.json");
+            GlintDesc& desc = s.materials[0].glint;
+            const std::vector<GlintPanelColours> lists = glint_panel_colours(desc);
+            ASSERT_EQ(lists.size(), 1u);
+            EXPECT_EQ(lists[0].key, k.key);
+            EXPECT_EQ(*lists[0].count, 2);
+            EXPECT_EQ(lists[0].colours[1], glm::vec3(0.0f, 0.5f, 1.0f));
+            lists[0].colours[0] = glm::vec3(0.25f);  // the panel writes through
+            EXPECT_EQ(k.colours(desc.params)[0], glm::vec3(0.25f));
+            mat[std::string(m.name)][k.key] =
+                nlohmann::json::array_t(static_cast<size_t>(k.max_colours) + 1, {0.5, 0.5, 0.5});
+            EXPECT_NE(error_of(scene_json(mat, m.lights.front())).find(k.key), std::string::npos);
         }
     }
 }

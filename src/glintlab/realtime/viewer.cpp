@@ -219,6 +219,12 @@ void material_panel(MaterialDesc& m) {
             }
         }
     }
+    // Colour lists outside the table (chermain2020's colour table).
+    for (const GlintPanelColours& c : glint_panel_colours(g)) {
+        ImGui::SliderInt(c.key.c_str(), c.count, 0, c.max_count);
+        for (int i = 0; i < *c.count; ++i)
+            ImGui::ColorEdit3(fmt::format("{} {}", c.key, i).c_str(), &c.colours[i].x);
+    }
 }
 
 // The window's back buffer as displayed (sRGB bytes), decoded to linear so

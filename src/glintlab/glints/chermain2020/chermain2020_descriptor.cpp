@@ -59,9 +59,15 @@ GlintModelDescriptor chermain2020_descriptor() {
         gp::number("density_randomization", &P::density_randomization, 0.0, 8.0, "levels",
                    "zeta (004 §7.1, Alg. 3 line 8): std-dev of the distribution LOD"),
     };
-    d.extra_keys = {{"colours",
-                     "1 to 8 RGB tints [[r, g, b], ...] in [0, 1], one drawn per cell (004 §7.1 "
-                     "colour table); absent = white"}};
+    GlintExtraKey colours;
+    colours.key = "colours";
+    colours.doc =
+        "1 to 8 RGB tints [[r, g, b], ...] in [0, 1], one drawn per cell (004 §7.1 colour "
+        "table); absent = white";
+    colours.max_colours = static_cast<int>(P{}.colour_table.size());
+    colours.colour_count = [](GlintModelParams& v) -> int& { return std::get<P>(v).colour_count; };
+    colours.colours = [](GlintModelParams& v) { return std::get<P>(v).colour_table.data(); };
+    d.extra_keys = {colours};
     d.check = check_chermain2020;
     d.validation = {"chermain2020", [](uint64_t seed) {
                         Chermain2020ValidationOptions o;

@@ -101,8 +101,8 @@ TEST(Wang2020Model, RenderBlursTheGlintLayerAndKeepsItsEnergy) {
 // ("roughness 0.0199999996 outside [0.02, 1]"): the float is 4e-10 below the
 // table's first entry. The documented bound is accepted end to end.
 TEST(Wang2020Model, RoughnessAtTheDocumentedMinimumRenders) {
-    nlohmann::json mat = glint_material(
-        {{"dpf_theta", 4}, {"dpf_phi", 8}, {"prefilter_samples", 1}, {"depth", 4}});
+    nlohmann::json mat =
+        glint_material({{"dpf_theta", 4}, {"dpf_phi", 8}, {"prefilter_samples", 1}, {"depth", 4}});
     mat["roughness"] = 0.02;
     nlohmann::json doc = scene_with(mat);
     doc["film"] = {{"width", 4}, {"height", 4}};
