@@ -2,35 +2,21 @@
 
 #include <string>
 
+#include "glintlab/glints/model_docs.h"
 #include "glintlab/glints/registry.h"
-#if GLINTLAB_WITH_GL
-#include "glintlab/realtime/glint_programs.h"
-#endif
 
 namespace py = pybind11;
 
 namespace glintlab::python {
 
+// Every model's descriptor exactly as `glintlab info --json` prints it (name,
+// description, citations, lights, back ends, parameter table with ranges,
+// validation suite): one generator, so Python and the CLI cannot disagree.
 py::list models_table() {
+    const py::object loads = py::module_::import("json").attr("loads");
     py::list out;
-    for (const GlintModelInfo& m : glint_models()) {
-        py::list lights;
-        if (m.point_lights) lights.append("point");
-        if (m.directional_lights) lights.append("directional");
-        if (m.sphere_lights) lights.append("sphere");
-        if (m.environment_lights) lights.append("environment");
-        py::list backends;
-        backends.append("cpu");
-#if GLINTLAB_WITH_GL
-        if (gl::gpu_supports_model(m.id)) backends.append("gpu");
-#endif
-        py::dict d;
-        d["name"] = std::string(m.name);
-        d["description"] = std::string(m.description);
-        d["lights"] = lights;
-        d["backends"] = backends;
-        out.append(d);
-    }
+    for (const GlintModelDescriptor& m : glint_models())
+        out.append(loads(glint_model_to_json(m).dump()));
     return out;
 }
 

@@ -1,7 +1,5 @@
-// glintlab.validate(suite): the validation suites of `glintlab validate`,
-// called through the same library functions (src/cmd/validate_command.cpp
-// holds the CLI's table; python/tests/test_module.py checks both list the
-// same suite names).
+// glintlab.validate(suite): the suites of `glintlab validate`, from the
+// library's one table (glints/validation_suites.h) that the CLI also uses.
 #pragma once
 
 #include <cstdint>

@@ -10,7 +10,12 @@
 
 #include <nlohmann/json.hpp>
 
+#include "glintlab/glints/model_docs.h"
+#include "glintlab/glints/registry.h"
+
 namespace {
+
+using namespace glintlab;
 
 struct RunResult {
     int status;
@@ -131,6 +136,30 @@ TEST(Cli, InfoListsModelsAndHelpWorks) {
     const RunResult help = run_cli("render --help");
     EXPECT_EQ(help.status, 0);
     EXPECT_NE(help.output.find("--spp"), std::string::npos) << help.output;
+}
+
+TEST(Cli, InfoJsonAndMarkdownComeFromTheDescriptors) {
+    const RunResult r = run_cli("info --json");
+    ASSERT_EQ(r.status, 0) << r.output;
+    const auto j = nlohmann::json::parse(r.output);
+    EXPECT_EQ(j.at("version"), GLINTLAB_VERSION);
+    EXPECT_TRUE(j.at("features").contains("cpu renderer"));
+    ASSERT_EQ(j.at("models").size(), glint_models().size());
+    for (size_t i = 0; i < glint_models().size(); ++i)
+        EXPECT_EQ(j.at("models")[i], glint_model_to_json(glint_models()[i]));
+    const RunResult md = run_cli("info --markdown parameters");
+    ASSERT_EQ(md.status, 0) << md.output;
+    EXPECT_EQ(md.output, model_doc_markdown("parameters"));
+    EXPECT_NE(run_cli("info --markdown nope").status, 0);
+}
+
+TEST(Cli, ValidateListsEveryModelSuiteAndCounting) {
+    const RunResult help = run_cli("validate --help");
+    for (const GlintModelDescriptor& m : glint_models()) {
+        if (m.validation.name.empty()) continue;
+        EXPECT_NE(help.output.find(m.validation.name), std::string::npos) << help.output;
+    }
+    EXPECT_NE(help.output.find("counting"), std::string::npos) << help.output;
 }
 
 }  // namespace

@@ -19,7 +19,6 @@ struct SmoothParams {};  // `smooth` has no parameters of its own
 
 using GlintModelParams =
     std::variant<SmoothParams, Deliot2023Params, Zirr2016Params, Chermain2020Params,
-                 Jakob2014Params, Kneiphof2025Params, ExplicitParams,
-                 Wang2020Params>;
+                 Jakob2014Params, Kneiphof2025Params, ExplicitParams, Wang2020Params>;
 
 }  // namespace glintlab

@@ -1,58 +1,22 @@
-// The closed list of glint models (ARCHITECTURE.md §5): name → what the model
-// supports and how its own parameter block is read. Later issues add models
-// here; the scene parser and the CLI list them from this table.
+// The model list (glints/model_list.cpp) and lookups over it. Front ends loop
+// over glint_models() and name no model.
 #pragma once
 
 #include <span>
 #include <string>
 #include <string_view>
 
-#include <glm/glm.hpp>
+#include "glintlab/glints/glint_model_descriptor.h"
 
 namespace glintlab {
 
-class JsonObject;
-struct GlintDesc;
-struct GlintLightingContext;
-struct Scene;
-
-// Models in registry order; GlintBxdf dispatches on it (static, no strings
-// in the hot path).
-// Ids of models still being built are listed ahead of their registry row.
-enum class GlintModelId : int {
-    Smooth = 0,
-    Deliot2023,
-    Zirr2016,
-    Chermain2020,
-    Explicit,
-    Jakob2014,
-    Kneiphof2025,
-    Wang2020,
-};
-
-struct GlintModelInfo {
-    GlintModelId id;
-    std::string_view name;
-    std::string_view description;
-    // Light types the model can shade; the scene loader rejects the others.
-    bool point_lights;
-    bool directional_lights;
-    bool sphere_lights;
-    bool environment_lights;
-    // Reads (and range-checks) the model's parameter block into desc.params
-    // and calls block.finish().
-    void (*read_params)(JsonObject& block, GlintDesc& desc);
-    // Optional (glint_lighting.h): whether the model shades scene.lights[light]
-    // itself at the camera's first hit, and that light's reflected radiance
-    // towards ctx.wo. Null for models that are plain BRDFs (GlintBxdf) under
-    // every light.
-    bool (*shades_light)(const GlintDesc& desc, const Scene& scene, int light) = nullptr;
-    glm::vec3 (*light_radiance)(const GlintLightingContext& ctx, int light) = nullptr;
-};
-
-std::span<const GlintModelInfo> glint_models();
-const GlintModelInfo* find_glint_model(std::string_view name);
-const GlintModelInfo* find_glint_model(GlintModelId id);
-std::string glint_model_names();  // "a, b, c" for error messages
+// Every model's descriptor, in GlintModelId order (model_list.cpp).
+std::span<const GlintModelDescriptor> glint_models();
+const GlintModelDescriptor* find_glint_model(std::string_view name);
+const GlintModelDescriptor* find_glint_model(GlintModelId id);
+const GlintModelDescriptor& glint_model(GlintModelId id);  // every id has one
+std::string glint_model_names();                           // "a, b, c" for error messages
+// "a, b, c": the models whose descriptors list `type`.
+std::string glint_models_shading(GlintLightType type);
 
 }  // namespace glintlab

@@ -170,8 +170,6 @@ void reset_model_params(GlintDesc& desc, GlintModelId model) {
     const GlintModelInfo* info = find_glint_model(model);
     if (info == nullptr) fail("unknown glint model id {}", static_cast<int>(model));
     desc.model_id = model;
-    desc.model = std::string(info->name);
-    desc.model_params = nlohmann::json::object();
     switch (model) {
         case GlintModelId::Deliot2023:
             desc.params = Deliot2023Params{};
@@ -187,7 +185,7 @@ void reset_model_params(GlintDesc& desc, GlintModelId model) {
             break;
         case GlintModelId::Wang2020:
             desc.base_albedo = glm::vec3(0.0f);  // it shades its lights itself: no base
-            // read_wang2020_params' domain: isotropic Beckmann, alpha in
+            // the wang2020 descriptor's check: isotropic Beckmann, alpha in
             // [0.02, 1] (the DPF roughness set, 001 §4.4), ln N <= 19.4.
             desc.ndf = NdfType::Beckmann;
             desc.alpha_x = desc.alpha_y = std::clamp(desc.alpha_x, 0.02f, 1.0f);
@@ -197,7 +195,7 @@ void reset_model_params(GlintDesc& desc, GlintModelId model) {
         case GlintModelId::Kneiphof2025:
             desc.base_albedo = glm::vec3(0.0f);  // it shades its lights itself: no base
             // 003 §7-8: the split-sum tables are isotropic GGX with alpha <= 1
-            // (read_kneiphof2025_params rejects anything else).
+            // (the kneiphof2025 descriptor's check rejects anything else).
             desc.ndf = NdfType::GGX;
             desc.alpha_x = desc.alpha_y = std::min(desc.alpha_x, 1.0f);
             desc.params = Kneiphof2025Params{};

@@ -17,6 +17,8 @@
 #include "glintlab/core/bloom.h"
 #include "glintlab/core/error.h"
 #include "glintlab/core/image.h"
+#include "glintlab/glints/glint_panel_model.h"
+#include "glintlab/glints/registry.h"
 #include "glintlab/realtime/forward_shaders.h"
 #include "glintlab/realtime/gl_context.h"
 #include "glintlab/realtime/gl_handles.h"
@@ -88,6 +90,20 @@ void slider(const char* label, float* v, float lo, float hi, bool log_scale = fa
     *v = std::clamp(*v, lo, hi);  // the scene loader's ranges
 }
 
+// A combo box over `items`; true when the selection changed.
+bool combo(const char* label, int* index, const std::vector<std::string>& items) {
+    bool changed = false;
+    if (ImGui::BeginCombo(label, items[static_cast<size_t>(*index)].c_str())) {
+        for (size_t i = 0; i < items.size(); ++i)
+            if (ImGui::Selectable(items[i].c_str(), static_cast<int>(i) == *index)) {
+                changed = static_cast<int>(i) != *index;
+                *index = static_cast<int>(i);
+            }
+        ImGui::EndCombo();
+    }
+    return changed;
+}
+
 // Material controls; returns nothing, edits in place within the loader's ranges.
 void material_panel(MaterialDesc& m) {
     if (m.type != MaterialDesc::Type::Glint) {
@@ -149,50 +165,65 @@ void material_panel(MaterialDesc& m) {
     } else {
         g.base_albedo = glm::vec3(0.0f);  // the loader's rule: no coat, no base
     }
-    // The model's own block, with the ranges of its read_params.
-    if (auto* p = std::get_if<Deliot2023Params>(&g.params)) {
-        slider("microfacet roughness R", &p->microfacet_roughness, 1e-4f, 1.0f, true);
-        slider("screen-space scale", &p->screen_space_scale, 0.5f, 8.0f);
-        slider("density randomization", &p->density_randomization, 0.0f, 50.0f);
-        ImGui::Checkbox("original defects", &p->original_defects);
-    } else if (auto* p = std::get_if<Zirr2016Params>(&g.params)) {
-        slider("microfacet roughness R", &p->microfacet_roughness, 1e-4f, 1.0f, true);
-        slider("max anisotropy", &p->max_anisotropy, 1.0f, 64.0f);
-        slider("screen-space scale", &p->screen_space_scale, 0.5f, 8.0f);
-    } else if (auto* p = std::get_if<Chermain2020Params>(&g.params)) {
-        slider("relative area", &p->relative_area, 0.0f, 1.0f);
-        slider("max anisotropy", &p->max_anisotropy, 1.0f, 32.0f);
-        slider("density randomization", &p->density_randomization, 0.0f, 8.0f);
-        ImGui::SliderInt("colours", &p->colour_count, 0, static_cast<int>(p->colour_table.size()));
-        for (int i = 0; i < p->colour_count; ++i)
-            ImGui::ColorEdit3(fmt::format("colour {}", i).c_str(),
-                              &p->colour_table[static_cast<size_t>(i)].x);
-    } else if (auto* p = std::get_if<Kneiphof2025Params>(&g.params)) {
-        // K and the black level select a prefiltered map (cached per value:
-        // a change costs one CPU prefilter, ~0.5 s, unless the dynamic IBL
-        // is on); the black level moves by decades so that dragging does not
-        // prefilter every intermediate value. The ranges are the loader's.
-        int k8 = p->levels == 8 ? 1 : 0;
-        if (ImGui::Combo("levels K", &k8, "4\0" "8\0")) p->levels = k8 == 1 ? 8 : 4;
-        int decade = static_cast<int>(std::lround(std::log10(p->black_level)));
-        if (ImGui::SliderInt("black level 10^", &decade, -8, 0))
-            p->black_level = std::pow(10.0f, static_cast<float>(decade));
-        int variant = p->variant == Kneiphof2025Params::Variant::Wang2020Style ? 1 : 0;
-        if (ImGui::Combo("variant", &variant, "kneiphof2025\0" "wang2020_style\0"))
-            p->variant = variant == 1 ? Kneiphof2025Params::Variant::Wang2020Style
-                                      : Kneiphof2025Params::Variant::Kneiphof2025;
-        if (p->variant == Kneiphof2025Params::Variant::Wang2020Style)
-            slider("gamma (deg)", &p->gamma_deg, 0.01f, 45.0f, true);
-        int gaussian = p->conditional_gaussian ? 0 : 1;
-        if (ImGui::Combo("gaussian", &gaussian, "conditional\0" "algorithm1\0"))
-            p->conditional_gaussian = gaussian == 0;
-        int smooth = p->smooth == Kneiphof2025Params::Smooth::Lobe ? 1 : 0;
-        if (ImGui::Combo("smooth", &smooth, "split_sum\0" "lobe\0"))
-            p->smooth = smooth == 1 ? Kneiphof2025Params::Smooth::Lobe
-                                    : Kneiphof2025Params::Smooth::SplitSum;
-        slider("microfacet roughness R", &p->microfacet_roughness, 1e-4f, 1.0f, true);
-        slider("screen-space scale", &p->screen_space_scale, 0.5f, 8.0f);
-        slider("density randomization", &p->density_randomization, 0.0f, 50.0f);
+    // The model's own block: one widget per row of its descriptor's
+    // parameter table (glint_panel_model.h), within the loader's ranges.
+    // Decade sliders serve values whose every change costs a prefilter
+    // (kneiphof2025's black level: ~0.5 s each unless the dynamic IBL is
+    // on), so that dragging does not prefilter every intermediate value.
+    for (GlintPanelWidget& w : glint_panel_model(g)) {
+        const char* label = w.key.c_str();
+        switch (w.type) {
+            case GlintParamType::Number: {
+                float v = static_cast<float>(std::get<double>(w.value));
+                if (w.ui == GlintParamUi::Decades) {
+                    int decade = static_cast<int>(std::lround(std::log10(v)));
+                    if (ImGui::SliderInt(fmt::format("{} 10^", w.key).c_str(), &decade,
+                                         static_cast<int>(std::ceil(std::log10(w.min))),
+                                         static_cast<int>(std::floor(std::log10(w.max)))))
+                        w.set(static_cast<double>(std::pow(10.0f, static_cast<float>(decade))));
+                } else {
+                    const float lo = static_cast<float>(w.min), hi = static_cast<float>(w.max);
+                    if (ImGui::SliderFloat(label, &v, lo, hi, "%.4g",
+                                           w.ui == GlintParamUi::Log ? ImGuiSliderFlags_Logarithmic
+                                                                     : ImGuiSliderFlags_None))
+                        w.set(static_cast<double>(std::clamp(v, lo, hi)));
+                }
+                break;
+            }
+            case GlintParamType::Integer: {
+                int v = std::get<int>(w.value);
+                if (!w.integer_values.empty()) {
+                    int index = 0;
+                    for (size_t i = 0; i < w.integer_values.size(); ++i)
+                        if (w.integer_values[i] == v) index = static_cast<int>(i);
+                    if (combo(label, &index, w.choices))
+                        w.set(w.integer_values[static_cast<size_t>(index)]);
+                } else if (ImGui::SliderInt(label, &v, static_cast<int>(w.min),
+                                            static_cast<int>(w.max))) {
+                    w.set(v);
+                }
+                break;
+            }
+            case GlintParamType::Bool: {
+                bool v = std::get<bool>(w.value);
+                if (ImGui::Checkbox(label, &v)) w.set(v);
+                break;
+            }
+            case GlintParamType::Enum: {
+                const std::string& v = std::get<std::string>(w.value);
+                int index = 0;
+                for (size_t i = 0; i < w.choices.size(); ++i)
+                    if (w.choices[i] == v) index = static_cast<int>(i);
+                if (combo(label, &index, w.choices)) w.set(w.choices[static_cast<size_t>(index)]);
+                break;
+            }
+        }
+    }
+    // Colour lists outside the table (chermain2020's colour table).
+    for (const GlintPanelColours& c : glint_panel_colours(g)) {
+        ImGui::SliderInt(c.key.c_str(), c.count, 0, c.max_count);
+        for (int i = 0; i < *c.count; ++i)
+            ImGui::ColorEdit3(fmt::format("{} {}", c.key, i).c_str(), &c.colours[i].x);
     }
 }
 

@@ -12,8 +12,7 @@
 #include <nlohmann/json.hpp>
 
 #include "glintlab/core/bloom.h"
-#include "glintlab/glints/model_params.h"
-#include "glintlab/glints/registry.h"
+#include "glintlab/glints/glint_desc.h"
 #include "glintlab/microfacet/bxdfs.h"
 #include "glintlab/scene/camera.h"
 #include "glintlab/scene/environment.h"
@@ -21,44 +20,16 @@
 
 namespace glintlab {
 
-// How a material computes Fresnel reflectance.
-struct FresnelDesc {
-    enum class Mode { None, Schlick, Conductor, Dielectric };
-    Mode mode = Mode::None;  // None: F = 1 (jakob2014's default for metallic flakes)
-    glm::vec3 f0{1.0f};      // Schlick
-    glm::vec3 eta{1.0f};     // Conductor (complex IOR eta + i k) or Dielectric (eta.x)
-    glm::vec3 k{0.0f};
-};
-
-// The glint material of ARCHITECTURE.md §4: shared parameters + the model's own.
-struct GlintDesc {
-    std::string model = "smooth";
-    GlintModelId model_id = GlintModelId::Smooth;
-    NdfType ndf = NdfType::Beckmann;
-    float alpha_x = 0.3f, alpha_y = 0.3f;
-    float log_density = 20.0f;  // ln(microfacets per unit uv area)
-    FresnelDesc fresnel;
-    glm::vec3 color{1.0f};  // glint tint, multiplies the BRDF
-    // Lambertian base under the flakes' dielectric coating (002 Fig. 7's
-    // "dielectric flakes on a diffuse base"); 0 = none. Needs a dielectric
-    // Fresnel: its eta is the coating interface (glint_bxdf.h).
-    glm::vec3 base_albedo{0.0f};
-    bool has_base() const { return base_albedo != glm::vec3(0.0f); }
-    uint32_t seed = 0;
-    nlohmann::json model_params = nlohmann::json::object();  // the active model's block, as written
-    GlintModelParams params;  // the active model's parameters, as read
-};
-
 struct MaterialDesc {
     enum class Type { Diffuse, Conductor, Dielectric, Plastic, Glint };
     std::string name;
     Type type = Type::Diffuse;
-    glm::vec3 albedo{0.5f};   // Diffuse, Plastic (diffuse part)
+    glm::vec3 albedo{0.5f};  // Diffuse, Plastic (diffuse part)
     NdfType ndf = NdfType::GGX;
     float alpha_x = 0.2f, alpha_y = 0.2f;
-    glm::vec3 eta{1.5f};      // Conductor: complex IOR; Dielectric/Plastic: eta.x
+    glm::vec3 eta{1.5f};  // Conductor: complex IOR; Dielectric/Plastic: eta.x
     glm::vec3 k{0.0f};
-    GlintDesc glint;          // Glint
+    GlintDesc glint;  // Glint
     bool needs_uv() const { return type == Type::Glint; }
 };
 

@@ -10,10 +10,10 @@
 
 #include "glintlab/core/error.h"
 #include "glintlab/core/image.h"
-#include "glintlab/glints/registry.h"
+#include "glintlab/core/json_reader.h"
+#include "glintlab/glints/glint_reader.h"
 #include "glintlab/scene/environment_file.h"
 #include "glintlab/scene/gltf_loader.h"
-#include "glintlab/scene/json_reader.h"
 #include "glintlab/scene/obj_loader.h"
 #include "glintlab/scene/shapes.h"
 #include "glintlab/scene/shapes_heightfield.h"
@@ -27,6 +27,10 @@ constexpr double kInf = std::numeric_limits<double>::infinity();
 // Scene coordinates beyond this are certainly a mistake (and break fp32 traversal).
 constexpr float kMaxCoord = 1e6f;
 
+// A dielectric's relative index of refraction, (1, 4]: eta = 1 is no
+// interface (and divides by zero in the Fresnel and refraction terms).
+const NumberRange kEtaRange{1.0, 4.0, true, false, true};
+
 const std::vector<std::string> kNdfNames = {"beckmann", "ggx"};
 
 NdfType read_ndf(JsonObject& o, NdfType fallback) {
@@ -35,7 +39,8 @@ NdfType read_ndf(JsonObject& o, NdfType fallback) {
 }
 
 // "roughness": α (slope roughness of Beckmann/GGX), one number (isotropic) or [αx, αy].
-void read_roughness(JsonObject& o, float min, float* ax, float* ay) {
+// `min` is the documented decimal (a value equal to it is accepted).
+void read_roughness(JsonObject& o, double min, float* ax, float* ay) {
     const glm::vec2 a = o.vec2("roughness", glm::vec2(*ax, *ay), min, 1.0f);
     *ax = a.x;
     *ay = a.y;
@@ -88,7 +93,7 @@ FresnelDesc read_fresnel(JsonObject& parent) {
         read_conductor_ior(o, &f.eta, &f.k);
     } else if (type == "dielectric") {
         f.mode = FresnelDesc::Mode::Dielectric;
-        f.eta = glm::vec3(static_cast<float>(o.number("eta", 1.5, 1.0001, 4.0)));
+        f.eta = glm::vec3(static_cast<float>(o.number("eta", 1.5, kEtaRange)));
     }
     o.finish();
     return f;
@@ -96,15 +101,9 @@ FresnelDesc read_fresnel(JsonObject& parent) {
 
 GlintDesc read_glint(JsonObject& o) {
     GlintDesc g;
-    const std::string model = o.required_string("model");
-    const GlintModelInfo* info = find_glint_model(model);
-    if (!info)
-        o.error("model", fmt::format("unknown glint model \"{}\": known models are {}", model,
-                                     glint_model_names()));
-    g.model = model;
-    g.model_id = info->id;
+    g.model_id = read_glint_model_name(o);
     g.ndf = read_ndf(o, NdfType::Beckmann);
-    read_roughness(o, 1e-3f, &g.alpha_x, &g.alpha_y);
+    read_roughness(o, 1e-3, &g.alpha_x, &g.alpha_y);
     g.log_density = static_cast<float>(o.number("log_density", 20.0, -20.0, 60.0));
     g.fresnel = read_fresnel(o);
     g.color = o.color("color", glm::vec3(1.0f), 0.0f, 1.0f);
@@ -113,28 +112,8 @@ GlintDesc read_glint(JsonObject& o) {
         o.error("base_albedo",
                 "a diffuse base lies under a dielectric coating: it needs \"fresnel\": "
                 "{\"type\": \"dielectric\", \"eta\": ...} (the coating's interface)");
-    if (g.has_base() && info->shades_light != nullptr)
-        o.error("base_albedo",
-                fmt::format("glint model \"{}\" shades its lights itself (prefiltered or "
-                            "enumerated radiance) and has no diffuse base; use another model or "
-                            "omit base_albedo",
-                            model));
     g.seed = static_cast<uint32_t>(o.number("seed", 0.0, 0.0, 4294967295.0));
-    // Every known model may keep its block (switching models is one word);
-    // only the active one is read, the others are checked to be objects.
-    for (const GlintModelInfo& m : glint_models()) {
-        if (!o.has(m.name)) continue;
-        auto block = o.object(m.name);
-        if (m.name == model) {
-            info->read_params(*block, g);
-            g.model_params = *o.raw(m.name);
-        }
-    }
-    if (!o.has(model)) {
-        nlohmann::json empty = nlohmann::json::object();
-        JsonObject block(empty, o.path() + "/" + model, o.file());
-        info->read_params(block, g);
-    }
+    read_glint_model_blocks(o, g);  // the model's block, through its descriptor
     return g;
 }
 
@@ -156,13 +135,13 @@ MaterialDesc read_material(JsonObject& o) {
         m.type = MaterialDesc::Type::Dielectric;
         m.ndf = read_ndf(o, NdfType::GGX);
         read_roughness(o, 0.0f, &m.alpha_x, &m.alpha_y);
-        m.eta = glm::vec3(static_cast<float>(o.number("eta", 1.5, 1.0001, 4.0)));
+        m.eta = glm::vec3(static_cast<float>(o.number("eta", 1.5, kEtaRange)));
     } else if (type == "plastic") {
         m.type = MaterialDesc::Type::Plastic;
         m.albedo = o.color("albedo", m.albedo, 0.0f, 1.0f);
         m.ndf = read_ndf(o, NdfType::GGX);
         read_roughness(o, 0.0f, &m.alpha_x, &m.alpha_y);
-        m.eta = glm::vec3(static_cast<float>(o.number("eta", 1.5, 1.0001, 4.0)));
+        m.eta = glm::vec3(static_cast<float>(o.number("eta", 1.5, kEtaRange)));
     } else {
         m.type = MaterialDesc::Type::Glint;
         m.glint = read_glint(o);
@@ -405,22 +384,28 @@ Camera read_camera(JsonObject& o) {
     return c;
 }
 
+GlintLightType glint_light_type(const Light& l) {
+    if (std::holds_alternative<PointLight>(l)) return GlintLightType::Point;
+    if (std::holds_alternative<DirectionalLight>(l)) return GlintLightType::Directional;
+    if (std::holds_alternative<SphereLight>(l)) return GlintLightType::Sphere;
+    return GlintLightType::Environment;
+}
+
+// Each glint material's model must declare every light type of the scene
+// (lights[i] is /lights/i: every light entry adds exactly one light).
 void check_model_lights(const Scene& scene) {
-    for (const MaterialDesc& m : scene.materials) {
+    for (size_t mi = 0; mi < scene.materials.size(); ++mi) {
+        const MaterialDesc& m = scene.materials[mi];
         if (m.type != MaterialDesc::Type::Glint) continue;
-        const GlintModelInfo* info = find_glint_model(m.glint.model);
-        for (const Light& l : scene.lights) {
-            const char* unsupported = nullptr;
-            if (std::holds_alternative<PointLight>(l) && !info->point_lights) unsupported = "point";
-            if (std::holds_alternative<DirectionalLight>(l) && !info->directional_lights)
-                unsupported = "directional";
-            if (std::holds_alternative<SphereLight>(l) && !info->sphere_lights)
-                unsupported = "sphere";
-            if (std::holds_alternative<EnvironmentLight>(l) && !info->environment_lights)
-                unsupported = "environment";
-            if (unsupported)
-                fail("{}: material \"{}\": glint model \"{}\" cannot shade {} lights",
-                     scene.file.string(), m.name, m.glint.model, unsupported);
+        for (size_t li = 0; li < scene.lights.size(); ++li) {
+            const GlintLightType type = glint_light_type(scene.lights[li]);
+            if (glint_model_shades(m.glint.model_id, type)) continue;
+            fail(
+                "{}: /lights/{} (type \"{}\"): glint model \"{}\" of material \"{}\" "
+                "(/materials/{}) cannot shade {} lights; models that can: {}",
+                scene.file.string(), li, glint_light_type_name(type),
+                glint_model_name(m.glint.model_id), m.name, mi, glint_light_type_name(type),
+                glint_models_shading_names(type));
         }
     }
 }
@@ -486,12 +471,7 @@ Scene parse_scene(const nlohmann::json& document, const std::filesystem::path& f
 Scene load_scene(const std::filesystem::path& file) {
     std::ifstream in(file);
     if (!in) fail("{}: cannot open scene file", file.string());
-    nlohmann::json document;
-    try {
-        document = nlohmann::json::parse(in);
-    } catch (const nlohmann::json::parse_error& e) {
-        fail("{}: invalid JSON: {}", file.string(), e.what());
-    }
+    const nlohmann::json document = parse_json(in, file.string());
     return parse_scene(document, file);
 }
 

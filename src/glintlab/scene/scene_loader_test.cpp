@@ -44,7 +44,7 @@ TEST(SceneLoader, ValidSceneParses) {
     EXPECT_EQ(s.camera.height, 8);
     EXPECT_EQ(s.render.spp, 2);
     ASSERT_EQ(s.materials.size(), 2u);
-    EXPECT_EQ(s.materials[1].glint.model, "smooth");
+    EXPECT_EQ(s.materials[1].glint.model_id, GlintModelId::Smooth);
     EXPECT_FLOAT_EQ(s.materials[1].glint.alpha_y, 0.3f);
     EXPECT_EQ(s.materials[1].glint.ndf, NdfType::GGX);
     ASSERT_EQ(s.shapes.size(), 2u);
@@ -164,6 +164,25 @@ TEST(SceneLoader, InactiveModelBlocksAreKeptForSwitching) {
     EXPECT_NO_THROW(parse_scene(j, "ok.json"));
     j["materials"][1]["smooth"] = {{"bogus", 1}};
     EXPECT_NE(error_of(j).find("/materials/1/smooth/bogus"), std::string::npos) << error_of(j);
+}
+
+// Regression: the documented minimum roughness 0.001 of a glint material was
+// rejected as "value 0.001 out of range: allowed in [0.001, 1]" (float bound).
+TEST(SceneLoader, DocumentedBoundsAreAccepted) {
+    nlohmann::json j = valid_scene();
+    j["materials"][1]["roughness"] = 0.001;
+    EXPECT_EQ(error_of(j), "<no error>");
+    j["materials"][1]["roughness"] = 0.0009;
+    EXPECT_NE(error_of(j).find("allowed in [0.001, 1]"), std::string::npos) << error_of(j);
+    // Dielectric eta is (1, 4]: 1 itself is rejected, anything above accepted.
+    nlohmann::json d = valid_scene();
+    d["materials"][0] = {{"name", "d"}, {"type", "dielectric"}, {"eta", 1.00001}};
+    d["shapes"][0]["material"] = "d";
+    EXPECT_EQ(error_of(d), "<no error>");
+    d["materials"][0]["eta"] = 1.0;
+    EXPECT_NE(error_of(d).find("/materials/0/eta: value 1 out of range: allowed in (1, 4]"),
+              std::string::npos)
+        << error_of(d);
 }
 
 }  // namespace

@@ -10,7 +10,6 @@
 #include "glintlab/core/error.h"
 #include "glintlab/core/glsl.h"
 #include "glintlab/glints/chermain2020/dictionary.h"
-#include "glintlab/scene/json_reader.h"
 #include "glintlab/scene/scene.h"
 
 // The only translation unit that compiles chermain2020.glsl as C++. Its
@@ -125,36 +124,6 @@ glm::vec3 chermain2020_footprint_ndf_rgb(glm::vec3 h, const Footprint& footprint
                                          const GlintDesc& desc) {
     return chermain2020_ndf_rgb(h, footprint, target_of(desc),
                                 std::get<Chermain2020Params>(desc.params));
-}
-
-void read_chermain2020_params(JsonObject& block, GlintDesc& desc) {
-    if (desc.ndf != NdfType::Beckmann)
-        fail(
-            "{}: {}: chermain2020 supports only \"ndf\": \"beckmann\" (its multiscale SDF is a "
-            "product of two marginals, 004 §4.3; GGX is not separable)",
-            block.file(), block.path());
-    Chermain2020Params p;
-    p.relative_area = static_cast<float>(block.number("relative_area", p.relative_area, 0.0, 1.0));
-    // gamma < 1 is meaningless (major >= minor); above 32 the per-level cell
-    // walk is capped at 64 cells per axis.
-    p.max_anisotropy =
-        static_cast<float>(block.number("max_anisotropy", p.max_anisotropy, 1.0, 32.0));
-    // zeta in dictionary levels; 8 levels is a factor 4^8 in density already.
-    p.density_randomization = static_cast<float>(
-        block.number("density_randomization", p.density_randomization, 0.0, 8.0));
-    // "colours": [[r, g, b], ...], 1 to 8 tints in [0, 1] (004 §7.1 colour table).
-    if (const nlohmann::json* colours = block.raw("colours")) {
-        const std::string where = fmt::format("{}: {}/colours", block.file(), block.path());
-        if (!colours->is_array() || colours->empty() || colours->size() > p.colour_table.size())
-            fail("{}: expected an array of 1 to {} RGB colours [r, g, b] with components in [0, 1]",
-                 where, p.colour_table.size());
-        p.colour_count = static_cast<int>(colours->size());
-        for (size_t i = 0; i < colours->size(); ++i)
-            p.colour_table[i] =
-                json_to_vec3((*colours)[i], fmt::format("{}/{}", where, i), 0.0f, 1.0f);
-    }
-    desc.params = p;
-    block.finish();
 }
 
 }  // namespace glintlab

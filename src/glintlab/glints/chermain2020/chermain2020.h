@@ -12,7 +12,6 @@
 
 namespace glintlab {
 
-class JsonObject;
 struct GlintDesc;
 
 // The shared glint parameters the model reads, as plain values.
@@ -59,9 +58,5 @@ glm::vec2 chermain2020_dict_slope(const Chermain2020CellInfo& cell, glm::vec2 sl
 float chermain2020_footprint_ndf(glm::vec3 h, const Footprint& footprint, const GlintDesc& desc);
 glm::vec3 chermain2020_footprint_ndf_rgb(glm::vec3 h, const Footprint& footprint,
                                          const GlintDesc& desc);
-
-// Reads the "chermain2020" block into desc.params with range checks; rejects
-// a material whose ndf is not Beckmann (004 §4.3: the SDF must be separable).
-void read_chermain2020_params(JsonObject& block, GlintDesc& desc);
 
 }  // namespace glintlab

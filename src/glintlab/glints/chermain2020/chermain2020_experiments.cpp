@@ -184,7 +184,6 @@ std::vector<Chermain2020FurnaceCase> chermain2020_furnace(const Chermain2020Furn
 
 double chermain2020_reciprocity(int pairs, uint64_t seed) {
     GlintDesc desc;
-    desc.model = "chermain2020";
     desc.model_id = GlintModelId::Chermain2020;
     desc.fresnel.mode = FresnelDesc::Mode::Schlick;
     desc.fresnel.f0 = glm::vec3(0.9f, 0.6f, 0.3f);

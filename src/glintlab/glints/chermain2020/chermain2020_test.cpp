@@ -5,9 +5,11 @@
 #include <cmath>
 
 #include "glintlab/core/error.h"
+#include "glintlab/core/json_reader.h"
 #include "glintlab/core/rng.h"
 #include "glintlab/glints/chermain2020/chermain2020_experiments.h"
-#include "glintlab/scene/json_reader.h"
+#include "glintlab/glints/glint_reader.h"
+#include "glintlab/glints/registry.h"
 #include "glintlab/scene/scene.h"
 
 namespace glintlab {
@@ -141,19 +143,19 @@ TEST(Chermain2020, ReadsParametersAndRejectsGgx) {
     desc.ndf = NdfType::Beckmann;
     const nlohmann::json ok_json = {{"relative_area", 0.25}, {"max_anisotropy", 4}};
     JsonObject ok(ok_json, "/materials/0/chermain2020", "scene.json");
-    read_chermain2020_params(ok, desc);
+    read_glint_params(*find_glint_model("chermain2020"), ok, desc);
     const auto& p = std::get<Chermain2020Params>(desc.params);
     EXPECT_EQ(p.relative_area, 0.25f);
     EXPECT_EQ(p.max_anisotropy, 4.0f);
     EXPECT_EQ(p.density_randomization, 0.0f);
     const nlohmann::json bad_json = {{"max_anisotropy", 0.5}};
     JsonObject bad(bad_json, "/materials/0/chermain2020", "scene.json");
-    EXPECT_THROW(read_chermain2020_params(bad, desc), Error);
+    EXPECT_THROW(read_glint_params(*find_glint_model("chermain2020"), bad, desc), Error);
     desc.ndf = NdfType::GGX;
     const nlohmann::json empty = nlohmann::json::object();
     JsonObject ggx(empty, "/materials/0/chermain2020", "scene.json");
     try {
-        read_chermain2020_params(ggx, desc);
+        read_glint_params(*find_glint_model("chermain2020"), ggx, desc);
         ADD_FAILURE() << "ggx accepted";
     } catch (const Error& e) {
         EXPECT_NE(std::string(e.what()).find("beckmann"), std::string::npos) << e.what();
@@ -205,7 +207,7 @@ TEST(Chermain2020, ReadsColourTable) {
     desc.ndf = NdfType::Beckmann;
     const nlohmann::json ok_json = {{"colours", {{1, 0.5, 0}, {0, 0, 1}}}};
     JsonObject ok(ok_json, "/materials/0/chermain2020", "scene.json");
-    read_chermain2020_params(ok, desc);
+    read_glint_params(*find_glint_model("chermain2020"), ok, desc);
     const auto& p = std::get<Chermain2020Params>(desc.params);
     EXPECT_EQ(p.colour_count, 2);
     EXPECT_EQ(p.colour_table[0], glm::vec3(1, 0.5f, 0));
@@ -215,7 +217,7 @@ TEST(Chermain2020, ReadsColourTable) {
           nlohmann::json{{"colours", nlohmann::json(9, {0.5, 0.5, 0.5})}}}) {
         JsonObject bad(bad_json, "/materials/0/chermain2020", "scene.json");
         try {
-            read_chermain2020_params(bad, desc);
+            read_glint_params(*find_glint_model("chermain2020"), bad, desc);
             ADD_FAILURE() << "accepted " << bad_json.dump();
         } catch (const Error& e) {
             EXPECT_NE(std::string(e.what()).find("colours"), std::string::npos) << e.what();

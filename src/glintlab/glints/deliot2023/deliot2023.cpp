@@ -3,7 +3,6 @@
 #include <variant>
 
 #include "glintlab/core/glsl.h"
-#include "glintlab/scene/json_reader.h"
 #include "glintlab/scene/scene.h"
 
 // The only translation unit that compiles deliot2023.glsl (and the shared
@@ -38,23 +37,6 @@ float deliot2023_footprint_ndf(glm::vec3 h, const Footprint& footprint, const Gl
     t.log_density = desc.log_density;
     t.seed = desc.seed;
     return deliot2023_ndf(h, footprint, t, std::get<Deliot2023Params>(desc.params));
-}
-
-void read_deliot2023_params(JsonObject& block, GlintDesc& desc) {
-    Deliot2023Params p;
-    // R in (0, 1] (000 §3); 1e-4 stands for the open end: below it the angular
-    // grid h.xy / R has cells smaller than fp32 resolves near the normal.
-    p.microfacet_roughness =
-        static_cast<float>(block.number("microfacet_roughness", p.microfacet_roughness, 1e-4, 1.0));
-    // Below 0.5 px glints are smaller than a pixel and alias; above 8 px the
-    // cells exceed what the authors' 1.5-2 px range suggests anyone wants.
-    p.screen_space_scale =
-        static_cast<float>(block.number("screen_space_scale", p.screen_space_scale, 0.5, 8.0));
-    p.density_randomization = static_cast<float>(
-        block.number("density_randomization", p.density_randomization, 0.0, 50.0));
-    p.original_defects = block.boolean("original_defects", p.original_defects);
-    desc.params = p;
-    block.finish();
 }
 
 }  // namespace glintlab

@@ -12,7 +12,6 @@
 
 namespace glintlab {
 
-class JsonObject;
 struct GlintDesc;
 
 // The target NDF and the shared glint parameters, as plain values.
@@ -46,8 +45,5 @@ glm::vec3 deliot2023_footprint_ellipse(glm::vec2 duvdx, glm::vec2 duvdy, bool or
 
 // The material's D_P: desc.params must hold Deliot2023Params.
 float deliot2023_footprint_ndf(glm::vec3 h, const Footprint& footprint, const GlintDesc& desc);
-
-// Reads the "deliot2023" block into desc.params with range checks.
-void read_deliot2023_params(JsonObject& block, GlintDesc& desc);
 
 }  // namespace glintlab

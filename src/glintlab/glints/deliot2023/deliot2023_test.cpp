@@ -8,9 +8,11 @@
 #include <cmath>
 
 #include "glintlab/core/error.h"
+#include "glintlab/core/json_reader.h"
 #include "glintlab/core/rng.h"
 #include "glintlab/glints/deliot2023/deliot2023_experiments.h"
-#include "glintlab/scene/json_reader.h"
+#include "glintlab/glints/glint_reader.h"
+#include "glintlab/glints/registry.h"
 #include "glintlab/scene/scene.h"
 
 namespace glintlab {
@@ -128,7 +130,7 @@ TEST(Deliot2023, ReadsParametersWithRangeChecks) {
     const nlohmann::json ok_json =
         nlohmann::json::parse(R"({"microfacet_roughness": 0.03, "original_defects": true})");
     JsonObject ok(ok_json, "/deliot2023", "scene.json");
-    read_deliot2023_params(ok, desc);
+    read_glint_params(*find_glint_model("deliot2023"), ok, desc);
     const auto& p = std::get<Deliot2023Params>(desc.params);
     EXPECT_FLOAT_EQ(p.microfacet_roughness, 0.03f);
     EXPECT_FLOAT_EQ(p.screen_space_scale, 1.5f);
@@ -136,13 +138,13 @@ TEST(Deliot2023, ReadsParametersWithRangeChecks) {
     EXPECT_TRUE(p.original_defects);
     const nlohmann::json bad_json = nlohmann::json::parse(R"({"density_randomization": 51})");
     JsonObject bad(bad_json, "/deliot2023", "scene.json");
-    EXPECT_THROW(read_deliot2023_params(bad, desc), Error);
+    EXPECT_THROW(read_glint_params(*find_glint_model("deliot2023"), bad, desc), Error);
     const nlohmann::json zero_r_json = nlohmann::json::parse(R"({"microfacet_roughness": 0})");
     JsonObject zero_r(zero_r_json, "/deliot2023", "scene.json");
-    EXPECT_THROW(read_deliot2023_params(zero_r, desc), Error);
+    EXPECT_THROW(read_glint_params(*find_glint_model("deliot2023"), zero_r, desc), Error);
     const nlohmann::json unknown_json = nlohmann::json::parse(R"({"roughness": 0.1})");
     JsonObject unknown(unknown_json, "/deliot2023", "scene.json");
-    EXPECT_THROW(read_deliot2023_params(unknown, desc), Error);
+    EXPECT_THROW(read_glint_params(*find_glint_model("deliot2023"), unknown, desc), Error);
 }
 
 }  // namespace

@@ -9,7 +9,6 @@
 #include "glintlab/glints/glint_bxdf.h"
 #include "glintlab/glints/glint_lighting.h"
 #include "glintlab/scene/environment.h"
-#include "glintlab/scene/json_reader.h"
 #include "glintlab/scene/scene.h"
 
 namespace glintlab {
@@ -119,25 +118,6 @@ glm::vec3 explicit_light_radiance(const GlintLightingContext& ctx, int light) {
         return cone_radiance(ctx, {axis, std::cos(gamma), pl->intensity / (dist2 * sigma)});
     }
     return glm::vec3(0.0f);
-}
-
-void read_explicit_params(JsonObject& block, GlintDesc& desc) {
-    ExplicitParams p;
-    // 002 §3.1: "a constant γ between 0.5 and 6 degrees in our scenes".
-    p.gamma_deg = float(block.number("gamma_deg", p.gamma_deg, 0.5, 6.0));
-    p.max_facets_per_footprint =
-        block.number("max_facets_per_footprint", p.max_facets_per_footprint, 1.0, 1e9);
-    block.finish();
-    if (!(desc.log_density >= 0.0f && desc.log_density <= 30.0f)) {
-        std::string parent = block.path();
-        const size_t slash = parent.rfind('/');
-        if (slash != std::string::npos) parent.resize(slash);
-        fail(
-            "{}: {}/log_density: {} is out of range for the explicit model: [0, 30] (N = "
-            "e^log_density facets per unit uv area are enumerated one by one)",
-            block.file(), parent, desc.log_density);
-    }
-    desc.params = p;
 }
 
 }  // namespace glintlab

@@ -21,7 +21,6 @@
 
 namespace glintlab {
 
-class JsonObject;
 struct GlintDesc;
 struct GlintLightingContext;
 struct Scene;
@@ -35,7 +34,5 @@ float explicit_footprint_ndf(glm::vec3 wo, glm::vec3 wi, const Footprint& footpr
 
 bool explicit_shades_light(const GlintDesc& desc, const Scene& scene, int light);
 glm::vec3 explicit_light_radiance(const GlintLightingContext& ctx, int light);
-
-void read_explicit_params(JsonObject& block, GlintDesc& desc);
 
 }  // namespace glintlab

@@ -22,7 +22,6 @@ struct ShadingCase {
     GlintDesc desc;
     GlintLightingContext ctx;
     ShadingCase() {
-        desc.model = "explicit";
         desc.model_id = GlintModelId::Explicit;
         desc.ndf = NdfType::GGX;
         desc.alpha_x = 0.3f;
@@ -58,8 +57,8 @@ struct ShadingCase {
 TEST(ExplicitModel, RegisteredForEveryLight) {
     const GlintModelInfo* m = find_glint_model("explicit");
     ASSERT_NE(m, nullptr);
-    EXPECT_TRUE(m->point_lights && m->directional_lights && m->sphere_lights &&
-                m->environment_lights);
+    EXPECT_TRUE(m->shades(GlintLightType::Point) && m->shades(GlintLightType::Directional) &&
+                m->shades(GlintLightType::Sphere) && m->shades(GlintLightType::Environment));
     EXPECT_NE(m->light_radiance, nullptr);
 }
 

@@ -10,14 +10,16 @@
 #include <numbers>
 
 #include "glintlab/core/error.h"
+#include "glintlab/core/json_reader.h"
 #include "glintlab/counting/exact_binomial.h"
 #include "glintlab/glints/explicit/binomial_half.h"
 #include "glintlab/glints/explicit/count_chi2.h"
 #include "glintlab/glints/explicit/explicit.h"
 #include "glintlab/glints/explicit/explicit_model.h"
+#include "glintlab/glints/glint_reader.h"
+#include "glintlab/glints/registry.h"
 #include "glintlab/microfacet/chi2_test_util.h"
 #include "glintlab/microfacet/microfacet.h"
-#include "glintlab/scene/json_reader.h"
 #include "glintlab/scene/scene.h"
 
 namespace glintlab {
@@ -290,7 +292,7 @@ TEST(ExplicitInput, BadInputIsAClearError) {
         GlintDesc desc;
         desc.log_density = log_density;
         JsonObject block(j, "/materials/0/glint/explicit", "scene.json");
-        read_explicit_params(block, desc);
+        read_glint_params(*find_glint_model("explicit"), block, desc);
         return desc;
     };
     EXPECT_NO_THROW(read(nlohmann::json{{"gamma_deg", 2.0}}, 20.0f));

@@ -8,16 +8,11 @@
 #include "glintlab/core/error.h"
 #include "glintlab/core/hash.h"
 #include "glintlab/microfacet/microfacet.h"
-#include "glintlab/scene/json_reader.h"
 #include "glintlab/scene/scene.h"
 
 namespace glintlab {
 namespace jakob2014 {
 namespace {
-
-// Largest log density: N must be an exact integer in double precision (the
-// multinomial's Gaussian branch works in doubles): N <= 2^53.
-constexpr double kMaxLogDensity = 36.7;
 
 // E[ωi·h] of the Eq. 11 statistic E[σ(Ω_h)] = σ(Ω_o) / (4 E[ωi·h]): a
 // typical 75° between light and view (MODELS.md).
@@ -202,31 +197,6 @@ float jakob2014_pdf(const GlintDesc& desc, glm::vec3 wo, glm::vec3 wi, bool full
     }
     sum *= g1 / (4.0 * double(wo.z));
     return float(sum / kQmcPoints);
-}
-
-void read_jakob2014_params(JsonObject& block, GlintDesc& desc) {
-    Jakob2014Params p;
-    // 002 §3.1: "a constant γ between 0.5 and 6 degrees in our scenes".
-    p.gamma_deg = float(block.number("gamma_deg", p.gamma_deg, 0.5, 6.0));
-    p.chromatic = block.boolean("chromatic", p.chromatic);
-    // ε: 0 = exact traversal (never approximate); the paper tried 1 % and uses 10 %.
-    p.error_threshold = float(block.number("error_threshold", p.error_threshold, 0.0, 0.5));
-    // Below 8 levels a 1e6-particle query cannot resolve single particles;
-    // above 28 the node ids (4^depth) would not fit 64 bits.
-    p.max_depth = block.integer("max_depth", p.max_depth, 8, 28);
-    p.query_area = block.number("query_area", p.query_area, 1e-16, 1.0);
-    block.finish();
-    if (double(desc.log_density) > jakob2014::kMaxLogDensity) {
-        std::string parent = block.path();
-        const size_t slash = parent.rfind('/');
-        if (slash != std::string::npos) parent.resize(slash);
-        fail(
-            "{}: {}/log_density: {} is out of range for the jakob2014 model: at most {} (N = "
-            "e^log_density "
-            "particles per unit uv area must be an exact integer in double precision, N <= 2^53)",
-            block.file(), parent, desc.log_density, jakob2014::kMaxLogDensity);
-    }
-    desc.params = p;
 }
 
 }  // namespace glintlab

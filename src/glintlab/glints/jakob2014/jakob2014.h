@@ -23,10 +23,13 @@
 
 namespace glintlab {
 
-class JsonObject;
 struct GlintDesc;
 
 namespace jakob2014 {
+
+// Largest log density: N must be an exact integer in double precision (the
+// multinomial's Gaussian branch works in doubles): N <= 2^53.
+inline constexpr double kMaxLogDensity = 36.7;
 
 // The query model of a glint material (desc.params must hold Jakob2014Params).
 Model make_model(const GlintDesc& desc);
@@ -65,8 +68,5 @@ std::optional<glm::vec3> jakob2014_sample_wi(const GlintDesc& desc, glm::vec3 wo
 // convolved with the cone, by 64-point QMC (002 §4). `full_sphere` keeps
 // directions below the horizon (the density of wi before rejection).
 float jakob2014_pdf(const GlintDesc& desc, glm::vec3 wo, glm::vec3 wi, bool full_sphere = false);
-
-// Reads the "jakob2014" block into desc.params with range checks.
-void read_jakob2014_params(JsonObject& block, GlintDesc& desc);
 
 }  // namespace glintlab

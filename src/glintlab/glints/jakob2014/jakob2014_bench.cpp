@@ -42,7 +42,6 @@ const Setting kSettings[] = {
 
 GlintDesc setting_desc(const Setting& s) {
     GlintDesc d;
-    d.model = "jakob2014";
     d.model_id = GlintModelId::Jakob2014;
     d.alpha_x = d.alpha_y = s.alpha;
     d.log_density = float(s.log_density);
@@ -141,7 +140,6 @@ void BM_Jakob2014Render(benchmark::State& state, bool smooth) {
     if (smooth)
         for (MaterialDesc& m : scene.materials)
             if (m.type == MaterialDesc::Type::Glint) {
-                m.glint.model = "smooth";
                 m.glint.model_id = GlintModelId::Smooth;
                 m.glint.params = SmoothParams{};
             }
@@ -169,7 +167,6 @@ void BM_Jakob2014DefaultScene(benchmark::State& state, bool smooth) {
     if (!smooth)
         for (MaterialDesc& m : scene.materials)
             if (m.type == MaterialDesc::Type::Glint) {
-                m.glint.model = "jakob2014";
                 m.glint.model_id = GlintModelId::Jakob2014;
                 m.glint.log_density = float(std::log(1e6));
                 Jakob2014Params p;

@@ -162,7 +162,6 @@ std::vector<Table1Row> table1_statistics(int pixels, uint64_t seed) {
     std::vector<Table1Row> rows;
     for (const Setting& s : settings) {
         GlintDesc desc;
-        desc.model = "jakob2014";
         desc.model_id = GlintModelId::Jakob2014;
         desc.ndf = NdfType::Beckmann;
         desc.alpha_x = desc.alpha_y = s.alpha;
@@ -232,7 +231,6 @@ ComparedModels compared_models(int ndf, float alpha, double gamma_deg, double lo
     m.field.alpha_x = m.field.alpha_y = alpha;
     // The glint material stores ln N as a float: give the field the same value.
     m.field.log_density = static_cast<double>(static_cast<float>(log_density));
-    m.desc.model = "jakob2014";
     m.desc.model_id = GlintModelId::Jakob2014;
     m.desc.ndf = m.field.ndf;
     m.desc.alpha_x = m.desc.alpha_y = alpha;

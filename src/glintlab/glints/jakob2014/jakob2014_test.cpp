@@ -13,14 +13,16 @@
 #include <thread>
 
 #include "glintlab/core/error.h"
+#include "glintlab/core/json_reader.h"
 #include "glintlab/core/rng.h"
 #include "glintlab/glints/glint_bxdf.h"
+#include "glintlab/glints/glint_reader.h"
 #include "glintlab/glints/jakob2014/jakob2014_experiments.h"
 #include "glintlab/glints/jakob2014/multinomial.h"
 #include "glintlab/glints/jakob2014/spherical_geometry.h"
+#include "glintlab/glints/registry.h"
 #include "glintlab/microfacet/chi2_test_util.h"
 #include "glintlab/microfacet/microfacet.h"
-#include "glintlab/scene/json_reader.h"
 #include "glintlab/scene/scene.h"
 
 namespace glintlab {
@@ -418,7 +420,6 @@ TEST(Jakob2014Ndf, CountsFollowTheBinomialLaw) {
 
 GlintDesc jakob_desc(float alpha, float gamma_deg = 1.0f, NdfType ndf = NdfType::Beckmann) {
     GlintDesc d;
-    d.model = "jakob2014";
     d.model_id = GlintModelId::Jakob2014;
     d.ndf = ndf;
     d.alpha_x = d.alpha_y = alpha;
@@ -516,7 +517,7 @@ TEST(Jakob2014Params, BadInputNamesKeyAndRange) {
         JsonObject block(j, "/materials/0/jakob2014", "scene.json");
         GlintDesc d;
         d.log_density = log_density;
-        read_jakob2014_params(block, d);
+        read_glint_params(*find_glint_model("jakob2014"), block, d);
         return d;
     };
     EXPECT_NO_THROW(read(R"({"gamma_deg": 2, "chromatic": true})"));

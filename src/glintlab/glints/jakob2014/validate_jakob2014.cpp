@@ -34,7 +34,6 @@ int robustness(int queries, uint64_t seed) {
     int bad = 0;
     for (int k = 0; k < queries; ++k) {
         GlintDesc d;
-        d.model = "jakob2014";
         d.model_id = GlintModelId::Jakob2014;
         d.ndf = rng.next_uint(2) ? NdfType::GGX : NdfType::Beckmann;
         // A few roughness values (each builds one integral table).

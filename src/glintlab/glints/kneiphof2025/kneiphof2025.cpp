@@ -11,7 +11,6 @@
 #include "glintlab/glints/deliot2023/deliot2023.h"
 #include "glintlab/glints/glint_lighting.h"
 #include "glintlab/glints/kneiphof2025/kneiphof2025_prefilter.h"
-#include "glintlab/scene/json_reader.h"
 #include "glintlab/scene/scene.h"
 
 namespace glintlab {
@@ -168,9 +167,9 @@ glm::vec3 kneiphof2025_environment_smooth(const Kneiphof2025Environment& env, gl
     t_env = &env;
     const float alpha = alpha_of(desc);
     const glm::vec3 dfg = shader::kneiphof2025_dfg_fetch(cos_o, std::sqrt(alpha));
-    const glm::vec3 r = shader::kneiphof2025_smooth_radiance(
-        n, wr, cos_o, alpha, kneiphof2025_f0(desc), desc.color, dfg,
-        kneiphof2025_smooth_mode(params_of(desc)));
+    const glm::vec3 r =
+        shader::kneiphof2025_smooth_radiance(n, wr, cos_o, alpha, kneiphof2025_f0(desc), desc.color,
+                                             dfg, kneiphof2025_smooth_mode(params_of(desc)));
     t_env = nullptr;
     return r;
 }
@@ -246,38 +245,6 @@ glm::vec3 kneiphof2025_light_radiance(const GlintLightingContext& ctx, int light
         return area_light_radiance(ctx, c);
     }
     return glm::vec3(0.0f);
-}
-
-void read_kneiphof2025_params(JsonObject& block, GlintDesc& desc) {
-    if (desc.ndf != NdfType::GGX || desc.alpha_x != desc.alpha_y || desc.alpha_x > 1.0f)
-        block.error("",
-                    "kneiphof2025 needs an isotropic GGX material with roughness <= 1 "
-                    "(\"ndf\": \"ggx\", one roughness value; 003 §7-8: the split-sum "
-                    "tables are isotropic GGX)");
-    Kneiphof2025Params p;
-    p.levels = block.integer("levels", p.levels, 4, 8);
-    if (p.levels != 4 && p.levels != 8) block.error("levels", "must be 4 or 8 (003 §4)");
-    p.black_level = static_cast<float>(block.number("black_level", p.black_level, 1e-8, 1.0));
-    const std::string variant =
-        block.string("variant", "kneiphof2025", {"kneiphof2025", "wang2020_style"});
-    p.variant = variant == "wang2020_style" ? Kneiphof2025Params::Variant::Wang2020Style
-                                            : Kneiphof2025Params::Variant::Kneiphof2025;
-    p.conditional_gaussian =
-        block.string("gaussian", "conditional", {"conditional", "algorithm1"}) == "conditional";
-    p.smooth = block.string("smooth", "split_sum", {"split_sum", "lobe"}) == "lobe"
-                   ? Kneiphof2025Params::Smooth::Lobe
-                   : Kneiphof2025Params::Smooth::SplitSum;
-    // Cone half-angle of the wang2020-style probability: 0.01-45 deg.
-    p.gamma_deg = static_cast<float>(block.number("gamma_deg", p.gamma_deg, 0.01, 45.0));
-    // Same ranges as deliot2023's block (deliot2023.cpp).
-    p.microfacet_roughness =
-        static_cast<float>(block.number("microfacet_roughness", p.microfacet_roughness, 1e-4, 1.0));
-    p.screen_space_scale =
-        static_cast<float>(block.number("screen_space_scale", p.screen_space_scale, 0.5, 8.0));
-    p.density_randomization = static_cast<float>(
-        block.number("density_randomization", p.density_randomization, 0.0, 50.0));
-    desc.params = p;
-    block.finish();
 }
 
 }  // namespace glintlab

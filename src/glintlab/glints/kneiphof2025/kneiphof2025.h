@@ -19,7 +19,6 @@
 
 namespace glintlab {
 
-class JsonObject;
 class Kneiphof2025Environment;
 struct GlintDesc;
 struct GlintLightingContext;
@@ -57,9 +56,5 @@ float kneiphof2025_footprint_ndf(glm::vec3 h, const Footprint& footprint, const 
 // Registry hooks (glint_lighting.h).
 bool kneiphof2025_shades_light(const GlintDesc& desc, const Scene& scene, int light);
 glm::vec3 kneiphof2025_light_radiance(const GlintLightingContext& ctx, int light);
-
-// Reads the "kneiphof2025" block into desc.params with range checks; rejects
-// materials other than isotropic GGX with alpha <= 1 (003 §7).
-void read_kneiphof2025_params(JsonObject& block, GlintDesc& desc);
 
 }  // namespace glintlab

@@ -181,7 +181,6 @@ double log_density_for_centre(int res, double facets_per_pixel) {
 
 GlintDesc validation_desc(float alpha, int K, double log_density) {
     GlintDesc desc;
-    desc.model = "kneiphof2025";
     desc.model_id = GlintModelId::Kneiphof2025;
     desc.ndf = NdfType::GGX;
     desc.alpha_x = desc.alpha_y = alpha;

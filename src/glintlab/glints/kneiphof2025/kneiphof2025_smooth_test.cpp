@@ -36,7 +36,6 @@ const char* const kForest = "/usr/share/blender/datafiles/studiolights/world/for
 
 GlintDesc ggx_desc(float alpha, Kneiphof2025Params::Smooth smooth) {
     GlintDesc d;
-    d.model = "kneiphof2025";
     d.model_id = GlintModelId::Kneiphof2025;
     d.ndf = NdfType::GGX;
     d.alpha_x = d.alpha_y = alpha;

@@ -14,15 +14,17 @@
 
 #include "glintlab/core/error.h"
 #include "glintlab/core/image.h"
+#include "glintlab/core/json_reader.h"
 #include "glintlab/core/rng.h"
 #include "glintlab/counting/laws.h"
 #include "glintlab/glints/glint_lighting.h"
+#include "glintlab/glints/glint_reader.h"
 #include "glintlab/glints/kneiphof2025/kneiphof2025_experiments.h"
 #include "glintlab/glints/kneiphof2025/kneiphof2025_prefilter.h"
+#include "glintlab/glints/registry.h"
 #include "glintlab/microfacet/microfacet.h"
 #include "glintlab/render/renderer.h"
 #include "glintlab/scene/environment.h"
-#include "glintlab/scene/json_reader.h"
 #include "glintlab/scene/scene.h"
 #include "glintlab/scene/scene_loader.h"
 
@@ -33,7 +35,6 @@ constexpr float kPi = glm::pi<float>();
 
 GlintDesc ggx_desc(float alpha, int levels, float log_density, uint32_t seed) {
     GlintDesc d;
-    d.model = "kneiphof2025";
     d.model_id = GlintModelId::Kneiphof2025;
     d.ndf = NdfType::GGX;
     d.alpha_x = d.alpha_y = alpha;
@@ -276,7 +277,7 @@ TEST(Kneiphof2025, ReadsParametersWithRangeChecks) {
         d.alpha_y = m.value("ay", 0.2f);
         const nlohmann::json b = nlohmann::json::parse(block_json);
         JsonObject o(b, "/materials/0/kneiphof2025", "s.json");
-        read_kneiphof2025_params(o, d);
+        read_glint_params(*find_glint_model("kneiphof2025"), o, d);
         return std::get<Kneiphof2025Params>(d.params);
     };
     const Kneiphof2025Params p =

@@ -20,12 +20,10 @@ namespace wang2020 {
 class Wang2020Model;
 }
 class EnvironmentMap;
-class JsonObject;
 struct GlintDesc;
 struct GlintLightingContext;
 struct Scene;
 
-void read_wang2020_params(JsonObject& block, GlintDesc& desc);
 bool wang2020_shades_light(const GlintDesc& desc, const Scene& scene, int light);
 glm::vec3 wang2020_light_radiance(const GlintLightingContext& ctx, int light);
 

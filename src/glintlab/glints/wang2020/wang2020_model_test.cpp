@@ -46,7 +46,7 @@ TEST(Wang2020Model, ReadsItsBlockAndRejectsBadInput) {
     EXPECT_EQ(p.depth, 9);
     EXPECT_EQ(p.dpf_theta, 90);  // Table 2 default
     ASSERT_NE(find_glint_model("wang2020"), nullptr);
-    EXPECT_FALSE(find_glint_model("wang2020")->sphere_lights);
+    EXPECT_FALSE(find_glint_model("wang2020")->shades(GlintLightType::Sphere));
 
     EXPECT_NE(error_of(scene_with(glint_material({{"gamma_deg", 0.5}}))).find("gamma_deg"),
               std::string::npos);
@@ -94,6 +94,25 @@ TEST(Wang2020Model, RenderBlursTheGlintLayerAndKeepsItsEnergy) {
     EXPECT_NEAR(mean_b / mean_s, 1.0, 1e-4);
     EXPECT_LT(tv_b, 0.9 * tv_s) << tv_b << " vs " << tv_s;
     EXPECT_NE(error_of(scene_with(glint_material({{"blur", 3}}))).find("blur"), std::string::npos);
+}
+
+// Regression: roughness 0.02, the documented minimum, loaded (0.02f passed the
+// loader's float check) and then failed at render time without file or path
+// ("roughness 0.0199999996 outside [0.02, 1]"): the float is 4e-10 below the
+// table's first entry. The documented bound is accepted end to end.
+TEST(Wang2020Model, RoughnessAtTheDocumentedMinimumRenders) {
+    nlohmann::json mat =
+        glint_material({{"dpf_theta", 4}, {"dpf_phi", 8}, {"prefilter_samples", 1}, {"depth", 4}});
+    mat["roughness"] = 0.02;
+    nlohmann::json doc = scene_with(mat);
+    doc["film"] = {{"width", 4}, {"height", 4}};
+    RenderOptions opt;
+    opt.quiet = true;
+    const Image img = render_scene(parse_scene(doc, "min.json"), opt);
+    for (int y = 0; y < 4; ++y)
+        for (int x = 0; x < 4; ++x) EXPECT_TRUE(std::isfinite(img.at(x, y).x));
+    mat["roughness"] = 0.0199;
+    EXPECT_NE(error_of(scene_with(mat)).find("[0.02, 1]"), std::string::npos);
 }
 
 }  // namespace

@@ -12,7 +12,6 @@
 
 namespace glintlab {
 
-class JsonObject;
 struct GlintDesc;
 
 // The target NDF and the shared glint parameters, as plain values.
@@ -33,8 +32,5 @@ float zirr2016_target_ndf(glm::vec3 h, const Zirr2016Target& target);
 
 // The material's D_P: desc.params must hold Zirr2016Params.
 float zirr2016_footprint_ndf(glm::vec3 h, const Footprint& footprint, const GlintDesc& desc);
-
-// Reads the "zirr2016" block into desc.params with range checks.
-void read_zirr2016_params(JsonObject& block, GlintDesc& desc);
 
 }  // namespace glintlab

@@ -7,10 +7,11 @@
 #include <cmath>
 
 #include "glintlab/core/error.h"
+#include "glintlab/core/json_reader.h"
 #include "glintlab/core/rng.h"
+#include "glintlab/glints/glint_reader.h"
 #include "glintlab/glints/registry.h"
 #include "glintlab/glints/zirr2016/zirr2016_experiments.h"
-#include "glintlab/scene/json_reader.h"
 #include "glintlab/scene/scene.h"
 
 namespace glintlab {
@@ -128,26 +129,26 @@ TEST(Zirr2016, ReadsParametersWithRangeChecks) {
     const nlohmann::json ok_json =
         nlohmann::json::parse(R"({"microfacet_roughness": 0.03, "max_anisotropy": 8})");
     JsonObject ok(ok_json, "/zirr2016", "scene.json");
-    read_zirr2016_params(ok, desc);
+    read_glint_params(*find_glint_model("zirr2016"), ok, desc);
     const Zirr2016Params& p = std::get<Zirr2016Params>(desc.params);
     EXPECT_FLOAT_EQ(p.microfacet_roughness, 0.03f);
     EXPECT_FLOAT_EQ(p.max_anisotropy, 8.0f);
     EXPECT_FLOAT_EQ(p.screen_space_scale, 1.0f);
     const nlohmann::json bad_json = nlohmann::json::parse(R"({"max_anisotropy": 65})");
     JsonObject bad(bad_json, "/zirr2016", "scene.json");
-    EXPECT_THROW(read_zirr2016_params(bad, desc), Error);
+    EXPECT_THROW(read_glint_params(*find_glint_model("zirr2016"), bad, desc), Error);
     const nlohmann::json zero_r_json = nlohmann::json::parse(R"({"microfacet_roughness": 0})");
     JsonObject zero_r(zero_r_json, "/zirr2016", "scene.json");
-    EXPECT_THROW(read_zirr2016_params(zero_r, desc), Error);
+    EXPECT_THROW(read_glint_params(*find_glint_model("zirr2016"), zero_r, desc), Error);
     const nlohmann::json unknown_json = nlohmann::json::parse(R"({"roughness": 0.1})");
     JsonObject unknown(unknown_json, "/zirr2016", "scene.json");
-    EXPECT_THROW(read_zirr2016_params(unknown, desc), Error);
+    EXPECT_THROW(read_glint_params(*find_glint_model("zirr2016"), unknown, desc), Error);
 
     const GlintModelInfo* info = find_glint_model("zirr2016");
     ASSERT_NE(info, nullptr);
     EXPECT_EQ(info->id, GlintModelId::Zirr2016);
-    EXPECT_TRUE(info->point_lights && info->directional_lights);
-    EXPECT_FALSE(info->sphere_lights || info->environment_lights);
+    EXPECT_TRUE(info->shades(GlintLightType::Point) && info->shades(GlintLightType::Directional));
+    EXPECT_FALSE(info->shades(GlintLightType::Sphere) || info->shades(GlintLightType::Environment));
 }
 
 }  // namespace

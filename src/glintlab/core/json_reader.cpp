@@ -1,4 +1,4 @@
-#include "glintlab/scene/json_reader.h"
+#include "glintlab/core/json_reader.h"
 
 #include <cmath>
 
@@ -11,12 +11,13 @@ namespace glintlab {
 namespace {
 
 std::string range_text(double min, double max) {
-    const bool lo = std::isfinite(min), hi = std::isfinite(max);
-    // %g-style: ranges that came from floats print as 0.001, not 0.0010000000474974513.
-    if (lo && hi) return fmt::format("in [{:.6g}, {:.6g}]", min, max);
-    if (lo) return fmt::format(">= {:.6g}", min);
-    if (hi) return fmt::format("<= {:.6g}", max);
-    return "finite";
+    const std::string t = NumberRange{min, max}.text();
+    return t.front() == '[' ? "in " + t : t;
+}
+
+std::string range_text(const NumberRange& r) {
+    const std::string t = r.text();
+    return t.front() == '[' || t.front() == '(' ? "in " + t : t;
 }
 
 std::string brief(const nlohmann::json& v) {
@@ -25,7 +26,101 @@ std::string brief(const nlohmann::json& v) {
     return s;
 }
 
+// Tracks the JSON path while nlohmann's parser reports events, to name the
+// place of a duplicate key or of a number that overflows double.
+class PathTracker {
+  public:
+    explicit PathTracker(std::string file) : file_(std::move(file)) {}
+
+    bool event(int depth, nlohmann::json::parse_event_t e, const nlohmann::json& parsed) {
+        using E = nlohmann::json::parse_event_t;
+        (void)depth;
+        switch (e) {
+            case E::object_start:
+            case E::array_start:
+                frames_.push_back(Frame{e == E::array_start, 0, {}, {}});
+                break;
+            case E::key: {
+                Frame& f = frames_.back();
+                f.key = parsed.get<std::string>();
+                if (!f.keys.insert(f.key).second)
+                    fail("{}: {}: duplicate key \"{}\" (each key may appear once per object)",
+                         file_, path(), f.key);
+                break;
+            }
+            case E::object_end:
+            case E::array_end:
+                frames_.pop_back();
+                element_done();
+                break;
+            case E::value:
+                element_done();
+                break;
+        }
+        return true;
+    }
+
+    // The path of the value being parsed now ("/" for the root).
+    std::string path() const {
+        std::string p;
+        for (const Frame& f : frames_) p += f.is_array ? fmt::format("/{}", f.index) : "/" + f.key;
+        return p.empty() ? "/" : p;
+    }
+
+  private:
+    struct Frame {
+        bool is_array;
+        size_t index;
+        std::string key;
+        std::set<std::string> keys;
+    };
+    void element_done() {
+        if (!frames_.empty() && frames_.back().is_array) ++frames_.back().index;
+    }
+    std::string file_;
+    std::vector<Frame> frames_;
+};
+
 }  // namespace
+
+bool NumberRange::contains(double x) const {
+    if (!std::isfinite(x)) return false;
+    if (min_open ? !(x > min) : !(x >= min)) return false;
+    if (max_open ? !(x < max) : !(x <= max)) return false;
+    if (single_precision) {
+        const double f = static_cast<double>(static_cast<float>(x));
+        if (min_open && !(f > min)) return false;
+        if (max_open && !(f < max)) return false;
+    }
+    return true;
+}
+
+std::string NumberRange::text() const {
+    const bool lo = std::isfinite(min), hi = std::isfinite(max);
+    // %g-style: the documented decimals (0.001, not 0.0010000000474974513).
+    if (lo && hi)
+        return fmt::format("{}{:.6g}, {:.6g}{}", min_open ? "(" : "[", min, max,
+                           max_open ? ")" : "]");
+    if (lo) return fmt::format("{} {:.6g}", min_open ? ">" : ">=", min);
+    if (hi) return fmt::format("{} {:.6g}", max_open ? "<" : "<=", max);
+    return "finite";
+}
+
+nlohmann::json parse_json(std::istream& in, const std::string& file) {
+    PathTracker tracker(file);
+    try {
+        return nlohmann::json::parse(
+            in, [&tracker](int depth, nlohmann::json::parse_event_t e, nlohmann::json& parsed) {
+                return tracker.event(depth, e, parsed);
+            });
+    } catch (const nlohmann::json::parse_error& e) {
+        fail("{}: invalid JSON: {}", file, e.what());
+    } catch (const nlohmann::json::out_of_range& e) {
+        // nlohmann reports a number beyond double's range (406) this way.
+        fail("{}: {}: number out of range (beyond double precision, ~1.8e308): {}", file,
+             tracker.path(), e.what());
+    }
+}
 
 JsonObject::JsonObject(const nlohmann::json& value, std::string path, std::string file)
     : value_(value), path_(std::move(path)), file_(std::move(file)) {
@@ -42,7 +137,9 @@ void JsonObject::error(std::string_view key, std::string_view message) const {
     fail("{}: {}: {}", file_, key.empty() ? path_ : key_path(key), message);
 }
 
-bool JsonObject::has(std::string_view key) const { return value_.contains(std::string(key)); }
+bool JsonObject::has(std::string_view key) const {
+    return value_.contains(std::string(key));
+}
 
 const nlohmann::json* JsonObject::get(std::string_view key) {
     read_.insert(std::string(key));
@@ -50,9 +147,13 @@ const nlohmann::json* JsonObject::get(std::string_view key) {
     return it == value_.end() ? nullptr : &*it;
 }
 
-const nlohmann::json* JsonObject::raw(std::string_view key) { return get(key); }
+const nlohmann::json* JsonObject::raw(std::string_view key) {
+    return get(key);
+}
 
-void JsonObject::ignore(std::string_view key) { read_.insert(std::string(key)); }
+void JsonObject::ignore(std::string_view key) {
+    read_.insert(std::string(key));
+}
 
 double JsonObject::number(std::string_view key, double fallback, double min, double max) {
     const nlohmann::json* v = get(key);
@@ -62,6 +163,24 @@ double JsonObject::number(std::string_view key, double fallback, double min, dou
     const double x = v->get<double>();
     if (!std::isfinite(x) || x < min || x > max)
         error(key, fmt::format("value {} out of range: allowed {}", x, range_text(min, max)));
+    return x;
+}
+
+double JsonObject::number(std::string_view key, double fallback, const NumberRange& range) {
+    const nlohmann::json* v = get(key);
+    if (!v) return fallback;
+    if (!v->is_number())
+        error(key, fmt::format("expected a number {}, got {}", range_text(range), brief(*v)));
+    const double x = v->get<double>();
+    if (!range.contains(x)) {
+        NumberRange as_written = range;
+        as_written.single_precision = false;
+        error(key, fmt::format("value {} out of range: allowed {}{}", x, range_text(range),
+                               as_written.contains(x)
+                                   ? fmt::format(" (it is stored as a float and rounds to {})",
+                                                 static_cast<float>(x))
+                                   : ""));
+    }
     return x;
 }
 
@@ -108,7 +227,7 @@ std::string JsonObject::required_string(std::string_view key,
     return string(key, "", allowed);
 }
 
-glm::vec3 json_to_vec3(const nlohmann::json& v, const std::string& where, float min, float max) {
+glm::vec3 json_to_vec3(const nlohmann::json& v, const std::string& where, double min, double max) {
     if (!v.is_array() || v.size() != 3)
         fail("{}: expected an array of 3 numbers {}, got {}", where, range_text(min, max),
              brief(v));
@@ -126,19 +245,19 @@ glm::vec3 json_to_vec3(const nlohmann::json& v, const std::string& where, float 
     return r;
 }
 
-glm::vec3 JsonObject::vec3(std::string_view key, glm::vec3 fallback, float min, float max) {
+glm::vec3 JsonObject::vec3(std::string_view key, glm::vec3 fallback, double min, double max) {
     const nlohmann::json* v = get(key);
     if (!v) return fallback;
     return json_to_vec3(*v, fmt::format("{}: {}", file_, key_path(key)), min, max);
 }
 
-glm::vec3 JsonObject::required_vec3(std::string_view key, float min, float max) {
+glm::vec3 JsonObject::required_vec3(std::string_view key, double min, double max) {
     if (!has(key))
         error(key, fmt::format("missing required array of 3 numbers {}", range_text(min, max)));
     return vec3(key, glm::vec3(0.0f), min, max);
 }
 
-glm::vec3 JsonObject::color(std::string_view key, glm::vec3 fallback, float min, float max) {
+glm::vec3 JsonObject::color(std::string_view key, glm::vec3 fallback, double min, double max) {
     const nlohmann::json* v = get(key);
     if (!v) return fallback;
     if (v->is_number()) return glm::vec3(static_cast<float>(number(key, 0.0, min, max)));
@@ -148,7 +267,7 @@ glm::vec3 JsonObject::color(std::string_view key, glm::vec3 fallback, float min,
     return vec3(key, fallback, min, max);
 }
 
-glm::vec2 JsonObject::vec2(std::string_view key, glm::vec2 fallback, float min, float max) {
+glm::vec2 JsonObject::vec2(std::string_view key, glm::vec2 fallback, double min, double max) {
     const nlohmann::json* v = get(key);
     if (!v) return fallback;
     if (v->is_number()) return glm::vec2(static_cast<float>(number(key, 0.0, min, max)));

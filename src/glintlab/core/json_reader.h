@@ -4,6 +4,8 @@
 #pragma once
 
 #include <filesystem>
+#include <istream>
+#include <limits>
 #include <optional>
 #include <set>
 #include <string>
@@ -15,10 +17,31 @@
 
 namespace glintlab {
 
+// An allowed interval of numbers. Bounds are the documented decimals and are
+// compared with the value as written (double): a value equal to a closed
+// bound is accepted, an open end excludes exactly its bound. For values
+// stored as float (`single_precision`) an open end also rejects values that
+// round onto it (e.g. eta = 1 + 1e-9 is 1.0f, the excluded end).
+struct NumberRange {
+    double min = -std::numeric_limits<double>::infinity();
+    double max = std::numeric_limits<double>::infinity();
+    bool min_open = false, max_open = false;
+    bool single_precision = false;
+
+    bool contains(double x) const;
+    // "[0.001, 1]", "(1, 4]", ">= 0", "< 1", "finite" (%g-style bounds).
+    std::string text() const;
+};
+
+// Parses a JSON document strictly: syntax errors, duplicate keys in an
+// object and numbers beyond double's range are errors naming `file` and (for
+// the last two) the JSON path.
+nlohmann::json parse_json(std::istream& in, const std::string& file);
+
 // A JSON object being read: remembers which keys were read so that finish()
 // can reject the ones nobody asked for.
 class JsonObject {
-public:
+  public:
     JsonObject(const nlohmann::json& value, std::string path, std::string file);
 
     const std::string& path() const { return path_; }
@@ -27,17 +50,19 @@ public:
 
     // Numbers: in [min, max]; the error names the key and the range.
     double number(std::string_view key, double fallback, double min, double max);
+    double number(std::string_view key, double fallback, const NumberRange& range);
     double required_number(std::string_view key, double min, double max);
     int integer(std::string_view key, int fallback, int min, int max);
     bool boolean(std::string_view key, bool fallback);
     std::string string(std::string_view key, std::string fallback,
                        const std::vector<std::string>& allowed = {});
     std::string required_string(std::string_view key, const std::vector<std::string>& allowed = {});
-    glm::vec3 vec3(std::string_view key, glm::vec3 fallback, float min, float max);
-    glm::vec3 required_vec3(std::string_view key, float min, float max);
+    // Components in [min, max] (doubles: pass the documented decimals).
+    glm::vec3 vec3(std::string_view key, glm::vec3 fallback, double min, double max);
+    glm::vec3 required_vec3(std::string_view key, double min, double max);
     // A colour: an RGB triple or a single number meaning grey, each in [min, max].
-    glm::vec3 color(std::string_view key, glm::vec3 fallback, float min, float max);
-    glm::vec2 vec2(std::string_view key, glm::vec2 fallback, float min, float max);
+    glm::vec3 color(std::string_view key, glm::vec3 fallback, double min, double max);
+    glm::vec2 vec2(std::string_view key, glm::vec2 fallback, double min, double max);
     // A path relative to the scene file; must name an existing file.
     std::filesystem::path file_path(std::string_view key);
 
@@ -55,7 +80,7 @@ public:
 
     [[noreturn]] void error(std::string_view key, std::string_view message) const;
 
-private:
+  private:
     const nlohmann::json* get(std::string_view key);
     std::string key_path(std::string_view key) const;
 
@@ -66,6 +91,6 @@ private:
 };
 
 // "array of 3 numbers" → vec3, with the same error conventions.
-glm::vec3 json_to_vec3(const nlohmann::json& v, const std::string& where, float min, float max);
+glm::vec3 json_to_vec3(const nlohmann::json& v, const std::string& where, double min, double max);
 
 }  // namespace glintlab

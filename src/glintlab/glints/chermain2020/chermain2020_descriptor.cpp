@@ -1,0 +1,80 @@
+// chermain2020's descriptor (glint_model_descriptor.h): point and directional
+// lights only (D_P is evaluated at one half vector); Beckmann only.
+#include <fmt/format.h>
+
+#include "glintlab/core/error.h"
+#include "glintlab/core/json_reader.h"
+#include "glintlab/glints/chermain2020/validate_chermain2020.h"
+#include "glintlab/glints/glint_model_descriptor.h"
+#include "glintlab/validate/report.h"
+
+namespace glintlab {
+namespace {
+
+// The material must be Beckmann (004 §4.3: the multiscale SDF is a product
+// of two marginals; GGX is not separable); "colours" is a list of RGB tints.
+void check_chermain2020(JsonObject& block, GlintDesc& desc) {
+    if (desc.ndf != NdfType::Beckmann)
+        fail(
+            "{}: {}: chermain2020 supports only \"ndf\": \"beckmann\" (its multiscale SDF is a "
+            "product of two marginals, 004 §4.3; GGX is not separable)",
+            block.file(), block.path());
+    Chermain2020Params& p = std::get<Chermain2020Params>(desc.params);
+    // "colours": [[r, g, b], ...], 1 to 8 tints in [0, 1] (004 §7.1 colour table).
+    if (const nlohmann::json* colours = block.raw("colours")) {
+        const std::string where = fmt::format("{}: {}/colours", block.file(), block.path());
+        if (!colours->is_array() || colours->empty() || colours->size() > p.colour_table.size())
+            fail("{}: expected an array of 1 to {} RGB colours [r, g, b] with components in [0, 1]",
+                 where, p.colour_table.size());
+        p.colour_count = static_cast<int>(colours->size());
+        for (size_t i = 0; i < colours->size(); ++i)
+            p.colour_table[i] =
+                json_to_vec3((*colours)[i], fmt::format("{}/{}", where, i), 0.0f, 1.0f);
+    }
+}
+
+}  // namespace
+
+GlintModelDescriptor chermain2020_descriptor() {
+    namespace gp = glint_param;
+    using P = Chermain2020Params;
+    GlintModelDescriptor d;
+    d.id = GlintModelId::Chermain2020;
+    d.name = "chermain2020";
+    d.description = "multiscale SDF dictionary over a MIP hierarchy (Chermain et al. 2020)";
+    d.citations = {{"004", "Chermain, Sauvage, Dischler, Dachsbacher", 2020,
+                    "Computer Graphics Forum 39(7) (Pacific Graphics 2020)",
+                    "Procedural Physically based BRDF for Real-Time Rendering of Glints"}};
+    d.lights = {GlintLightType::Point, GlintLightType::Directional};
+    d.gpu = true;
+    d.default_params = [] { return GlintModelParams(P{}); };
+    d.params = {
+        gp::number("relative_area", &P::relative_area, 0.0, 1.0, "",
+                   "beta (004 §7.1): fraction of cells that carry facets"),
+        // gamma < 1 is meaningless (major >= minor); above 32 the per-level
+        // cell walk is capped at 64 cells per axis.
+        gp::number("max_anisotropy", &P::max_anisotropy, 1.0, 32.0, "",
+                   "gamma (004 §7.1): largest major/minor ratio of the footprint"),
+        // zeta in dictionary levels; 8 levels is a factor 4^8 in density already.
+        gp::number("density_randomization", &P::density_randomization, 0.0, 8.0, "levels",
+                   "zeta (004 §7.1, Alg. 3 line 8): std-dev of the distribution LOD"),
+    };
+    GlintExtraKey colours;
+    colours.key = "colours";
+    colours.doc =
+        "1 to 8 RGB tints [[r, g, b], ...] in [0, 1], one drawn per cell (004 §7.1 colour "
+        "table); absent = white";
+    colours.max_colours = static_cast<int>(P{}.colour_table.size());
+    colours.colour_count = [](GlintModelParams& v) -> int& { return std::get<P>(v).colour_count; };
+    colours.colours = [](GlintModelParams& v) { return std::get<P>(v).colour_table.data(); };
+    d.extra_keys = {colours};
+    d.check = check_chermain2020;
+    d.validation = {"chermain2020", [](uint64_t seed) {
+                        Chermain2020ValidationOptions o;
+                        o.seed = seed;
+                        return validate_chermain2020(o);
+                    }};
+    return d;
+}
+
+}  // namespace glintlab

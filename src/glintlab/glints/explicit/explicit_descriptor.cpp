@@ -1,0 +1,70 @@
+// explicit's descriptor (glint_model_descriptor.h): the ground truth; it
+// enumerates the footprint's mirror facets and shades every light itself
+// (explicit_model.h); D_P for GlintBxdf from its gamma-cone count.
+#include <string>
+
+#include "glintlab/core/error.h"
+#include "glintlab/core/json_reader.h"
+#include "glintlab/glints/explicit/explicit_model.h"
+#include "glintlab/glints/explicit/validate_explicit.h"
+#include "glintlab/glints/glint_model_descriptor.h"
+#include "glintlab/validate/report.h"
+
+namespace glintlab {
+namespace {
+
+// N = e^log_density facets per unit uv area are enumerated one by one.
+void check_explicit(JsonObject& block, GlintDesc& desc) {
+    if (!(desc.log_density >= 0.0f && desc.log_density <= 30.0f)) {
+        std::string parent = block.path();
+        const size_t slash = parent.rfind('/');
+        if (slash != std::string::npos) parent.resize(slash);
+        fail(
+            "{}: {}/log_density: {} is out of range for the explicit model: [0, 30] (N = "
+            "e^log_density facets per unit uv area are enumerated one by one)",
+            block.file(), parent, desc.log_density);
+    }
+}
+
+}  // namespace
+
+GlintModelDescriptor explicit_descriptor() {
+    namespace gp = glint_param;
+    using P = ExplicitParams;
+    GlintModelDescriptor d;
+    d.id = GlintModelId::Explicit;
+    d.name = "explicit";
+    d.description =
+        "ground truth: explicitly enumerated mirror microfacets (002 Sec. 3.1, 003 Sec. 3.2)";
+    d.citations = {
+        {"002", "Jakob, Hašan, Yan, Lawrence, Ramamoorthi, Marschner", 2014,
+         "ACM Transactions on Graphics 33(4) (SIGGRAPH 2014)",
+         "Discrete Stochastic Microfacet Models"},
+        {"003", "Kneiphof, Klein", 2025, "Computer Graphics Forum 44(4) (EGSR 2025)",
+         "Real-Time Image-Based Lighting of Glints"},
+    };
+    d.lights = {GlintLightType::Point, GlintLightType::Directional, GlintLightType::Sphere,
+                GlintLightType::Environment};
+    d.gpu = false;
+    d.default_params = [] { return GlintModelParams(P{}); };
+    d.params = {
+        // 002 §3.1: "a constant γ between 0.5 and 6 degrees in our scenes".
+        gp::number("gamma_deg", &P::gamma_deg, 0.5, 6.0, "deg",
+                   "half-angle of the query cone delta lights are spread over (002 §3.1)"),
+        gp::number("max_facets_per_footprint", &P::max_facets_per_footprint, 1.0, 1e9, "",
+                   "expected facets per pixel footprint above which shading fails with an "
+                   "error instead of enumerating for minutes",
+                   GlintParamUi::Log),
+    };
+    d.check = check_explicit;
+    d.shades_light = explicit_shades_light;
+    d.light_radiance = explicit_light_radiance;
+    d.validation = {"explicit", [](uint64_t seed) {
+                        ExplicitValidationOptions o;
+                        o.seed = seed;
+                        return validate_explicit(o);
+                    }};
+    return d;
+}
+
+}  // namespace glintlab

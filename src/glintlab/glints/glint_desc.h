@@ -1,0 +1,67 @@
+// The glint material as the renderers see it (ARCHITECTURE.md, "Materials and
+// the glint material"): the parameters every model shares plus the active
+// model's own block. Each fact is held once: the model is `model_id` (its
+// name and everything else about it come from its descriptor,
+// glint_model_descriptor.h), its parameters are `params`.
+#pragma once
+
+#include <cstdint>
+
+#include <glm/glm.hpp>
+
+#include "glintlab/glints/model_params.h"
+#include "glintlab/microfacet/bxdfs.h"
+
+namespace glintlab {
+
+// Models in the order of the model list (glints/model_list.cpp); GlintBxdf
+// dispatches on it (static, no strings in the hot path).
+enum class GlintModelId : int {
+    Smooth = 0,
+    Deliot2023,
+    Zirr2016,
+    Chermain2020,
+    Explicit,
+    Jakob2014,
+    Kneiphof2025,
+    Wang2020,
+};
+
+// The light types of the scene format; a model's descriptor lists those it
+// can shade and the scene loader rejects the others.
+enum class GlintLightType : int { Point = 0, Directional, Sphere, Environment };
+inline constexpr GlintLightType kGlintLightTypes[] = {
+    GlintLightType::Point, GlintLightType::Directional, GlintLightType::Sphere,
+    GlintLightType::Environment};
+// "point", "directional", "sphere", "environment": the scene format's names.
+const char* glint_light_type_name(GlintLightType type);
+
+// How a material computes Fresnel reflectance.
+struct FresnelDesc {
+    enum class Mode { None, Schlick, Conductor, Dielectric };
+    Mode mode = Mode::None;  // None: F = 1 (jakob2014's default for metallic flakes)
+    glm::vec3 f0{1.0f};      // Schlick
+    glm::vec3 eta{1.0f};     // Conductor (complex IOR eta + i k) or Dielectric (eta.x)
+    glm::vec3 k{0.0f};
+};
+
+struct GlintDesc {
+    GlintModelId model_id = GlintModelId::Smooth;
+    NdfType ndf = NdfType::Beckmann;
+    float alpha_x = 0.3f, alpha_y = 0.3f;
+    float log_density = 20.0f;  // ln(microfacets per unit uv area)
+    FresnelDesc fresnel;
+    glm::vec3 color{1.0f};  // glint tint, multiplies the BRDF
+    // Lambertian base under the flakes' dielectric coating (002 Fig. 7's
+    // "dielectric flakes on a diffuse base"); 0 = none. Needs a dielectric
+    // Fresnel: its eta is the coating interface (glint_bxdf.h).
+    glm::vec3 base_albedo{0.0f};
+    bool has_base() const { return base_albedo != glm::vec3(0.0f); }
+    uint32_t seed = 0;
+    // The active model's parameters, as read through its descriptor's
+    // parameter table. (The block as written in the scene file is not kept:
+    // nothing needs it once it is read, and a second copy could disagree.)
+    GlintModelParams params;
+};
+
+}  // namespace glintlab

@@ -1,0 +1,213 @@
+// A glint model's descriptor: everything the front ends need to know about a
+// model, stated once in the model's own folder (<model>/<model>_descriptor.cpp)
+// and listed in glints/model_list.cpp. The scene reader, `glintlab info`
+// (text, --json, --markdown), `glintlab validate`, the viewer's model panel
+// and the generated sections of docs/MODELS.md and docs/SCENE_FORMAT.md all
+// loop over descriptors and name no model (docs/ADDING_A_MODEL.md).
+#pragma once
+
+#include <cstdint>
+#include <functional>
+#include <limits>
+#include <string>
+#include <string_view>
+#include <type_traits>
+#include <utility>
+#include <variant>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "glintlab/glints/glint_desc.h"
+
+namespace glintlab {
+
+class JsonObject;
+struct GlintLightingContext;
+struct Scene;
+struct ValidationReport;
+
+// The paper a model implements (or, for `smooth` and `explicit`, the papers
+// whose formulation it follows). `key` is the number the code's comments use
+// (000..004, docs/MODELS.md), empty for papers outside that set.
+struct GlintCitation {
+    std::string key;
+    std::string authors;
+    int year = 0;
+    std::string venue;
+    std::string title;
+};
+
+enum class GlintParamType { Number, Integer, Bool, Enum };
+const char* glint_param_type_name(GlintParamType type);  // "number", "integer", "bool", "enum"
+
+// A parameter's value: Number → double, Integer → int, Bool → bool,
+// Enum → the choice's name.
+using GlintParamValue = std::variant<double, int, bool, std::string>;
+
+// How a viewer edits a number: linearly, on a log scale, or by decades
+// (10^k, integer k: for values whose every change costs a prefilter).
+enum class GlintParamUi { Linear, Log, Decades };
+
+// One row of a model's parameter table: the key of the model's JSON block,
+// its type, range, unit and doc, and get/set on the GlintModelParams
+// variant (the alternative of the model's params struct). The default is
+// not restated: it is get() of the model's default-constructed params.
+struct GlintParam {
+    std::string key;
+    GlintParamType type = GlintParamType::Number;
+    // Number and Integer: the range; an open end excludes its bound itself
+    // and only it ("(1, 4]").
+    double min = -std::numeric_limits<double>::infinity();
+    double max = std::numeric_limits<double>::infinity();
+    bool min_open = false, max_open = false;
+    // Number stored as float: values are range-checked as written (double),
+    // and an open end also rejects values that round onto it in float.
+    bool single_precision = false;
+    std::vector<int> integer_values;   // Integer: if not empty, the only values allowed
+    std::vector<std::string> choices;  // Enum: the allowed names
+    std::string unit;                  // "" when dimensionless
+    std::string doc;                   // one line
+    GlintParamUi ui = GlintParamUi::Linear;
+    std::function<GlintParamValue(const GlintModelParams&)> get;
+    std::function<void(GlintModelParams&, const GlintParamValue&)> set;
+
+    // "[0.5, 8]", "(1, 4]", ">= 0", "4 or 8", "kneiphof2025, wang2020_style", "true or false".
+    std::string range_text() const;
+    // Whether a value of this parameter's type lies in its range (and
+    // choices); Number values are the JSON doubles.
+    bool accepts(const GlintParamValue& value) const;
+};
+
+// Text for a value of any parameter ("0.025", "8", "true", "split_sum").
+std::string glint_param_value_text(const GlintParamValue& value);
+
+// A key of the model's block that the table does not cover (read by the
+// model's check hook); documented with its descriptor. A list of RGB
+// colours may expose its storage for the viewer's panel.
+struct GlintExtraKey {
+    std::string key;
+    std::string doc;
+    int max_colours = 0;  // > 0: an RGB colour list of up to this many entries
+    std::function<int&(GlintModelParams&)> colour_count;
+    std::function<glm::vec3*(GlintModelParams&)> colours;
+};
+
+// A model's validation suite: `glintlab validate NAME`.
+struct GlintValidationSuite {
+    std::string name;
+    ValidationReport (*run)(uint64_t seed) = nullptr;
+};
+
+struct GlintModelDescriptor {
+    GlintModelId id = GlintModelId::Smooth;
+    std::string_view name;
+    std::string description;  // one line
+    std::vector<GlintCitation> citations;
+    std::vector<GlintLightType> lights;  // light types the model can shade
+    bool cpu = true;                     // back ends
+    bool gpu = false;
+    GlintModelParams (*default_params)() = nullptr;
+    std::vector<GlintParam> params;
+    std::vector<GlintExtraKey> extra_keys;
+    // Optional: cross-parameter checks and keys outside the table, called
+    // after the table is read (desc.params holds its values); errors name
+    // the file and JSON path (JsonObject::error).
+    void (*check)(JsonObject& block, GlintDesc& desc) = nullptr;
+    // Optional (glint_lighting.h): whether the model shades scene.lights[light]
+    // itself at the camera's first hit, and that light's reflected radiance
+    // towards ctx.wo. Null for models that are plain BRDFs (GlintBxdf) under
+    // every light.
+    bool (*shades_light)(const GlintDesc& desc, const Scene& scene, int light) = nullptr;
+    glm::vec3 (*light_radiance)(const GlintLightingContext& ctx, int light) = nullptr;
+    GlintValidationSuite validation;  // name empty: no suite
+
+    bool shades(GlintLightType type) const;
+    const GlintParam* find_param(std::string_view key) const;
+    GlintParamValue default_value(const GlintParam& param) const {
+        return param.get(default_params());
+    }
+};
+
+// Compatibility name used by code that predates descriptors.
+using GlintModelInfo = GlintModelDescriptor;
+
+// Table rows from a member of the model's params struct P.
+namespace glint_param {
+
+template <class P, class T>
+GlintParam number(std::string key, T P::*member, double min, double max, std::string unit,
+                  std::string doc, GlintParamUi ui = GlintParamUi::Linear) {
+    static_assert(std::is_floating_point_v<T>);
+    GlintParam p;
+    p.key = std::move(key);
+    p.type = GlintParamType::Number;
+    p.min = min, p.max = max;
+    p.single_precision = std::is_same_v<T, float>;
+    p.unit = std::move(unit);
+    p.doc = std::move(doc);
+    p.ui = ui;
+    p.get = [member](const GlintModelParams& v) {
+        return GlintParamValue(static_cast<double>(std::get<P>(v).*member));
+    };
+    p.set = [member](GlintModelParams& v, const GlintParamValue& x) {
+        std::get<P>(v).*member = static_cast<T>(std::get<double>(x));
+    };
+    return p;
+}
+
+template <class P>
+GlintParam integer(std::string key, int P::*member, int min, int max, std::string unit,
+                   std::string doc, std::vector<int> values = {}) {
+    GlintParam p;
+    p.key = std::move(key);
+    p.type = GlintParamType::Integer;
+    p.min = min, p.max = max;
+    p.integer_values = std::move(values);
+    p.unit = std::move(unit);
+    p.doc = std::move(doc);
+    p.get = [member](const GlintModelParams& v) { return GlintParamValue(std::get<P>(v).*member); };
+    p.set = [member](GlintModelParams& v, const GlintParamValue& x) {
+        std::get<P>(v).*member = std::get<int>(x);
+    };
+    return p;
+}
+
+template <class P>
+GlintParam boolean(std::string key, bool P::*member, std::string doc) {
+    GlintParam p;
+    p.key = std::move(key);
+    p.type = GlintParamType::Bool;
+    p.doc = std::move(doc);
+    p.get = [member](const GlintModelParams& v) { return GlintParamValue(std::get<P>(v).*member); };
+    p.set = [member](GlintModelParams& v, const GlintParamValue& x) {
+        std::get<P>(v).*member = std::get<bool>(x);
+    };
+    return p;
+}
+
+// An enum over names: each choice is (name, member value).
+template <class P, class T>
+GlintParam choice(std::string key, T P::*member, std::vector<std::pair<std::string, T>> values,
+                  std::string doc) {
+    GlintParam p;
+    p.key = std::move(key);
+    p.type = GlintParamType::Enum;
+    for (const auto& [name, _] : values) p.choices.push_back(name);
+    p.doc = std::move(doc);
+    p.get = [member, values](const GlintModelParams& v) {
+        const T x = std::get<P>(v).*member;
+        for (const auto& [name, value] : values)
+            if (value == x) return GlintParamValue(name);
+        return GlintParamValue(std::string());
+    };
+    p.set = [member, values](GlintModelParams& v, const GlintParamValue& x) {
+        for (const auto& [name, value] : values)
+            if (name == std::get<std::string>(x)) std::get<P>(v).*member = value;
+    };
+    return p;
+}
+
+}  // namespace glint_param
+
+}  // namespace glintlab

@@ -1,0 +1,73 @@
+// jakob2014's descriptor (glint_model_descriptor.h): every light (002 §3.1,
+// §4): a BRDF over the gamma cone; extended lights and environments through
+// light sampling + MIS with its importance sampling.
+#include <string>
+
+#include "glintlab/core/error.h"
+#include "glintlab/core/json_reader.h"
+#include "glintlab/glints/glint_model_descriptor.h"
+#include "glintlab/glints/jakob2014/jakob2014.h"
+#include "glintlab/glints/jakob2014/validate_jakob2014.h"
+#include "glintlab/validate/report.h"
+
+namespace glintlab {
+namespace {
+
+// N = e^log_density particles per unit uv area must be an exact integer in
+// double precision.
+void check_jakob2014(JsonObject& block, GlintDesc& desc) {
+    if (double(desc.log_density) > jakob2014::kMaxLogDensity) {
+        std::string parent = block.path();
+        const size_t slash = parent.rfind('/');
+        if (slash != std::string::npos) parent.resize(slash);
+        fail(
+            "{}: {}/log_density: {} is out of range for the jakob2014 model: at most {} (N = "
+            "e^log_density "
+            "particles per unit uv area must be an exact integer in double precision, N <= 2^53)",
+            block.file(), parent, desc.log_density, jakob2014::kMaxLogDensity);
+    }
+}
+
+}  // namespace
+
+GlintModelDescriptor jakob2014_descriptor() {
+    namespace gp = glint_param;
+    using P = Jakob2014Params;
+    GlintModelDescriptor d;
+    d.id = GlintModelId::Jakob2014;
+    d.name = "jakob2014";
+    d.description = "discrete stochastic microfacets, 4-D hierarchy counting (Jakob et al. 2014)";
+    d.citations = {{"002", "Jakob, Hašan, Yan, Lawrence, Ramamoorthi, Marschner", 2014,
+                    "ACM Transactions on Graphics 33(4) (SIGGRAPH 2014)",
+                    "Discrete Stochastic Microfacet Models"}};
+    d.lights = {GlintLightType::Point, GlintLightType::Directional, GlintLightType::Sphere,
+                GlintLightType::Environment};
+    d.gpu = false;
+    d.default_params = [] { return GlintModelParams(P{}); };
+    d.params = {
+        // 002 §3.1: "a constant γ between 0.5 and 6 degrees in our scenes".
+        gp::number("gamma_deg", &P::gamma_deg, 0.5, 6.0, "deg",
+                   "query cone radius gamma around the outgoing direction (002 §3.1)"),
+        gp::boolean("chromatic", &P::chromatic,
+                    "per-particle Dirichlet areas per colour channel (002 §3.5, Fig. 8)"),
+        // ε: 0 = exact traversal (never approximate); the paper tried 1 % and uses 10 %.
+        gp::number("error_threshold", &P::error_threshold, 0.0, 0.5, "",
+                   "epsilon of the adaptive error criterion (002 Eq. 10); 0 = exact traversal"),
+        // Below 8 levels a 1e6-particle query cannot resolve single particles;
+        // above 28 the node ids (4^depth) would not fit 64 bits.
+        gp::integer("max_depth", &P::max_depth, 8, 28, "",
+                    "deepest node of the 4-D hierarchy (authors' maxDepth 20)"),
+        gp::number("query_area", &P::query_area, 1e-16, 1.0, "uv area",
+                   "E[A(query)] of 002 Eq. 11: the expected uv area of one query",
+                   GlintParamUi::Log),
+    };
+    d.check = check_jakob2014;
+    d.validation = {"jakob2014", [](uint64_t seed) {
+                        Jakob2014ValidationOptions o;
+                        o.seed = seed;
+                        return validate_jakob2014(o);
+                    }};
+    return d;
+}
+
+}  // namespace glintlab

@@ -1,0 +1,82 @@
+// kneiphof2025's descriptor (glint_model_descriptor.h): environment, sphere
+// and sun-like directional lights by its own counting (003 Eq. 17; K = 1 area
+// lights, 003 Eq. 6-9); point and delta directional lights through
+// deliot2023's D_P (003 Table 1).
+#include "glintlab/core/json_reader.h"
+#include "glintlab/glints/glint_model_descriptor.h"
+#include "glintlab/glints/kneiphof2025/kneiphof2025.h"
+#include "glintlab/glints/kneiphof2025/validate_kneiphof2025.h"
+#include "glintlab/validate/report.h"
+
+namespace glintlab {
+namespace {
+
+// 003 §7-8: the split-sum tables are isotropic GGX.
+void check_kneiphof2025(JsonObject& block, GlintDesc& desc) {
+    if (desc.ndf != NdfType::GGX || desc.alpha_x != desc.alpha_y || desc.alpha_x > 1.0f)
+        block.error("",
+                    "kneiphof2025 needs an isotropic GGX material with roughness <= 1 "
+                    "(\"ndf\": \"ggx\", one roughness value; 003 §7-8: the split-sum "
+                    "tables are isotropic GGX)");
+}
+
+}  // namespace
+
+GlintModelDescriptor kneiphof2025_descriptor() {
+    namespace gp = glint_param;
+    using P = Kneiphof2025Params;
+    GlintModelDescriptor d;
+    d.id = GlintModelId::Kneiphof2025;
+    d.name = "kneiphof2025";
+    d.description =
+        "image-based lighting of glints, multinomial over K radiance levels (Kneiphof & Klein "
+        "2025)";
+    d.citations = {{"003", "Kneiphof, Klein", 2025, "Computer Graphics Forum 44(4) (EGSR 2025)",
+                    "Real-Time Image-Based Lighting of Glints"}};
+    d.lights = {GlintLightType::Point, GlintLightType::Directional, GlintLightType::Sphere,
+                GlintLightType::Environment};
+    d.gpu = true;
+    d.default_params = [] { return GlintModelParams(P{}); };
+    d.params = {
+        gp::integer("levels", &P::levels, 4, 8, "",
+                    "K radiance levels of the environment partition (003 §4-5)", {4, 8}),
+        // The paper suggests [1e-5, 1e-2]; [1e-8, 1] is accepted.
+        gp::number("black_level", &P::black_level, 1e-8, 1.0, "",
+                   "l of 003 §5: the dimmest non-zero level is at least this luminance",
+                   GlintParamUi::Decades),
+        gp::choice("variant", &P::variant,
+                   {{"kneiphof2025", P::Variant::Kneiphof2025},
+                    {"wang2020_style", P::Variant::Wang2020Style}},
+                   "003 Fig. 8: p from the environment's partition, or from a fixed cone of "
+                   "half-angle gamma_deg"),
+        gp::choice("gaussian", &P::conditional_gaussian,
+                   {{"conditional", true}, {"algorithm1", false}},
+                   "Gaussian of the dual-gated law: exact interior moments, or 003 Algorithm 1 "
+                   "as published"),
+        gp::choice("smooth", &P::smooth,
+                   {{"split_sum", P::Smooth::SplitSum}, {"lobe", P::Smooth::Lobe}},
+                   "smooth radiance the glint factor multiplies (Eq. 11): one split-sum lookup "
+                   "(003) or the filtered reflection lobe"),
+        // Cone half-angle of the wang2020-style probability.
+        gp::number("gamma_deg", &P::gamma_deg, 0.01, 45.0, "deg",
+                   "cone half-angle of the wang2020_style probability", GlintParamUi::Log),
+        // Same ranges as deliot2023's block.
+        gp::number("microfacet_roughness", &P::microfacet_roughness, 1e-4, 1.0, "",
+                   "deliot2023's R for point, directional and sphere lights", GlintParamUi::Log),
+        gp::number("screen_space_scale", &P::screen_space_scale, 0.5, 8.0, "px",
+                   "deliot2023's minimum glint size in pixels"),
+        gp::number("density_randomization", &P::density_randomization, 0.0, 50.0, "",
+                   "deliot2023's std-dev of the per-cell jitter of ln(density)"),
+    };
+    d.check = check_kneiphof2025;
+    d.shades_light = kneiphof2025_shades_light;
+    d.light_radiance = kneiphof2025_light_radiance;
+    d.validation = {"kneiphof2025", [](uint64_t seed) {
+                        Kneiphof2025ValidationOptions o;
+                        o.seed = seed;
+                        return validate_kneiphof2025(o);
+                    }};
+    return d;
+}
+
+}  // namespace glintlab

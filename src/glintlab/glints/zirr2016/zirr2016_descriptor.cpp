@@ -1,0 +1,43 @@
+// zirr2016's descriptor (glint_model_descriptor.h): point and directional
+// lights only (000 §3: counts for one half vector).
+#include "glintlab/glints/glint_model_descriptor.h"
+#include "glintlab/glints/zirr2016/validate_zirr2016.h"
+#include "glintlab/validate/report.h"
+
+namespace glintlab {
+
+GlintModelDescriptor zirr2016_descriptor() {
+    namespace gp = glint_param;
+    using P = Zirr2016Params;
+    GlintModelDescriptor d;
+    d.id = GlintModelId::Zirr2016;
+    d.name = "zirr2016";
+    d.description = "MIP-grid binomial counting with output blending (Zirr & Kaplanyan 2016)";
+    d.citations = {{"", "Zirr, Kaplanyan", 2016, "I3D 2016",
+                    "Real-time Rendering of Procedural Multiscale Materials"}};
+    d.lights = {GlintLightType::Point, GlintLightType::Directional};
+    d.gpu = true;
+    d.default_params = [] { return GlintModelParams(P{}); };
+    d.params = {
+        // R in (0, 1] (000 §3); 1e-4 stands for the open end: below it the
+        // angular cells h.xy / R are finer than fp32 resolves near the normal.
+        gp::number("microfacet_roughness", &P::microfacet_roughness, 1e-4, 1.0, "",
+                   "R of 000 Eq. 4: p = R D(h)/D(n), the angular cell width (micro-roughness)",
+                   GlintParamUi::Log),
+        // 1 = isotropic filtering only; 64 bounds the march (cost grows linearly).
+        gp::number("max_anisotropy", &P::max_anisotropy, 1.0, 64.0, "",
+                   "largest footprint ratio marched; beyond it the footprint is widened"),
+        // Below 0.5 texels are under half a pixel and alias; above 8 glints
+        // are blocks of 8 pixels.
+        gp::number("screen_space_scale", &P::screen_space_scale, 0.5, 8.0, "",
+                   "texel width in footprint minor widths: LOD = log2(minor * S)"),
+    };
+    d.validation = {"zirr2016", [](uint64_t seed) {
+                        Zirr2016ValidationOptions o;
+                        o.seed = seed;
+                        return validate_zirr2016(o);
+                    }};
+    return d;
+}
+
+}  // namespace glintlab
