@@ -1,5 +1,6 @@
 #include "glintlab/realtime/gpu_wang2020.h"
 
+#include <cmath>
 #include <variant>
 #include <vector>
 
@@ -23,15 +24,20 @@ constexpr const char* kGlue = R"(
 layout(std430, binding = 1) readonly buffer Wang2020Dpf { float u_wang2020_dpf[]; };
 layout(std430, binding = 2) readonly buffer Wang2020Prefilter { vec4 u_wang2020_prefilter[]; };
 layout(std430, binding = 3) readonly buffer Wang2020Nodes { uvec2 u_wang2020_nodes[]; };
+layout(std430, binding = 4) readonly buffer Wang2020Cone { vec4 u_wang2020_cone[]; };
 float wang2020_dpf_value(int index) { return u_wang2020_dpf[index]; }
 vec4 wang2020_prefilter_value(int index) { return u_wang2020_prefilter[index]; }
 uvec2 wang2020_node(int index) { return u_wang2020_nodes[index]; }
+vec4 wang2020_cone_value(int index) { return u_wang2020_cone[index]; }
 uniform ivec3 u_wang2020_dpf_res;
 uniform ivec4 u_wang2020_prefilter_res;
 uniform int u_wang2020_depth;
 uniform uint u_wang2020_seed;
 uniform float u_wang2020_particles;
 uniform float u_wang2020_sigma;
+uniform int u_wang2020_micro;
+uniform ivec2 u_wang2020_cone_res;
+uniform float u_wang2020_cos_gamma;
 Wang2020Tables wang2020_tables() {
     Wang2020Tables t;
     t.dpf_res = u_wang2020_dpf_res;
@@ -41,6 +47,9 @@ Wang2020Tables wang2020_tables() {
     t.particles = u_wang2020_particles;
     t.sigma = u_wang2020_sigma;
     t.alpha = u_glint_alpha.x;
+    t.micro = u_wang2020_micro;
+    t.cone_res = u_wang2020_cone_res;
+    t.cos_gamma = u_wang2020_cos_gamma;
     return t;
 }
 // Eq. 21 (the CPU's wang2020_light_radiance, untinted).
@@ -67,7 +76,8 @@ float glint_masking(vec3 wo, vec3 wi, vec3 h) {
 )";
 
 static_assert(kWang2020DpfBinding == 1 && kWang2020PrefilterBinding == 2 &&
-              kWang2020NodeBinding == 3);  // the layout qualifiers above
+              kWang2020NodeBinding == 3 &&
+              kWang2020ConeBinding == 4);  // the layout qualifiers above
 
 template <typename T>
 Buffer upload(const std::vector<T>& data, const char* what) {
@@ -111,11 +121,16 @@ void Wang2020Resources::bind(unsigned program, UniformCache& u, const GlintDesc&
         for (const wang2020::QuadtreeNode& n : model->quadtree().nodes())
             nodes.emplace_back(n.first_child, n.count_mask);
         nodes_ = upload(nodes, "quadtree");
+        // L_γ exists for "micro": "per_particle" under an environment only.
+        cone_ = model->cone_average() != nullptr
+                    ? upload(model->cone_average()->data(), "cone-averaged environment")
+                    : upload(std::vector<glm::vec4>(1, glm::vec4(0.0f)), "cone-averaged");
         model_ = std::move(model);
     }
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kWang2020DpfBinding, dpf_.get());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kWang2020PrefilterBinding, prefilter_.get());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kWang2020NodeBinding, nodes_.get());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kWang2020ConeBinding, cone_.get());
     auto loc = [&](const char* name) { return u.location(program, name); };
     const wang2020::DpfResolution& d = model_->dpf().resolution();
     glProgramUniform3i(program, loc("u_wang2020_dpf_res"), d.theta_i, d.theta_o, d.phi);
@@ -130,6 +145,16 @@ void Wang2020Resources::bind(unsigned program, UniformCache& u, const GlintDesc&
     glProgramUniform1f(program, loc("u_wang2020_particles"),
                        static_cast<float>(model_->quadtree().particles()));
     glProgramUniform1f(program, loc("u_wang2020_sigma"), static_cast<float>(model_->sigma_o()));
+    const bool per_particle = model_->material().micro == wang2020::MicroMode::PerParticle;
+    glProgramUniform1i(program, loc("u_wang2020_micro"), per_particle ? 1 : 0);
+    const glm::ivec2 cres =
+        model_->cone_average() != nullptr
+            ? glm::ivec2(model_->cone_average()->width(), model_->cone_average()->height())
+            : glm::ivec2(1);
+    glProgramUniform2i(program, loc("u_wang2020_cone_res"), cres.x, cres.y);
+    glProgramUniform1f(program, loc("u_wang2020_cos_gamma"),
+                       static_cast<float>(std::cos(model_->material().gamma_deg *
+                                                   3.14159265358979323846 / 180.0)));
 }
 
 }  // namespace glintlab::gl
