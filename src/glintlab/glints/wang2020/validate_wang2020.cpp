@@ -41,8 +41,10 @@ Wang2020Material base_material(uint64_t particles, uint32_t seed,
     // Prefilter resolution: Table 2's 10×18×4×12 (its α = 0.5 scenes) gives
     // 15–21 % image-mean errors on the city / studio maps (sharp lights),
     // 20×40×8×24 still 10–12 % on city (measured, docs/VALIDATION.md); we
-    // use Table 2's other resolution, 31×60×10×36 (its α = 0.1 scene).
-    m.prefilter_res = wang2020::PrefilterResolution{31, 60, 10, 36};
+    // use Table 2's other resolution, 31×60×10×36 (its α = 0.1 scene), by
+    // default (options.prefilter_res).
+    m.prefilter_res = wang2020::PrefilterResolution{opt.prefilter_res[0], opt.prefilter_res[1],
+                                                    opt.prefilter_res[2], opt.prefilter_res[3]};
     return m;
 }
 
