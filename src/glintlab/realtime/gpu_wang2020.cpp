@@ -1,5 +1,6 @@
 #include "glintlab/realtime/gpu_wang2020.h"
 
+#include <cmath>
 #include <variant>
 #include <vector>
 
@@ -16,7 +17,8 @@ namespace glintlab::gl {
 namespace {
 
 static_assert(kWang2020DpfBinding == 1 && kWang2020PrefilterBinding == 2 &&
-              kWang2020NodeBinding == 3);  // the layout qualifiers of wang2020_gpu.glsl
+              kWang2020NodeBinding == 3 &&
+              kWang2020ConeBinding == 4);  // the layout qualifiers of wang2020_gpu.glsl
 
 template <typename T>
 Buffer upload(const std::vector<T>& data, const char* what) {
@@ -56,11 +58,16 @@ void Wang2020Resources::bind(unsigned program, UniformCache& u, const GlintDesc&
         for (const wang2020::QuadtreeNode& n : model->quadtree().nodes())
             nodes.emplace_back(n.first_child, n.count_mask);
         nodes_ = upload(nodes, "quadtree");
+        // L_γ exists for "micro": "per_particle" under an environment only.
+        cone_ = model->cone_average() != nullptr
+                    ? upload(model->cone_average()->data(), "cone-averaged environment")
+                    : upload(std::vector<glm::vec4>(1, glm::vec4(0.0f)), "cone-averaged");
         model_ = std::move(model);
     }
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kWang2020DpfBinding, dpf_.get());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kWang2020PrefilterBinding, prefilter_.get());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kWang2020NodeBinding, nodes_.get());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kWang2020ConeBinding, cone_.get());
     auto loc = [&](const char* name) { return u.location(program, name); };
     const wang2020::DpfResolution& d = model_->dpf().resolution();
     glProgramUniform3i(program, loc("u_wang2020_dpf_res"), d.theta_i, d.theta_o, d.phi);
@@ -75,6 +82,16 @@ void Wang2020Resources::bind(unsigned program, UniformCache& u, const GlintDesc&
     glProgramUniform1f(program, loc("u_wang2020_particles"),
                        static_cast<float>(model_->quadtree().particles()));
     glProgramUniform1f(program, loc("u_wang2020_sigma"), static_cast<float>(model_->sigma_o()));
+    const bool per_particle = model_->material().micro == wang2020::MicroMode::PerParticle;
+    glProgramUniform1i(program, loc("u_wang2020_micro"), per_particle ? 1 : 0);
+    const glm::ivec2 cres =
+        model_->cone_average() != nullptr
+            ? glm::ivec2(model_->cone_average()->width(), model_->cone_average()->height())
+            : glm::ivec2(1);
+    glProgramUniform2i(program, loc("u_wang2020_cone_res"), cres.x, cres.y);
+    glProgramUniform1f(program, loc("u_wang2020_cos_gamma"),
+                       static_cast<float>(std::cos(model_->material().gamma_deg *
+                                                   3.14159265358979323846 / 180.0)));
 }
 
 }  // namespace glintlab::gl

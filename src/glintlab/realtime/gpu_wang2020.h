@@ -35,6 +35,7 @@ class UniformCache;
 inline constexpr int kWang2020DpfBinding = 1;
 inline constexpr int kWang2020PrefilterBinding = 2;
 inline constexpr int kWang2020NodeBinding = 3;
+inline constexpr int kWang2020ConeBinding = 4;  // L_γ ("micro": "per_particle")
 
 class Wang2020Resources {
   public:
@@ -47,7 +48,7 @@ class Wang2020Resources {
 
   private:
     std::shared_ptr<const wang2020::Wang2020Model> model_;
-    Buffer dpf_, prefilter_, nodes_;
+    Buffer dpf_, prefilter_, nodes_, cone_;
 };
 
 }  // namespace gl

@@ -26,8 +26,13 @@ constexpr double kAlpha = 0.6;  // a tabulated roughness (see docs)
 constexpr double kGammaDeg = 6.0;
 constexpr double kMicroMaxExpected = wang2020::kMicroMax;
 
-Wang2020Material base_material(uint64_t particles, uint32_t seed) {
+Wang2020Material base_material(uint64_t particles, uint32_t seed,
+                               const Wang2020ValidationOptions& opt) {
     Wang2020Material m;
+    m.micro = opt.micro_per_particle ? wang2020::MicroMode::PerParticle
+                                     : wang2020::MicroMode::AsPublished;
+    m.prefilter =
+        opt.prefilter_mis ? wang2020::PrefilterMode::Mis : wang2020::PrefilterMode::AsPublished;
     m.alpha = kAlpha;
     m.gamma_deg = kGammaDeg;
     m.particles = particles;
@@ -36,8 +41,10 @@ Wang2020Material base_material(uint64_t particles, uint32_t seed) {
     // Prefilter resolution: Table 2's 10×18×4×12 (its α = 0.5 scenes) gives
     // 15–21 % image-mean errors on the city / studio maps (sharp lights),
     // 20×40×8×24 still 10–12 % on city (measured, docs/VALIDATION.md); we
-    // use Table 2's other resolution, 31×60×10×36 (its α = 0.1 scene).
-    m.prefilter_res = wang2020::PrefilterResolution{31, 60, 10, 36};
+    // use Table 2's other resolution, 31×60×10×36 (its α = 0.1 scene), by
+    // default (options.prefilter_res).
+    m.prefilter_res = wang2020::PrefilterResolution{opt.prefilter_res[0], opt.prefilter_res[1],
+                                                    opt.prefilter_res[2], opt.prefilter_res[3]};
     return m;
 }
 
@@ -79,7 +86,7 @@ ValidationReport validate_wang2020(const Wang2020ValidationOptions& opt) {
     // --- White furnace: micro-scale realizations vs the smooth model. -------
     double furnace_err = 0.0;
     {
-        Wang2020Material fm = base_material(10000, seed);
+        Wang2020Material fm = base_material(10000, seed, opt);
         fm.prefilter_res = wang2020::PrefilterResolution{4, 8, 8, 16};  // constant env
         Wang2020Model model(fm);
         model.prefilter([](const glm::dvec3&) { return glm::vec3(1.0f); });
@@ -132,8 +139,19 @@ ValidationReport validate_wang2020(const Wang2020ValidationOptions& opt) {
             fail("wang2020 validate: environment map '{}' not found (Debian package blender-data)",
                  path);
         const EnvironmentMap env(read_image(path), 1.0f, 0.0f);
-        Wang2020Model model(base_material(N, seed));
-        model.prefilter([&](const glm::dvec3& d) { return env.eval(glm::vec3(d)); });
+        Wang2020Model model(base_material(N, seed, opt));
+        wang2020::EnvironmentSampler sampler;  // used by "prefilter": "mis"
+        sampler.sample = [&](const glm::dvec2& u, glm::dvec3& dir) {
+            glm::vec3 d(0.0f);
+            float pdf = 0.0f;
+            env.sample(glm::vec2(u), &d, &pdf);
+            dir = glm::dvec3(d);
+            return static_cast<double>(pdf);
+        };
+        sampler.pdf = [&](const glm::dvec3& d) {
+            return static_cast<double>(env.pdf(glm::vec3(d)));
+        };
+        model.prefilter([&](const glm::dvec3& d) { return env.eval(glm::vec3(d)); }, &sampler);
         for (double expected : {2.0, 16.0, 200.0}) {
             const double s = std::sqrt(expected / static_cast<double>(N));
             // The micro scale is dominated by rare bright glints: more
@@ -228,7 +246,7 @@ ValidationReport validate_wang2020(const Wang2020ValidationOptions& opt) {
         if (&path == &opt.environment_maps.back()) {
             const auto* pf = model.prefiltered();
             report.details["memory_bytes"] = {
-                {"dpf_set", wang2020::dpf_set(base_material(N, seed).dpf_res).memory_bytes()},
+                {"dpf_set", wang2020::dpf_set(base_material(N, seed, opt).dpf_res).memory_bytes()},
                 {"dpf_extracted", model.dpf().memory_bytes()},
                 {"prefilter", pf ? pf->memory_bytes() : 0u}};
         }

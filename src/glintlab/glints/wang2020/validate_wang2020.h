@@ -23,6 +23,13 @@ struct Wang2020ValidationOptions {
     int realizations = 16;  // per image, both models (for mean and variance)
     int furnace_realizations = 256;
     uint64_t quadtree_particles = 1000000;  // memory check (depth 11)
+    // The block's "micro" and "prefilter" modes (docs/MODELS.md, wang2020):
+    // false reproduces the printed method (and the suite's earlier numbers).
+    bool micro_per_particle = true;
+    bool prefilter_mis = true;
+    // Prefilter table of the ground-truth rows (θn, φn, θo, φo); the default
+    // is Table 2's α = 0.1 resolution (docs/VALIDATION.md, wang2020).
+    int prefilter_res[4] = {31, 60, 10, 36};
 };
 
 ValidationReport validate_wang2020(const Wang2020ValidationOptions& options);

@@ -37,4 +37,48 @@ float wang2020_point_dprime(int scale, float p, float count, float accepted, flo
     return accepted / (total * area * sigma);
 }
 
+// ---- "micro": "per_particle" (docs/MODELS.md, wang2020) ----
+// Blend weights (micro, meso, macro) of the per_particle mode: log2-linear
+// bands over expected counts [2, 8] (micro -> meso) and [32, 128] (meso ->
+// macro), centred on the paper's thresholds 4 and 64. Each scale's estimate
+// has the same expectation (micro and meso even conditionally on the
+// particles in A), so any convex blend keeps the mean; the blend removes the
+// jump in texture (variance) at the thresholds.
+vec3 wang2020_scale_weights(float expected_count) {
+    if (!(expected_count > 2.0f)) return vec3(1.0f, 0.0f, 0.0f);
+    if (expected_count < 8.0f) {
+        float t = 0.5f * log2(expected_count * 0.5f);
+        return vec3(1.0f - t, t, 0.0f);
+    }
+    if (expected_count <= 32.0f) return vec3(0.0f, 1.0f, 0.0f);
+    if (expected_count < 128.0f) {
+        float t = 0.5f * log2(expected_count * (1.0f / 32.0f));
+        return vec3(0.0f, 1.0f - t, t);
+    }
+    return vec3(0.0f, 0.0f, 1.0f);
+}
+
+// Environment radiance (before tint), per_particle mode: micro = (1/(a N))
+// Σ_{k in A} L_γ(i_k) M(i_k, o) (particle_sum holds the Σ), blended with
+// Eq. 18 (meso) and its macro limit by the weights w.
+vec3 wang2020_environment_blend(vec3 w, vec3 lhat, vec3 particle_sum, float count, float area,
+                                float total, float sigma) {
+    vec3 r = vec3(0.0f);
+    if (w.x > 0.0f) r += w.x * particle_sum / (area * total);
+    if (w.y > 0.0f) r += w.y * lhat * (count / (sigma * area * total));
+    if (w.z > 0.0f) r += w.z * lhat / sigma;
+    return r;
+}
+
+// D̂'(A, o, i) of Eq. 21, per_particle mode: lit = number of particles in A
+// whose own normal reflects i into the γ cone around o (probability P each).
+float wang2020_point_dprime_blend(vec3 w, float p, float count, float lit, float area, float total,
+                                  float sigma) {
+    float r = 0.0f;
+    if (w.x > 0.0f) r += w.x * lit / (total * area * sigma);
+    if (w.y > 0.0f) r += w.y * count * p / (total * area * sigma);
+    if (w.z > 0.0f) r += w.z * p / sigma;
+    return r;
+}
+
 #endif  // GLINTLAB_GLINTS_WANG2020_GLSL

@@ -39,4 +39,13 @@ inline glm::dvec3 spherical_dir(double theta, double phi) {
     return {s * std::cos(phi), s * std::sin(phi), std::cos(theta)};
 }
 
+// Normal drawn from D(m)(m·n) (Beckmann) from two unit numbers:
+// tan²θm = −α² ln(1 − u1), φm = 2π u2 (wang2020_tables.glsl
+// wang2020_particle_normal is the GPU's float copy).
+inline glm::dvec3 beckmann_sample_normal(double u1, double u2, double alpha) {
+    const double tan2 = -alpha * alpha * std::log(1.0 - u1);
+    const double c = 1.0 / std::sqrt(1.0 + tan2);
+    return spherical_dir(std::acos(c), 2.0 * kPi * u2);
+}
+
 }  // namespace glintlab::wang2020

@@ -53,6 +53,13 @@ GlintModelDescriptor wang2020_descriptor() {
                     "001 §4.4: one mirror-direction visibility ray"),
         gp::boolean("blur", &P::blur,
                     "001 §4.4: the two Gaussian blurs (9 and 3 taps) over the glint layer"),
+        gp::choice("micro", &P::micro_per_particle,
+                   {{"per_particle", true}, {"as_published", false}},
+                   "micro scale: per-particle hashed normals with blended scale transitions "
+                   "(default) or 001 Eq. 20's acceptance test"),
+        gp::choice("prefilter", &P::prefilter_mis, {{"mis", true}, {"as_published", false}},
+                   "001 Eq. 16 prefilter: BRDF + environment samples by MIS (default) or BRDF "
+                   "samples only"),
     };
     d.check = check_wang2020;
     d.shades_light = wang2020_shades_light;

@@ -14,19 +14,25 @@
 #include "glintlab/glints/wang2020/wang2020_tables.glsl"
 #define GLINTLAB_GLINT_OWN_LIGHTS 1
 // The CPU's arrays (gpu_wang2020.cpp): DpfTable::values(),
-// PrefilterTable::data(), ParticleQuadtree::nodes().
+// PrefilterTable::data(), ParticleQuadtree::nodes(),
+// ConeAverageTable (the micro scale's cone-averaged environment).
 layout(std430, binding = 1) readonly buffer Wang2020Dpf { float u_wang2020_dpf[]; };
 layout(std430, binding = 2) readonly buffer Wang2020Prefilter { vec4 u_wang2020_prefilter[]; };
 layout(std430, binding = 3) readonly buffer Wang2020Nodes { uvec2 u_wang2020_nodes[]; };
+layout(std430, binding = 4) readonly buffer Wang2020Cone { vec4 u_wang2020_cone[]; };
 float wang2020_dpf_value(int index) { return u_wang2020_dpf[index]; }
 vec4 wang2020_prefilter_value(int index) { return u_wang2020_prefilter[index]; }
 uvec2 wang2020_node(int index) { return u_wang2020_nodes[index]; }
+vec4 wang2020_cone_value(int index) { return u_wang2020_cone[index]; }
 uniform ivec3 u_wang2020_dpf_res;
 uniform ivec4 u_wang2020_prefilter_res;
 uniform int u_wang2020_depth;
 uniform uint u_wang2020_seed;
 uniform float u_wang2020_particles;
 uniform float u_wang2020_sigma;
+uniform int u_wang2020_micro;
+uniform ivec2 u_wang2020_cone_res;
+uniform float u_wang2020_cos_gamma;
 Wang2020Tables wang2020_tables() {
     Wang2020Tables t;
     t.dpf_res = u_wang2020_dpf_res;
@@ -36,6 +42,9 @@ Wang2020Tables wang2020_tables() {
     t.particles = u_wang2020_particles;
     t.sigma = u_wang2020_sigma;
     t.alpha = u_glint_alpha.x;
+    t.micro = u_wang2020_micro;
+    t.cone_res = u_wang2020_cone_res;
+    t.cos_gamma = u_wang2020_cos_gamma;
     return t;
 }
 // Eq. 21 (the CPU's wang2020_light_radiance, untinted).

@@ -32,8 +32,8 @@ uint64_t particles_of(const GlintDesc& desc) {
 
 // One model per (material, environment map); the map pointer identifies the
 // environment (scenes own their maps for the whole render).
-using Key =
-    std::tuple<float, float, uint64_t, uint32_t, double, int, int, int, int, const EnvironmentMap*>;
+using Key = std::tuple<float, float, uint64_t, uint32_t, double, int, int, int, int, bool, bool,
+                       const EnvironmentMap*>;
 
 // The map pointer is part of the key; the entry also keeps a weak_ptr to the
 // map so that a new map allocated at a freed map's address (a later scene)
@@ -48,8 +48,10 @@ std::shared_ptr<const Wang2020Model> model_for(const GlintDesc& desc,
     static std::mutex mutex;
     static std::map<Key, CacheEntry> cache;
     const Wang2020Params& p = params_of(desc);
-    const Key key{desc.alpha_x, 0.0f,        particles_of(desc), desc.seed,           p.gamma_deg,
-                  p.depth,      p.dpf_theta, p.dpf_phi,          p.prefilter_samples, env.get()};
+    const Key key{
+        desc.alpha_x,    0.0f,        particles_of(desc), desc.seed,           p.gamma_deg,
+        p.depth,         p.dpf_theta, p.dpf_phi,          p.prefilter_samples, p.micro_per_particle,
+        p.prefilter_mis, env.get()};
     const std::lock_guard lock(mutex);
     CacheEntry& slot = cache[key];
     if (!slot.model || (env && slot.env.expired())) {
@@ -64,10 +66,26 @@ std::shared_ptr<const Wang2020Model> model_for(const GlintDesc& desc,
         m.color = glm::dvec3(1.0);  // the tint is applied per call
         m.dpf_res = {p.dpf_theta, p.dpf_theta, p.dpf_phi};
         m.prefilter_samples = p.prefilter_samples;
+        m.micro = p.micro_per_particle ? wang2020::MicroMode::PerParticle
+                                       : wang2020::MicroMode::AsPublished;
+        m.prefilter =
+            p.prefilter_mis ? wang2020::PrefilterMode::Mis : wang2020::PrefilterMode::AsPublished;
         auto model = std::make_shared<Wang2020Model>(m);
         if (env) {
             const EnvironmentMap* map = env.get();
-            model->prefilter([map](const glm::dvec3& d) { return map->eval(glm::vec3(d)); });
+            wang2020::EnvironmentSampler sampler;
+            sampler.sample = [map](const glm::dvec2& u, glm::dvec3& dir) {
+                glm::vec3 d(0.0f);
+                float pdf = 0.0f;
+                map->sample(glm::vec2(u), &d, &pdf);
+                dir = glm::dvec3(d);
+                return static_cast<double>(pdf);
+            };
+            sampler.pdf = [map](const glm::dvec3& d) {
+                return static_cast<double>(map->pdf(glm::vec3(d)));
+            };
+            model->prefilter([map](const glm::dvec3& d) { return map->eval(glm::vec3(d)); },
+                             &sampler);
         }
         slot.model = std::move(model);
         slot.env = env;

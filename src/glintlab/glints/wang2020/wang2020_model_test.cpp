@@ -44,7 +44,18 @@ TEST(Wang2020Model, ReadsItsBlockAndRejectsBadInput) {
     const auto& p = std::get<Wang2020Params>(ok.materials[0].glint.params);
     EXPECT_DOUBLE_EQ(p.gamma_deg, 3.0);
     EXPECT_EQ(p.depth, 9);
-    EXPECT_EQ(p.dpf_theta, 90);  // Table 2 default
+    EXPECT_EQ(p.dpf_theta, 90);         // Table 2 default
+    EXPECT_TRUE(p.micro_per_particle);  // issue 15 defaults
+    EXPECT_TRUE(p.prefilter_mis);
+    const Scene pub = parse_scene(
+        scene_with(glint_material({{"micro", "as_published"}, {"prefilter", "as_published"}})),
+        "test.json");
+    EXPECT_FALSE(std::get<Wang2020Params>(pub.materials[0].glint.params).micro_per_particle);
+    EXPECT_FALSE(std::get<Wang2020Params>(pub.materials[0].glint.params).prefilter_mis);
+    EXPECT_NE(error_of(scene_with(glint_material({{"micro", "per_pixel"}}))).find("micro"),
+              std::string::npos);
+    EXPECT_NE(error_of(scene_with(glint_material({{"prefilter", 3}}))).find("prefilter"),
+              std::string::npos);
     ASSERT_NE(find_glint_model("wang2020"), nullptr);
     EXPECT_FALSE(find_glint_model("wang2020")->shades(GlintLightType::Sphere));
 

@@ -17,6 +17,14 @@ struct Wang2020Params {
     int prefilter_samples = 64;         // K of Eq. 16, [1, 4096]
     bool directional_occlusion = true;  // §4.4: one mirror-direction visibility ray
     bool blur = true;                   // §4.4: the two Gaussian blurs (9 and 3 taps) in renders
+    // "micro": "per_particle" (default: each particle reflects the γ-cone
+    // averaged environment about its own hashed Beckmann normal; blended
+    // scale transitions) or "as_published" (Eq. 20: accept iff λ < P̂, weight
+    // 1/P̂; hard thresholds at 4 and 64). docs/MODELS.md, wang2020.
+    bool micro_per_particle = true;
+    // "prefilter": "mis" (default: K BRDF + K environment samples per texel,
+    // balance heuristic) or "as_published" (Eq. 16: K BRDF samples).
+    bool prefilter_mis = true;
 };
 
 }  // namespace glintlab

@@ -30,7 +30,118 @@ void cell(double x, int n, bool periodic, int& i0, int& i1, double& f) {
         f = x - i0;
     }
 }
+
+// fn(row) for row in [0, rows) on up to 16 threads; each row depends only on
+// its index, so the result is identical for any thread count.
+template <typename Fn>
+void parallel_rows(int rows, Fn&& fn) {
+    const int threads =
+        std::clamp(static_cast<int>(std::thread::hardware_concurrency()), 1, std::min(rows, 16));
+    std::atomic<int> next{0};
+    std::vector<std::thread> pool;
+    for (int t = 1; t < threads; ++t)
+        pool.emplace_back([&] {
+            for (int a = next++; a < rows; a = next++) fn(a);
+        });
+    for (int a = next++; a < rows; a = next++) fn(a);
+    for (std::thread& th : pool) th.join();
+}
+
+// pdf_b(i) of the Beckmann reflection sampling (local frame).
+double brdf_pdf(const glm::dvec3& i, const glm::dvec3& o, double alpha) {
+    const glm::dvec3 hs = i + o;
+    const double len = glm::length(hs);
+    if (!(len > 0.0)) return 0.0;
+    const glm::dvec3 h = hs / len;
+    const double oh = glm::dot(o, h);
+    if (oh <= 0.0 || h.z <= 0.0) return 0.0;
+    return beckmann_D(h.z, alpha) * h.z / (4.0 * oh);
+}
 }  // namespace
+
+ConeAverageTable::ConeAverageTable(const EnvironmentFn& env, double gamma_rad) {
+    if (!(gamma_rad > 0.0 && gamma_rad < kHalfPi))
+        fail("wang2020: cone half-angle {} rad outside (0, pi/2)", gamma_rad);
+    // Output grid: about γ/2 per texel (L_γ is smooth at that scale).
+    height_ = std::clamp(static_cast<int>(std::ceil(2.0 * kPi / gamma_rad)), 16, 512);
+    width_ = 2 * height_;
+    // Fine grid: ≥ 16 points across the cone's diameter 2γ, and at least
+    // 512 rows (the studio maps' resolution).
+    const int hf = std::clamp(static_cast<int>(std::ceil(8.0 * kPi / gamma_rad)), 512, 1536);
+    const int wf = 2 * hf;
+    const double dt = kPi / hf, dp = kTwoPi / wf;
+    std::vector<double> st(hf), ct(hf), sp(wf), cp(wf);
+    for (int j = 0; j < hf; ++j) {
+        st[j] = std::sin((j + 0.5) * dt);
+        ct[j] = std::cos((j + 0.5) * dt);
+    }
+    for (int i = 0; i < wf; ++i) {
+        sp[i] = std::sin((i + 0.5) * dp);
+        cp[i] = std::cos((i + 0.5) * dp);
+    }
+    std::vector<glm::vec3> fine(static_cast<size_t>(hf) * wf);
+    parallel_rows(hf, [&](int j) {
+        for (int i = 0; i < wf; ++i)
+            fine[static_cast<size_t>(j) * wf + i] =
+                env(glm::dvec3(st[j] * cp[i], st[j] * sp[i], ct[j]));
+    });
+    const double cos_g = std::cos(gamma_rad);
+    data_.assign(static_cast<size_t>(width_) * height_, glm::vec4(0.0f));
+    parallel_rows(height_, [&](int y) {
+        const double tc = (y + 0.5) / height_ * kPi;
+        const double stc = std::sin(tc), ctc = std::cos(tc);
+        const int j0 = std::max(0, static_cast<int>(std::floor((tc - gamma_rad) / dt)) - 1);
+        const int j1 = std::min(hf - 1, static_cast<int>(std::ceil((tc + gamma_rad) / dt)) + 1);
+        for (int x = 0; x < width_; ++x) {
+            const double pc = (x + 0.5) / width_ * kTwoPi;
+            const glm::dvec3 c(stc * std::cos(pc), stc * std::sin(pc), ctc);
+            glm::dvec3 sum(0.0);
+            double wsum = 0.0;
+            for (int j = j0; j <= j1; ++j) {
+                // Columns whose points can lie in the cone: cos Δφ ≥
+                // (cos γ − cos θ cos θc) / (sin θ sin θc).
+                const double den = st[j] * stc;
+                int i0 = 0, i1 = wf - 1;
+                if (den > 1e-12) {
+                    const double q = (cos_g - ct[j] * ctc) / den;
+                    if (q > 1.0) continue;
+                    if (q > -1.0) {
+                        const double half = std::acos(q);
+                        i0 = static_cast<int>(std::floor((pc - half) / dp)) - 1;
+                        i1 = static_cast<int>(std::ceil((pc + half) / dp)) + 1;
+                        if (i1 - i0 + 1 >= wf) i0 = 0, i1 = wf - 1;
+                    }
+                }
+                for (int ii = i0; ii <= i1; ++ii) {
+                    const int i = ((ii % wf) + wf) % wf;
+                    const glm::dvec3 d(st[j] * cp[i], st[j] * sp[i], ct[j]);
+                    if (glm::dot(d, c) < cos_g) continue;
+                    sum += st[j] * glm::dvec3(fine[static_cast<size_t>(j) * wf + i]);
+                    wsum += st[j];
+                }
+            }
+            const glm::dvec3 v = wsum > 0.0 ? sum / wsum : glm::dvec3(env(c));
+            data_[static_cast<size_t>(y) * width_ + x] = glm::vec4(glm::vec3(v), 0.0f);
+        }
+    });
+}
+
+glm::dvec3 ConeAverageTable::lookup(const glm::dvec3& d) const {
+    if (!std::isfinite(d.x + d.y + d.z)) return glm::dvec3(0.0);
+    const double len = glm::length(d);
+    if (!(len > 0.0)) return glm::dvec3(0.0);
+    const double t = std::acos(std::clamp(d.z / len, -1.0, 1.0));
+    const double p = std::atan2(d.y, d.x);
+    int a0, a1, b0, b1;
+    double fa, fb;
+    cell(t / kPi * height_ - 0.5, height_, false, a0, a1, fa);
+    cell(p / kTwoPi * width_ - 0.5, width_, true, b0, b1, fb);
+    auto at = [&](int y, int x) {
+        return glm::dvec3(glm::vec3(data_[static_cast<size_t>(y) * width_ + x]));
+    };
+    return (1.0 - fa) * ((1.0 - fb) * at(a0, b0) + fb * at(a0, b1)) +
+           fa * ((1.0 - fb) * at(a1, b0) + fb * at(a1, b1));
+}
 
 PrefilterResolution default_prefilter_resolution(double alpha) {
     // Table 2 lists two resolutions: α = 0.1 (Shoe) and α = 0.5 (Snow,
@@ -56,7 +167,7 @@ double m_term(const glm::dvec3& wi, const glm::dvec3& wo, double alpha) {
 
 glm::dvec4 PrefilterTable::evaluate(const DpfTable& dpf, double alpha, const EnvironmentFn& env,
                                     const glm::dvec3& n, const glm::dvec3& o, int K,
-                                    uint64_t texel_id) {
+                                    uint64_t texel_id, const EnvironmentSampler* sampler) {
     glm::dvec3 t, b;
     tangent_frame(n, t, b);
     auto to_world = [&](const glm::dvec3& v) { return v.x * t + v.y * b + v.z * n; };
@@ -81,7 +192,32 @@ glm::dvec4 PrefilterTable::evaluate(const DpfTable& dpf, double alpha, const Env
             const double pdf = beckmann_D(h.z, alpha) * h.z / (4.0 * oh);
             if (!(pdf > 0.0)) continue;
             const glm::dvec3 li = glm::dvec3(env(to_world(i)));
-            lo += li * (dpf.lookup(i, o) * m_term(i, o, alpha) / (pdf * k_used));  // Eq. 16
+            if (!sampler) {
+                lo += li * (dpf.lookup(i, o) * m_term(i, o, alpha) / (pdf * k_used));  // Eq. 16
+                continue;
+            }
+            // Balance heuristic: g / (K pdf_b + K pdf_e) for samples of either strategy.
+            const double pe = sampler->pdf(to_world(i));
+            lo += li * (dpf.lookup(i, o) * m_term(i, o, alpha) / (k_used * (pdf + pe)));
+        }
+    }
+    if (sampler) {
+        // The environment strategy: K samples of its luminance distribution
+        // (same jittered strata over its 2-D sample space).
+        for (int sy = 0; sy < side; ++sy) {
+            for (int sx = 0; sx < side; ++sx) {
+                const glm::dvec2 u((sx + rng.next_double()) / side,
+                                   (sy + rng.next_double()) / side);
+                glm::dvec3 d(0.0);
+                const double pe = sampler->sample(u, d);
+                if (!(pe > 0.0) || !std::isfinite(pe)) continue;
+                const glm::dvec3 i{glm::dot(d, t), glm::dot(d, b), glm::dot(d, n)};
+                if (i.z <= 0.0) continue;
+                const double pb = brdf_pdf(i, o, alpha);
+                const double g = dpf.lookup(i, o) * m_term(i, o, alpha);
+                if (!(g > 0.0)) continue;
+                lo += glm::dvec3(env(d)) * (g / (k_used * (pb + pe)));
+            }
         }
     }
     // Eq. 17: B = 36 × 9 uniform (equal solid angle) hemisphere strata.
@@ -98,7 +234,8 @@ glm::dvec4 PrefilterTable::evaluate(const DpfTable& dpf, double alpha, const Env
 }
 
 PrefilterTable::PrefilterTable(const DpfTable& dpf, double alpha, double /*gamma_rad*/,
-                               const EnvironmentFn& env, PrefilterResolution res, int K)
+                               const EnvironmentFn& env, PrefilterResolution res, int K,
+                               const EnvironmentSampler* sampler)
     : res_(res) {
     if (res.theta_n < 2 || res.phi_n < 2 || res.theta_o < 2 || res.phi_o < 2)
         fail("wang2020: prefilter resolution {}x{}x{}x{} must be at least 2 everywhere",
@@ -118,21 +255,12 @@ PrefilterTable::PrefilterTable(const DpfTable& dpf, double alpha, double /*gamma
                 for (int d = 0; d < res.phi_o; ++d) {
                     const glm::dvec3 o = spherical_dir((c + 0.5) / res.theta_o * kHalfPi,
                                                        (d + 0.5) / res.phi_o * kTwoPi);
-                    data_[k] = glm::vec4(evaluate(dpf, alpha, env, n, o, K, k));
+                    data_[k] = glm::vec4(evaluate(dpf, alpha, env, n, o, K, k, sampler));
                     ++k;
                 }
         }
     };
-    const int threads = std::clamp(static_cast<int>(std::thread::hardware_concurrency()), 1,
-                                   std::min(res.theta_n, 16));
-    std::atomic<int> next{0};
-    std::vector<std::thread> pool;
-    for (int t = 1; t < threads; ++t)
-        pool.emplace_back([&] {
-            for (int a = next++; a < res.theta_n; a = next++) row(a);
-        });
-    for (int a = next++; a < res.theta_n; a = next++) row(a);
-    for (std::thread& th : pool) th.join();
+    parallel_rows(res.theta_n, row);
     build_seconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
 

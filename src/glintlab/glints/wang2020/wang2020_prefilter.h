@@ -12,8 +12,14 @@
 //   M(i, o) = (i·h) F(i·h) G2(i, o) / ((h·n)(o·n));
 // we use this form (decision documented in docs/MODELS.md; checked by the
 // white-furnace test). F = 1: the glint colour multiplies the result.
-// Importance sampling: i = reflect(o, h) with h ~ D(h)(h·n) (Beckmann),
-// pdf(i) = D(h)(h·n) / (4 (o·h)); the K samples are an 8 × 8 jittered stratified grid.
+// Importance sampling ("prefilter": "as_published"): i = reflect(o, h) with
+// h ~ D(h)(h·n) (Beckmann), pdf_b(i) = D(h)(h·n) / (4 (o·h)); the K samples
+// are a √K × √K jittered stratified grid.
+// "prefilter": "mis" (default): the same K BRDF samples plus K samples of the
+// environment's own importance distribution pdf_e (EnvironmentMap::sample,
+// proportional to texel luminance: a small sun is found), combined by the
+// balance heuristic (Veach 1997): L̂o = Σ_{all 2K} Li P M / (K pdf_b + K pdf_e).
+// Without a sampler (a constant environment) "mis" equals "as_published".
 #pragma once
 
 #include <cstdint>
@@ -27,6 +33,36 @@
 namespace glintlab::wang2020 {
 
 using EnvironmentFn = std::function<glm::vec3(const glm::dvec3& world_dir)>;
+
+// Importance sampling of an environment (world directions): sample(u, dir)
+// returns the solid-angle density of dir (0: no sample); pdf(dir) is that
+// density for any direction.
+struct EnvironmentSampler {
+    std::function<double(const glm::dvec2& u, glm::dvec3& dir)> sample;
+    std::function<double(const glm::dvec3& dir)> pdf;
+};
+
+// L_γ(d): the environment averaged over the cone of half-angle γ around the
+// world direction d, the radiance a single facet of the per_particle micro
+// mode reflects towards the cone around o (docs/MODELS.md, wang2020). Stored
+// on a lat-long grid (world z polar, φ = atan2(y, x), cell centred) of about
+// γ/2 spacing; each texel is the solid-angle weighted mean of the environment
+// on a fine lat-long grid (≥ 16 samples across the cone's diameter) over the
+// points inside the cone. The GPU uploads data() and reads it with the same
+// bilinear lookup (wang2020_tables.glsl wang2020_cone_lookup).
+class ConeAverageTable {
+  public:
+    ConeAverageTable(const EnvironmentFn& env, double gamma_rad);
+    glm::dvec3 lookup(const glm::dvec3& world_dir) const;
+    int width() const { return width_; }
+    int height() const { return height_; }
+    // Texel (x, y) at index y · width + x; rgb = L_γ, w = 0.
+    const std::vector<glm::vec4>& data() const { return data_; }
+
+  private:
+    int width_ = 0, height_ = 0;
+    std::vector<glm::vec4> data_;
+};
 
 struct PrefilterResolution {
     int theta_n = 31, phi_n = 60, theta_o = 10, phi_o = 36;
@@ -42,8 +78,10 @@ void tangent_frame(const glm::dvec3& n, glm::dvec3& t, glm::dvec3& b);
 class PrefilterTable {
   public:
     // dpf: the extracted table for (α, γ); gamma_rad its cone angle.
+    // sampler: null selects "as_published" (BRDF samples only), else "mis".
     PrefilterTable(const DpfTable& dpf, double alpha, double gamma_rad, const EnvironmentFn& env,
-                   PrefilterResolution res, int K = 64);
+                   PrefilterResolution res, int K = 64,
+                   const EnvironmentSampler* sampler = nullptr);
 
     // Quadrilinear lookup: rgb = L̂o(n, o) (Eq. 16), w = P̂(n, o) (Eq. 17).
     glm::dvec4 lookup(const glm::dvec3& n_world, const glm::dvec3& o_world) const;
@@ -51,7 +89,7 @@ class PrefilterTable {
     glm::dvec4 texel(int tn, int pn, int to, int po) const;
     static glm::dvec4 evaluate(const DpfTable& dpf, double alpha, const EnvironmentFn& env,
                                const glm::dvec3& n_world, const glm::dvec3& o_local, int K,
-                               uint64_t texel_id = 0);
+                               uint64_t texel_id = 0, const EnvironmentSampler* sampler = nullptr);
 
     const PrefilterResolution& resolution() const { return res_; }
     size_t memory_bytes() const { return data_.size() * sizeof(glm::vec4); }

@@ -86,7 +86,8 @@ Particle ParticleQuadtree::leaf_particle(uint32_t x, uint32_t y, uint32_t k) con
     const uint32_t leaf = (y << depth_) + x;
     return {
         {(x + hash_unit(leaf, k, seed_, 1u)) * size, (y + hash_unit(leaf, k, seed_, 2u)) * size},
-        hash_unit(leaf, k, seed_, 3u)};
+        hash_unit(leaf, k, seed_, 3u),
+        {hash_unit(leaf, k, seed_, 4u), hash_unit(leaf, k, seed_, 5u)}};
 }
 
 template <typename Visit>

@@ -8,7 +8,8 @@
 // bytes each: the index of the first stored child and the particle count with
 // a 4-bit child-occupancy mask. Node id, depth and AABB are implicit in the
 // traversal. Particle positions inside a leaf and their random thresholds
-// λ(x_k) (Eq. 7) are hashes of (leaf id, particle index), as in WWH18.
+// λ(x_k) (Eq. 7) are hashes of (leaf id, particle index), as in WWH18; so
+// are the two numbers that draw its normal (per_particle micro mode).
 #pragma once
 
 #include <cstdint>
@@ -29,6 +30,9 @@ struct QuadtreeNode {
 struct Particle {
     glm::dvec2 uv;  // inside the tile [0,1)²
     double lambda;  // λ(x_k) ∈ [0,1), Eq. 7
+    // Two unit hashes (4 and 5) that draw the particle's normal from
+    // D(m)(m·n) in the per_particle micro mode (wang2020_particle_normal).
+    glm::dvec2 normal_u;
 };
 
 class ParticleQuadtree {

@@ -22,13 +22,24 @@ Scale select_scale(double expected_count) {
 namespace {
 // Scale of §4.3 for footprint A; degenerate / non-finite boxes and boxes
 // spanning more than 64 uv tiles (the traversal's limit) use the macro scale.
-Scale scale_for(const UvBox& A, double N) {
+bool forced_macro(const UvBox& A) {
     const double a = A.area();
-    if (!(a > 0.0) || !std::isfinite(a)) return Scale::Macro;
+    if (!(a > 0.0) || !std::isfinite(a)) return true;
     const double tiles = (std::floor(A.hi.x) - std::floor(A.lo.x) + 1.0) *
                          (std::floor(A.hi.y) - std::floor(A.lo.y) + 1.0);
-    if (!(tiles <= 64.0)) return Scale::Macro;
-    return select_scale(N * a);
+    return !(tiles <= 64.0);
+}
+
+Scale scale_for(const UvBox& A, double N) {
+    if (forced_macro(A)) return Scale::Macro;
+    return select_scale(N * A.area());
+}
+
+// Blend weights of the per_particle mode (wang2020.glsl); the macro cases of
+// scale_for (degenerate boxes, > 64 tiles) are pure macro.
+glm::dvec3 blend_weights(const UvBox& A, double N) {
+    if (forced_macro(A)) return {0.0, 0.0, 1.0};
+    return glm::dvec3(shader::wang2020_scale_weights(static_cast<float>(N * A.area())));
 }
 
 double checked_gamma(const Wang2020Material& m) {
@@ -58,11 +69,14 @@ Wang2020Model::Wang2020Model(const Wang2020Material& m)
       dpf_(timed_extract(m, gamma_rad_, extract_seconds_)),
       tree_(m.particles, m.depth, m.seed) {}
 
-void Wang2020Model::prefilter(const EnvironmentFn& env) {
+void Wang2020Model::prefilter(const EnvironmentFn& env, const EnvironmentSampler* sampler) {
     const PrefilterResolution res =
         m_.prefilter_res.value_or(default_prefilter_resolution(m_.alpha));
-    prefiltered_ = std::make_unique<PrefilterTable>(dpf_, m_.alpha, gamma_rad_, env, res,
-                                                    m_.prefilter_samples);
+    prefiltered_ =
+        std::make_unique<PrefilterTable>(dpf_, m_.alpha, gamma_rad_, env, res, m_.prefilter_samples,
+                                         m_.prefilter == PrefilterMode::Mis ? sampler : nullptr);
+    cone_ = m_.micro == MicroMode::PerParticle ? std::make_unique<ConeAverageTable>(env, gamma_rad_)
+                                               : nullptr;
 }
 
 void Wang2020Model::rebuild_quadtree(uint64_t particles, uint32_t seed) {
@@ -77,6 +91,34 @@ uint64_t Wang2020Model::accepted(const UvBox& A, double p) const {
     return n;
 }
 
+glm::dvec3 Wang2020Model::particle_environment(const UvBox& A, const glm::dvec3& o,
+                                               const glm::dvec3& t, const glm::dvec3& b,
+                                               const glm::dvec3& n) const {
+    glm::dvec3 sum(0.0);
+    tree_.for_each(A.lo, A.hi, [&](const Particle& q) {
+        const glm::dvec3 m = beckmann_sample_normal(q.normal_u.x, q.normal_u.y, m_.alpha);
+        const double om = glm::dot(o, m);
+        if (!(om > 0.0)) return;
+        const glm::dvec3 i = 2.0 * om * m - o;  // reflect(o, m_k)
+        if (!(i.z > 0.0)) return;
+        sum += cone_->lookup(i.x * t + i.y * b + i.z * n) * m_term(i, o, m_.alpha);
+    });
+    return sum;
+}
+
+uint64_t Wang2020Model::particles_lit(const UvBox& A, const glm::dvec3& wi,
+                                      const glm::dvec3& wo) const {
+    const double cos_g = std::cos(gamma_rad_);
+    uint64_t lit = 0;
+    tree_.for_each(A.lo, A.hi, [&](const Particle& q) {
+        const glm::dvec3 m = beckmann_sample_normal(q.normal_u.x, q.normal_u.y, m_.alpha);
+        const double im = glm::dot(wi, m);
+        if (!(im > 0.0)) return;
+        lit += glm::dot(2.0 * im * m - wi, wo) >= cos_g ? 1u : 0u;  // reflect(i, m_k) in the cone
+    });
+    return lit;
+}
+
 glm::dvec3 Wang2020Model::environment_radiance(const UvBox& A, const glm::dvec3& n,
                                                const glm::dvec3& o, Scale* used) const {
     if (!prefiltered_) fail("wang2020: environment_radiance called before prefilter()");
@@ -88,6 +130,21 @@ glm::dvec3 Wang2020Model::environment_radiance(const UvBox& A, const glm::dvec3&
     const double N = static_cast<double>(tree_.particles());
     const Scale s = scale_for(A, N);
     if (used) *used = s;
+    if (m_.micro == MicroMode::PerParticle) {
+        const glm::dvec3 w = blend_weights(A, N);
+        glm::dvec3 sum(0.0);
+        if (w.x > 0.0) {
+            glm::dvec3 t, b;
+            tangent_frame(n, t, b);
+            const glm::dvec3 ol{glm::dot(o, t), glm::dot(o, b), glm::dot(o, n)};
+            sum = particle_environment(A, ol / glm::length(ol), t, b, n);
+        }
+        const double count = w.y > 0.0 ? static_cast<double>(tree_.count(A.lo, A.hi)) : 0.0;
+        const glm::vec3 r = shader::wang2020_environment_blend(
+            glm::vec3(w), glm::vec3(lhat), glm::vec3(sum), static_cast<float>(count),
+            static_cast<float>(a), static_cast<float>(N), static_cast<float>(sigma_o_));
+        return m_.color * glm::dvec3(r);
+    }
     // Eqs. 18-20 (wang2020.glsl, shared with the GPU subset).
     double count = 0.0, accepted_count = 0.0;
     if (s == Scale::Meso) count = static_cast<double>(tree_.count(A.lo, A.hi));
@@ -109,6 +166,15 @@ glm::dvec3 Wang2020Model::light_radiance(const UvBox& A, const glm::dvec3& wi, c
     const double N = static_cast<double>(tree_.particles());
     const Scale s = scale_for(A, N);
     if (used) *used = s;
+    if (m_.micro == MicroMode::PerParticle) {
+        const glm::dvec3 w = blend_weights(A, N);
+        const double lit = w.x > 0.0 ? static_cast<double>(particles_lit(A, wi, wo)) : 0.0;
+        const double count = w.y > 0.0 ? static_cast<double>(tree_.count(A.lo, A.hi)) : 0.0;
+        const double dprime = shader::wang2020_point_dprime_blend(
+            glm::vec3(w), static_cast<float>(p), static_cast<float>(count), static_cast<float>(lit),
+            static_cast<float>(a), static_cast<float>(N), static_cast<float>(sigma_o_));
+        return m_.color * li * (dprime * m);
+    }
     // D̂'(A, o, i) = D̂ / (a σ), D̂ from Eq. 5 / Eq. 7 (wang2020.glsl).
     double count = 0.0, accepted_count = 0.0;
     if (s == Scale::Meso) count = static_cast<double>(tree_.count(A.lo, A.hi));

@@ -12,6 +12,15 @@
 //                 probability 1 − P̂ and break Eq. 19's expectation);
 //   meso (4–64):  Eq. 18 — exact count from the quadtree, no acceptance test;
 //   macro (> 64): count ≈ N a(A): Lo = L̂o / σ(Ωo).
+// That is MicroMode::AsPublished. MicroMode::PerParticle (the default) gives
+// every particle k its own normal m_k ~ D(m)(m·n) (hashes of the particle,
+// the same on CPU and GPU); the micro scale sums what each facet reflects:
+//   environment: Lo = (1/(a N)) Σ_{k in A} L_γ(i_k) M(i_k, o), i_k = reflect(o, m_k),
+//   lights (Eq. 21): particle k is lit iff reflect(i, m_k) lies in the γ cone
+//   around o (probability P(i, o, γ), Eq. 6),
+// and the scales blend over log2-linear bands of the expected count around
+// 4 and 64 (wang2020_scale_weights). Derivation and measurements:
+// docs/MODELS.md, wang2020.
 #pragma once
 
 #include <cstdint>
@@ -26,6 +35,9 @@
 
 namespace glintlab::wang2020 {
 
+enum class MicroMode { PerParticle, AsPublished };
+enum class PrefilterMode { Mis, AsPublished };
+
 struct Wang2020Material {
     double alpha = 0.1;           // Beckmann roughness, [0.02, 1]
     double gamma_deg = 1.0;       // search cone half-angle γ, [1, 30]
@@ -36,6 +48,8 @@ struct Wang2020Material {
     DpfResolution dpf_res{};                           // Table 2: 90 × 90 × 180
     std::optional<PrefilterResolution> prefilter_res;  // default: Table 2 by α
     int prefilter_samples = 64;                        // K of Eq. 16
+    MicroMode micro = MicroMode::PerParticle;
+    PrefilterMode prefilter = PrefilterMode::Mis;  // without a sampler: as published
 };
 
 enum class Scale { Micro, Meso, Macro };
@@ -52,8 +66,10 @@ class Wang2020Model {
   public:
     explicit Wang2020Model(const Wang2020Material& m);
 
-    // Prefilter pass (Eqs. 16–17) for an environment; replaces any previous one.
-    void prefilter(const EnvironmentFn& env);
+    // Prefilter pass (Eqs. 16–17) for an environment; replaces any previous
+    // one. The sampler (optional) serves PrefilterMode::Mis; PerParticle also
+    // builds the cone-averaged environment L_γ.
+    void prefilter(const EnvironmentFn& env, const EnvironmentSampler* sampler = nullptr);
     bool has_environment() const { return prefiltered_ != nullptr; }
     // Spatial tree pass only (§4.5: editing N re-runs just the quadtree).
     void rebuild_quadtree(uint64_t particles, uint32_t seed);
@@ -70,6 +86,8 @@ class Wang2020Model {
     const DpfTable& dpf() const { return dpf_; }
     const ParticleQuadtree& quadtree() const { return tree_; }
     const PrefilterTable* prefiltered() const { return prefiltered_.get(); }
+    // L_γ (PerParticle with an environment only; null otherwise).
+    const ConeAverageTable* cone_average() const { return cone_.get(); }
     double sigma_o() const { return sigma_o_; }  // σ(Ωo) = 2π(1 − cos γ)
     double extract_seconds() const { return extract_seconds_; }
 
@@ -77,6 +95,12 @@ class Wang2020Model {
     // Σ_k 1_A(x_k) H(p − λ_k) (micro) as a function of a per-particle
     // acceptance probability.
     uint64_t accepted(const UvBox& A, double p) const;
+    // PerParticle micro sums over the particles in A (local frame, z = n):
+    // Σ L_γ(i_k) M(i_k, o) (frame t, b, n maps to world) and the number of
+    // particles whose normal reflects wi into the γ cone around wo.
+    glm::dvec3 particle_environment(const UvBox& A, const glm::dvec3& o, const glm::dvec3& t,
+                                    const glm::dvec3& b, const glm::dvec3& n) const;
+    uint64_t particles_lit(const UvBox& A, const glm::dvec3& wi, const glm::dvec3& wo) const;
 
     Wang2020Material m_;
     double gamma_rad_;
@@ -87,6 +111,7 @@ class Wang2020Model {
     DpfTable dpf_;
     ParticleQuadtree tree_;
     std::unique_ptr<PrefilterTable> prefiltered_;
+    std::unique_ptr<ConeAverageTable> cone_;
 };
 
 }  // namespace glintlab::wang2020

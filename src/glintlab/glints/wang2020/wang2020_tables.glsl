@@ -13,6 +13,8 @@
 //   float wang2020_dpf_value(int index);        DpfTable::values()
 //   vec4  wang2020_prefilter_value(int index);  PrefilterTable::data()
 //   uvec2 wang2020_node(int index);             QuadtreeNode {first_child, count_mask}
+//   vec4  wang2020_cone_value(int index);       ConeAverageTable::data() (L_γ,
+//                                               per_particle micro mode)
 // Precision: float instead of the CPU's double; particle tests are done in
 // leaf-local coordinates, where the box edges are exact, so counts agree
 // with the CPU for boxes given in float.
@@ -28,6 +30,7 @@
 float wang2020_dpf_value(int index);
 vec4 wang2020_prefilter_value(int index);
 uvec2 wang2020_node(int index);
+vec4 wang2020_cone_value(int index);
 
 const float WANG2020_HALF_PI = 1.57079632679489661923f;
 // DFS stack of the traversal: each pop pushes at most 4 children, so it
@@ -43,6 +46,9 @@ struct Wang2020Tables {
     float particles;      // N per uv tile
     float sigma;          // σ(Ωo) = 2π(1 − cos γ)
     float alpha;          // Beckmann roughness
+    int micro;            // 1: "micro": "per_particle", 0: "as_published"
+    ivec2 cone_res;       // L_γ table width, height (per_particle with an environment)
+    float cos_gamma;      // cos γ
 };
 
 // False for NaN and ±inf (a comparison, not isnan/isinf: the C++ side would
@@ -147,19 +153,65 @@ float wang2020_hash_unit(uint a, uint b, uint c, uint d) {
     return float(h >> 8u) * 5.9604644775390625e-8f;  // 2^-24
 }
 
-// Σ_k 1_A(x_k) over the particles of the uv box [lo, hi] (tiles repeat), or,
-// when `per_particle`, Σ_k 1_A(x_k) H(p − λ_k) (micro scale, Eq. 20: a
-// particle is accepted iff λ(x_k) < p). ParticleQuadtree::traverse: nodes
-// wholly inside A add their count (counting only), leaves cut by A's border
-// are resolved particle by particle; particle k of leaf (x, y) sits at
-// ((x, y) + hash(leaf, k, seed, 1|2)) / 2^depth with λ = hash(leaf, k, seed, 3).
-// Boxes over more than 64 tiles return 0 (the caller uses the macro scale).
-uint wang2020_quadtree_count(Wang2020Tables tb, vec2 lo, vec2 hi, bool per_particle, float p) {
-    if (!(lo.x <= hi.x && lo.y <= hi.y)) return 0u;
+// ConeAverageTable::lookup: bilinear L_γ at a world direction (cell
+// centred; clamped in θ from +z, periodic in φ = atan2(y, x)).
+vec3 wang2020_cone_lookup(ivec2 res, vec3 d) {
+    float len = length(d);
+    if (!(len > 0.0f) || !wang2020_finite(len)) return vec3(0.0f);
+    float t = acos(clamp(d.z / len, -1.0f, 1.0f));
+    float p = atan(d.y, d.x);
+    int a0, a1, b0, b1;
+    float fa, fb;
+    wang2020_cell(t / PI * float(res.y) - 0.5f, res.y, false, a0, a1, fa);
+    wang2020_cell(p / TWO_PI * float(res.x) - 0.5f, res.x, true, b0, b1, fb);
+    vec3 v0 = mix(vec3(wang2020_cone_value(a0 * res.x + b0)),
+                  vec3(wang2020_cone_value(a0 * res.x + b1)), fb);
+    vec3 v1 = mix(vec3(wang2020_cone_value(a1 * res.x + b0)),
+                  vec3(wang2020_cone_value(a1 * res.x + b1)), fb);
+    return mix(v0, v1, fa);
+}
+
+// Particle normal ~ D(m)(m·n) from its hashes 4 and 5 (wang2020_beckmann.h
+// beckmann_sample_normal): tan²θ = −α² ln(1 − u1), φ = 2π u2.
+vec3 wang2020_particle_normal(float u1, float u2, float alpha) {
+    float tan2 = -alpha * alpha * log(1.0f - u1);
+    float c = 1.0f / sqrt(1.0f + tan2);
+    float s = sqrt(max(0.0f, 1.0f - c * c));
+    float phi = TWO_PI * u2;
+    return vec3(s * cos(phi), s * sin(phi), c);
+}
+
+float wang2020_m_term(vec3 wi, vec3 wo, float alpha);
+
+// What the traversal does per particle of A.
+const int WANG2020_VISIT_COUNT = 0;   // Σ 1_A
+const int WANG2020_VISIT_ACCEPT = 1;  // Σ 1_A H(p − λ_k) (Eq. 20)
+const int WANG2020_VISIT_ENV = 2;     // sum += L_γ(reflect(o, m_k)) M (per_particle)
+const int WANG2020_VISIT_LIT = 3;     // Σ 1_A [reflect(i, m_k) in the γ cone of o]
+struct Wang2020Visit {
+    int mode;
+    float p;       // ACCEPT: the acceptance probability
+    vec3 o;        // local view direction (ENV, LIT)
+    vec3 wi;       // local light direction (LIT)
+    vec3 t, b, n;  // local -> world frame (ENV)
+};
+
+// The particles of the uv box [lo, hi] (tiles repeat), visited as v.mode
+// says; total counts, sum accumulates (ENV). ParticleQuadtree::traverse:
+// nodes wholly inside A add their count (COUNT only), leaves cut by A's
+// border are resolved particle by particle; particle k of leaf (x, y) sits
+// at ((x, y) + hash(leaf, k, seed, 1|2)) / 2^depth with λ = hash(leaf, k,
+// seed, 3) and normal hashes 4, 5. Boxes over more than 64 tiles visit
+// nothing (the caller uses the macro scale).
+void wang2020_quadtree_visit(Wang2020Tables tb, vec2 lo, vec2 hi, Wang2020Visit v,
+                             OUT(uint) total, OUT(vec3) sum) {
+    total = 0u;
+    sum = vec3(0.0f);
+    if (!(lo.x <= hi.x && lo.y <= hi.y)) return;
     float tx0 = floor(lo.x), tx1 = floor(hi.x), ty0 = floor(lo.y), ty1 = floor(hi.y);
-    if (!((tx1 - tx0 + 1.0f) * (ty1 - ty0 + 1.0f) <= 64.0f)) return 0u;
+    if (!((tx1 - tx0 + 1.0f) * (ty1 - ty0 + 1.0f) <= 64.0f)) return;
+    bool per_particle = v.mode != WANG2020_VISIT_COUNT;
     float leaves = exp2(float(tb.depth));
-    uint total = 0u;
     uvec4 stack[WANG2020_STACK];  // node index, depth, x, y
     for (float ty = ty0; ty <= ty1; ty += 1.0f) {
         for (float tx = tx0; tx <= tx1; tx += 1.0f) {
@@ -192,8 +244,29 @@ uint wang2020_quadtree_count(Wang2020Tables tb, vec2 lo, vec2 hi, bool per_parti
                         float hx = wang2020_hash_unit(leaf, k, tb.seed, 1u);
                         float hy = wang2020_hash_unit(leaf, k, tb.seed, 2u);
                         if (!(hx >= ax && hx < bx && hy >= ay && hy < by)) continue;
-                        if (per_particle && !(wang2020_hash_unit(leaf, k, tb.seed, 3u) < p)) continue;
-                        total += 1u;
+                        if (v.mode == WANG2020_VISIT_COUNT) {
+                            total += 1u;
+                        } else if (v.mode == WANG2020_VISIT_ACCEPT) {
+                            if (wang2020_hash_unit(leaf, k, tb.seed, 3u) < v.p) total += 1u;
+                        } else {
+                            vec3 m = wang2020_particle_normal(
+                                wang2020_hash_unit(leaf, k, tb.seed, 4u),
+                                wang2020_hash_unit(leaf, k, tb.seed, 5u), tb.alpha);
+                            if (v.mode == WANG2020_VISIT_ENV) {
+                                float om = dot(v.o, m);
+                                if (!(om > 0.0f)) continue;
+                                vec3 i = 2.0f * om * m - v.o;  // reflect(o, m_k)
+                                if (!(i.z > 0.0f)) continue;
+                                sum += wang2020_cone_lookup(tb.cone_res,
+                                                            i.x * v.t + i.y * v.b + i.z * v.n) *
+                                       wang2020_m_term(i, v.o, tb.alpha);
+                                total += 1u;
+                            } else {
+                                float im = dot(v.wi, m);
+                                if (!(im > 0.0f)) continue;
+                                if (dot(2.0f * im * m - v.wi, v.o) >= tb.cos_gamma) total += 1u;
+                            }
+                        }
                     }
                     continue;
                 }
@@ -208,6 +281,29 @@ uint wang2020_quadtree_count(Wang2020Tables tb, vec2 lo, vec2 hi, bool per_parti
             }
         }
     }
+}
+
+Wang2020Visit wang2020_visit(int mode, float p) {
+    Wang2020Visit v;
+    v.mode = mode;
+    v.p = p;
+    v.o = vec3(0.0f);
+    v.wi = vec3(0.0f);
+    v.t = vec3(0.0f);
+    v.b = vec3(0.0f);
+    v.n = vec3(0.0f);
+    return v;
+}
+
+// Σ_k 1_A(x_k) over the particles of the uv box [lo, hi], or, when
+// `per_particle`, Σ_k 1_A(x_k) H(p − λ_k) (micro scale, Eq. 20: a particle is
+// accepted iff λ(x_k) < p).
+uint wang2020_quadtree_count(Wang2020Tables tb, vec2 lo, vec2 hi, bool per_particle, float p) {
+    uint total;
+    vec3 sum;
+    wang2020_quadtree_visit(
+        tb, lo, hi, wang2020_visit(per_particle ? WANG2020_VISIT_ACCEPT : WANG2020_VISIT_COUNT, p),
+        total, sum);
     return total;
 }
 
@@ -229,6 +325,16 @@ int wang2020_scale_for(vec2 lo, vec2 hi, float particles) {
     return wang2020_select_scale(particles * area);
 }
 
+// Blend weights of the per_particle mode (Wang2020Model blend_weights):
+// degenerate boxes and boxes over more than 64 tiles are pure macro.
+vec3 wang2020_weights_for(vec2 lo, vec2 hi, float particles) {
+    float area = max(0.0f, hi.x - lo.x) * max(0.0f, hi.y - lo.y);
+    if (!(area > 0.0f) || !wang2020_finite(area)) return vec3(0.0f, 0.0f, 1.0f);
+    float tiles = (floor(hi.x) - floor(lo.x) + 1.0f) * (floor(hi.y) - floor(lo.y) + 1.0f);
+    if (!(tiles <= 64.0f)) return vec3(0.0f, 0.0f, 1.0f);
+    return wang2020_scale_weights(particles * area);
+}
+
 // Environment radiance towards o (world), before the tint: Eqs. 18-20
 // (Wang2020Model::environment_radiance).
 vec3 wang2020_environment(Wang2020Tables tb, vec2 lo, vec2 hi, vec3 n_world, vec3 o_world) {
@@ -236,6 +342,23 @@ vec3 wang2020_environment(Wang2020Tables tb, vec2 lo, vec2 hi, vec3 n_world, vec
     vec4 t = wang2020_prefilter_lookup(tb.prefilter_res, n_world, o_world);
     vec3 lhat = vec3(t.x, t.y, t.z);
     float phat = t.w;
+    if (tb.micro == 1) {
+        vec3 w = wang2020_weights_for(lo, hi, tb.particles);
+        uint n_visited;
+        vec3 sum = vec3(0.0f);
+        if (w.x > 0.0f) {
+            Wang2020Visit v = wang2020_visit(WANG2020_VISIT_ENV, 0.0f);
+            tangent_frame(n_world, v.t, v.b);
+            v.n = n_world;
+            vec3 ol = vec3(dot(o_world, v.t), dot(o_world, v.b), dot(o_world, n_world));
+            v.o = ol / length(ol);
+            wang2020_quadtree_visit(tb, lo, hi, v, n_visited, sum);
+        }
+        float count = 0.0f;
+        if (w.y > 0.0f) count = float(wang2020_quadtree_count(tb, lo, hi, false, 0.0f));
+        float area = max(0.0f, hi.x - lo.x) * max(0.0f, hi.y - lo.y);
+        return wang2020_environment_blend(w, lhat, sum, count, area, tb.particles, tb.sigma);
+    }
     int scale = wang2020_scale_for(lo, hi, tb.particles);
     float count = 0.0f;
     float accepted = 0.0f;
@@ -252,6 +375,21 @@ vec3 wang2020_environment(Wang2020Tables tb, vec2 lo, vec2 hi, vec3 n_world, vec
 float wang2020_light_dprime(Wang2020Tables tb, vec2 lo, vec2 hi, vec3 wi, vec3 wo) {
     if (!(wi.z > 0.0f) || !(wo.z > 0.0f)) return 0.0f;
     float p = wang2020_dpf_lookup(tb.dpf_res, wi, wo);  // P(i, o, γ), §5
+    if (tb.micro == 1) {
+        vec3 w = wang2020_weights_for(lo, hi, tb.particles);
+        uint lit = 0u;
+        vec3 unused;
+        if (w.x > 0.0f) {
+            Wang2020Visit v = wang2020_visit(WANG2020_VISIT_LIT, 0.0f);
+            v.o = wo;
+            v.wi = wi;
+            wang2020_quadtree_visit(tb, lo, hi, v, lit, unused);
+        }
+        float count = 0.0f;
+        if (w.y > 0.0f) count = float(wang2020_quadtree_count(tb, lo, hi, false, 0.0f));
+        float area = max(0.0f, hi.x - lo.x) * max(0.0f, hi.y - lo.y);
+        return wang2020_point_dprime_blend(w, p, count, float(lit), area, tb.particles, tb.sigma);
+    }
     int scale = wang2020_scale_for(lo, hi, tb.particles);
     float count = 0.0f;
     float accepted = 0.0f;

@@ -31,6 +31,9 @@ uvec2 wang2020_node(int index) {
         glintlab::wang2020::g_model->quadtree().nodes()[static_cast<size_t>(index)];
     return uvec2(n.first_child, n.count_mask);
 }
+vec4 wang2020_cone_value(int index) {
+    return glintlab::wang2020::g_model->cone_average()->data()[static_cast<size_t>(index)];
+}
 #include "glintlab/glints/wang2020/wang2020_tables.glsl"
 GLINTLAB_SHADER_FUNCTIONS_END
 
@@ -70,6 +73,11 @@ shader::Wang2020Tables tables_of(const Wang2020Model& model) {
     t.particles = static_cast<float>(model.quadtree().particles());
     t.sigma = static_cast<float>(model.sigma_o());
     t.alpha = static_cast<float>(model.material().alpha);
+    t.micro = model.material().micro == MicroMode::PerParticle ? 1 : 0;
+    t.cone_res = model.cone_average() != nullptr
+                     ? glm::ivec2(model.cone_average()->width(), model.cone_average()->height())
+                     : glm::ivec2(1);
+    t.cos_gamma = static_cast<float>(std::cos(model.material().gamma_deg * kPi / 180.0));
     return t;
 }
 
@@ -144,8 +152,14 @@ TEST(Wang2020Tables, GlslLookupsEqualTheCpuTables) {
     EXPECT_LT(max_pre, 1e-3);
 }
 
-TEST(Wang2020Tables, GlslShadingEqualsTheCpuModelAtEveryScale) {
-    Wang2020Model model(small_material(30000, 8));
+// Both micro modes: "per_particle" (hashed normals, L_γ, blended scales)
+// and "as_published" (Eq. 20).
+class Wang2020TablesModes : public testing::TestWithParam<MicroMode> {};
+
+TEST_P(Wang2020TablesModes, GlslShadingEqualsTheCpuModelAtEveryScale) {
+    Wang2020Material mat = small_material(30000, 8);
+    mat.micro = GetParam();
+    Wang2020Model model(mat);
     model.prefilter(sky);
     g_model = &model;
     const shader::Wang2020Tables tb = tables_of(model);
@@ -183,6 +197,9 @@ TEST(Wang2020Tables, GlslShadingEqualsTheCpuModelAtEveryScale) {
     EXPECT_GT(lit, 100);
     EXPECT_LE(off, trials / 100) << "of " << 2 * trials;
 }
+
+INSTANTIATE_TEST_SUITE_P(Wang2020Tables, Wang2020TablesModes,
+                         testing::Values(MicroMode::PerParticle, MicroMode::AsPublished));
 
 }  // namespace
 }  // namespace glintlab::wang2020
