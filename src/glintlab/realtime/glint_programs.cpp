@@ -9,7 +9,7 @@
 #include "glintlab/core/error.h"
 #include "glintlab/glints/chermain2020/dictionary.h"
 #include "glintlab/glints/deliot2023/deliot2023.h"
-#include "glintlab/realtime/gpu_wang2020.h"
+#include "glintlab/glints/wang2020/wang2020_gpu.h"
 #include "glintlab/realtime/uniform_cache.h"
 #include "glintlab/scene/scene.h"
 
@@ -28,7 +28,7 @@ bool gpu_supports_model(GlintModelId model) {
         case GlintModelId::Deliot2023:
         case GlintModelId::Zirr2016:
         case GlintModelId::Chermain2020:
-        case GlintModelId::Wang2020:  // gpu_wang2020.h
+        case GlintModelId::Wang2020:  // wang2020_gpu.h
         case GlintModelId::Kneiphof2025:
             return true;
         default:

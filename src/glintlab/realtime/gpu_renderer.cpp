@@ -10,6 +10,9 @@
 
 #include "glintlab/core/error.h"
 #include "glintlab/glints/glint_bxdf.h"
+#include "glintlab/glints/kneiphof2025/kneiphof2025_gpu.h"
+#include "glintlab/glints/wang2020/wang2020_gpu.h"
+#include "glintlab/glints/wang2020/wang2020_gpu_blur.h"
 #include "glintlab/realtime/forward_shaders.h"
 #include "glintlab/realtime/gl_context.h"
 #include "glintlab/realtime/gl_handles.h"
@@ -17,9 +20,6 @@
 #include "glintlab/realtime/glint_programs.h"
 #include "glintlab/realtime/gpu_geometry.h"
 #include "glintlab/realtime/gpu_timer.h"
-#include "glintlab/realtime/gpu_wang2020.h"
-#include "glintlab/realtime/gpu_wang2020_blur.h"
-#include "glintlab/realtime/kneiphof2025_gpu.h"
 #include "glintlab/realtime/uniform_cache.h"
 
 namespace glintlab {
@@ -109,13 +109,13 @@ struct GpuRenderer::Impl {
     gl::Program background;
     gl::UniformCache uniforms;
     gl::GlintResources glint_resources;
-    gl::Wang2020Resources wang2020_resources;  // gpu_wang2020.h
+    gl::Wang2020Resources wang2020_resources;  // wang2020_gpu.h
     gl::Kneiphof2025Resources kneiphof2025;    // prefiltered environment, DFG table
     gl::Framebuffer fbo;
     gl::Texture color, depth;
     int width = 0, height = 0;
     gl::PassTimer shadow_timer, background_timer, forward_timer, wang2020_blur_timer;
-    // wang2020's §4.4 post-process (gpu_wang2020_blur.h): the forward pass
+    // wang2020's §4.4 post-process (wang2020_gpu_blur.h): the forward pass
     // writes the environment glints of blurred wang2020 materials into
     // `glint_layer` (colour attachment 1, created on first use), which the
     // blurs add into `color`.

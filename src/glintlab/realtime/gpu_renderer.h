@@ -16,7 +16,7 @@
 // (forward_shaders.h) without occlusion; the dielectric shows its
 // reflection only. kneiphof2025 materials shade the environment (Eq. 17 over
 // prefiltered maps), sphere lights and sun cones themselves, as the CPU does
-// at the first hit (realtime/kneiphof2025_gpu.h). wang2020 materials with
+// at the first hit (glints/kneiphof2025/kneiphof2025_gpu.h). wang2020 materials with
 // "blur" on defer their environment glints to a second colour attachment,
 // blurred by the §4.4 passes and added into the colour target after the
 // forward pass (as render_scene's postprocess_glints), with visibility 1:

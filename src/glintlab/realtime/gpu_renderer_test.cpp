@@ -313,8 +313,7 @@ nlohmann::json kneiphof2025_scene(const std::string& light) {
             {{"type", "quad"}, {"size", {8, 8}}, {"uv_scale", {8, 8}}, {"material", "g"}}};
     }
     const std::string forest = "/usr/share/blender/datafiles/studiolights/world/forest.exr";
-    if (light == "environment_lobe")
-        j["materials"][0]["kneiphof2025"]["smooth"] = "lobe";
+    if (light == "environment_lobe") j["materials"][0]["kneiphof2025"]["smooth"] = "lobe";
     if (light == "environment" || light == "environment_plane" || light == "environment_lobe") {
         nlohmann::json env = {{"type", "environment"}};
         if (std::filesystem::exists(forest))
@@ -584,7 +583,7 @@ TEST(GpuRenderer, ExampleScenesRenderOrNameTheMissingModel) {
     EXPECT_GE(rendered, 8);  // default, plane/heightmap/sphere/monkey, sweeps, car paint
 }
 
-// wang2020 (papers/001, gpu_wang2020.h): CPU `direct` vs GPU at 128x128 on
+// wang2020 (papers/001, wang2020_gpu.h): CPU `direct` vs GPU at 128x128 on
 // the SPHERE view, from the same CPU-built tables (reduced DPF resolution;
 // alpha 0.4 selects Table 2's small prefilter grid), under the forest map
 // (or a constant environment without blender-data) and under a point light.

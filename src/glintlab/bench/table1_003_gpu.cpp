@@ -1,13 +1,13 @@
-#include "glintlab/realtime/gpu_table1_003.h"
+#include "glintlab/bench/table1_003_gpu.h"
 
 #include <filesystem>
 
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
+#include "glintlab/bench/table1_gpu.h"
 #include "glintlab/core/error.h"
 #include "glintlab/realtime/gpu_renderer.h"
-#include "glintlab/realtime/gpu_table1.h"
 #include "glintlab/scene/scene_loader.h"
 
 namespace glintlab {
