@@ -57,7 +57,7 @@ std::vector<Table1Row> run_table1_gpu(const Table1Options& options,
         },
         [&](GpuRenderer& renderer, const Scene& scene, const std::string&, const std::string& model,
             Table1Row& row) {
-            renderer.set_deliot2023_noise_texture(options.gpu_noise_texture);
+            renderer.set_model_option("deliot2023", "noise_texture", options.gpu_noise_texture);
             time_gpu_frames(renderer, scene, options.gpu_warmup, options.frames, row);
             // wang2020: 001 Table 3's passes (wang2020_gpu_passes.h).
             if (model == "wang2020")

@@ -12,6 +12,7 @@
 
 #include "glintlab/bench/table1.h"
 #include "glintlab/core/error.h"
+#include "glintlab/glints/deliot2023/deliot2023_gpu.h"
 #include "glintlab/realtime/forward_shaders.h"
 #include "glintlab/realtime/gl_program.h"
 #include "glintlab/realtime/glint_programs.h"
@@ -493,7 +494,7 @@ TEST(GpuRenderer, Deliot2023NoiseTextureVariantHasTheHashStatistics) {
     GpuRenderer renderer(scene);
     renderer.render(scene);
     const Image hashed = renderer.read_image();
-    renderer.set_deliot2023_noise_texture(true);
+    renderer.set_model_option("deliot2023", "noise_texture", true);
     renderer.render(scene);
     const Image noise = renderer.read_image();
     const ImageAgreement a = compare_images(noise, hashed, 8, 0.02f, 0.1f);
@@ -503,11 +504,49 @@ TEST(GpuRenderer, Deliot2023NoiseTextureVariantHasTheHashStatistics) {
     EXPECT_LT(a.mean_relative_error, 0.03);
     EXPECT_LT(a.smoothed_relative_l1, 0.15);
     EXPECT_GT(a.mismatch_fraction, 0.05);
-    const std::vector<float> pairs = gl::deliot2023_noise_pairs();
+    const std::vector<float> pairs = deliot2023_noise_pairs();
     ASSERT_EQ(pairs.size(), 8192u);
     double mean = 0.0;
     for (float v : pairs) mean += v;
     EXPECT_NEAR(mean / 8192.0, 0.5, 0.01);  // uniform: sd of the mean 0.0032
+}
+
+// set_model_option checks the model and the option against the models' GPU
+// hooks (glints/gpu_model_hooks.h): a set option reads back, options are per
+// model, and an unknown model or option is an error naming it and what is
+// allowed.
+TEST(GpuRenderer, ModelOptionsAreValidatedAgainstTheHooks) {
+    GLINTLAB_REQUIRE_GL();
+    const Scene scene = parse_scene(test_scene("plane", "deliot2023", 12.0f), "test:plane");
+    GpuRenderer renderer(scene);
+    EXPECT_FALSE(renderer.model_option("deliot2023", "noise_texture"));
+    renderer.set_model_option("deliot2023", "noise_texture", true);
+    EXPECT_TRUE(renderer.model_option("deliot2023", "noise_texture"));
+    EXPECT_FALSE(renderer.model_option("kneiphof2025", "dynamic_environment"));
+    renderer.set_model_option("kneiphof2025", "dynamic_environment", true);
+    renderer.set_model_option("deliot2023", "noise_texture", false);
+    EXPECT_FALSE(renderer.model_option("deliot2023", "noise_texture"));
+    EXPECT_TRUE(renderer.model_option("kneiphof2025", "dynamic_environment"));
+    auto message = [&](const char* model, const char* option) {
+        try {
+            renderer.set_model_option(model, option, true);
+        } catch (const Error& e) {
+            return std::string(e.what());
+        }
+        return std::string("no error");
+    };
+    const std::string wrong_option = message("deliot2023", "dynamic_environment");
+    EXPECT_NE(wrong_option.find("deliot2023.dynamic_environment"), std::string::npos)
+        << wrong_option;
+    EXPECT_NE(wrong_option.find("options: noise_texture"), std::string::npos) << wrong_option;
+    const std::string no_options = message("zirr2016", "noise_texture");
+    EXPECT_NE(no_options.find("options: none"), std::string::npos) << no_options;
+    for (const char* model : {"nope", "explicit"}) {  // unknown; CPU only
+        const std::string m = message(model, "noise_texture");
+        EXPECT_NE(m.find(fmt::format("\"{}\" is not a GPU glint model", model)), std::string::npos)
+            << m;
+        EXPECT_NE(m.find("deliot2023, kneiphof2025"), std::string::npos) << m;
+    }
 }
 
 // The 000 HEIGHTMAP (25 deg) and MONKEY scenes of bench/table1: meshes with

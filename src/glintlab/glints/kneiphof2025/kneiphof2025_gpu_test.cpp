@@ -157,7 +157,7 @@ TEST(GpuKneiphof2025Prefilter, DynamicEnvironmentRendersTheStaticImage) {
     GpuRenderer renderer(scene);
     renderer.render(scene);
     const Image static_image = renderer.read_image();
-    renderer.set_kneiphof2025_dynamic_environment(true);
+    renderer.set_model_option("kneiphof2025", "dynamic_environment", true);
     renderer.render(scene);
     renderer.render(scene);  // re-run every frame
     const Image dynamic_image = renderer.read_image();
