@@ -13,8 +13,8 @@
 #include "glintlab/render/renderer.h"
 #include "glintlab/scene/scene_loader.h"
 #if GLINTLAB_WITH_GL
-#include "glintlab/realtime/gpu_table1.h"
-#include "glintlab/realtime/gpu_table1_003.h"
+#include "glintlab/bench/table1_003_gpu.h"
+#include "glintlab/bench/table1_gpu.h"
 #endif
 
 namespace glintlab {

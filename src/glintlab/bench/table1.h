@@ -26,7 +26,7 @@ struct Table1Options {
     int gpu_warmup = 5;
     bool gpu_noise_texture = false;  // deliot2023 rows: the 000 §6.3 noise-texture variant
     // "000": deliot2023's Table 1 (above); "003": Kneiphof & Klein 2025's
-    // Table 1 (GPU only; realtime/gpu_table1_003.h: IBL static / dynamic /
+    // Table 1 (GPU only; bench/table1_003_gpu.h: IBL static / dynamic /
     // directional rows, smooth / wang2020-style / K = 4 / K = 8 columns).
     std::string table = "000";
 };
@@ -43,7 +43,7 @@ struct Table1Row {
     // GPU only: median GL_TIME_ELAPSED of the other passes per density.
     std::vector<double> shadow_ms_per_density, background_ms_per_density;
     // GPU only, model-specific passes per density (empty for most models;
-    // wang2020: 001 Table 3's passes, realtime/gpu_wang2020_passes.h).
+    // wang2020: 001 Table 3's passes, glints/wang2020/wang2020_gpu_passes.h).
     std::map<std::string, std::vector<double>> pass_ms_per_density;
 };
 

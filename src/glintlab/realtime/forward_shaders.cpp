@@ -8,8 +8,12 @@ namespace glintlab::gl {
 
 std::string ProgramKey::name() const {
     const GlintModelInfo* info = find_glint_model(model);
+    std::string options;
+    if (const GpuModelHooks* hooks = find_gpu_model_hooks(model))
+        for (size_t i = 0; i < hooks->options.size(); ++i)
+            if ((model_options >> i) & 1u) options += fmt::format(" ({})", hooks->options[i].name);
     return fmt::format("forward[{}{}, {} point, {} directional, {}]", info ? info->name : "?",
-                       noise_texture ? " (noise texture)" : "", point_lights, directional_lights,
+                       options, point_lights, directional_lights,
                        environment ? "environment" : "no environment");
 }
 
@@ -32,7 +36,7 @@ AssembledShader forward_fragment_shader(const ProgramKey& key) {
         "#define GLINTLAB_ENV_DIFFUSE_SAMPLES {}\n",
         key.point_lights, key.directional_lights, key.environment ? 1 : 0,
         kEnvironmentSpecularSamples, kEnvironmentDiffuseSamples);
-    text += glint_model_glsl(key.model, key.noise_texture);
+    text += glint_model_glsl(key.model, key.model_options);
     text += "#include \"glintlab/realtime/shaders/forward.frag.glsl\"\n";
     return assemble_shader(text, true);
 }

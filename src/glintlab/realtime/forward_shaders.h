@@ -18,7 +18,9 @@ struct ProgramKey {
     int point_lights = 0;        // point lights and sphere lights (as points, see .cpp)
     int directional_lights = 0;  // delta or cone (cone shaded at its axis)
     bool environment = false;    // image-based lighting by filtered importance sampling
-    bool noise_texture = false;  // deliot2023 only: the noise-texture variant
+    // The model's options that select another glue variant (bit i: the
+    // model's GpuModelOption i, glints/gpu_model_hooks.h).
+    unsigned model_options = 0;
     auto operator<=>(const ProgramKey&) const = default;
     std::string name() const;  // "forward[deliot2023, 1 point, 0 directional, no environment]"
 };

@@ -119,7 +119,7 @@ TEST(GpuCli, EglDevicePlatformGivesTheSurfacelessImage) {
 }
 
 // `bench --gpu --model wang2020` reports 001 Table 3's passes per density
-// (gpu_wang2020_passes.h) next to the frame times; ln N outside the model's
+// (wang2020_gpu_passes.h) next to the frame times; ln N outside the model's
 // domain is the loader's clear error.
 TEST(GpuCli, BenchGpuWang2020ReportsItsPasses) {
     GLINTLAB_REQUIRE_GL();
@@ -185,10 +185,10 @@ TEST(GpuCli, UnknownEglPlatformIsAClearError) {
 // everything else (and for our GL code in this process, through EGL).
 std::string view_under_xvfb(const std::string& args, RunResult* out) {
     if (run("command -v xvfb-run").status != 0) return "xvfb-run is not installed";
-    *out = run(
-        "ASAN_OPTIONS=\"${ASAN_OPTIONS}:detect_leaks=0\" xvfb-run -a -s "
-        "\"-screen 0 640x480x24\" " +
-        cli() + " view " + args);
+    *out =
+        run("ASAN_OPTIONS=\"${ASAN_OPTIONS}:detect_leaks=0\" xvfb-run -a -s "
+            "\"-screen 0 640x480x24\" " +
+            cli() + " view " + args);
     if (out->output.find("cannot create a window") != std::string::npos ||
         out->output.find("cannot initialise GLFW") != std::string::npos)
         return "no OpenGL 4.5 window under Xvfb: " + out->output;
@@ -222,11 +222,10 @@ TEST(GpuViewer, ScreenshotUnderXvfbMatchesTheHeadlessRender) {
                                    " -o " + (dir / "headless.exr").string());
     ASSERT_EQ(headless.status, 0) << headless.output;
     RunResult viewer;
-    const std::string why =
-        view_under_xvfb((dir / "s.json").string() + " --frames 3 --no-ui --screenshot " +
-                            (dir / "viewer.png").string() + " --window-screenshot " +
-                            (dir / "window.png").string(),
-                        &viewer);
+    const std::string why = view_under_xvfb(
+        (dir / "s.json").string() + " --frames 3 --no-ui --screenshot " +
+            (dir / "viewer.png").string() + " --window-screenshot " + (dir / "window.png").string(),
+        &viewer);
     if (!why.empty()) GTEST_SKIP() << why;
     ASSERT_EQ(viewer.status, 0) << viewer.output;
     expect_same_frame(dir / "viewer.png", dir / "headless.png");
@@ -235,7 +234,8 @@ TEST(GpuViewer, ScreenshotUnderXvfbMatchesTheHeadlessRender) {
     // of the two 8-bit encodings differs by at most one step each; 3 steps
     // near white are 0.03 in linear luminance.
     const Image window = read_image(dir / "window.png");
-    const ImageAgreement w = compare_images(window, read_image(dir / "headless.png"), 8, 0.03f, 0.0f);
+    const ImageAgreement w =
+        compare_images(window, read_image(dir / "headless.png"), 8, 0.03f, 0.0f);
     EXPECT_LT(w.mean_relative_error, 0.01);
     EXPECT_LT(w.mismatch_fraction, 0.005);
 }

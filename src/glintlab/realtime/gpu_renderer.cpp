@@ -3,13 +3,18 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <set>
+#include <string>
+#include <utility>
 
 #include <epoxy/gl.h>
+#include <fmt/format.h>
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/type_ptr.hpp>
 
 #include "glintlab/core/error.h"
 #include "glintlab/glints/glint_bxdf.h"
+#include "glintlab/glints/gpu_model_hooks.h"
 #include "glintlab/realtime/forward_shaders.h"
 #include "glintlab/realtime/gl_context.h"
 #include "glintlab/realtime/gl_handles.h"
@@ -17,9 +22,6 @@
 #include "glintlab/realtime/glint_programs.h"
 #include "glintlab/realtime/gpu_geometry.h"
 #include "glintlab/realtime/gpu_timer.h"
-#include "glintlab/realtime/gpu_wang2020.h"
-#include "glintlab/realtime/gpu_wang2020_blur.h"
-#include "glintlab/realtime/kneiphof2025_gpu.h"
 #include "glintlab/realtime/uniform_cache.h"
 
 namespace glintlab {
@@ -69,13 +71,18 @@ GpuShape upload_shape(const Shape& shape, int sphere_segments) {
     return g;
 }
 
-gl::ProgramKey program_key(const Scene& scene, const Shape& shape, bool noise_texture) {
+// `model_options`: the renderer's option mask of each model (set_model_option).
+gl::ProgramKey program_key(const Scene& scene, const Shape& shape,
+                           const std::map<GlintModelId, unsigned>& model_options) {
     gl::ProgramKey key;
     if (shape.material >= 0) {
         const MaterialDesc& m = scene.materials[static_cast<size_t>(shape.material)];
         if (m.type == MaterialDesc::Type::Glint) key.model = m.glint.model_id;
     }
-    key.noise_texture = noise_texture && key.model == GlintModelId::Deliot2023;
+    const auto it = model_options.find(key.model);
+    const GpuModelHooks* hooks = find_gpu_model_hooks(key.model);
+    if (it != model_options.end() && hooks != nullptr)
+        key.model_options = it->second & hooks->program_option_mask();
     for (const Light& light : scene.lights) {
         if (std::holds_alternative<PointLight>(light) || std::holds_alternative<SphereLight>(light))
             ++key.point_lights;
@@ -85,12 +92,13 @@ gl::ProgramKey program_key(const Scene& scene, const Shape& shape, bool noise_te
     return key;
 }
 
-// wang2020 material whose §4.4 blurs run on the frame ("blur", default on).
-bool wang2020_blurred(const MaterialDesc& m) {
-    if (m.type != MaterialDesc::Type::Glint || m.glint.model_id != GlintModelId::Wang2020)
-        return false;
-    const auto* p = std::get_if<Wang2020Params>(&m.glint.params);
-    return p != nullptr && p->blur;
+// A glint material whose model defers part of its shading to the glint
+// layer (GpuModelHooks::uses_glint_layer; wang2020 with "blur" on).
+bool uses_glint_layer(const MaterialDesc& m) {
+    if (m.type != MaterialDesc::Type::Glint) return false;
+    const GpuModelHooks* hooks = find_gpu_model_hooks(m.glint.model_id);
+    return hooks != nullptr && hooks->uses_glint_layer != nullptr &&
+           hooks->uses_glint_layer(m.glint);
 }
 
 int ndf_code(NdfType t) {
@@ -108,23 +116,23 @@ struct GpuRenderer::Impl {
     std::map<gl::ProgramKey, gl::Program> programs;
     gl::Program background;
     gl::UniformCache uniforms;
-    gl::GlintResources glint_resources;
-    gl::Wang2020Resources wang2020_resources;  // gpu_wang2020.h
-    gl::Kneiphof2025Resources kneiphof2025;    // prefiltered environment, DFG table
+    // Each model's GPU state (GpuModelHooks::make_state, made on first use)
+    // and option mask (set_model_option).
+    std::map<GlintModelId, std::unique_ptr<GpuModelState>> model_states;
+    std::map<GlintModelId, unsigned> model_options;
     gl::Framebuffer fbo;
     gl::Texture color, depth;
     int width = 0, height = 0;
-    gl::PassTimer shadow_timer, background_timer, forward_timer, wang2020_blur_timer;
-    // wang2020's §4.4 post-process (gpu_wang2020_blur.h): the forward pass
-    // writes the environment glints of blurred wang2020 materials into
+    gl::PassTimer shadow_timer, background_timer, forward_timer, glint_post_timer;
+    // The glint layer (GpuModelHooks::uses_glint_layer): the forward pass
+    // writes the deferred environment glints of such materials into
     // `glint_layer` (colour attachment 1, created on first use), which the
-    // blurs add into `color`.
+    // model's GpuModelState::post_pass adds into `color` (wang2020's §4.4
+    // blurs).
     gl::Texture glint_layer;
-    std::unique_ptr<gl::GpuWang2020Blur> wang2020_blur;
-    bool wang2020_blurred_frame = false;  // the last render() ran the blurs
+    bool glint_post_frame = false;  // the last render() ran a post pass
     // Shadow maps (realtime/shaders/forward.frag.glsl directional_visibility).
     bool shadows = true;
-    bool noise_texture = false;  // deliot2023's noise-texture variant
     gl::Program shadow_program;
     gl::Framebuffer shadow_fbo;
     gl::Texture shadow_maps;
@@ -271,6 +279,32 @@ struct GpuRenderer::Impl {
     }
     gl::VertexArray empty_vao;
 
+    unsigned options_of(GlintModelId model) const {
+        const auto it = model_options.find(model);
+        return it != model_options.end() ? it->second : 0u;
+    }
+
+    // The model's state, made on first use; null when it has none.
+    GpuModelState* model_state(GlintModelId model) {
+        auto it = model_states.find(model);
+        if (it == model_states.end()) {
+            const GpuModelHooks* hooks = find_gpu_model_hooks(model);
+            std::unique_ptr<GpuModelState> state;
+            if (hooks != nullptr && hooks->make_state != nullptr) state = hooks->make_state();
+            it = model_states.emplace(model, std::move(state)).first;
+        }
+        return it->second.get();
+    }
+
+    GpuFrame frame(const Scene& scene) const {
+        return GpuFrame{scene,
+                        environment ? environment.get() : 0u,
+                        environment_width,
+                        environment_height,
+                        environment_scale,
+                        environment_rotation};
+    }
+
     GLuint program(const gl::ProgramKey& key) {
         auto it = programs.find(key);
         if (it != programs.end()) return it->second.get();
@@ -313,7 +347,7 @@ struct GpuRenderer::Impl {
         glNamedFramebufferTexture(fbo.get(), GL_COLOR_ATTACHMENT1, glint_layer.get(), 0);
         const GLenum status = glCheckNamedFramebufferStatus(fbo.get(), GL_FRAMEBUFFER);
         if (status != GL_FRAMEBUFFER_COMPLETE)
-            fail("OpenGL renderer: framebuffer with the wang2020 glint layer incomplete (0x{:x})",
+            fail("OpenGL renderer: framebuffer with the glint layer incomplete (0x{:x})",
                  static_cast<unsigned>(status));
     }
 
@@ -368,11 +402,8 @@ struct GpuRenderer::Impl {
         glProgramUniform3fv(p, loc("u_fresnel_eta"), 1, glm::value_ptr(g.fresnel.eta));
         glProgramUniform3fv(p, loc("u_fresnel_k"), 1, glm::value_ptr(g.fresnel.k));
         glProgramUniform1i(p, loc("u_glint_g2"), glint_g2_mode(g.model_id));
-        gl::set_glint_uniforms(p, uniforms, g);
-        glint_resources.bind(g.model_id, noise_texture);
-        if (g.model_id == GlintModelId::Wang2020) wang2020_resources.bind(p, uniforms, g, scene);
-        if (g.model_id == GlintModelId::Kneiphof2025)
-            kneiphof2025.prepare(p, uniforms, scene, g, environment_scale, environment_rotation);
+        if (GpuModelState* state = model_state(g.model_id))
+            state->prepare(p, uniforms, g, frame(scene), options_of(g.model_id));
     }
 
     void set_lights(GLuint p, const Scene& scene) {
@@ -465,7 +496,7 @@ GpuRenderer::GpuRenderer(const Scene& scene) : impl_(std::make_unique<Impl>()) {
     r.shadow_program = gl::Program(
         gl::link_program(gl::shadow_vertex_shader(), gl::shadow_fragment_shader(), "shadow"));
     for (const Shape& shape : scene.shapes) {
-        const gl::ProgramKey key = program_key(scene, shape, false);
+        const gl::ProgramKey key = program_key(scene, shape, {});
         if (!gl::gpu_supports_model(key.model)) (void)gl::glint_model_glsl(key.model);  // throws
         r.program(key);
     }
@@ -475,14 +506,15 @@ GpuRenderer::~GpuRenderer() = default;
 
 void GpuRenderer::compile_all_models(const Scene& scene) {
     Shape probe;
-    for (const GlintModelInfo& m : glint_models()) {
-        if (!gl::gpu_supports_model(m.id)) continue;
-        gl::ProgramKey key = program_key(scene, probe, false);
-        key.model = m.id;
-        impl_->program(key);
-        if (m.id == GlintModelId::Deliot2023) {
-            key.noise_texture = true;
+    for (const GpuModelHooks& hooks : gpu_model_hooks()) {
+        gl::ProgramKey key = program_key(scene, probe, {});
+        key.model = hooks.model;
+        // Every glue variant: each subset of the options that change the program.
+        const unsigned mask = hooks.program_option_mask();
+        for (unsigned subset = mask;; subset = (subset - 1) & mask) {
+            key.model_options = subset;
             impl_->program(key);
+            if (subset == 0) break;
         }
     }
 }
@@ -512,24 +544,41 @@ void GpuRenderer::render(const Scene& scene) {
     }
     const glm::mat4 view_projection = projection * view;
     const bool ortho = c.type == Camera::Type::Orthographic;
-    // wang2020's §4.4 blurs (render_scene's postprocess_glints): only the
-    // environment term is deferred, so only scenes with an environment and a
-    // shape of a wang2020 material with "blur" on pay for them.
+    // The glint layer and its post pass (wang2020's §4.4 blurs, render_scene's
+    // postprocess_glints): only the environment term is deferred, so only
+    // scenes with an environment and a shape of a material that uses the
+    // layer pay for them. One model per frame owns the layer.
     bool blur = false;
+    GlintModelId layer_model = GlintModelId::Smooth;
     if (r.environment)
-        for (const Shape& shape : scene.shapes)
-            if (shape.material >= 0 &&
-                wang2020_blurred(scene.materials[static_cast<size_t>(shape.material)]))
-                blur = true;
+        for (const Shape& shape : scene.shapes) {
+            if (shape.material < 0) continue;
+            const MaterialDesc& m = scene.materials[static_cast<size_t>(shape.material)];
+            if (!uses_glint_layer(m)) continue;
+            if (blur && m.glint.model_id != layer_model)
+                fail(
+                    "OpenGL renderer: materials of two glint models ({}, {}) defer to the glint "
+                    "layer in one frame",
+                    find_glint_model(layer_model)->name, m.glint.model);
+            blur = true;
+            layer_model = m.glint.model_id;
+        }
 
     glDisable(GL_BLEND);
     glDisable(GL_CULL_FACE);  // two-sided materials
 
-    // kneiphof2025's dynamic IBL (003 §5): the environment prefiltered on the
-    // GPU in every frame, when enabled (before the passes: it rebinds units).
-    if (r.environment)
-        r.kneiphof2025.begin_frame(scene, r.environment.get(), r.environment_width,
-                                   r.environment_height, r.environment_scale);
+    // The models' per-frame work (kneiphof2025's dynamic IBL, 003 §5), for
+    // each model of the scene's materials, before the passes (it may rebind
+    // any unit).
+    {
+        std::set<GlintModelId> models;
+        for (const MaterialDesc& m : scene.materials)
+            if (m.type == MaterialDesc::Type::Glint) models.insert(m.glint.model_id);
+        const GpuFrame frame = r.frame(scene);
+        for (GlintModelId model : models)
+            if (GpuModelState* state = r.model_state(model))
+                state->begin_frame(frame, r.options_of(model));
+    }
 
     // Pass 0: shadow maps of the directional lights.
     r.shadow_timer.begin();
@@ -579,7 +628,7 @@ void GpuRenderer::render(const Scene& scene) {
     for (size_t i = 0; i < r.shapes.size(); ++i) {
         const Shape& shape = scene.shapes[i];
         const GpuShape& g = r.shapes[i];
-        const GLuint p = r.program(program_key(scene, shape, r.noise_texture));
+        const GLuint p = r.program(program_key(scene, shape, r.model_options));
         auto loc = [&](const char* name) { return r.uniforms.location(p, name); };
         glProgramUniformMatrix4fv(p, loc("u_view_projection"), 1, GL_FALSE,
                                   glm::value_ptr(view_projection));
@@ -599,7 +648,7 @@ void GpuRenderer::render(const Scene& scene) {
         r.set_lights(p, scene);
         const bool deferred =
             blur && shape.material >= 0 &&
-            wang2020_blurred(scene.materials[static_cast<size_t>(shape.material)]);
+            uses_glint_layer(scene.materials[static_cast<size_t>(shape.material)]);
         glProgramUniform1i(p, loc("u_glint_layer"), deferred ? 1 : 0);
         const bool shadowed = !r.shadow_matrices.empty();
         glProgramUniform1i(p, loc("u_shadows"), shadowed ? 1 : 0);
@@ -632,15 +681,19 @@ void GpuRenderer::render(const Scene& scene) {
     glUseProgram(0);
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
 
-    // Pass 3: wang2020's §4.4 blurs of the glint layer, added into the colour
-    // target (before any read-back, tone map or bloom).
-    r.wang2020_blurred_frame = blur;
+    // Pass 3: the layer model's post pass (wang2020's §4.4 blurs) over the
+    // glint layer, added into the colour target (before any read-back, tone
+    // map or bloom).
+    r.glint_post_frame = blur;
     if (blur) {
         glNamedFramebufferDrawBuffer(r.fbo.get(), GL_COLOR_ATTACHMENT0);
-        if (!r.wang2020_blur) r.wang2020_blur = std::make_unique<gl::GpuWang2020Blur>();
-        r.wang2020_blur_timer.begin();
-        r.wang2020_blur->apply_add(r.glint_layer.get(), r.color.get(), r.width, r.height);
-        r.wang2020_blur_timer.end();
+        GpuModelState* state = r.model_state(layer_model);
+        if (state == nullptr)
+            fail("OpenGL renderer: glint model {} uses the glint layer but has no GPU state",
+                 find_glint_model(layer_model)->name);
+        r.glint_post_timer.begin();
+        state->post_pass(r.glint_layer.get(), r.color.get(), r.width, r.height);
+        r.glint_post_timer.end();
     }
 }
 
@@ -692,12 +745,48 @@ bool GpuRenderer::has_environment() const {
     return static_cast<bool>(impl_->environment);
 }
 
-void GpuRenderer::set_deliot2023_noise_texture(bool on) {
-    impl_->noise_texture = on;
+namespace {
+
+// The hooks of the model called `model` and the index of its option
+// `option`; glintlab::Error naming both and what is allowed otherwise.
+std::pair<const GpuModelHooks*, int> find_model_option(std::string_view model,
+                                                       std::string_view option) {
+    const GlintModelInfo* info = find_glint_model(model);
+    const GpuModelHooks* hooks = info != nullptr ? find_gpu_model_hooks(info->id) : nullptr;
+    if (hooks == nullptr) {
+        std::string supported;
+        for (const GpuModelHooks& h : gpu_model_hooks())
+            if (!h.options.empty())
+                supported += fmt::format("{}{}", supported.empty() ? "" : ", ",
+                                         find_glint_model(h.model)->name);
+        fail(
+            "OpenGL renderer: model option \"{}.{}\": \"{}\" is not a GPU glint model (models "
+            "with options: {})",
+            model, option, model, supported);
+    }
+    const int index = hooks->option_index(option);
+    if (index < 0) {
+        std::string allowed;
+        for (const GpuModelOption& o : hooks->options)
+            allowed += fmt::format("{}{}", allowed.empty() ? "" : ", ", o.name);
+        fail("OpenGL renderer: model option \"{}.{}\": {} has no such GPU option (options: {})",
+             model, option, model, allowed.empty() ? "none" : allowed);
+    }
+    return {hooks, index};
 }
 
-void GpuRenderer::set_kneiphof2025_dynamic_environment(bool on) {
-    impl_->kneiphof2025.set_dynamic(on);
+}  // namespace
+
+void GpuRenderer::set_model_option(std::string_view model, std::string_view option, bool on) {
+    const auto [hooks, index] = find_model_option(model, option);
+    unsigned& mask = impl_->model_options[hooks->model];
+    const unsigned bit = 1u << index;
+    mask = on ? (mask | bit) : (mask & ~bit);
+}
+
+bool GpuRenderer::model_option(std::string_view model, std::string_view option) const {
+    const auto [hooks, index] = find_model_option(model, option);
+    return ((impl_->options_of(hooks->model) >> index) & 1u) != 0;
 }
 
 void GpuRenderer::set_shadows(bool on) {
@@ -708,7 +797,7 @@ GpuPassTimes GpuRenderer::pass_times() {
     Impl& r = *impl_;
     return {r.shadow_timer.elapsed_ms(), r.background_timer.elapsed_ms(),
             r.forward_timer.elapsed_ms(),
-            r.wang2020_blurred_frame ? r.wang2020_blur_timer.elapsed_ms() : 0.0};
+            r.glint_post_frame ? r.glint_post_timer.elapsed_ms() : 0.0};
 }
 
 Image render_scene_gpu(const Scene& scene) {

@@ -16,7 +16,7 @@
 // (forward_shaders.h) without occlusion; the dielectric shows its
 // reflection only. kneiphof2025 materials shade the environment (Eq. 17 over
 // prefiltered maps), sphere lights and sun cones themselves, as the CPU does
-// at the first hit (realtime/kneiphof2025_gpu.h). wang2020 materials with
+// at the first hit (glints/kneiphof2025/kneiphof2025_gpu.h). wang2020 materials with
 // "blur" on defer their environment glints to a second colour attachment,
 // blurred by the §4.4 passes and added into the colour target after the
 // forward pass (as render_scene's postprocess_glints), with visibility 1:
@@ -24,6 +24,7 @@
 #pragma once
 
 #include <memory>
+#include <string_view>
 
 #include "glintlab/core/image.h"
 #include "glintlab/scene/scene.h"
@@ -31,10 +32,12 @@
 namespace glintlab {
 
 struct GpuPassTimes {
-    double shadow_ms = 0.0;         // depth maps of the directional lights
-    double background_ms = 0.0;     // environment / clear pass
-    double forward_ms = 0.0;        // geometry + shading (the glint evaluation)
-    double wang2020_blur_ms = 0.0;  // wang2020's §4.4 blurs (0: none this frame)
+    double shadow_ms = 0.0;      // depth maps of the directional lights
+    double background_ms = 0.0;  // environment / clear pass
+    double forward_ms = 0.0;     // geometry + shading (the glint evaluation)
+    // A glint model's post pass over the glint layer (wang2020's §4.4
+    // blurs; 0: none this frame), GpuModelState::post_pass.
+    double glint_post_ms = 0.0;
 };
 
 class GpuRenderer {
@@ -69,18 +72,20 @@ class GpuRenderer {
     // initially those of the scene's map.
     void set_environment(float scale, float rotation_deg);
     bool has_environment() const;
-    // deliot2023 materials use the noise-texture variant (000 §6.3) instead
-    // of the hash (off by default, the CPU's choice).
-    void set_deliot2023_noise_texture(bool on);
-    // kneiphof2025 materials: prefilter the environment on the GPU in every
-    // frame (003 §5 "dynamic IBL", compute passes) instead of once on the CPU
-    // (off by default).
-    void set_kneiphof2025_dynamic_environment(bool on);
+    // A boolean GPU option of a glint model, off by default: `model` is a
+    // registry name, `option` one of that model's GpuModelOption names
+    // (glints/gpu_model_hooks.h; today deliot2023 "noise_texture", the
+    // 000 §6.3 noise-texture variant, and kneiphof2025
+    // "dynamic_environment", 003 §5's per-frame GPU prefilter). It applies to
+    // every material of the model from the next render(). Throws
+    // glintlab::Error naming the model, the option and the allowed ones.
+    void set_model_option(std::string_view model, std::string_view option, bool on);
+    bool model_option(std::string_view model, std::string_view option) const;
     // Shadow maps (on by default).
     void set_shadows(bool on);
 
     // Compiles (once) the program of every glint model the GPU supports with
-    // the light set of `scene` (and deliot2023's noise-texture variant).
+    // the light set of `scene`, in every glue variant of the model's options.
     void compile_all_models(const Scene& scene);
 
   private:

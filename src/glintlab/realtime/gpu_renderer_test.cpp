@@ -10,8 +10,8 @@
 #include <fmt/format.h>
 #include <glm/gtc/constants.hpp>
 
-#include "glintlab/bench/table1.h"
 #include "glintlab/core/error.h"
+#include "glintlab/glints/deliot2023/deliot2023_gpu.h"
 #include "glintlab/realtime/forward_shaders.h"
 #include "glintlab/realtime/gl_program.h"
 #include "glintlab/realtime/glint_programs.h"
@@ -313,8 +313,7 @@ nlohmann::json kneiphof2025_scene(const std::string& light) {
             {{"type", "quad"}, {"size", {8, 8}}, {"uv_scale", {8, 8}}, {"material", "g"}}};
     }
     const std::string forest = "/usr/share/blender/datafiles/studiolights/world/forest.exr";
-    if (light == "environment_lobe")
-        j["materials"][0]["kneiphof2025"]["smooth"] = "lobe";
+    if (light == "environment_lobe") j["materials"][0]["kneiphof2025"]["smooth"] = "lobe";
     if (light == "environment" || light == "environment_plane" || light == "environment_lobe") {
         nlohmann::json env = {{"type", "environment"}};
         if (std::filesystem::exists(forest))
@@ -494,7 +493,7 @@ TEST(GpuRenderer, Deliot2023NoiseTextureVariantHasTheHashStatistics) {
     GpuRenderer renderer(scene);
     renderer.render(scene);
     const Image hashed = renderer.read_image();
-    renderer.set_deliot2023_noise_texture(true);
+    renderer.set_model_option("deliot2023", "noise_texture", true);
     renderer.render(scene);
     const Image noise = renderer.read_image();
     const ImageAgreement a = compare_images(noise, hashed, 8, 0.02f, 0.1f);
@@ -504,42 +503,50 @@ TEST(GpuRenderer, Deliot2023NoiseTextureVariantHasTheHashStatistics) {
     EXPECT_LT(a.mean_relative_error, 0.03);
     EXPECT_LT(a.smoothed_relative_l1, 0.15);
     EXPECT_GT(a.mismatch_fraction, 0.05);
-    const std::vector<float> pairs = gl::deliot2023_noise_pairs();
+    const std::vector<float> pairs = deliot2023_noise_pairs();
     ASSERT_EQ(pairs.size(), 8192u);
     double mean = 0.0;
     for (float v : pairs) mean += v;
     EXPECT_NEAR(mean / 8192.0, 0.5, 0.01);  // uniform: sd of the mean 0.0032
 }
 
-// The 000 HEIGHTMAP (25 deg) and MONKEY scenes of bench/table1: meshes with
-// interpolated normals and per-triangle dp/du, self-shadowing under the
-// directional light (shadow map vs shadow rays), 128 x 72, with the limits
-// of GpuVsCpu for pixel-exact models. Measured: smooth < 1e-5 everywhere;
-// chermain2020 HEIGHTMAP 0.11% / 0.86% / 0.01%, MONKEY 0.03% / 0.12% / 0
-// (mean, block means, mismatching pixels).
-class GpuMeshScenes : public ::testing::TestWithParam<std::string> {};
-
-TEST_P(GpuMeshScenes, MatchCpu) {
+// set_model_option checks the model and the option against the models' GPU
+// hooks (glints/gpu_model_hooks.h): a set option reads back, options are per
+// model, and an unknown model or option is an error naming it and what is
+// allowed.
+TEST(GpuRenderer, ModelOptionsAreValidatedAgainstTheHooks) {
     GLINTLAB_REQUIRE_GL();
-    for (const std::string scene_name : {"HEIGHTMAP_25", "MONKEY"}) {
-        SCOPED_TRACE(scene_name);
-        const Scene scene = parse_scene(table1_scene_json(scene_name, GetParam(), 12.0f, 128, 72),
-                                        "test:" + scene_name);
-        GpuRenderer renderer(scene);
-        renderer.render(scene);
-        const ImageAgreement a = compare_images(
-            renderer.read_image(), render_scene(scene, RenderOptions{1, true}), 8, 0.02f, 0.1f);
-        RecordProperty(scene_name + "_mean_rel", std::to_string(a.mean_relative_error));
-        RecordProperty(scene_name + "_smoothed", std::to_string(a.smoothed_relative_l1));
-        RecordProperty(scene_name + "_mismatch", std::to_string(a.mismatch_fraction));
-        ASSERT_GT(a.mean_b, 1e-3);  // lit (sparse chermain2020 glints on MONKEY: ~0.01)
-        EXPECT_LT(a.mean_relative_error, 0.03);
-        EXPECT_LT(a.smoothed_relative_l1, 0.05);
-        EXPECT_LT(a.mismatch_fraction, 0.01);
+    const Scene scene = parse_scene(test_scene("plane", "deliot2023", 12.0f), "test:plane");
+    GpuRenderer renderer(scene);
+    EXPECT_FALSE(renderer.model_option("deliot2023", "noise_texture"));
+    renderer.set_model_option("deliot2023", "noise_texture", true);
+    EXPECT_TRUE(renderer.model_option("deliot2023", "noise_texture"));
+    EXPECT_FALSE(renderer.model_option("kneiphof2025", "dynamic_environment"));
+    renderer.set_model_option("kneiphof2025", "dynamic_environment", true);
+    renderer.set_model_option("deliot2023", "noise_texture", false);
+    EXPECT_FALSE(renderer.model_option("deliot2023", "noise_texture"));
+    EXPECT_TRUE(renderer.model_option("kneiphof2025", "dynamic_environment"));
+    auto message = [&](const char* model, const char* option) {
+        try {
+            renderer.set_model_option(model, option, true);
+        } catch (const Error& e) {
+            return std::string(e.what());
+        }
+        return std::string("no error");
+    };
+    const std::string wrong_option = message("deliot2023", "dynamic_environment");
+    EXPECT_NE(wrong_option.find("deliot2023.dynamic_environment"), std::string::npos)
+        << wrong_option;
+    EXPECT_NE(wrong_option.find("options: noise_texture"), std::string::npos) << wrong_option;
+    const std::string no_options = message("zirr2016", "noise_texture");
+    EXPECT_NE(no_options.find("options: none"), std::string::npos) << no_options;
+    for (const char* model : {"nope", "explicit"}) {  // unknown; CPU only
+        const std::string m = message(model, "noise_texture");
+        EXPECT_NE(m.find(fmt::format("\"{}\" is not a GPU glint model", model)), std::string::npos)
+            << m;
+        EXPECT_NE(m.find("deliot2023, kneiphof2025"), std::string::npos) << m;
     }
 }
-
-INSTANTIATE_TEST_SUITE_P(Models, GpuMeshScenes, ::testing::Values("smooth", "chermain2020"));
 
 // Every example scene whose materials the GPU implements renders on the GPU
 // (at 64 x 48) to a finite image that is not black; scenes with other glint
@@ -584,7 +591,7 @@ TEST(GpuRenderer, ExampleScenesRenderOrNameTheMissingModel) {
     EXPECT_GE(rendered, 8);  // default, plane/heightmap/sphere/monkey, sweeps, car paint
 }
 
-// wang2020 (papers/001, gpu_wang2020.h): CPU `direct` vs GPU at 128x128 on
+// wang2020 (papers/001, wang2020_gpu.h): CPU `direct` vs GPU at 128x128 on
 // the SPHERE view, from the same CPU-built tables (reduced DPF resolution;
 // alpha 0.4 selects Table 2's small prefilter grid), under the forest map
 // (or a constant environment without blender-data) and under a point light.

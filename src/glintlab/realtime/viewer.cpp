@@ -316,7 +316,7 @@ void run_viewer(Scene scene, const ViewerOptions& options) {
     bool shadows = true;
     bool noise_texture = false;
     bool dynamic_ibl = options.dynamic_ibl;
-    renderer.set_kneiphof2025_dynamic_environment(dynamic_ibl);
+    renderer.set_model_option("kneiphof2025", "dynamic_environment", dynamic_ibl);
     std::string status;
     int selected_material = 0;
     bool p_was_down = false;
@@ -405,12 +405,12 @@ void run_viewer(Scene scene, const ViewerOptions& options) {
                 if (m.type == MaterialDesc::Type::Glint &&
                     m.glint.model_id == GlintModelId::Deliot2023 &&
                     ImGui::Checkbox("noise texture (000 6.3)", &noise_texture))
-                    renderer.set_deliot2023_noise_texture(noise_texture);
+                    renderer.set_model_option("deliot2023", "noise_texture", noise_texture);
                 // 003 §5: the prefilter as compute passes every frame.
                 if (m.type == MaterialDesc::Type::Glint &&
                     m.glint.model_id == GlintModelId::Kneiphof2025 &&
                     ImGui::Checkbox("dynamic IBL (003 5)", &dynamic_ibl))
-                    renderer.set_kneiphof2025_dynamic_environment(dynamic_ibl);
+                    renderer.set_model_option("kneiphof2025", "dynamic_environment", dynamic_ibl);
             }
             if (ImGui::CollapsingHeader("lights")) {
                 for (size_t i = 0; i < scene.lights.size(); ++i) {
@@ -444,7 +444,7 @@ void run_viewer(Scene scene, const ViewerOptions& options) {
         shadow_ms.add(t.shadow_ms);
         background_ms.add(t.background_ms);
         forward_ms.add(t.forward_ms);
-        blur_ms.add(t.wang2020_blur_ms);
+        blur_ms.add(t.glint_post_ms);
         bloom_ms.add(bloom_timer.elapsed_ms());
         display_ms.add(display_timer.elapsed_ms());
 

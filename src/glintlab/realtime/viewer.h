@@ -23,7 +23,7 @@ struct ViewerOptions {
         window_screenshot;  // the window as shown (panel included), after the last frame
     bool show_ui = true;
     // kneiphof2025's environment prefiltered by compute passes every frame
-    // (003 §5, GpuRenderer::set_kneiphof2025_dynamic_environment); the
+    // (003 §5, GpuRenderer::set_model_option "kneiphof2025" "dynamic_environment"); the
     // panel's "dynamic IBL" checkbox toggles it.
     bool dynamic_ibl = false;
 };

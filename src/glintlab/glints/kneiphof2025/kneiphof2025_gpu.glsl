@@ -1,9 +1,9 @@
 // GPU glue of kneiphof2025 (papers/003) for the forward pass (realtime/forward_shaders.h):
 // defines, from the model's shared .glsl and the uniforms set by
-// realtime/glint_programs.cpp and realtime/kneiphof2025_gpu.cpp,
+// realtime/glint_programs.cpp and glints/kneiphof2025/kneiphof2025_gpu.cpp,
 //     vec3 glint_ndf(vec3 h, Footprint fp);  // D_P(h), RGB (glints/material.glsl)
 // The shared file's GLSL fetch functions read the CPU-prefiltered maps
-// bound by realtime/kneiphof2025_gpu.h. Point and delta directional
+// bound by glints/kneiphof2025/kneiphof2025_gpu.h. Point and delta directional
 // lights: deliot2023's D_P with the reused grid parameters (003 Table 1:
 // "identical to [DB23]"; kneiphof2025.cpp kneiphof2025_footprint_ndf).
 // The environment and the area lights (sphere lights, sun cones) are

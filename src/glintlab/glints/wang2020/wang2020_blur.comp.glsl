@@ -1,5 +1,5 @@
 // wang2020 (papers/001) §4.4 screen-space post-process, on the GPU
-// (realtime/gpu_wang2020_blur.h): one axis of a clamped separable Gaussian.
+// (glints/wang2020/wang2020_gpu_blur.h): one axis of a clamped separable Gaussian.
 // u_mode selects what is blurred: 0: the source's visibility (a) -> r;
 // 1: the source as is; 2: rgb of the source times δ (r of u_aux).
 // u_store_aux: a of the output = r of u_aux (δ).

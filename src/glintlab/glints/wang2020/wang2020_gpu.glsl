@@ -1,11 +1,11 @@
 // GPU glue of wang2020 (papers/001) for the forward pass (realtime/forward_shaders.h):
 // defines, from the model's shared .glsl and the uniforms set by
-// realtime/gpu_wang2020.cpp,
+// glints/wang2020/wang2020_gpu.cpp,
 //     vec3 glint_ndf(vec3 h, Footprint fp);  // D_P(h), RGB (glints/material.glsl)
 // The model shades every light itself (GLINTLAB_GLINT_OWN_LIGHTS):
 //     vec3 glint_own_light(vec3 wo, vec3 wi, vec3 li, Footprint fp);
 //     vec3 glint_own_environment(vec3 n, vec3 o_world, Footprint fp);
-// The SSBO bindings are kWang2020*Binding of realtime/gpu_wang2020.h.
+// The SSBO bindings are kWang2020*Binding of glints/wang2020/wang2020_gpu.h.
 #ifndef GLINTLAB_GLINTS_WANG2020_WANG2020_GPU_GLSL
 #define GLINTLAB_GLINTS_WANG2020_WANG2020_GPU_GLSL
 
@@ -13,7 +13,7 @@
 #include "glintlab/microfacet/ndf.glsl"
 #include "glintlab/glints/wang2020/wang2020_tables.glsl"
 #define GLINTLAB_GLINT_OWN_LIGHTS 1
-// The CPU's arrays (gpu_wang2020.cpp): DpfTable::values(),
+// The CPU's arrays (wang2020_gpu.cpp): DpfTable::values(),
 // PrefilterTable::data(), ParticleQuadtree::nodes(),
 // ConeAverageTable (the micro scale's cone-averaged environment).
 layout(std430, binding = 1) readonly buffer Wang2020Dpf { float u_wang2020_dpf[]; };

@@ -6,7 +6,7 @@
 // once per (material parameters, environment map) and cached, thread-safe.
 // In renders with "blur" on, the environment term goes through
 // GlintPostSample to the §4.4 blurs (wang2020_postprocess.h), which
-// render_scene (and GpuRenderer, realtime/gpu_wang2020_blur.h) run on the
+// render_scene (and GpuRenderer, glints/wang2020/wang2020_gpu_blur.h) run on the
 // image; see docs/MODELS.md.
 #pragma once
 

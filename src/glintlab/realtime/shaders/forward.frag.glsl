@@ -333,7 +333,7 @@ void main() {
             if (visible <= 0.0f) continue;
 #ifdef GLINTLAB_GLINT_OWN_LIGHTS
             // Models that shade their lights themselves (glint_lighting.h;
-            // wang2020 Eq. 21, gpu_wang2020.h), untinted.
+            // wang2020 Eq. 21, wang2020_gpu.h), untinted.
             if (u_material_type == 4) {
                 radiance += u_glint_color * glint_own_light(wo, wi, u_point_intensity[i] * (visible / r2), fp);
                 continue;
@@ -343,7 +343,7 @@ void main() {
         }
 #endif
 #if GLINTLAB_ENVIRONMENT && defined(GLINTLAB_GLINT_OWN_LIGHTS)
-        // wang2020 (gpu_wang2020.h): Eqs. 18-20, untinted.
+        // wang2020 (wang2020_gpu.h): Eqs. 18-20, untinted.
         if (u_material_type == 4) {
             vec3 env = u_glint_color * glint_own_environment(n, wo_world, fp);
             if (u_glint_layer)

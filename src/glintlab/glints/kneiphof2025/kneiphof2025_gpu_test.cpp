@@ -1,4 +1,4 @@
-// kneiphof2025's GPU prefilter (realtime/kneiphof2025_prefilter_gpu.h, 003 §5
+// kneiphof2025's GPU prefilter (glints/kneiphof2025/kneiphof2025_prefilter_gpu.h, 003 §5
 // "dynamic IBL") against the CPU prefilter (kneiphof2025_prefilter.cpp) on a
 // small synthetic map, and the renderer's dynamic mode against its static
 // (CPU-prefiltered) mode. Skipped without an OpenGL 4.5 context.
@@ -11,11 +11,11 @@
 #include <epoxy/gl.h>
 
 #include "glintlab/glints/kneiphof2025/kneiphof2025_prefilter.h"
+#include "glintlab/glints/kneiphof2025/kneiphof2025_prefilter_gpu.h"
 #include "glintlab/realtime/gl_handles.h"
 #include "glintlab/realtime/gpu_renderer.h"
 #include "glintlab/realtime/gpu_test_util.h"
 #include "glintlab/realtime/image_compare.h"
-#include "glintlab/realtime/kneiphof2025_prefilter_gpu.h"
 #include "glintlab/scene/environment.h"
 #include "glintlab/scene/scene_loader.h"
 
@@ -157,7 +157,7 @@ TEST(GpuKneiphof2025Prefilter, DynamicEnvironmentRendersTheStaticImage) {
     GpuRenderer renderer(scene);
     renderer.render(scene);
     const Image static_image = renderer.read_image();
-    renderer.set_kneiphof2025_dynamic_environment(true);
+    renderer.set_model_option("kneiphof2025", "dynamic_environment", true);
     renderer.render(scene);
     renderer.render(scene);  // re-run every frame
     const Image dynamic_image = renderer.read_image();

@@ -1,4 +1,4 @@
-#include "glintlab/realtime/kneiphof2025_prefilter_gpu.h"
+#include "glintlab/glints/kneiphof2025/kneiphof2025_prefilter_gpu.h"
 
 #include <algorithm>
 #include <cstring>

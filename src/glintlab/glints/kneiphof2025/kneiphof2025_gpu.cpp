@@ -1,4 +1,4 @@
-#include "glintlab/realtime/kneiphof2025_gpu.h"
+#include "glintlab/glints/kneiphof2025/kneiphof2025_gpu.h"
 
 #include <cmath>
 #include <set>
@@ -12,7 +12,7 @@
 #include "glintlab/core/error.h"
 #include "glintlab/glints/kneiphof2025/kneiphof2025.h"
 #include "glintlab/glints/kneiphof2025/kneiphof2025_prefilter.h"
-#include "glintlab/realtime/kneiphof2025_prefilter_gpu.h"
+#include "glintlab/glints/kneiphof2025/kneiphof2025_prefilter_gpu.h"
 #include "glintlab/realtime/uniform_cache.h"
 #include "glintlab/scene/environment.h"
 #include "glintlab/scene/scene.h"

@@ -1,4 +1,4 @@
-#include "glintlab/realtime/gpu_wang2020_blur.h"
+#include "glintlab/glints/wang2020/wang2020_gpu_blur.h"
 
 #include <cmath>
 #include <vector>

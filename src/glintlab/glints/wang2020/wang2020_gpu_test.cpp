@@ -1,4 +1,4 @@
-// wang2020's post-process blurs on the GPU (gpu_wang2020_blur.h) equal the
+// wang2020's post-process blurs on the GPU (wang2020_gpu_blur.h) equal the
 // CPU's postprocess_glints (001 §4.4) up to float summation order.
 #include <gtest/gtest.h>
 
@@ -7,9 +7,9 @@
 
 #include "glintlab/core/error.h"
 #include "glintlab/core/rng.h"
+#include "glintlab/glints/wang2020/wang2020_gpu_blur.h"
 #include "glintlab/glints/wang2020/wang2020_postprocess.h"
 #include "glintlab/realtime/gpu_test_util.h"
-#include "glintlab/realtime/gpu_wang2020_blur.h"
 
 namespace glintlab {
 namespace {

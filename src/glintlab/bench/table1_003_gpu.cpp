@@ -1,13 +1,13 @@
-#include "glintlab/realtime/gpu_table1_003.h"
+#include "glintlab/bench/table1_003_gpu.h"
 
 #include <filesystem>
 
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
+#include "glintlab/bench/table1_gpu.h"
 #include "glintlab/core/error.h"
 #include "glintlab/realtime/gpu_renderer.h"
-#include "glintlab/realtime/gpu_table1.h"
 #include "glintlab/scene/scene_loader.h"
 
 namespace glintlab {
@@ -91,7 +91,8 @@ std::vector<Table1Row> run_table1_003_gpu(const Table1Options& options) {
             // 003 Table 1 "Dynamic IBL": the environment prefiltered in every
             // frame (kneiphof2025 materials; the smooth model reads the map's
             // mip chain and has nothing to redo).
-            renderer.set_kneiphof2025_dynamic_environment(scene_name == "IBL_DYNAMIC");
+            renderer.set_model_option("kneiphof2025", "dynamic_environment",
+                                      scene_name == "IBL_DYNAMIC");
             time_gpu_frames(renderer, scene, options.gpu_warmup, options.frames, row);
         });
 }

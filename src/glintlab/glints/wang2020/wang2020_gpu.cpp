@@ -1,4 +1,4 @@
-#include "glintlab/realtime/gpu_wang2020.h"
+#include "glintlab/glints/wang2020/wang2020_gpu.h"
 
 #include <cmath>
 #include <variant>

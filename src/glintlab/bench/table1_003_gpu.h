@@ -5,7 +5,7 @@
 // directional light for comparison; columns smooth, wang2020-style
 // (kneiphof2025 K = 1 without the environment partition, 003 Fig. 8),
 // K = 4 and K = 8. Same timing and JSON conventions as the 000 GPU table
-// (gpu_table1.h): per density, the median forward-pass GL_TIME_ELAPSED and
+// (table1_gpu.h): per density, the median forward-pass GL_TIME_ELAPSED and
 // the median frame wall time (render + glFinish) over `frames` frames after
 // `gpu_warmup`.
 #pragma once

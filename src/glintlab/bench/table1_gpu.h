@@ -22,16 +22,16 @@ std::vector<Table1Row> run_table1_gpu(const Table1Options& options,
 // "OpenGL ... | renderer" of the EGL context the GPU bench uses.
 std::string gpu_bench_device();
 
-// The loop every GPU table runs (this one and gpu_table1_003.h): in one EGL
+// The loop every GPU table runs (this one and table1_003_gpu.h): in one EGL
 // context (recorded as gpu_bench_device()), one row per (scene, model); per
 // log density a fresh GpuRenderer of make_scene(scene, model, log density),
 // measured by `measure` (the table's renderer settings, time_gpu_frames and
 // any extra passes); min / max of the row over the densities.
 using GpuTableScene =
     std::function<Scene(const std::string& scene, const std::string& model, float log_density)>;
-using GpuTableMeasure = std::function<void(GpuRenderer& renderer, const Scene& scene,
-                                           const std::string& scene_name, const std::string& model,
-                                           Table1Row& row)>;
+using GpuTableMeasure =
+    std::function<void(GpuRenderer& renderer, const Scene& scene, const std::string& scene_name,
+                       const std::string& model, Table1Row& row)>;
 std::vector<Table1Row> run_gpu_table(const Table1Options& options,
                                      const std::vector<std::string>& scenes,
                                      const std::vector<std::string>& models,

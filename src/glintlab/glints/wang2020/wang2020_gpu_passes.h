@@ -1,5 +1,5 @@
 // 001 Table 3's passes for one wang2020 point of `glintlab bench --gpu`
-// (gpu_table1.cpp): the table builds of the model the frames used (the
+// (table1_gpu.cpp): the table builds of the model the frames used (the
 // cached CPU builds that GpuRenderer uploaded: DPF extraction with the γ
 // accumulation, quadtree, environment prefilter on scenes with an
 // environment) and the §4.4 post-process blur passes (GpuWang2020Blur) on

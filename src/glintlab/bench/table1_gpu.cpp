@@ -1,12 +1,12 @@
-#include "glintlab/realtime/gpu_table1.h"
+#include "glintlab/bench/table1_gpu.h"
 
 #include <algorithm>
 #include <chrono>
 
+#include "glintlab/glints/wang2020/wang2020_gpu_passes.h"
 #include "glintlab/realtime/gl_context.h"
 #include "glintlab/realtime/gpu_renderer.h"
 #include "glintlab/realtime/gpu_timer.h"
-#include "glintlab/realtime/gpu_wang2020_passes.h"
 #include "glintlab/scene/scene_loader.h"
 
 namespace glintlab {
@@ -55,11 +55,11 @@ std::vector<Table1Row> run_table1_gpu(const Table1Options& options,
                 table1_scene_json(scene_name, model, log_density, options.width, options.height),
                 "bench:" + scene_name);
         },
-        [&](GpuRenderer& renderer, const Scene& scene, const std::string&,
-            const std::string& model, Table1Row& row) {
-            renderer.set_deliot2023_noise_texture(options.gpu_noise_texture);
+        [&](GpuRenderer& renderer, const Scene& scene, const std::string&, const std::string& model,
+            Table1Row& row) {
+            renderer.set_model_option("deliot2023", "noise_texture", options.gpu_noise_texture);
             time_gpu_frames(renderer, scene, options.gpu_warmup, options.frames, row);
-            // wang2020: 001 Table 3's passes (gpu_wang2020_passes.h).
+            // wang2020: 001 Table 3's passes (wang2020_gpu_passes.h).
             if (model == "wang2020")
                 gl::time_wang2020_passes(scene, renderer.read_image(), options.frames,
                                          row.pass_ms_per_density);

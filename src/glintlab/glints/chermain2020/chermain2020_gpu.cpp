@@ -1,0 +1,82 @@
+// chermain2020 (004) on the GPU: the hooks of glints/gpu_model_hooks.h (glue
+// chermain2020_gpu.glsl, the model's uniforms and the dictionary texture).
+#include <variant>
+
+#include <epoxy/gl.h>
+
+#include "glintlab/core/error.h"
+#include "glintlab/glints/chermain2020/dictionary.h"
+#include "glintlab/glints/gpu_model_hooks.h"
+#include "glintlab/realtime/uniform_cache.h"
+#include "glintlab/scene/scene.h"
+
+namespace glintlab {
+namespace {
+
+constexpr int kDictionaryUnit = kFirstModelTextureUnit;
+
+std::string glue_path(unsigned) {
+    return "glintlab/glints/chermain2020/chermain2020_gpu.glsl";
+}
+
+class State final : public GpuModelState {
+  public:
+    ~State() override {
+        if (dictionary_ != 0) glDeleteTextures(1, &dictionary_);
+    }
+
+    void prepare(unsigned program, gl::UniformCache& u, const GlintDesc& desc, const GpuFrame&,
+                 unsigned) override {
+        auto loc = [&](const char* name) { return u.location(program, name); };
+        const auto& p = std::get<Chermain2020Params>(desc.params);
+        const Dictionary& d = default_dictionary();
+        glProgramUniform3i(program, loc("u_chermain2020_dict_shape"), d.params.n_levels,
+                           d.params.n_dists, d.params.table_size);
+        glProgramUniform2f(program, loc("u_chermain2020_dict_range"), d.params.alpha_dict,
+                           d.slope_max);
+        glProgramUniform1f(program, loc("u_chermain2020_relative_area"), p.relative_area);
+        glProgramUniform1f(program, loc("u_chermain2020_max_anisotropy"), p.max_anisotropy);
+        glProgramUniform1f(program, loc("u_chermain2020_density_randomization"),
+                           p.density_randomization);
+        glProgramUniform1i(program, loc("u_chermain2020_colour_count"), p.colour_count);
+        glProgramUniform3fv(program, loc("u_chermain2020_colours"),
+                            static_cast<GLsizei>(p.colour_table.size()), &p.colour_table[0].x);
+        glProgramUniform1i(program, loc("chermain2020_dictionary"), kDictionaryUnit);
+        if (dictionary_ == 0) upload(d);
+        glBindTextureUnit(kDictionaryUnit, dictionary_);
+    }
+
+  private:
+    // 004 §4.4-4.5: one row per (marginal, level), one texel per table
+    // sample; read with texelFetch (the shared code interpolates itself).
+    void upload(const Dictionary& d) {
+        const int width = d.params.table_size;
+        const int height = d.params.n_dists * d.params.n_levels;
+        GLint max_size = 0;
+        glGetIntegerv(GL_MAX_TEXTURE_SIZE, &max_size);
+        if (width > max_size || height > max_size)
+            fail(
+                "OpenGL renderer: the chermain2020 dictionary ({}x{} texels) exceeds "
+                "GL_MAX_TEXTURE_SIZE = {}",
+                width, height, max_size);
+        glCreateTextures(GL_TEXTURE_2D, 1, &dictionary_);
+        glTextureStorage2D(dictionary_, 1, GL_R32F, width, height);
+        glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+        glTextureSubImage2D(dictionary_, 0, 0, 0, width, height, GL_RED, GL_FLOAT, d.values.data());
+        glTextureParameteri(dictionary_, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+        glTextureParameteri(dictionary_, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    }
+
+    GLuint dictionary_ = 0;  // R32F, uploaded on first use
+};
+
+}  // namespace
+
+const GpuModelHooks& chermain2020_gpu_hooks() {
+    static const GpuModelHooks hooks{GlintModelId::Chermain2020, glue_path, {}, [] {
+                                         return std::unique_ptr<GpuModelState>(new State);
+                                     }};
+    return hooks;
+}
+
+}  // namespace glintlab
