@@ -13,6 +13,7 @@
 #include "glintlab/glints/wang2020/validate_wang2020.h"
 #include "glintlab/glints/zirr2016/validate_zirr2016.h"
 #include "glintlab/validate/report.h"
+#include "glintlab/validate/robustness_suite.h"
 
 namespace glintlab::cmd {
 namespace {
@@ -64,6 +65,8 @@ const std::map<std::string, SuiteRunner>& suites() {
              o.seed = static_cast<uint64_t>(a.seed);
              return validate_kneiphof2025(o);
          }},
+        {"robustness",
+         [](const ValidateArgs& a) { return validate_robustness(static_cast<uint64_t>(a.seed)); }},
         {"wang2020",
          [](const ValidateArgs& a) {
              Wang2020ValidationOptions o;

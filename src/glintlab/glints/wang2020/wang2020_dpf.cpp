@@ -132,6 +132,10 @@ const DpfSet& dpf_set(DpfResolution res) {
 }
 
 DpfTable extract_dpf(const DpfSet& set, double alpha, double gamma_rad) {
+    // A scene's roughness is a float: its 0.02 is 0.0199999996, the first
+    // table's roughness up to float rounding.
+    if (alpha >= double(float(kRoughnessSet.front())) && alpha < kRoughnessSet.front())
+        alpha = kRoughnessSet.front();
     if (!(alpha >= kRoughnessSet.front() && alpha <= kRoughnessSet.back()))
         fail("wang2020: roughness {} outside the tabulated range [0.02, 1]", alpha);
     const double gamma_max = 30.0 * kPi / 180.0;
