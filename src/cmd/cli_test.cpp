@@ -228,3 +228,14 @@ TEST(Cli, MemoryLimitRefusesTooBigRenders) {
     r = run_cli("render " + scene.string() + " -o " + out.string() + " -q --memory-limit 1G");
     EXPECT_EQ(r.status, 0) << r.output;
 }
+
+// --no-cache is accepted (the tests run with GLINTLAB_NO_CACHE=1 anyway;
+// the cache itself is tested in disk_cache_test.cpp / wang2020_cache_test.cpp).
+TEST(Cli, NoCacheFlagIsAccepted) {
+    const auto scene = write_file("nocache.json", kSmallScene);
+    const auto out = temp_dir() / "nocache.exr";
+    const RunResult r =
+        run_cli("render " + scene.string() + " -o " + out.string() + " -q --no-cache");
+    EXPECT_EQ(r.status, 0) << r.output;
+    EXPECT_TRUE(std::filesystem::exists(out));
+}

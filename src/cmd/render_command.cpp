@@ -9,6 +9,7 @@
 
 #include "commands.h"
 #include "glintlab/core/bloom.h"
+#include "glintlab/core/disk_cache.h"
 #include "glintlab/core/error.h"
 #include "glintlab/core/image.h"
 #include "glintlab/core/memory_limit.h"
@@ -33,6 +34,7 @@ struct RenderArgs {
     std::string integrator;
     std::optional<float> exposure;
     std::string memory_limit;
+    bool no_cache = false;
     bool quiet = false;
     bool gpu = false;
 };
@@ -104,6 +106,7 @@ int run_render(const RenderArgs& a) {
         res_h = parse_res_side(std::string_view(a.res).substr(x + 1), a.res);
     }
     const RenderOutputs out = render_output_paths(a.output, a.scene);
+    if (a.no_cache) set_disk_cache_enabled(false);
     if (!a.memory_limit.empty()) {
         const std::optional<uint64_t> limit = parse_memory_size(a.memory_limit);
         if (!limit)
@@ -188,6 +191,9 @@ void add_render_command(CLI::App& app, int* status) {
                     "Refuse renders estimated to need more memory than this (bytes, or with a "
                     "suffix K, M, G, T; default GLINTLAB_MEMORY_LIMIT, else 8G or 3/4 of the "
                     "physical memory)");
+    sub->add_flag("--no-cache", args->no_cache,
+                  "Neither read nor write the on-disk table cache (also GLINTLAB_NO_CACHE=1; "
+                  "README \"Table cache\")");
     sub->add_flag("-q,--quiet", args->quiet, "No progress bar or summary");
     sub->add_flag("--gpu", args->gpu,
                   "Render with the OpenGL 4.5 forward renderer, headless through EGL (one shading "

@@ -77,6 +77,11 @@ struct DpfSet {
     size_t memory_bytes() const;
 };
 const DpfSet& dpf_set(DpfResolution res);
+// The set without the in-process memo: read from the on-disk table cache
+// (core/disk_cache.h, key: resolution, γ, the roughness set, a table
+// version and the glintlab version) or built (with a progress bar on a
+// terminal; ~55 s at the default 90 × 90 × 180) and stored there.
+DpfSet load_or_build_dpf_set(DpfResolution res);
 
 // Extraction: roughness interpolation between the bracketing tables, then γ
 // accumulation of the 1° table onto a table for gamma_rad. α must lie in
