@@ -61,18 +61,26 @@ bool disk_cache_store(std::string_view name, uint64_t key,
 // Helpers to (de)serialise arrays of trivially copyable values.
 class ByteWriter {
   public:
+    // resize + memcpy rather than vector::insert, whose inlined copy GCC 12
+    // misreports (-Wstringop-overflow).
     template <typename T>
     void put(const T& v) {
-        const auto* p = reinterpret_cast<const unsigned char*>(&v);
-        bytes.insert(bytes.end(), p, p + sizeof v);
+        append(&v, sizeof v);
     }
     template <typename T>
     void put_vector(const std::vector<T>& v) {
         put(uint64_t(v.size()));
-        const auto* p = reinterpret_cast<const unsigned char*>(v.data());
-        bytes.insert(bytes.end(), p, p + v.size() * sizeof(T));
+        append(v.data(), v.size() * sizeof(T));
     }
     std::vector<unsigned char> bytes;
+
+  private:
+    void append(const void* data, size_t size) {
+        if (size == 0) return;
+        const size_t n = bytes.size();
+        bytes.resize(n + size);
+        std::memcpy(bytes.data() + n, data, size);
+    }
 };
 
 class ByteReader {

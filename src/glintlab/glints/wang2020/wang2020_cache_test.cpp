@@ -46,11 +46,16 @@ TEST(Wang2020Cache, HitEqualsFreshBuildAndCorruptFileIsRebuilt) {
     const DpfSet rebuilt = load_or_build_dpf_set(res);
     expect_same(fresh, rebuilt);
     expect_same(fresh, load_or_build_dpf_set(res));
-    // Another resolution is another key (a second file).
+    // The extracted table for a material (α, γ): the cached copy equals
+    // extract_dpf bit for bit, fresh and on a hit (a second file).
+    const DpfTable direct = extract_dpf(fresh, 0.3, 0.1);
+    EXPECT_EQ(load_or_extract_dpf(fresh, 0.3, 0.1).values(), direct.values());
+    EXPECT_EQ(load_or_extract_dpf(fresh, 0.3, 0.1).values(), direct.values());
+    // Another resolution is another key (a third file).
     load_or_build_dpf_set(DpfResolution{6, 6, 14});
     int n = 0;
     for (const auto& e : std::filesystem::directory_iterator(dir)) n += e.is_regular_file();
-    EXPECT_EQ(n, 2);
+    EXPECT_EQ(n, 3);
     std::filesystem::remove_all(dir);
     ::unsetenv("GLINTLAB_CACHE_DIR");
 }

@@ -168,6 +168,31 @@ DpfSet load_or_build_dpf_set(DpfResolution res) {
     return set;
 }
 
+DpfTable load_or_extract_dpf(const DpfSet& set, double alpha, double gamma_rad) {
+    CacheKey key("wang2020_dpf_extract", kDpfTableVersion);
+    key.add(dpf_cache_key(set.res, set.gamma_rad)).add(alpha).add(gamma_rad);
+    const DpfResolution res = set.res;
+    const size_t cells = size_t(res.theta_i) * size_t(res.theta_o) * size_t(res.phi);
+    if (const auto bytes = disk_cache_load("wang2020_dpf_extract", key.value())) {
+        ByteReader in(*bytes);
+        std::vector<float> v;
+        if (in.get_vector(v) && v.size() == cells && in.at_end())
+            return DpfTable(res, std::move(v));
+    }
+    ProgressReporter progress(1,
+                              fmt::format("wang2020 DPF for roughness {:.3g}, gamma {:.3g} deg "
+                                          "(cached afterwards)",
+                                          alpha, gamma_rad * 180.0 / kPi),
+                              false);
+    DpfTable t = extract_dpf(set, alpha, gamma_rad);
+    progress.update();
+    progress.done();
+    ByteWriter out;
+    out.put_vector(t.values());
+    disk_cache_store("wang2020_dpf_extract", key.value(), out.bytes);
+    return t;
+}
+
 const DpfSet& dpf_set(DpfResolution res) {
     static std::mutex mutex;
     static std::map<std::tuple<int, int, int>, std::unique_ptr<DpfSet>> cache;
