@@ -2,11 +2,11 @@
 // message and a non-zero exit status, never a crash; a render writes files.
 #include <gtest/gtest.h>
 
+#include <sys/wait.h>
 #include <array>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
-#include <sys/wait.h>
 
 #include <nlohmann/json.hpp>
 
@@ -35,7 +35,8 @@ RunResult run_cli(const std::string& args) {
 }
 
 std::filesystem::path temp_dir() {
-    const auto dir = std::filesystem::temp_directory_path() / ("glintlab_cli_" + std::to_string(::getpid()));
+    const auto dir =
+        std::filesystem::temp_directory_path() / ("glintlab_cli_" + std::to_string(::getpid()));
     std::filesystem::create_directories(dir);
     return dir;
 }
@@ -67,7 +68,8 @@ TEST(Cli, RenderWritesExrAndPng) {
 
 TEST(Cli, BadInputGivesClearErrors) {
     const auto scene = write_file("ok.json", kSmallScene);
-    const auto bad_key = write_file("bad_key.json", R"({"camera": {"eye": [0,0,1]}, "cameras": 1})");
+    const auto bad_key =
+        write_file("bad_key.json", R"({"camera": {"eye": [0,0,1]}, "cameras": 1})");
     const auto bad_json = write_file("bad_json.json", "{ not json");
     const auto bad_model = write_file(
         "bad_model.json",
@@ -86,7 +88,8 @@ TEST(Cli, BadInputGivesClearErrors) {
         {"render " + scene.string() + " --spp 0", {"--spp"}},
         {"render " + scene.string() + " --integrator bdpt", {"--integrator"}},
         // The output's parent is a regular file, so no directory can be made there.
-        {"render " + scene.string() + " -o " + scene.string() + "/y.exr --quiet", {"cannot create the output directory"}},
+        {"render " + scene.string() + " -o " + scene.string() + "/y.exr --quiet",
+         {"cannot create the output directory"}},
         {"frobnicate", {"frobnicate"}},
         {"validate no_such_suite", {"no_such_suite"}},
     };
@@ -95,7 +98,9 @@ TEST(Cli, BadInputGivesClearErrors) {
         EXPECT_NE(r.status, 0) << c.args << "\n" << r.output;
         EXPECT_LT(r.status, 128) << "crashed: " << c.args << "\n" << r.output;
         for (const std::string& e : c.expected)
-            EXPECT_NE(r.output.find(e), std::string::npos) << c.args << ": expected \"" << e << "\" in:\n" << r.output;
+            EXPECT_NE(r.output.find(e), std::string::npos)
+                << c.args << ": expected \"" << e << "\" in:\n"
+                << r.output;
     }
 }
 
@@ -106,13 +111,16 @@ TEST(Cli, ValidateCountingJsonFollowsTheContract) {
     EXPECT_EQ(j.at("suite"), "counting");
     ASSERT_TRUE(j.at("checks").is_array());
     for (const auto& c : j.at("checks")) {
-        EXPECT_TRUE(c.contains("name") && c.contains("value") && c.contains("limit") && c.contains("pass")) << c;
+        EXPECT_TRUE(c.contains("name") && c.contains("value") && c.contains("limit") &&
+                    c.contains("pass"))
+            << c;
         EXPECT_TRUE(c.at("pass").get<bool>()) << c;
     }
 }
 
 TEST(Cli, BenchJsonListsMinMaxPerSceneAndModel) {
-    const RunResult r = run_cli("bench --scene PLANE_25 SPHERE --model smooth --res 16x12 --frames 1 --json");
+    const RunResult r =
+        run_cli("bench --scene PLANE_25 SPHERE --model smooth --res 16x12 --frames 1 --json");
     ASSERT_EQ(r.status, 0) << r.output;
     const auto j = nlohmann::json::parse(r.output);
     ASSERT_EQ(j.at("results").size(), 2u);
@@ -126,7 +134,8 @@ TEST(Cli, BenchJsonListsMinMaxPerSceneAndModel) {
     EXPECT_NE(bad.status, 0);
     EXPECT_NE(bad.output.find("unknown scene \"NOPE\""), std::string::npos) << bad.output;
     const RunResult bad_model = run_cli("bench --model nope --frames 1");
-    EXPECT_NE(bad_model.output.find("unknown model \"nope\""), std::string::npos) << bad_model.output;
+    EXPECT_NE(bad_model.output.find("unknown model \"nope\""), std::string::npos)
+        << bad_model.output;
 }
 
 TEST(Cli, InfoListsModelsAndHelpWorks) {
@@ -163,3 +172,99 @@ TEST(Cli, ValidateListsEveryModelSuiteAndCounting) {
 }
 
 }  // namespace
+
+// -o: the extension decides which file the path names (README "Output files"):
+// X.png writes the preview there and X.exr beside it (never X.png.exr), a
+// directory (trailing slash) gets <scene stem>.exr/.png, an unknown extension
+// is refused before rendering.
+TEST(Cli, OutputExtensionDecidesTheFormat) {
+    namespace fs = std::filesystem;
+    const auto scene = write_file("paths.json", kSmallScene);
+    const fs::path dir = temp_dir() / "paths";
+    fs::remove_all(dir);
+    RunResult r = run_cli("render " + scene.string() + " -o " + (dir / "a.png").string() + " -q");
+    EXPECT_EQ(r.status, 0) << r.output;
+    EXPECT_TRUE(fs::exists(dir / "a.png"));
+    EXPECT_TRUE(fs::exists(dir / "a.exr"));
+    EXPECT_FALSE(fs::exists(dir / "a.png.exr"));
+    EXPECT_FALSE(fs::exists(dir / "a.png.png"));
+    r = run_cli("render " + scene.string() + " -o " + (dir / "b.exr").string() + " -q");
+    EXPECT_EQ(r.status, 0) << r.output;
+    EXPECT_TRUE(fs::exists(dir / "b.exr"));
+    EXPECT_TRUE(fs::exists(dir / "b.png"));
+    r = run_cli("render " + scene.string() + " -o " + (dir / "sub").string() + "/ -q");
+    EXPECT_EQ(r.status, 0) << r.output;
+    EXPECT_TRUE(fs::exists(dir / "sub" / "paths.exr"));
+    EXPECT_TRUE(fs::exists(dir / "sub" / "paths.png"));
+    EXPECT_FALSE(fs::exists(dir / "sub" / ".exr"));
+    // An existing directory without the slash is a directory too.
+    r = run_cli("render " + scene.string() + " -o " + dir.string() + " -q");
+    EXPECT_EQ(r.status, 0) << r.output;
+    EXPECT_TRUE(fs::exists(dir / "paths.exr"));
+    r = run_cli("render " + scene.string() + " -o " + (dir / "c.jpg").string() + " -q");
+    EXPECT_EQ(r.status, 1) << r.output;
+    EXPECT_NE(r.output.find(".jpg"), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find(".exr"), std::string::npos) << r.output;
+    EXPECT_FALSE(fs::exists(dir / "c.exr"));
+}
+
+// Options are validated before anything renders or is written: a NaN exposure
+// used to write the EXR and then fail; an overflowing --res reported "0x1".
+TEST(Cli, OptionsAreValidatedBeforeRendering) {
+    namespace fs = std::filesystem;
+    const auto scene = write_file("opts.json", kSmallScene);
+    const fs::path out = temp_dir() / "opts" / "x.exr";
+    fs::remove_all(out.parent_path());
+    RunResult r = run_cli("render " + scene.string() + " -o " + out.string() + " --exposure nan");
+    EXPECT_NE(r.status, 0) << r.output;
+    EXPECT_NE(r.output.find("--exposure"), std::string::npos) << r.output;
+    EXPECT_FALSE(fs::exists(out));
+    r = run_cli("render " + scene.string() + " -o " + out.string() + " --exposure inf");
+    EXPECT_NE(r.status, 0) << r.output;
+    EXPECT_FALSE(fs::exists(out));
+    r = run_cli("render " + scene.string() + " -o " + out.string() + " --res 99999999999x1");
+    EXPECT_EQ(r.status, 1) << r.output;
+    EXPECT_NE(r.output.find("99999999999x1"), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("[1, 16384]"), std::string::npos) << r.output;
+    EXPECT_EQ(r.output.find("got 0x1"), std::string::npos) << r.output;
+    r = run_cli("render " + scene.string() + " -o " + out.string() + " --res 8x-3");
+    EXPECT_EQ(r.status, 1) << r.output;
+    EXPECT_NE(r.output.find("8x-3"), std::string::npos) << r.output;
+    EXPECT_FALSE(fs::exists(out));
+}
+
+// A render estimated above the memory limit fails before allocating, naming
+// the film and the estimate (a 16384² film needs ~19 GiB; here a tiny limit).
+TEST(Cli, MemoryLimitRefusesTooBigRenders) {
+    namespace fs = std::filesystem;
+    const auto scene = write_file("mem.json", kSmallScene);
+    const fs::path out = temp_dir() / "mem" / "x.exr";
+    fs::remove_all(out.parent_path());
+    RunResult r =
+        run_cli("render " + scene.string() + " -o " + out.string() + " --memory-limit 1K");
+    EXPECT_EQ(r.status, 1) << r.output;
+    EXPECT_NE(r.output.find("film 24x16"), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("memory limit of 1.0 KiB"), std::string::npos) << r.output;
+    EXPECT_FALSE(fs::exists(out));
+    r = run_cli("render " + scene.string() + " -o " + out.string() + " --memory-limit lots");
+    EXPECT_EQ(r.status, 1) << r.output;
+    EXPECT_NE(r.output.find("--memory-limit"), std::string::npos) << r.output;
+    ::setenv("GLINTLAB_MEMORY_LIMIT", "2K", 1);
+    r = run_cli("render " + scene.string() + " -o " + out.string() + " -q");
+    ::unsetenv("GLINTLAB_MEMORY_LIMIT");
+    EXPECT_EQ(r.status, 1) << r.output;
+    EXPECT_NE(r.output.find("GLINTLAB_MEMORY_LIMIT"), std::string::npos) << r.output;
+    r = run_cli("render " + scene.string() + " -o " + out.string() + " -q --memory-limit 1G");
+    EXPECT_EQ(r.status, 0) << r.output;
+}
+
+// --no-cache is accepted (the tests run with GLINTLAB_NO_CACHE=1 anyway;
+// the cache itself is tested in disk_cache_test.cpp / wang2020_cache_test.cpp).
+TEST(Cli, NoCacheFlagIsAccepted) {
+    const auto scene = write_file("nocache.json", kSmallScene);
+    const auto out = temp_dir() / "nocache.exr";
+    const RunResult r =
+        run_cli("render " + scene.string() + " -o " + out.string() + " -q --no-cache");
+    EXPECT_EQ(r.status, 0) << r.output;
+    EXPECT_TRUE(std::filesystem::exists(out));
+}

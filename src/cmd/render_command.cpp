@@ -1,14 +1,20 @@
 #include <charconv>
 #include <chrono>
+#include <cmath>
 #include <filesystem>
 #include <optional>
+#include <string_view>
 
 #include <fmt/format.h>
 
 #include "commands.h"
 #include "glintlab/core/bloom.h"
+#include "glintlab/core/disk_cache.h"
 #include "glintlab/core/error.h"
 #include "glintlab/core/image.h"
+#include "glintlab/core/memory_limit.h"
+#include "glintlab/render/image_check.h"
+#include "glintlab/render/render_memory.h"
 #include "glintlab/render/renderer.h"
 #if GLINTLAB_WITH_GL
 #include "glintlab/realtime/gpu_renderer.h"
@@ -27,37 +33,104 @@ struct RenderArgs {
     std::string res;
     std::string integrator;
     std::optional<float> exposure;
+    std::string memory_limit;
+    bool no_cache = false;
     bool quiet = false;
     bool gpu = false;
 };
 
+// One side of --res: a decimal integer in [1, 16384], the whole text.
+int parse_res_side(std::string_view text, const std::string& res) {
+    int v = 0;
+    const char* end = text.data() + text.size();
+    const auto [ptr, ec] = std::from_chars(text.data(), end, v);
+    if (text.empty() || ptr != end || ec == std::errc::invalid_argument)
+        fail("--res: expected WxH with W and H integers in [1, 16384], got \"{}\"", res);
+    if (ec == std::errc::result_out_of_range || v < 1 || v > 16384)
+        fail("--res: W and H must be in [1, 16384], got \"{}\" (\"{}\" is out of range)", res,
+             text);
+    return v;
+}
+
+}  // namespace
+
+// The output files of `render -o PATH` (README "Output files"): the extension
+// decides which file PATH is — ".exr": the linear EXR, the PNG preview beside
+// it; ".png": the preview, the EXR beside it; none: ".exr" is appended; a
+// directory (existing, or written with a trailing slash): <dir>/<scene stem>.exr
+// and .png. Any other extension is an error.
+RenderOutputs render_output_paths(const std::string& output, const std::string& scene_file) {
+    namespace fs = std::filesystem;
+    const fs::path stem = fs::path(scene_file).stem();
+    fs::path exr;
+    if (output.empty()) {
+        exr = fs::path("out") / stem;
+        exr += ".exr";
+    } else {
+        const fs::path out(output);
+        const bool dir = output.back() == '/' || fs::is_directory(out);
+        if (dir) {
+            exr = out / stem;
+            exr += ".exr";
+        } else if (out.extension() == ".exr" || out.extension() == ".png") {
+            exr = out;
+            exr.replace_extension(".exr");
+        } else if (out.extension().empty()) {
+            exr = out;
+            exr += ".exr";
+        } else {
+            fail(
+                "-o {}: the extension decides the format: .exr (the PNG preview goes beside it), "
+                ".png (the EXR goes beside it), none (.exr is appended) or a directory; got \"{}\"",
+                output, out.extension().string());
+        }
+    }
+    fs::path png = exr;
+    png.replace_extension(".png");
+    return {exr, png};
+}
+
+namespace {
+
 int run_render(const RenderArgs& a) {
+    // Every option is checked before the scene loads and long before the
+    // render, so that a bad option never leaves half the outputs behind.
+    if (a.exposure && !(std::isfinite(*a.exposure) && std::abs(*a.exposure) <= 20.0f))
+        fail("--exposure: must be a finite number of stops in [-20, 20], got {}", *a.exposure);
+    int res_w = 0, res_h = 0;
+    if (!a.res.empty()) {
+        const size_t x = a.res.find('x');
+        if (x == std::string::npos)
+            fail("--res: expected WxH with W and H integers in [1, 16384], got \"{}\"", a.res);
+        res_w = parse_res_side(std::string_view(a.res).substr(0, x), a.res);
+        res_h = parse_res_side(std::string_view(a.res).substr(x + 1), a.res);
+    }
+    const RenderOutputs out = render_output_paths(a.output, a.scene);
+    if (a.no_cache) set_disk_cache_enabled(false);
+    if (!a.memory_limit.empty()) {
+        const std::optional<uint64_t> limit = parse_memory_size(a.memory_limit);
+        if (!limit)
+            fail(
+                "--memory-limit: expected a size in bytes with an optional suffix K, M, G or T "
+                "(powers of 1024, e.g. 512M, 16G), at least 1 byte, got \"{}\"",
+                a.memory_limit);
+        set_memory_limit(limit);
+    }
+
     Scene scene = load_scene(a.scene);
     if (a.spp) scene.render.spp = *a.spp;
     if (a.seed) scene.render.seed = static_cast<uint64_t>(*a.seed);
     if (!a.integrator.empty())
         scene.render.integrator = a.integrator == "path" ? RenderSettings::Integrator::Path
                                                          : RenderSettings::Integrator::Direct;
-    if (!a.res.empty()) {
-        // WxH, both integers in [1, 16384].
-        const size_t x = a.res.find('x');
-        int w = 0, h = 0;
-        const char* end = a.res.data() + a.res.size();
-        const bool ok =
-            x != std::string::npos &&
-            std::from_chars(a.res.data(), a.res.data() + x, w).ptr == a.res.data() + x &&
-            std::from_chars(a.res.data() + x + 1, end, h).ptr == end && x > 0 &&
-            x + 1 < a.res.size();
-        if (!ok) fail("--res: expected WxH with W and H in [1, 16384], got \"{}\"", a.res);
-        if (w < 1 || h < 1 || w > 16384 || h > 16384)
-            fail("--res: W and H must be in [1, 16384], got {}x{}", w, h);
-        scene.camera.width = w, scene.camera.height = h;
-    }
+    if (!a.res.empty()) scene.camera.width = res_w, scene.camera.height = res_h;
     if (a.exposure) scene.film.exposure = *a.exposure;
 
-    std::filesystem::path exr = a.output;
-    if (exr.empty()) exr = std::filesystem::path("out") / std::filesystem::path(a.scene).stem();
-    if (exr.extension() != ".exr") exr += ".exr";
+    require_memory(
+        estimate_render_memory(scene, a.gpu),
+        fmt::format("render of {} at {}x{}", a.scene, scene.camera.width, scene.camera.height));
+
+    const std::filesystem::path& exr = out.exr;
     if (!exr.parent_path().empty()) {
         std::error_code ec;
         std::filesystem::create_directories(exr.parent_path(), ec);
@@ -74,11 +147,11 @@ int run_render(const RenderArgs& a) {
 #endif
     const double seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    require_finite_image(scene, image, fmt::format("render of {}", a.scene));
     const bool bloom = scene.film.bloom.strength > 0.0f;
     const Image preview = bloom ? apply_bloom(image, scene.film.bloom) : image;
     write_exr(scene.film.bloom_exr ? preview : image, exr);
-    std::filesystem::path png = exr;
-    png.replace_extension(".png");
+    const std::filesystem::path& png = out.png;
     write_png(preview, png, scene.film.exposure);
     if (!a.quiet)
         fmt::print("rendered {} ({}x{}, {} spp, {}) in {:.2f} s -> {}, {}\n", a.scene,
@@ -100,7 +173,9 @@ void add_render_command(CLI::App& app, int* status) {
         ->required()
         ->check(CLI::ExistingFile);
     sub->add_option("-o,--output", args->output,
-                    "Output EXR path (the PNG preview goes beside it); default out/<scene>.exr");
+                    "Output file or directory: X.exr writes the EXR (linear) and X.png "
+                    "(preview) beside it, X.png the preview and X.exr beside it, DIR/ writes "
+                    "DIR/<scene>.exr and .png; default out/<scene>.exr");
     sub->add_option("--spp", args->spp, "Samples per pixel (overrides the scene)")
         ->check(CLI::Range(1, 1 << 20));
     sub->add_option("--seed", args->seed, "Random seed (overrides the scene)")
@@ -112,6 +187,13 @@ void add_render_command(CLI::App& app, int* status) {
         ->check(CLI::IsMember({"direct", "path"}));
     sub->add_option("--exposure", args->exposure, "PNG exposure in stops (overrides the scene)")
         ->check(CLI::Range(-20.0f, 20.0f));
+    sub->add_option("--memory-limit", args->memory_limit,
+                    "Refuse renders estimated to need more memory than this (bytes, or with a "
+                    "suffix K, M, G, T; default GLINTLAB_MEMORY_LIMIT, else 8G or 3/4 of the "
+                    "physical memory)");
+    sub->add_flag("--no-cache", args->no_cache,
+                  "Neither read nor write the on-disk table cache (also GLINTLAB_NO_CACHE=1; "
+                  "README \"Table cache\")");
     sub->add_flag("-q,--quiet", args->quiet, "No progress bar or summary");
     sub->add_flag("--gpu", args->gpu,
                   "Render with the OpenGL 4.5 forward renderer, headless through EGL (one shading "

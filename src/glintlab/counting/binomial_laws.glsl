@@ -162,6 +162,32 @@ float binomial_interior_inverse(float n, float p, float pow_pos, float pow_neg, 
     return mirror ? n - k : k;
 }
 
+// Above this many trials n^2 overflows fp32 (n^2 > 3.4e38 at n > 1.8e19):
+// the interior moments below then take their factored form.
+const float BINOMIAL_MAX_SQUARED_TRIALS = 1e18f;
+
+// A Gaussian deviate with the moments of the interior case of b(n, p) (see
+// Law 6b below) for n > BINOMIAL_MAX_SQUARED_TRIALS, where the expanded
+// E[n^2] - E[n]^2 overflows (inf - inf = NaN from log density ~44 on). With
+// A = p^n, B = (1 - p)^n and z = 1 - A - B:
+//   E   = n (p - A) / z,
+//   Var = n p (1 - p) / z + (nA nB - nA n(1 - p)^2 - np np B) / z^2,
+// each product ordered so that a factor that underflows to 0 (A or B, for
+// any n here) multiplies before the other grows: every term is finite.
+// Where z < 1e-6 (n p or n (1 - p) tiny; the Gaussian case then has
+// probability z) the deviate is the mean.
+float binomial_interior_gaussian_large(float n, float p, float pow_pos, float pow_neg, float z,
+                                       float xi) {
+    float mean = clamp(n * (p - pow_pos) / z, 1.0f, n - 1.0f);
+    if (!(z >= 1e-6f)) return mean;
+    float na = n * pow_pos;
+    float nb = n * pow_neg;
+    float np = n * p;
+    float nq2 = n * (1.0f - p) * (1.0f - p);
+    float variance = np * (1.0f - p) / z + (na * nb - na * nq2 - np * (np * pow_neg)) / (z * z);
+    return gaussian_deviate(mean, min(max(variance, 0.0f), 1e36f), xi);
+}
+
 // Law 6b (an extension, not in 003; used by kneiphof2025's "conditional"
 // option): Algorithm 1's gates with its Gaussian case drawn from b(N, p)
 // conditioned on the interior 1 <= n <= N - 1, instead of Algorithm 1's
@@ -202,12 +228,15 @@ vec2 binomial_dual_gated_conditional(float N, float p, float xi1, float xi2, boo
     float g;
     if (integer_gaussian && n == floor(n) && n2 * min(p, 1.0f - p) <= 16.0f) {
         g = b_gauss > 0.0f ? binomial_interior_inverse(n2, p, pow_pos, pow_neg, z, xi2) : 1.0f;
-    } else {
+    } else if (n2 <= BINOMIAL_MAX_SQUARED_TRIALS) {
         float mean = (n2 * p - n2 * pow_pos) / z;
         float second = (n2 * p * (1.0f - p) + n2 * n2 * p * p - n2 * n2 * pow_pos) / z;
         mean = clamp(mean, 1.0f, n2 - 1.0f);
         float variance = max(second - mean * mean, 0.0f);
         g = gaussian_deviate(mean, variance, xi2);
+        if (integer_gaussian) g = floor(g + 0.5f);
+    } else {
+        g = binomial_interior_gaussian_large(n2, p, pow_pos, pow_neg, z, xi2);
         if (integer_gaussian) g = floor(g + 0.5f);
     }
     g = clamp(g, 1.0f, n2 - 1.0f);

@@ -134,9 +134,9 @@ TEST(CountingLaws, ExactSamplerMatchesItsOwnLaw) {
 TEST(CountingLaws, NoNanInfOrNegativeOutputOnTenMillionRandomInputs) {
     const RobustnessResult r = sweep_counting_laws(10'000'000, 12345u);
     EXPECT_EQ(r.invalid, 0);
-    EXPECT_EQ(r.evaluations, 13 * 10'000'000LL);
+    EXPECT_EQ(r.evaluations, 15 * 10'000'000LL);  // 11 law outputs + 4 multinomial bins
     // The named edges, explicitly.
-    const float edges_N[] = {0.0f, 1.0f, 2.0f, 1e15f, 1e20f};
+    const float edges_N[] = {0.0f, 1.0f, 2.0f, 1e15f, 1e20f, 5.5e34f};
     const float edges_p[] = {0.0f, 1.0f, 1e-31f, 1e-45f, 0.5f};
     const float edges_xi[] = {0.0f, 0.5f, shader::ONE_MINUS_EPSILON};
     for (float N : edges_N) {
@@ -146,7 +146,9 @@ TEST(CountingLaws, NoNanInfOrNegativeOutputOnTenMillionRandomInputs) {
                                    shader::binomial_deliot2023(N, p, xi, xi),
                                    shader::binomial_single_gated(N, p, xi, xi),
                                    shader::binomial_dual_gated(N, p, xi, xi, false).x,
-                                   shader::binomial_dual_gated(N, p, xi, xi, false).y};
+                                   shader::binomial_dual_gated(N, p, xi, xi, false).y,
+                                   shader::binomial_dual_gated_conditional(N, p, xi, xi, true).x,
+                                   shader::binomial_dual_gated_conditional(N, p, xi, xi, true).y};
                 for (float x : v) EXPECT_TRUE(std::isfinite(x) && x >= 0.0f) << N << " " << p;
             }
         }

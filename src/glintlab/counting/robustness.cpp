@@ -16,13 +16,14 @@ float log_uniform(Pcg32& rng, double lo_exp, double hi_exp) {
     return static_cast<float>(std::pow(10.0, lo_exp + (hi_exp - lo_exp) * rng.next_double()));
 }
 
-// N: 0, huge (> 1e15), or log-uniform over [1e-3, 1e16].
+// N: 0, huge (1e15 to 5.5e34 = e^80, the most trials the models draw), or
+// log-uniform over [1e-3, 1e16].
 float draw_N(Pcg32& rng) {
     switch (rng.next_uint(4)) {
         case 0:
             return 0.0f;
         case 1:
-            return log_uniform(rng, 15.0, 20.0);
+            return log_uniform(rng, 15.0, 34.74);
         default:
             return log_uniform(rng, -3.0, 16.0);
     }
@@ -77,6 +78,9 @@ RobustnessResult sweep_counting_laws(int64_t samples, uint64_t seed) {
             for (int k = 0; k < 16; ++k) trials[k / 4][k % 4] = draw_xi(rng);
             const glsl::vec2 dual = shader::binomial_dual_gated(N, p, xi1, xi2, false);
             const glsl::vec2 dual_int = shader::binomial_dual_gated(N, p, xi1, xi2, true);
+            // kneiphof2025's conditional law, with the integer N it is given there.
+            const glsl::vec2 cond =
+                shader::binomial_dual_gated_conditional(std::floor(N), p, xi1, xi2, true);
             const float values[] = {shader::binomial_gaussian(N, p, xi2),
                                     shader::binomial_zirr2016(N, p, xi2, trials),
                                     shader::binomial_deliot2023(N, p, xi1, xi2),
@@ -85,9 +89,11 @@ RobustnessResult sweep_counting_laws(int64_t samples, uint64_t seed) {
                                     dual.y,
                                     dual_int.x,
                                     dual_int.y,
+                                    cond.x,
+                                    cond.y,
                                     shader::pow_one_minus_stable(p, N)};
             for (float v : values) local_bad += invalid(v) ? 1 : 0;
-            local_evals += 9;
+            local_evals += 11;
             // Multinomial over 4 bins with a random split of the probability.
             const glsl::vec4 probs(rng.next_float(), rng.next_float(), rng.next_float(), p);
             const glsl::vec4 counts =

@@ -5,6 +5,7 @@
 #include "glintlab/core/error.h"
 #include "glintlab/counting/validate_counting.h"
 #include "glintlab/glints/registry.h"
+#include "glintlab/validate/robustness_suite.h"
 
 namespace glintlab {
 
@@ -16,6 +17,7 @@ const std::map<std::string, ValidationSuiteRunner>& validation_suites() {
             o.seed = seed;
             return validate_counting(o);
         };
+        t["robustness"] = [](uint64_t seed) { return validate_robustness(seed); };
         for (const GlintModelDescriptor& m : glint_models())
             if (m.validation.run != nullptr) t[m.validation.name] = m.validation.run;
         return t;

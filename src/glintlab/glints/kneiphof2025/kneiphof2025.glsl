@@ -151,8 +151,13 @@ void kneiphof2025_probabilities(vec4 w_a, vec4 w_b, int levels, float p_visible,
 //    complement, with its probability (p_(k+1) + ... + p_K) / (p_k + ... + p_K)
 //    from the suffix sums: 1 - q loses all precision in fp32 when the rest is
 //    a rare bright level.
-float kneiphof2025_weighted_multinomial(float N, int levels, vec4 p_a, vec4 p_b, vec4 L_a, vec4 L_b,
-                                        bool conditional, INOUT(uint) vs) {
+// `scale` (an exact power of two, see kneiphof2025_count_exponent) multiplies
+// every count before its radiance does: L^(k) M_k overflows fp32 where
+// N reaches e^80 (log density ~60, or density_randomization ~20) under a
+// bright environment.
+float kneiphof2025_weighted_multinomial_scaled(float N, float scale, int levels, vec4 p_a, vec4 p_b,
+                                               vec4 L_a, vec4 L_b, bool conditional,
+                                               INOUT(uint) vs) {
     float p[8];
     float L[8];
     for (int k = 0; k < 4; ++k) {
@@ -185,28 +190,66 @@ float kneiphof2025_weighted_multinomial(float N, int levels, vec4 p_a, vec4 p_b,
         } else {
             c = binomial_dual_gated_conditional(remaining, q, xi1, xi2, true);
         }
-        value += L[k] * c.x;
+        value += L[k] * (c.x * scale);
         remaining = c.y;
     }
-    return value + L[levels - 1] * remaining;
+    return value + L[levels - 1] * (remaining * scale);
+}
+float kneiphof2025_weighted_multinomial(float N, int levels, vec4 p_a, vec4 p_b, vec4 L_a, vec4 L_b,
+                                        bool conditional, INOUT(uint) vs) {
+    return kneiphof2025_weighted_multinomial_scaled(N, 1.0f, levels, p_a, p_b, L_a, L_b,
+                                                    conditional, vs);
+}
+
+// Sums of (radiance-weighted counts, trials) kept as (x, y) 2^e, e = z: a
+// vertex with N > 2^64 contributes its counts scaled by 2^-e (e =
+// kneiphof2025_count_exponent(N)), and the running sums are rescaled to the
+// larger exponent. Scaling by powers of two is exact, so wherever every N
+// is below 2^64 (e = 0) the sums are bit for bit the plain ones; above, the
+// ratio x / y, which is all Eq. 17 uses, stays finite (it is at most the
+// largest radiance level) where the plain sums overflowed to inf / inf = NaN.
+float kneiphof2025_count_exponent(float N) {
+    return N > 18446744073709551616.0f ? floor(log2(N)) - 63.0f : 0.0f;
+}
+// counts / (trials expected) for trials > 0: the plain quotient where the
+// product is a normal float; otherwise (it underflows to 0 at log density
+// -20 with a probability ~1e-38, or overflows) the quotients one by one, and
+// 0 for no counts (0 / 0 was NaN).
+float kneiphof2025_count_ratio(float counts, float trials, float expected) {
+    float d = trials * expected;
+    if (d >= 1.17549435e-38f && d <= 3.40282347e38f) return counts / d;
+    return counts > 0.0f ? (counts / trials) / expected : 0.0f;
+}
+vec3 kneiphof2025_scaled_add(vec3 acc, vec2 v, float e) {
+    if (e == acc.z) return vec3(acc.x + v.x, acc.y + v.y, e);
+    if (e > acc.z) {
+        int d = int(acc.z - e);
+        return vec3(ldexp(acc.x, d) + v.x, ldexp(acc.y, d) + v.y, e);
+    }
+    int d = int(e - acc.z);
+    return vec3(acc.x + ldexp(v.x, d), acc.y + ldexp(v.y, d), acc.z);
 }
 
 // One grid of the footprint (Eq. 10 without the half-vector dimension): per
 // simplex vertex, the weighted multinomial counts of its N trials. Returns
-// (sum_v beta_v sum_k L^(k) M_k, sum_v beta_v N_v). The vertex's stream gives
-// the density jitter first (as in deliot2023), then the multinomial's uniforms.
-vec2 kneiphof2025_grid_multinomial(ivec3 id, float weight, vec2 uv, float log_density, uint seed,
+// (sum_v beta_v sum_k L^(k) M_k, sum_v beta_v N_v) as scaled sums (x, y, e),
+// see kneiphof2025_scaled_add. The vertex's stream gives the density jitter
+// first (as in deliot2023), then the multinomial's uniforms.
+vec3 kneiphof2025_grid_multinomial(ivec3 id, float weight, vec2 uv, float log_density, uint seed,
                                    float density_randomization, int levels, vec4 p_a, vec4 p_b,
                                    vec4 L_a, vec4 L_b, bool conditional) {
     Deliot2023Simplex s = deliot2023_simplex(id, weight, uv, log_density, seed);
-    vec2 acc = vec2(0.0f);
+    vec3 acc = vec3(0.0f);
     for (int v = 0; v < 3; ++v) {
         float bv = s.beta[v];
         if (bv <= 0.0f) continue;
         uint vs = s.vertex_seed[v];
         float N = deliot2023_vertex_trials(s.log_trials, density_randomization, vs);
-        float value = kneiphof2025_weighted_multinomial(N, levels, p_a, p_b, L_a, L_b, conditional, vs);
-        acc += bv * vec2(value, N);
+        float e = kneiphof2025_count_exponent(N);
+        float scale = ldexp(1.0f, -int(e));
+        float value = kneiphof2025_weighted_multinomial_scaled(N, scale, levels, p_a, p_b, L_a,
+                                                               L_b, conditional, vs);
+        acc = kneiphof2025_scaled_add(acc, bv * vec2(value, N * scale), e);
     }
     return acc;
 }
@@ -220,14 +263,15 @@ float kneiphof2025_ibl_factor(Footprint fp, float log_density, uint seed, float 
     float expected = dot(p_a, L_a) + (levels > 4 ? dot(p_b, L_b) : 0.0f);
     if (!(expected > 0.0f)) return 1.0f;
     Deliot2023Grids grids = deliot2023_footprint_grids(fp, screen_space_scale, false);
-    vec2 acc = vec2(0.0f);
+    vec3 acc = vec3(0.0f);
     for (int i = 0; i < 4; ++i) {
         if (grids.weight[i] <= 0.0f) continue;
-        acc += kneiphof2025_grid_multinomial(grids.id[i], grids.weight[i], fp.uv, log_density, seed,
-                                             density_randomization, levels, p_a, p_b, L_a, L_b,
-                                             conditional);
+        vec3 g = kneiphof2025_grid_multinomial(grids.id[i], grids.weight[i], fp.uv, log_density,
+                                               seed, density_randomization, levels, p_a, p_b, L_a,
+                                               L_b, conditional);
+        acc = kneiphof2025_scaled_add(acc, vec2(g.x, g.y), g.z);
     }
-    return acc.y > 0.0f ? acc.x / (acc.y * expected) : 1.0f;
+    return acc.y > 0.0f ? kneiphof2025_count_ratio(acc.x, acc.y, expected) : 1.0f;
 }
 
 // K = 1 on the grid without the half-vector dimension: b(N_P, p) / (E[N_P] p)
@@ -261,7 +305,7 @@ float kneiphof2025_binomial_factor_no_h(Footprint fp, float p, float log_density
             acc += bv * vec2(c.x, N);
         }
     }
-    return acc.y > 0.0f ? acc.x / (acc.y * p) : 1.0f;
+    return acc.y > 0.0f ? kneiphof2025_count_ratio(acc.x, acc.y, p) : 1.0f;
 }
 
 // K = 1 area light (kneiphof2024; 003 Eq. 6-9, 23): b(N_P, p_Omega) on the
@@ -280,7 +324,7 @@ float kneiphof2025_area_factor(vec3 h_center, Footprint fp, float p, float log_d
         acc += deliot2023_grid_counts(grids.id[i], grids.weight[i], fp.uv, slope, p, log_density, seed,
                                       density_randomization, false);
     }
-    return acc.y > 0.0f ? acc.x / (acc.y * p) : 1.0f;
+    return acc.y > 0.0f ? kneiphof2025_count_ratio(acc.x, acc.y, p) : 1.0f;
 }
 
 // One area light (a sphere light, or the sun: a cone of constant radiance

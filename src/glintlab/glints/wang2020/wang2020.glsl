@@ -18,14 +18,21 @@ int wang2020_select_scale(float expected_count) {
     return WANG2020_MACRO;
 }
 
+// num / den for the counting estimates below: 0 where den is not a normal
+// float (a footprint of area ~0, or a tiny phat, make it underflow; the count
+// is then 0 as well and 0 / 0 was NaN). Bit for bit num / den otherwise.
+float wang2020_count_quotient(float num, float den) {
+    return den >= 1.17549435e-38f ? num / den : 0.0f;
+}
+
 // Environment radiance (before tint): Eq. 20 (micro), Eq. 18 (meso), Eq. 18
 // with Σ 1_A ≈ N a(A) (macro).
-vec3 wang2020_environment_combine(int scale, vec3 lhat, float phat, float count,
-                                  float accepted, float area, float total, float sigma) {
+vec3 wang2020_environment_combine(int scale, vec3 lhat, float phat, float count, float accepted,
+                                  float area, float total, float sigma) {
     if (scale == WANG2020_MACRO) return lhat / sigma;
-    if (scale == WANG2020_MESO) return lhat * (count / (sigma * area * total));
+    if (scale == WANG2020_MESO) return lhat * wang2020_count_quotient(count, sigma * area * total);
     if (!(phat > 0.0f)) return vec3(0.0f);
-    return lhat * (accepted / (sigma * area * total * phat));
+    return lhat * wang2020_count_quotient(accepted, sigma * area * total * phat);
 }
 
 // D̂'(A, o, i) = D̂ / (a σ) of Eq. 21 with D̂ from Eq. 5 (meso), Eq. 7
@@ -33,8 +40,8 @@ vec3 wang2020_environment_combine(int scale, vec3 lhat, float phat, float count,
 float wang2020_point_dprime(int scale, float p, float count, float accepted, float area,
                             float total, float sigma) {
     if (scale == WANG2020_MACRO) return p / sigma;
-    if (scale == WANG2020_MESO) return count * p / (total * area * sigma);
-    return accepted / (total * area * sigma);
+    if (scale == WANG2020_MESO) return wang2020_count_quotient(count * p, total * area * sigma);
+    return wang2020_count_quotient(accepted, total * area * sigma);
 }
 
 // ---- "micro": "per_particle" (docs/MODELS.md, wang2020) ----

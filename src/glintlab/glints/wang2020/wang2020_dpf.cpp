@@ -8,7 +8,11 @@
 #include <mutex>
 #include <tuple>
 
+#include <fmt/format.h>
+
+#include "glintlab/core/disk_cache.h"
 #include "glintlab/core/error.h"
+#include "glintlab/core/progress.h"
 #include "glintlab/glints/wang2020/wang2020_beckmann.h"
 
 namespace glintlab::wang2020 {
@@ -112,26 +116,97 @@ size_t DpfSet::memory_bytes() const {
     return s;
 }
 
+namespace {
+
+// Bump when generate_dpf_table or dpf_exact change their output: cached
+// tables of an older version are then never read (the key changes).
+constexpr uint32_t kDpfTableVersion = 1;
+
+uint64_t dpf_cache_key(DpfResolution res, double gamma_rad) {
+    CacheKey key("wang2020_dpf", kDpfTableVersion);
+    key.add(res.theta_i).add(res.theta_o).add(res.phi).add(gamma_rad);
+    for (double a : kRoughnessSet) key.add(a);
+    return key.value();
+}
+
+}  // namespace
+
+DpfSet load_or_build_dpf_set(DpfResolution res) {
+    const auto t0 = std::chrono::steady_clock::now();
+    DpfSet set;
+    set.res = res;
+    set.gamma_rad = kPi / 180.0;  // γ = 1° (§4.4)
+    const uint64_t key = dpf_cache_key(res, set.gamma_rad);
+    const size_t cells = size_t(res.theta_i) * size_t(res.theta_o) * size_t(res.phi);
+    bool loaded = false;
+    if (const auto bytes = disk_cache_load("wang2020_dpf", key)) {
+        ByteReader in(*bytes);
+        loaded = true;
+        for (size_t r = 0; r < kRoughnessSet.size() && loaded; ++r) {
+            std::vector<float> v;
+            loaded = in.get_vector(v) && v.size() == cells;
+            if (loaded) set.tables[r] = DpfTable(res, std::move(v));
+        }
+        loaded = loaded && in.at_end();
+    }
+    if (!loaded) {
+        ProgressReporter progress(int64_t(kRoughnessSet.size()),
+                                  fmt::format("wang2020 DPF tables {}x{}x{} (cached afterwards)",
+                                              res.theta_i, res.theta_o, res.phi),
+                                  false);
+        ByteWriter out;
+        for (size_t r = 0; r < kRoughnessSet.size(); ++r) {
+            set.tables[r] = generate_dpf_table(kRoughnessSet[r], set.gamma_rad, res);
+            out.put_vector(set.tables[r].values());
+            progress.update();
+        }
+        progress.done();
+        disk_cache_store("wang2020_dpf", key, out.bytes);
+    }
+    set.build_seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    return set;
+}
+
+DpfTable load_or_extract_dpf(const DpfSet& set, double alpha, double gamma_rad) {
+    CacheKey key("wang2020_dpf_extract", kDpfTableVersion);
+    key.add(dpf_cache_key(set.res, set.gamma_rad)).add(alpha).add(gamma_rad);
+    const DpfResolution res = set.res;
+    const size_t cells = size_t(res.theta_i) * size_t(res.theta_o) * size_t(res.phi);
+    if (const auto bytes = disk_cache_load("wang2020_dpf_extract", key.value())) {
+        ByteReader in(*bytes);
+        std::vector<float> v;
+        if (in.get_vector(v) && v.size() == cells && in.at_end())
+            return DpfTable(res, std::move(v));
+    }
+    ProgressReporter progress(1,
+                              fmt::format("wang2020 DPF for roughness {:.3g}, gamma {:.3g} deg "
+                                          "(cached afterwards)",
+                                          alpha, gamma_rad * 180.0 / kPi),
+                              false);
+    DpfTable t = extract_dpf(set, alpha, gamma_rad);
+    progress.update();
+    progress.done();
+    ByteWriter out;
+    out.put_vector(t.values());
+    disk_cache_store("wang2020_dpf_extract", key.value(), out.bytes);
+    return t;
+}
+
 const DpfSet& dpf_set(DpfResolution res) {
     static std::mutex mutex;
     static std::map<std::tuple<int, int, int>, std::unique_ptr<DpfSet>> cache;
     const std::lock_guard lock(mutex);
     auto& slot = cache[{res.theta_i, res.theta_o, res.phi}];
-    if (!slot) {
-        const auto t0 = std::chrono::steady_clock::now();
-        auto set = std::make_unique<DpfSet>();
-        set->res = res;
-        set->gamma_rad = kPi / 180.0;  // γ = 1° (§4.4)
-        for (size_t r = 0; r < kRoughnessSet.size(); ++r)
-            set->tables[r] = generate_dpf_table(kRoughnessSet[r], set->gamma_rad, res);
-        set->build_seconds =
-            std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-        slot = std::move(set);
-    }
+    if (!slot) slot = std::make_unique<DpfSet>(load_or_build_dpf_set(res));
     return *slot;
 }
 
 DpfTable extract_dpf(const DpfSet& set, double alpha, double gamma_rad) {
+    // A scene's roughness is a float: its 0.02 is 0.0199999996, the first
+    // table's roughness up to float rounding.
+    if (alpha >= double(float(kRoughnessSet.front())) && alpha < kRoughnessSet.front())
+        alpha = kRoughnessSet.front();
     if (!(alpha >= kRoughnessSet.front() && alpha <= kRoughnessSet.back()))
         fail("wang2020: roughness {} outside the tabulated range [0.02, 1]", alpha);
     const double gamma_max = 30.0 * kPi / 180.0;

@@ -77,10 +77,18 @@ struct DpfSet {
     size_t memory_bytes() const;
 };
 const DpfSet& dpf_set(DpfResolution res);
+// The set without the in-process memo: read from the on-disk table cache
+// (core/disk_cache.h, key: resolution, γ, the roughness set, a table
+// version and the glintlab version) or built (with a progress bar on a
+// terminal; ~55 s at the default 90 × 90 × 180) and stored there.
+DpfSet load_or_build_dpf_set(DpfResolution res);
 
 // Extraction: roughness interpolation between the bracketing tables, then γ
 // accumulation of the 1° table onto a table for gamma_rad. α must lie in
 // [0.02, 1] and γ in [set γ, 30°] (checked: glintlab::Error).
 DpfTable extract_dpf(const DpfSet& set, double alpha, double gamma_rad);
+// extract_dpf through the on-disk table cache (key: the set's key, α, γ):
+// the γ accumulation is what takes ~40 s per material at 90 × 90 × 180.
+DpfTable load_or_extract_dpf(const DpfSet& set, double alpha, double gamma_rad);
 
 }  // namespace glintlab::wang2020

@@ -45,7 +45,9 @@ glm::dvec3 blend_weights(const UvBox& A, double N) {
 double checked_gamma(const Wang2020Material& m) {
     if (!(m.gamma_deg >= 1.0 && m.gamma_deg <= 30.0))
         fail("wang2020: gamma_deg {} outside [1, 30]", m.gamma_deg);
-    if (!(m.alpha >= 0.02 && m.alpha <= 1.0))
+    // The scene's roughness is a float: 0.02 arrives as 0.0199999996 (the
+    // loader's bound, read_wang2020_params, is compared in float too).
+    if (!(m.alpha >= double(0.02f) && m.alpha <= 1.0))
         fail("wang2020: roughness {} outside [0.02, 1]", m.alpha);
     if (!(m.color.x >= 0.0 && m.color.y >= 0.0 && m.color.z >= 0.0) ||
         !std::isfinite(m.color.x + m.color.y + m.color.z))
@@ -56,7 +58,7 @@ double checked_gamma(const Wang2020Material& m) {
 DpfTable timed_extract(const Wang2020Material& m, double gamma, double& seconds) {
     const DpfSet& set = dpf_set(m.dpf_res);
     const auto t0 = std::chrono::steady_clock::now();
-    DpfTable t = extract_dpf(set, m.alpha, gamma);
+    DpfTable t = load_or_extract_dpf(set, m.alpha, gamma);
     seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     return t;
 }

@@ -1,0 +1,106 @@
+#include "glintlab/core/disk_cache.h"
+
+#include <gtest/gtest.h>
+
+#include <unistd.h>
+
+#include <cstdlib>
+#include <fstream>
+
+namespace glintlab {
+namespace {
+
+// Each test gets its own cache directory (pid + test name), so that parallel
+// ctest processes never share files, and the cache enabled in it.
+class DiskCacheTest : public ::testing::Test {
+  protected:
+    void SetUp() override {
+        dir_ = std::filesystem::temp_directory_path() /
+               ("glintlab_cache_" + std::to_string(::getpid()) + "_" +
+                ::testing::UnitTest::GetInstance()->current_test_info()->name());
+        std::filesystem::remove_all(dir_);
+        ::setenv("GLINTLAB_CACHE_DIR", dir_.c_str(), 1);
+        ::unsetenv("GLINTLAB_NO_CACHE");
+        set_disk_cache_enabled(true);
+    }
+    void TearDown() override {
+        std::filesystem::remove_all(dir_);
+        ::unsetenv("GLINTLAB_CACHE_DIR");
+    }
+    std::filesystem::path dir_;
+};
+
+std::vector<unsigned char> payload() {
+    std::vector<unsigned char> p(10000);
+    for (size_t i = 0; i < p.size(); ++i) p[i] = static_cast<unsigned char>(i * 37 + 11);
+    return p;
+}
+
+TEST_F(DiskCacheTest, StoreThenLoadReturnsTheSameBytes) {
+    EXPECT_EQ(disk_cache_dir(), dir_);
+    EXPECT_FALSE(disk_cache_load("t", 42).has_value());
+    ASSERT_TRUE(disk_cache_store("t", 42, payload()));
+    EXPECT_TRUE(std::filesystem::exists(disk_cache_file("t", 42)));
+    EXPECT_EQ(disk_cache_load("t", 42), payload());
+    EXPECT_FALSE(disk_cache_load("t", 43).has_value());  // another key, another file
+    // No temporary file is left behind.
+    int files = 0;
+    for (const auto& e : std::filesystem::directory_iterator(dir_)) files += e.is_regular_file();
+    EXPECT_EQ(files, 1);
+}
+
+// A flipped payload byte (checksum), a truncated file (size) and a foreign
+// header are never trusted: load returns nothing and removes the file.
+TEST_F(DiskCacheTest, CorruptOrTruncatedFilesAreRejectedAndRemoved) {
+    const auto file = disk_cache_file("t", 7);
+    for (int kind = 0; kind < 3; ++kind) {
+        ASSERT_TRUE(disk_cache_store("t", 7, payload()));
+        const auto size = std::filesystem::file_size(file);
+        if (kind == 0) {
+            std::fstream f(file, std::ios::in | std::ios::out | std::ios::binary);
+            f.seekp(std::streamoff(size - 100));
+            f.put('\x5a');
+        } else if (kind == 1) {
+            std::filesystem::resize_file(file, size - 1);
+        } else {
+            std::fstream f(file, std::ios::in | std::ios::out | std::ios::binary);
+            f.seekp(0);
+            f.put('X');
+        }
+        EXPECT_FALSE(disk_cache_load("t", 7).has_value()) << kind;
+        EXPECT_FALSE(std::filesystem::exists(file)) << kind;
+    }
+}
+
+TEST_F(DiskCacheTest, DisabledByEnvironmentOrFlag) {
+    ::setenv("GLINTLAB_NO_CACHE", "1", 1);
+    EXPECT_FALSE(disk_cache_enabled());
+    EXPECT_FALSE(disk_cache_store("t", 1, payload()));
+    ::unsetenv("GLINTLAB_NO_CACHE");
+    set_disk_cache_enabled(false);
+    EXPECT_FALSE(disk_cache_store("t", 1, payload()));
+    set_disk_cache_enabled(true);
+    EXPECT_TRUE(disk_cache_store("t", 1, payload()));
+}
+
+// The key depends on every input: values, names, versions and file content
+// (not the file's path).
+TEST_F(DiskCacheTest, KeyChangesWithEveryInput) {
+    const uint64_t base = CacheKey("dpf", 1).add(90).add(0.5).value();
+    EXPECT_EQ(CacheKey("dpf", 1).add(90).add(0.5).value(), base);
+    EXPECT_NE(CacheKey("dpf", 2).add(90).add(0.5).value(), base);
+    EXPECT_NE(CacheKey("dpg", 1).add(90).add(0.5).value(), base);
+    EXPECT_NE(CacheKey("dpf", 1).add(91).add(0.5).value(), base);
+    EXPECT_NE(CacheKey("dpf", 1).add(90).add(0.25).value(), base);
+    std::filesystem::create_directories(dir_);
+    const auto a = dir_ / "a.bin", b = dir_ / "b.bin";
+    std::ofstream(a) << "environment map";
+    std::ofstream(b) << "environment map";
+    const uint64_t ka = CacheKey("env", 1).add_file(a).value();
+    EXPECT_EQ(CacheKey("env", 1).add_file(b).value(), ka);
+    std::ofstream(b) << "environment map!";
+    EXPECT_NE(CacheKey("env", 1).add_file(b).value(), ka);
+}
+
+}  // namespace
+}  // namespace glintlab
