@@ -5,6 +5,7 @@
 #include <fmt/format.h>
 
 #include "glintlab/core/error.h"
+#include "glintlab/glints/registry.h"
 #include "glintlab/render/accel.h"
 
 namespace glintlab {
@@ -51,7 +52,7 @@ std::string describe_pixel_surface(const Scene& scene, int x, int y) {
     const MaterialDesc& m = scene.materials[size_t(shape.material)];
     if (m.type == MaterialDesc::Type::Glint)
         return fmt::format("shape '{}', material '{}' (glint, model {})", shape.name, m.name,
-                           m.glint.model);
+                           glint_model(m.glint.model_id).name);
     return fmt::format("shape '{}', material '{}' ({})", shape.name, m.name,
                        material_type_name(m.type));
 }

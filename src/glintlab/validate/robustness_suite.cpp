@@ -22,6 +22,14 @@
 namespace glintlab {
 namespace {
 
+// "key=value ..." of a model's parameter block, from its descriptor's table.
+std::string model_params_text(const GlintModelDescriptor& model, const GlintModelParams& params) {
+    std::string text;
+    for (const GlintParam& p : model.params)
+        text += (text.empty() ? "" : " ") + p.key + "=" + glint_param_value_text(p.get(params));
+    return text;
+}
+
 constexpr double kPi = 3.14159265358979323846;
 
 // How one model is swept. Parameter blocks are JSON as a scene writes them
@@ -164,19 +172,19 @@ Scene scene_for(const ModelSweep& m, const GlintModelInfo& info) {
             ++i;
         }
     }
-    if (info.environment_lights)
+    if (info.shades(GlintLightType::Environment))
         lights.push_back({{"type", "environment"}, {"radiance", {1e6, 1e6, 1e6}}});
-    if (info.directional_lights)
+    if (info.shades(GlintLightType::Directional))
         lights.push_back({{"type", "directional"},
                           {"direction", {0.3, 1.0, 0.2}},
                           {"irradiance", {1e3, 1e3, 1e3}},
                           {"solid_angle_sr", 6.8e-5}});
-    if (info.sphere_lights)
+    if (info.shades(GlintLightType::Sphere))
         lights.push_back({{"type", "sphere"},
                           {"center", {0.0, 5.0, 0.0}},
                           {"radius", 0.5},
                           {"radiance", {10.0, 10.0, 10.0}}});
-    if (info.point_lights)
+    if (info.shades(GlintLightType::Point))
         lights.push_back({{"type", "point"},
                           {"position", {0.0, 5.0, 5.0}},
                           {"intensity", {100.0, 100.0, 100.0}}});
@@ -310,7 +318,7 @@ RobustnessModelResult sweep_model(const ModelSweep& m, int64_t evaluations, uint
                         "{} = ({}, {}, {}) at material {} (block {}), alpha ({}, {}), log_density "
                         "{}, wo ({}, {}, {}), wi ({}, {}, {}), footprint uv ({}, {}) duvdx ({}, "
                         "{}) duvdy ({}, {})",
-                        what, v.x, v.y, v.z, mi, scene.materials[mi].glint.model_params.dump(),
+                        what, v.x, v.y, v.z, mi, model_params_text(*info, desc.params),
                         desc.alpha_x, desc.alpha_y, desc.log_density, wo.x, wo.y, wo.z, wi.x, wi.y,
                         wi.z, fp.uv.x, fp.uv.y, fp.duvdx.x, fp.duvdx.y, fp.duvdy.x, fp.duvdy.y);
             };
