@@ -23,6 +23,33 @@ void require_at_least(const char* shape, const char* key, int value, int minimum
         fail("{}: {} must be in [{}, {}], got {}", shape, key, minimum, kMaximum, value);
 }
 
+struct GridVertex {
+    glm::vec3 position, normal;
+};
+
+// The (columns + 1) × (rows + 1) vertices of a parametric surface sampled at
+// u = i / columns, v = j / rows (rows outer), uv = (u, v) · uv_scale; the
+// caller adds the triangles (add_grid_triangles).
+template <class Surface>
+TriangleMesh make_uv_grid(int columns, int rows, glm::vec2 uv_scale, Surface surface) {
+    TriangleMesh mesh;
+    const size_t count = static_cast<size_t>(columns + 1) * (rows + 1);
+    mesh.positions.reserve(count);
+    mesh.normals.reserve(count);
+    mesh.uvs.reserve(count);
+    for (int j = 0; j <= rows; ++j) {
+        const float v = static_cast<float>(j) / static_cast<float>(rows);
+        for (int i = 0; i <= columns; ++i) {
+            const float u = static_cast<float>(i) / static_cast<float>(columns);
+            const GridVertex g = surface(u, v);
+            mesh.positions.push_back(g.position);
+            mesh.normals.push_back(g.normal);
+            mesh.uvs.push_back(glm::vec2(u, v) * uv_scale);
+        }
+    }
+    return mesh;
+}
+
 // Emits the two triangles of every cell of a (columns+1) x (rows+1) vertex
 // grid laid out row-major, counter-clockwise when column index increases
 // along the first tangent and row index along the second.
@@ -61,24 +88,14 @@ TriangleMesh make_sphere(float radius, int segments_phi, int rings_theta) {
     require_positive("sphere", "radius", radius);
     require_at_least("sphere", "segments_phi", segments_phi, 3);
     require_at_least("sphere", "rings_theta", rings_theta, 2);
-    TriangleMesh mesh;
-    const size_t count = static_cast<size_t>(segments_phi + 1) * (rings_theta + 1);
-    mesh.positions.reserve(count);
-    mesh.normals.reserve(count);
-    mesh.uvs.reserve(count);
-    for (int j = 0; j <= rings_theta; ++j) {
-        const float v = static_cast<float>(j) / static_cast<float>(rings_theta);
-        const float theta = v * glm::pi<float>();
-        for (int i = 0; i <= segments_phi; ++i) {
-            const float u = static_cast<float>(i) / static_cast<float>(segments_phi);
+    TriangleMesh mesh =
+        make_uv_grid(segments_phi, rings_theta, glm::vec2(1.0f), [&](float u, float v) {
+            const float theta = v * glm::pi<float>();
             const float phi = u * glm::two_pi<float>();
             const glm::vec3 n(std::sin(theta) * std::cos(phi), std::cos(theta),
                               std::sin(theta) * std::sin(phi));
-            mesh.positions.push_back(radius * n);
-            mesh.normals.push_back(n);
-            mesh.uvs.emplace_back(u, v);
-        }
-    }
+            return GridVertex{radius * n, n};
+        });
     // cross(dp/dphi, dp/dtheta) points outward, so phi is the first grid
     // direction and theta the second.
     add_grid_triangles(mesh, segments_phi, rings_theta, /*pole_rows=*/true);
@@ -91,24 +108,14 @@ TriangleMesh make_torus(float major_radius, float minor_radius, int segments_maj
     require_positive("torus", "minor_radius", minor_radius);
     require_at_least("torus", "segments_major", segments_major, 3);
     require_at_least("torus", "segments_minor", segments_minor, 3);
-    TriangleMesh mesh;
-    const size_t count = static_cast<size_t>(segments_major + 1) * (segments_minor + 1);
-    mesh.positions.reserve(count);
-    mesh.normals.reserve(count);
-    mesh.uvs.reserve(count);
-    for (int j = 0; j <= segments_minor; ++j) {
-        const float v = static_cast<float>(j) / static_cast<float>(segments_minor);
-        const float b = v * glm::two_pi<float>();
-        for (int i = 0; i <= segments_major; ++i) {
-            const float u = static_cast<float>(i) / static_cast<float>(segments_major);
+    TriangleMesh mesh =
+        make_uv_grid(segments_major, segments_minor, uv_scale, [&](float u, float v) {
+            const float b = v * glm::two_pi<float>();
             const float a = u * glm::two_pi<float>();
             const glm::vec3 n(std::cos(b) * std::cos(a), std::sin(b), -std::cos(b) * std::sin(a));
             const glm::vec3 centre(major_radius * std::cos(a), 0.0f, -major_radius * std::sin(a));
-            mesh.positions.push_back(centre + minor_radius * n);
-            mesh.normals.push_back(n);
-            mesh.uvs.push_back(glm::vec2(u, v) * uv_scale);
-        }
-    }
+            return GridVertex{centre + minor_radius * n, n};
+        });
     // cross(dp/da, dp/db) points away from the tube axis.
     add_grid_triangles(mesh, segments_major, segments_minor, /*pole_rows=*/false);
     return mesh;
