@@ -559,7 +559,7 @@ void GpuRenderer::render(const Scene& scene) {
                 fail(
                     "OpenGL renderer: materials of two glint models ({}, {}) defer to the glint "
                     "layer in one frame",
-                    find_glint_model(layer_model)->name, m.glint.model);
+                    find_glint_model(layer_model)->name, find_glint_model(m.glint.model_id)->name);
             blur = true;
             layer_model = m.glint.model_id;
         }
