@@ -14,6 +14,7 @@ void add_view_command(CLI::App& app, int* status) {
         int frames = 0;
         std::string screenshot;
         std::string window_screenshot;
+        std::string panel_report;
         std::string res;
         std::optional<float> exposure;
         bool no_ui = false;
@@ -33,6 +34,9 @@ void add_view_command(CLI::App& app, int* status) {
         "(default glintlab_screenshot.png)");
     sub->add_option("--window-screenshot", a->window_screenshot,
                     "PNG of the whole window (panel included) after the last of --frames");
+    sub->add_option("--panel-report", a->panel_report,
+                    "JSON of the panel's rectangle and drawn items after the last of --frames "
+                    "(layout tests)");
     sub->add_option("--res", a->res, "Window size WxH (overrides the scene's film)");
     sub->add_option("--exposure", a->exposure, "Exposure in stops (overrides the scene)")
         ->check(CLI::Range(-20.0f, 20.0f));
@@ -57,10 +61,13 @@ void add_view_command(CLI::App& app, int* status) {
         if (a->exposure) scene.film.exposure = *a->exposure;
         if (!a->window_screenshot.empty() && a->frames == 0)
             fail("--window-screenshot needs --frames N (taken after frame N)");
+        if (!a->panel_report.empty() && a->frames == 0)
+            fail("--panel-report needs --frames N (written after frame N)");
         ViewerOptions o;
         o.frames = a->frames;
         o.screenshot = a->screenshot;
         o.window_screenshot = a->window_screenshot;
+        o.panel_report = a->panel_report;
         o.show_ui = !a->no_ui;
         o.dynamic_ibl = a->dynamic_ibl;
         run_viewer(std::move(scene), o);

@@ -25,7 +25,6 @@ namespace glintlab {
 class JsonObject;
 struct GlintLightingContext;
 struct Scene;
-struct ValidationReport;
 
 // The paper a model implements (or, for `smooth` and `explicit`, the papers
 // whose formulation it follows). `key` is the number the code's comments use
@@ -93,10 +92,12 @@ struct GlintExtraKey {
     std::function<glm::vec3*(GlintModelParams&)> colours;
 };
 
-// A model's validation suite: `glintlab validate NAME`.
+// A model's validation suite: `glintlab validate NAME`. Only the name: the
+// suites are research code (the glintlab_research library), and
+// validation_suites.cpp there maps each name to its function, so the runtime
+// library does not depend on them.
 struct GlintValidationSuite {
     std::string name;
-    ValidationReport (*run)(uint64_t seed) = nullptr;
 };
 
 struct GlintModelDescriptor {

@@ -7,6 +7,7 @@
 
 #include <cmath>
 #include <fstream>
+#include <set>
 #include <sstream>
 
 #include <fmt/format.h>
@@ -16,6 +17,7 @@
 #include "glintlab/glints/glint_panel_model.h"
 #include "glintlab/glints/model_docs.h"
 #include "glintlab/glints/registry.h"
+#include "glintlab/glints/validation_suites.h"
 #include "glintlab/scene/scene_loader.h"
 #if GLINTLAB_WITH_GL
 #include "glintlab/realtime/glint_programs.h"
@@ -124,6 +126,28 @@ TEST(ModelDescriptors, ListIsCompleteAndConsistent) {
             EXPECT_FALSE(p.doc.empty()) << m.name << "/" << p.key;
         }
     }
+}
+
+// A descriptor names its suite; the research library's table
+// (validation_suites.cpp) runs it. Every named suite has a runner there, and
+// every runner but the model-less `counting` belongs to a model, so
+// `glintlab validate` lists exactly the descriptors' suites plus counting.
+TEST(ModelDescriptors, EveryValidationSuiteNameHasARunner) {
+    const auto& suites = validation_suites();
+    std::set<std::string> named;
+    for (const GlintModelDescriptor& m : glint_models()) {
+        if (m.validation.name.empty()) continue;
+        named.insert(m.validation.name);
+        EXPECT_EQ(suites.count(m.validation.name), 1u) << m.name;
+    }
+    EXPECT_GE(named.size(), 7u);  // every model but smooth has a suite
+    for (const auto& [name, run] : suites) {
+        EXPECT_TRUE(run != nullptr) << name;
+        if (name != "counting") {
+            EXPECT_EQ(named.count(name), 1u) << name;
+        }
+    }
+    EXPECT_THROW(run_validation_suite("no-such-suite", 1), Error);
 }
 
 #if GLINTLAB_WITH_GL

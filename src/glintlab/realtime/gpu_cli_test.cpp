@@ -19,6 +19,7 @@
 #include "glintlab/realtime/gl_context.h"
 #include "glintlab/realtime/gpu_test_util.h"
 #include "glintlab/realtime/image_compare.h"
+#include "glintlab/realtime/viewer.h"
 
 namespace glintlab {
 namespace {
@@ -183,12 +184,11 @@ TEST(GpuCli, UnknownEglPlatformIsAClearError) {
 // reports from an "<unknown module>" (measured with a 20-line GLFW + ImGui
 // program), which no suppression can name; leak checking stays on for
 // everything else (and for our GL code in this process, through EGL).
-std::string view_under_xvfb(const std::string& args, RunResult* out) {
+std::string view_under_xvfb(const std::string& args, RunResult* out,
+                            const std::string& screen = "640x480x24") {
     if (run("command -v xvfb-run").status != 0) return "xvfb-run is not installed";
-    *out =
-        run("ASAN_OPTIONS=\"${ASAN_OPTIONS}:detect_leaks=0\" xvfb-run -a -s "
-            "\"-screen 0 640x480x24\" " +
-            cli() + " view " + args);
+    *out = run("ASAN_OPTIONS=\"${ASAN_OPTIONS}:detect_leaks=0\" xvfb-run -a -s \"-screen 0 " +
+               screen + "\" " + cli() + " view " + args);
     if (out->output.find("cannot create a window") != std::string::npos ||
         out->output.find("cannot initialise GLFW") != std::string::npos)
         return "no OpenGL 4.5 window under Xvfb: " + out->output;
@@ -273,6 +273,103 @@ TEST(GpuViewer, Kneiphof2025DynamicIblMatchesTheHeadlessRender) {
     const Image window = read_image(dir / "window.png");
     EXPECT_EQ(window.width, 96);
     EXPECT_EQ(window.height, 80);
+}
+
+TEST(ViewerPanelLayout, FitsTheWindowAndLeavesItsCentreClear) {
+    for (const auto& [w, h] :
+         {std::pair{640, 480}, {1024, 768}, {1920, 1080}, {3840, 2160}, std::pair{96, 80}}) {
+        const ViewerPanelLayout l = viewer_panel_layout(w, h);
+        EXPECT_GE(l.x, 0.0f);
+        EXPECT_LE(l.x + l.width, 0.35f * static_cast<float>(w)) << w << "x" << h;
+        EXPECT_LE(l.y + l.max_height, static_cast<float>(h)) << w << "x" << h;
+        EXPECT_GT(l.width, 0.0f);
+        if (w >= 1000) {
+            EXPECT_GE(l.width, 280.0f) << w;  // room for a widget and its label
+        }
+        EXPECT_LE(l.width, 420.0f);
+    }
+}
+
+// The panel at two window sizes on sphere.json: it lies inside the window
+// at the left edge, leaves the window's centre uncovered (the centre pixel
+// of the window screenshot is the scene's: it equals the frame screenshot's
+// within the window-vs-PNG encoding limit of
+// ScreenshotUnderXvfbMatchesTheHeadlessRender), no drawn item runs past the
+// panel's content region (a clipped label or line would), the model switcher
+// is the first widget and visible without scrolling, and the timing label
+// counts the frames actually in the median (2 here, < 60).
+TEST(GpuViewer, PanelFitsTheWindowUnderXvfb) {
+    GLINTLAB_REQUIRE_GL();
+    const std::filesystem::path scene =
+        std::filesystem::path(GLINTLAB_SOURCE_DIR) / "scenes" / "sphere.json";
+    for (const auto& [w, h] : {std::pair{1024, 768}, std::pair{1920, 1080}}) {
+        SCOPED_TRACE(std::to_string(w) + "x" + std::to_string(h));
+        testing::ScratchDir dir;
+        RunResult viewer;
+        const int frames = 3;
+        const std::string why = view_under_xvfb(
+            scene.string() + " --frames " + std::to_string(frames) + " --res " + std::to_string(w) +
+                "x" + std::to_string(h) + " --screenshot " + (dir / "frame.png").string() +
+                " --window-screenshot " + (dir / "window.png").string() + " --panel-report " +
+                (dir / "panel.json").string(),
+            &viewer, "2048x1152x24");
+        if (!why.empty()) GTEST_SKIP() << why;
+        ASSERT_EQ(viewer.status, 0) << viewer.output;
+        const nlohmann::json r = nlohmann::json::parse(std::ifstream(dir / "panel.json"));
+        ASSERT_EQ(r["window"][0].get<int>(), w);
+        ASSERT_EQ(r["window"][1].get<int>(), h);
+        EXPECT_EQ(r["timing_frames"].get<int>(), frames - 1);  // frames before the last
+        const auto p = r["panel"].get<std::array<float, 4>>();
+        EXPECT_GE(p[0], 0.0f);
+        EXPECT_GE(p[1], 0.0f);
+        EXPECT_LE(p[2], 0.35f * static_cast<float>(w));  // left of the centre, with a margin
+        EXPECT_LE(p[3], static_cast<float>(h));
+        EXPECT_GT(p[3] - p[1], 100.0f);  // not collapsed to its title bar
+        const float content = r["content_max_x"].get<float>();
+        EXPECT_LE(content, p[2]);
+        ASSERT_FALSE(r["items"].empty());
+        EXPECT_EQ(r["items"][0]["label"], "material \"glitter\"");
+        EXPECT_EQ(r["items"][1]["label"], "model");
+        EXPECT_TRUE(r["items"][1]["visible"].get<bool>());
+        int visible = 0;
+        bool timing_label = false;
+        for (const nlohmann::json& item : r["items"]) {
+            const auto rect = item["rect"].get<std::array<float, 4>>();
+            // ImGui rectangles are in whole pixels; 0.5 absorbs rounding.
+            EXPECT_LE(rect[2], content + 0.5f) << item["label"];
+            EXPECT_GE(rect[0], p[0]) << item["label"];
+            if (item["visible"].get<bool>()) {
+                ++visible;
+                EXPECT_LE(rect[3], p[3] + 0.5f) << item["label"];
+            }
+            const std::string label = item["label"];
+            if (label.find("median of") != std::string::npos) {
+                timing_label = true;
+                EXPECT_NE(label.find("median of " + std::to_string(frames - 1) + " frames"),
+                          std::string::npos)
+                    << label;
+            }
+        }
+        EXPECT_GT(visible, 10);
+        EXPECT_TRUE(timing_label);
+        const Image window = read_image(dir / "window.png");
+        const Image frame = read_image(dir / "frame.png");
+        ASSERT_EQ(window.width, w);
+        ASSERT_EQ(frame.width, w);
+        // The 65 x 65 pixels about the centre: the sphere's glints (mean
+        // above the black background), and the same in the window as in the
+        // frame: GPU vs CPU bloom and two 8-bit encodings differ by < 1% in
+        // the mean (ScreenshotUnderXvfbMatchesTheHeadlessRender); the panel
+        // (background alpha 0.8) over them would darken them by ~80%.
+        double mean_window = 0.0, mean_frame = 0.0;
+        for (int y = h / 2 - 32; y <= h / 2 + 32; ++y)
+            for (int x = w / 2 - 32; x <= w / 2 + 32; ++x) {
+                mean_window += luminance(window.at(x, y));
+                mean_frame += luminance(frame.at(x, y));
+            }
+        EXPECT_GT(mean_frame / (65.0 * 65.0), 0.005);
+        EXPECT_NEAR(mean_window / mean_frame, 1.0, 0.05);
+    }
 }
 
 }  // namespace

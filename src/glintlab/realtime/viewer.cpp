@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <deque>
+#include <fstream>
 #include <string>
 #include <vector>
 
@@ -13,6 +14,7 @@
 #include <backends/imgui_impl_opengl3.h>
 #include <fmt/format.h>
 #include <imgui.h>
+#include <nlohmann/json.hpp>
 
 #include "glintlab/core/bloom.h"
 #include "glintlab/core/error.h"
@@ -84,16 +86,53 @@ std::string light_label(const Light& light, size_t i) {
     return fmt::format("light {}: environment", i);
 }
 
-void slider(const char* label, float* v, float lo, float hi, bool log_scale = false) {
-    ImGui::SliderFloat(label, v, lo, hi, "%.4g",
+// What the panel drew this frame, for --panel-report (ViewerPanelReport):
+// every item's rectangle and the window's content region.
+ViewerPanelReport* g_report = nullptr;
+
+// Records the last item (text or widget with its label) under `what`.
+void note(const std::string& what) {
+    if (g_report == nullptr) return;
+    const ImVec2 lo = ImGui::GetItemRectMin(), hi = ImGui::GetItemRectMax();
+    g_report->items.push_back({what, lo.x, lo.y, hi.x, hi.y, ImGui::IsItemVisible()});
+}
+
+// A text line that wraps at the panel's edge instead of running past it.
+void text(const std::string& s) {
+    ImGui::TextWrapped("%s", s.c_str());
+    note(s);
+}
+
+// The label to give the next widget, `widget_w` wide: its own where it fits
+// right of the widget; otherwise the label is drawn as a wrapped line above
+// and the widget, given the full row, gets a hidden one ("##label").
+std::string fit_label(const std::string& label, float widget_w) {
+    const float need = widget_w + ImGui::GetStyle().ItemInnerSpacing.x +
+                       ImGui::CalcTextSize(label.c_str(), nullptr, true).x;
+    if (need <= ImGui::GetContentRegionAvail().x) return label;
+    text(label);
+    ImGui::SetNextItemWidth(-FLT_MIN);
+    return "##" + label;
+}
+
+// fit_label for a widget of the pushed item width (sliders, combos).
+std::string fit_label(const std::string& label) {
+    return fit_label(label, ImGui::CalcItemWidth());
+}
+
+void slider(const char* name, float* v, float lo, float hi, bool log_scale = false) {
+    const std::string label = fit_label(name);
+    ImGui::SliderFloat(label.c_str(), v, lo, hi, "%.4g",
                        log_scale ? ImGuiSliderFlags_Logarithmic : ImGuiSliderFlags_None);
+    note(name);
     *v = std::clamp(*v, lo, hi);  // the scene loader's ranges
 }
 
 // A combo box over `items`; true when the selection changed.
-bool combo(const char* label, int* index, const std::vector<std::string>& items) {
+bool combo(const char* name, int* index, const std::vector<std::string>& items) {
     bool changed = false;
-    if (ImGui::BeginCombo(label, items[static_cast<size_t>(*index)].c_str())) {
+    const std::string label = fit_label(name);
+    if (ImGui::BeginCombo(label.c_str(), items[static_cast<size_t>(*index)].c_str())) {
         for (size_t i = 0; i < items.size(); ++i)
             if (ImGui::Selectable(items[i].c_str(), static_cast<int>(i) == *index)) {
                 changed = static_cast<int>(i) != *index;
@@ -101,31 +140,13 @@ bool combo(const char* label, int* index, const std::vector<std::string>& items)
             }
         ImGui::EndCombo();
     }
+    note(name);
     return changed;
 }
 
-// Material controls; returns nothing, edits in place within the loader's ranges.
-void material_panel(MaterialDesc& m) {
-    if (m.type != MaterialDesc::Type::Glint) {
-        const bool diffuse_part =
-            m.type == MaterialDesc::Type::Diffuse || m.type == MaterialDesc::Type::Plastic;
-        if (diffuse_part) ImGui::ColorEdit3("albedo", &m.albedo.x);
-        if (m.type == MaterialDesc::Type::Diffuse) return;
-        int ndf = m.ndf == NdfType::GGX ? 1 : 0;
-        if (ImGui::Combo("ndf", &ndf, "beckmann\0ggx\0"))
-            m.ndf = ndf == 1 ? NdfType::GGX : NdfType::Beckmann;
-        slider("alpha x", &m.alpha_x, 1e-3f, 1.0f, true);
-        slider("alpha y", &m.alpha_y, 1e-3f, 1.0f, true);
-        if (m.type == MaterialDesc::Type::Conductor) {
-            ImGui::DragFloat3("eta", &m.eta.x, 0.01f, 0.01f, 10.0f);
-            ImGui::DragFloat3("k", &m.k.x, 0.01f, 0.0f, 20.0f);
-        } else {
-            slider("eta", &m.eta.x, 1.0f, 3.0f);
-        }
-        return;
-    }
-    GlintDesc& g = m.glint;
-    // Model switcher: same material, any model the GPU implements.
+// The model switcher: same material, any model the GPU implements (with
+// that model's default parameters).
+void model_switcher(GlintDesc& g) {
     std::vector<const GlintModelInfo*> models;
     int current = 0;
     for (const GlintModelInfo& info : glint_models())
@@ -141,27 +162,67 @@ void material_panel(MaterialDesc& m) {
                 gl::reset_model_params(g, models[i]->id);
         ImGui::EndCombo();
     }
+    note("model");
+}
+
+// Material controls; edits in place within the loader's ranges.
+void material_panel(MaterialDesc& m) {
+    if (m.type != MaterialDesc::Type::Glint) {
+        const bool diffuse_part =
+            m.type == MaterialDesc::Type::Diffuse || m.type == MaterialDesc::Type::Plastic;
+        if (diffuse_part) {
+            ImGui::ColorEdit3("albedo", &m.albedo.x);
+            note("albedo");
+        }
+        if (m.type == MaterialDesc::Type::Diffuse) return;
+        int ndf = m.ndf == NdfType::GGX ? 1 : 0;
+        if (ImGui::Combo("ndf", &ndf, "beckmann\0ggx\0"))
+            m.ndf = ndf == 1 ? NdfType::GGX : NdfType::Beckmann;
+        note("ndf");
+        slider("alpha x", &m.alpha_x, 1e-3f, 1.0f, true);
+        slider("alpha y", &m.alpha_y, 1e-3f, 1.0f, true);
+        if (m.type == MaterialDesc::Type::Conductor) {
+            ImGui::DragFloat3("eta", &m.eta.x, 0.01f, 0.01f, 10.0f);
+            note("eta");
+            ImGui::DragFloat3("k", &m.k.x, 0.01f, 0.0f, 20.0f);
+            note("k");
+        } else {
+            slider("eta", &m.eta.x, 1.0f, 3.0f);
+        }
+        return;
+    }
+    GlintDesc& g = m.glint;
     int ndf = g.ndf == NdfType::GGX ? 1 : 0;
     if (g.model_id != GlintModelId::Chermain2020 && ImGui::Combo("ndf", &ndf, "beckmann\0ggx\0"))
         g.ndf = ndf == 1 ? NdfType::GGX : NdfType::Beckmann;
+    if (g.model_id != GlintModelId::Chermain2020) note("ndf");
     slider("alpha x", &g.alpha_x, 1e-3f, 1.0f, true);
     slider("alpha y", &g.alpha_y, 1e-3f, 1.0f, true);
     slider("log density", &g.log_density, -20.0f, 60.0f);
     int seed = static_cast<int>(g.seed & 0x7fffffffu);
     if (ImGui::InputInt("seed", &seed)) g.seed = static_cast<uint32_t>(std::max(seed, 0));
+    note("seed");
     ImGui::ColorEdit3("colour", &g.color.x);
+    note("colour");
     int fresnel = static_cast<int>(g.fresnel.mode);
     if (ImGui::Combo("fresnel", &fresnel, "none\0schlick\0conductor\0dielectric\0"))
         g.fresnel.mode = static_cast<FresnelDesc::Mode>(fresnel);
-    if (g.fresnel.mode == FresnelDesc::Mode::Schlick) ImGui::ColorEdit3("F0", &g.fresnel.f0.x);
+    note("fresnel");
+    if (g.fresnel.mode == FresnelDesc::Mode::Schlick) {
+        ImGui::ColorEdit3("F0", &g.fresnel.f0.x);
+        note("F0");
+    }
     if (g.fresnel.mode == FresnelDesc::Mode::Conductor) {
         ImGui::DragFloat3("eta", &g.fresnel.eta.x, 0.01f, 0.01f, 10.0f);
+        note("eta");
         ImGui::DragFloat3("k", &g.fresnel.k.x, 0.01f, 0.0f, 20.0f);
+        note("k");
     }
     if (g.fresnel.mode == FresnelDesc::Mode::Dielectric) {
         slider("eta", &g.fresnel.eta.x, 1.0f, 3.0f);
         // The diffuse base lies under the dielectric coat (glint_bxdf.h).
         ImGui::ColorEdit3("base albedo", &g.base_albedo.x);
+        note("base albedo");
     } else {
         g.base_albedo = glm::vec3(0.0f);  // the loader's rule: no coat, no base
     }
@@ -171,22 +232,29 @@ void material_panel(MaterialDesc& m) {
     // (kneiphof2025's black level: ~0.5 s each unless the dynamic IBL is
     // on), so that dragging does not prefilter every intermediate value.
     for (GlintPanelWidget& w : glint_panel_model(g)) {
-        const char* label = w.key.c_str();
+        // Checkboxes are a square, every other widget the pushed width.
+        const bool decades = w.type == GlintParamType::Number && w.ui == GlintParamUi::Decades;
+        const std::string fitted = w.type == GlintParamType::Bool
+                                       ? fit_label(w.key, ImGui::GetFrameHeight())
+                                       : fit_label(decades ? w.key + " 10^" : w.key);
+        const char* label = fitted.c_str();
         switch (w.type) {
             case GlintParamType::Number: {
                 float v = static_cast<float>(std::get<double>(w.value));
-                if (w.ui == GlintParamUi::Decades) {
+                if (decades) {
                     int decade = static_cast<int>(std::lround(std::log10(v)));
-                    if (ImGui::SliderInt(fmt::format("{} 10^", w.key).c_str(), &decade,
+                    if (ImGui::SliderInt(label, &decade,
                                          static_cast<int>(std::ceil(std::log10(w.min))),
                                          static_cast<int>(std::floor(std::log10(w.max)))))
                         w.set(static_cast<double>(std::pow(10.0f, static_cast<float>(decade))));
+                    note(w.key);
                 } else {
                     const float lo = static_cast<float>(w.min), hi = static_cast<float>(w.max);
                     if (ImGui::SliderFloat(label, &v, lo, hi, "%.4g",
                                            w.ui == GlintParamUi::Log ? ImGuiSliderFlags_Logarithmic
                                                                      : ImGuiSliderFlags_None))
                         w.set(static_cast<double>(std::clamp(v, lo, hi)));
+                    note(w.key);
                 }
                 break;
             }
@@ -202,11 +270,13 @@ void material_panel(MaterialDesc& m) {
                                             static_cast<int>(w.max))) {
                     w.set(v);
                 }
+                if (w.integer_values.empty()) note(w.key);
                 break;
             }
             case GlintParamType::Bool: {
                 bool v = std::get<bool>(w.value);
                 if (ImGui::Checkbox(label, &v)) w.set(v);
+                note(w.key);
                 break;
             }
             case GlintParamType::Enum: {
@@ -221,9 +291,13 @@ void material_panel(MaterialDesc& m) {
     }
     // Colour lists outside the table (chermain2020's colour table).
     for (const GlintPanelColours& c : glint_panel_colours(g)) {
-        ImGui::SliderInt(c.key.c_str(), c.count, 0, c.max_count);
-        for (int i = 0; i < *c.count; ++i)
-            ImGui::ColorEdit3(fmt::format("{} {}", c.key, i).c_str(), &c.colours[i].x);
+        ImGui::SliderInt(fit_label(c.key).c_str(), c.count, 0, c.max_count);
+        note(c.key);
+        for (int i = 0; i < *c.count; ++i) {
+            const std::string key = fmt::format("{} {}", c.key, i);
+            ImGui::ColorEdit3(key.c_str(), &c.colours[i].x);
+            note(key);
+        }
     }
 }
 
@@ -254,6 +328,22 @@ void write_window(int w, int h, const std::filesystem::path& path) {
     write_png(image, path);
 }
 
+void write_panel_report(const ViewerPanelReport& r, const std::filesystem::path& path) {
+    make_parent(path);
+    nlohmann::json items = nlohmann::json::array();
+    for (const ViewerPanelReport::Item& i : r.items)
+        items.push_back(
+            {{"label", i.label}, {"rect", {i.x0, i.y0, i.x1, i.y1}}, {"visible", i.visible}});
+    const nlohmann::json j = {{"window", {r.window_width, r.window_height}},
+                              {"panel", {r.panel[0], r.panel[1], r.panel[2], r.panel[3]}},
+                              {"content_max_x", r.content_max_x},
+                              {"timing_frames", r.timing_frames},
+                              {"items", items}};
+    std::ofstream out(path);
+    out << j.dump(1) << "\n";
+    if (!out) fail("{}: cannot write the panel report", path.string());
+}
+
 void write_screenshot(const GpuRenderer& renderer, const Scene& scene,
                       const std::filesystem::path& path) {
     make_parent(path);
@@ -264,6 +354,17 @@ void write_screenshot(const GpuRenderer& renderer, const Scene& scene,
 }
 
 }  // namespace
+
+ViewerPanelLayout viewer_panel_layout(int fb_w, int fb_h) {
+    const float w = static_cast<float>(fb_w), h = static_cast<float>(fb_h);
+    ViewerPanelLayout l;
+    l.x = l.y = std::min(8.0f, 0.01f * w);
+    // 28% of the width within [280, 420] px, never more than 35% of the
+    // window: the scene's centre stays clear.
+    l.width = std::floor(std::min(std::clamp(0.28f * w, 280.0f, 420.0f), 0.35f * w - l.x));
+    l.max_height = std::max(h - 2.0f * l.y, 1.0f);
+    return l;
+}
 
 void run_viewer(Scene scene, const ViewerOptions& options) {
     Glfw glfw;
@@ -348,6 +449,7 @@ void run_viewer(Scene scene, const ViewerOptions& options) {
         bool take_shot = p_down && !p_was_down && !io.WantCaptureKeyboard;
         p_was_down = p_down;
 
+        const bool last = options.frames > 0 && frame + 1 >= options.frames;
         renderer.set_environment(env_scale, env_rotation);
         renderer.render(scene);
 
@@ -371,68 +473,122 @@ void run_viewer(Scene scene, const ViewerOptions& options) {
             ImGui_ImplOpenGL3_NewFrame();
             ImGui_ImplGlfw_NewFrame();
             ImGui::NewFrame();
-            ImGui::SetNextWindowPos(ImVec2(8, 8), ImGuiCond_FirstUseEver);
-            ImGui::SetNextWindowSize(ImVec2(340.0f, 0.45f * static_cast<float>(fb_h)),
-                                     ImGuiCond_FirstUseEver);
+            // Re-laid out every frame from the framebuffer: a resized window
+            // gets a panel that fits it (viewer_panel_layout).
+            const ViewerPanelLayout layout = viewer_panel_layout(fb_w, fb_h);
+            ImGui::SetNextWindowPos(ImVec2(layout.x, layout.y), ImGuiCond_Always);
+            ImGui::SetNextWindowSizeConstraints(ImVec2(layout.width, 0.0f),
+                                                ImVec2(layout.width, layout.max_height));
             ImGui::SetNextWindowBgAlpha(0.8f);
-            ImGui::Begin("glintlab");
-            ImGui::PushItemWidth(170.0f);
-            ImGui::TextUnformatted(gl_description().c_str());
-            ImGui::Text("GPU ms, median of 60 frames (GL_TIME_ELAPSED)");
-            ImGui::Text("shadow %.3f  background %.3f  forward %.3f", shadow_ms.median(),
-                        background_ms.median(), forward_ms.median());
-            ImGui::Text("wang2020 blur %.3f  bloom %.3f  display %.3f", blur_ms.median(),
-                        bloom_ms.median(), display_ms.median());
-            if (ImGui::Checkbox("shadows", &shadows)) renderer.set_shadows(shadows);
-            ImGui::SliderFloat("exposure (stops)", &scene.film.exposure, -10.0f, 10.0f);
-            if (ImGui::CollapsingHeader("bloom")) {
-                slider("strength", &scene.film.bloom.strength, 0.0f, 1.0f);
-                slider("radius (px)", &scene.film.bloom.radius_px, 0.5f, 64.0f);
-                slider("threshold", &scene.film.bloom.threshold, 0.0f, 100.0f);
-            }
-            if (ImGui::Button("screenshot (P)")) take_shot = true;
-            if (!status.empty()) ImGui::TextUnformatted(status.c_str());
+            ViewerPanelReport report;
+            report.window_width = fb_w;
+            report.window_height = fb_h;
+            const bool want_report = last && !options.panel_report.empty();
+            g_report = want_report ? &report : nullptr;
+            ImGui::Begin("glintlab", nullptr,
+                         ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoMove);
+            // Widgets take 55% of the row, their labels the rest.
+            ImGui::PushItemWidth(std::floor(0.55f * ImGui::GetContentRegionAvail().x));
             if (!scene.materials.empty() &&
-                ImGui::CollapsingHeader("material", ImGuiTreeNodeFlags_DefaultOpen)) {
+                ImGui::CollapsingHeader("Model", ImGuiTreeNodeFlags_DefaultOpen)) {
                 selected_material =
                     std::clamp(selected_material, 0, static_cast<int>(scene.materials.size()) - 1);
-                if (scene.materials.size() > 1)
+                if (scene.materials.size() > 1) {
                     ImGui::SliderInt("material", &selected_material, 0,
                                      static_cast<int>(scene.materials.size()) - 1);
+                    note("material");
+                }
                 MaterialDesc& m = scene.materials[static_cast<size_t>(selected_material)];
-                ImGui::Text("%s", m.name.c_str());
+                text(fmt::format("material \"{}\"", m.name));
+                if (m.type == MaterialDesc::Type::Glint)
+                    model_switcher(m.glint);
+                else
+                    text("not a glint material: no model to switch");
+            }
+            if (!scene.materials.empty() &&
+                ImGui::CollapsingHeader("Material parameters", ImGuiTreeNodeFlags_DefaultOpen)) {
+                MaterialDesc& m = scene.materials[static_cast<size_t>(selected_material)];
                 material_panel(m);
                 if (m.type == MaterialDesc::Type::Glint &&
-                    m.glint.model_id == GlintModelId::Deliot2023 &&
-                    ImGui::Checkbox("noise texture (000 6.3)", &noise_texture))
-                    renderer.set_model_option("deliot2023", "noise_texture", noise_texture);
+                    m.glint.model_id == GlintModelId::Deliot2023) {
+                    if (ImGui::Checkbox("noise texture (000 6.3)", &noise_texture))
+                        renderer.set_model_option("deliot2023", "noise_texture", noise_texture);
+                    note("noise texture (000 6.3)");
+                }
                 // 003 §5: the prefilter as compute passes every frame.
                 if (m.type == MaterialDesc::Type::Glint &&
-                    m.glint.model_id == GlintModelId::Kneiphof2025 &&
-                    ImGui::Checkbox("dynamic IBL (003 5)", &dynamic_ibl))
-                    renderer.set_model_option("kneiphof2025", "dynamic_environment", dynamic_ibl);
+                    m.glint.model_id == GlintModelId::Kneiphof2025) {
+                    if (ImGui::Checkbox("dynamic IBL (003 5)", &dynamic_ibl))
+                        renderer.set_model_option("kneiphof2025", "dynamic_environment",
+                                                  dynamic_ibl);
+                    note("dynamic IBL (003 5)");
+                }
             }
-            if (ImGui::CollapsingHeader("lights")) {
+            if (ImGui::CollapsingHeader("Lights")) {
                 for (size_t i = 0; i < scene.lights.size(); ++i) {
+                    if (std::holds_alternative<EnvironmentLight>(scene.lights[i]))
+                        continue;  // under Environment
                     ImGui::PushID(static_cast<int>(i));
-                    ImGui::TextUnformatted(light_label(scene.lights[i], i).c_str());
+                    text(light_label(scene.lights[i], i));
                     if (auto* l = std::get_if<PointLight>(&scene.lights[i])) {
                         ImGui::DragFloat3("position", &l->position.x, 0.01f);
+                        note("position");
                         ImGui::DragFloat3("intensity W/sr", &l->intensity.x, 0.01f, 0.0f, 1e6f);
+                        note("intensity W/sr");
                     } else if (auto* l = std::get_if<DirectionalLight>(&scene.lights[i])) {
                         if (ImGui::DragFloat3("direction", &l->direction.x, 0.01f, -1.0f, 1.0f) &&
                             glm::dot(l->direction, l->direction) > 1e-8f)
                             l->direction = glm::normalize(l->direction);
+                        note("direction");
                         ImGui::DragFloat3("irradiance W/m2", &l->irradiance.x, 0.01f, 0.0f, 1e6f);
+                        note("irradiance W/m2");
                     } else if (auto* l = std::get_if<SphereLight>(&scene.lights[i])) {
                         ImGui::DragFloat3("radiance", &l->radiance.x, 0.01f, 0.0f, 1e6f);
-                    } else if (renderer.has_environment()) {
-                        slider("scale", &env_scale, 0.0f, 100.0f);
-                        slider("rotation (deg)", &env_rotation, -180.0f, 180.0f);
+                        note("radiance");
                     }
                     ImGui::PopID();
                 }
             }
+            if (ImGui::CollapsingHeader("Environment")) {
+                if (renderer.has_environment()) {
+                    slider("scale", &env_scale, 0.0f, 100.0f);
+                    slider("rotation (deg)", &env_rotation, -180.0f, 180.0f);
+                } else {
+                    text("no environment light in this scene");
+                }
+            }
+            if (ImGui::CollapsingHeader("View")) {
+                if (ImGui::Checkbox("shadows", &shadows)) renderer.set_shadows(shadows);
+                note("shadows");
+                slider("exposure (stops)", &scene.film.exposure, -10.0f, 10.0f);
+                text("bloom");
+                slider("strength", &scene.film.bloom.strength, 0.0f, 1.0f);
+                slider("radius (px)", &scene.film.bloom.radius_px, 0.5f, 64.0f);
+                slider("threshold", &scene.film.bloom.threshold, 0.0f, 100.0f);
+                if (ImGui::Button("screenshot (P)")) take_shot = true;
+                note("screenshot (P)");
+                if (!status.empty()) text(status);
+            }
+            if (ImGui::CollapsingHeader("Timings", ImGuiTreeNodeFlags_DefaultOpen)) {
+                text(gl_description());
+                // The history holds the frames so far, up to 60.
+                report.timing_frames = static_cast<int>(shadow_ms.ms.size());
+                text(fmt::format("GPU ms (GL_TIME_ELAPSED), median of {} frame{}",
+                                 report.timing_frames, report.timing_frames == 1 ? "" : "s"));
+                if (report.timing_frames > 0) {
+                    text(fmt::format("shadow {:.3f}", shadow_ms.median()));
+                    text(fmt::format("background {:.3f}", background_ms.median()));
+                    text(fmt::format("forward {:.3f}", forward_ms.median()));
+                    text(fmt::format("wang2020 blur {:.3f}", blur_ms.median()));
+                    text(fmt::format("bloom {:.3f}", bloom_ms.median()));
+                    text(fmt::format("display {:.3f}", display_ms.median()));
+                }
+            }
+            const ImVec2 pos = ImGui::GetWindowPos(), size = ImGui::GetWindowSize();
+            report.panel = {pos.x, pos.y, pos.x + size.x, pos.y + size.y};
+            report.content_max_x = pos.x + ImGui::GetWindowContentRegionMax().x;
+            g_report = nullptr;
+            if (want_report) write_panel_report(report, options.panel_report);
             ImGui::PopItemWidth();
             ImGui::End();
             ImGui::Render();
@@ -448,7 +604,6 @@ void run_viewer(Scene scene, const ViewerOptions& options) {
         bloom_ms.add(bloom_timer.elapsed_ms());
         display_ms.add(display_timer.elapsed_ms());
 
-        const bool last = options.frames > 0 && frame + 1 >= options.frames;
         if (take_shot || (last && !options.screenshot.empty())) {
             write_screenshot(renderer, scene, shot_path);
             status = "saved " + shot_path.string();

@@ -4,9 +4,7 @@
 
 #include "glintlab/core/error.h"
 #include "glintlab/core/json_reader.h"
-#include "glintlab/glints/chermain2020/validate_chermain2020.h"
 #include "glintlab/glints/glint_model_descriptor.h"
-#include "glintlab/validate/report.h"
 
 namespace glintlab {
 namespace {
@@ -69,11 +67,7 @@ GlintModelDescriptor chermain2020_descriptor() {
     colours.colours = [](GlintModelParams& v) { return std::get<P>(v).colour_table.data(); };
     d.extra_keys = {colours};
     d.check = check_chermain2020;
-    d.validation = {"chermain2020", [](uint64_t seed) {
-                        Chermain2020ValidationOptions o;
-                        o.seed = seed;
-                        return validate_chermain2020(o);
-                    }};
+    d.validation = {"chermain2020"};  // run by the research library (validation_suites.h)
     return d;
 }
 

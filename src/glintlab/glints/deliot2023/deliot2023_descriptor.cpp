@@ -1,8 +1,6 @@
 // deliot2023's descriptor (glint_model_descriptor.h): point and directional
 // lights only (000 §8: the counting ignores a light's extent).
-#include "glintlab/glints/deliot2023/validate_deliot2023.h"
 #include "glintlab/glints/glint_model_descriptor.h"
-#include "glintlab/validate/report.h"
 
 namespace glintlab {
 
@@ -34,11 +32,7 @@ GlintModelDescriptor deliot2023_descriptor() {
         gp::boolean("original_defects", &P::original_defects,
                     "reproduce the original HLSL's defects (docs/MODELS.md) for comparisons"),
     };
-    d.validation = {"deliot2023", [](uint64_t seed) {
-                        Deliot2023ValidationOptions o;
-                        o.seed = seed;
-                        return validate_deliot2023(o);
-                    }};
+    d.validation = {"deliot2023"};  // run by the research library (validation_suites.h)
     return d;
 }
 

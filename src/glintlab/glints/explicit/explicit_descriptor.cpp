@@ -6,9 +6,7 @@
 #include "glintlab/core/error.h"
 #include "glintlab/core/json_reader.h"
 #include "glintlab/glints/explicit/explicit_model.h"
-#include "glintlab/glints/explicit/validate_explicit.h"
 #include "glintlab/glints/glint_model_descriptor.h"
-#include "glintlab/validate/report.h"
 
 namespace glintlab {
 namespace {
@@ -59,11 +57,7 @@ GlintModelDescriptor explicit_descriptor() {
     d.check = check_explicit;
     d.shades_light = explicit_shades_light;
     d.light_radiance = explicit_light_radiance;
-    d.validation = {"explicit", [](uint64_t seed) {
-                        ExplicitValidationOptions o;
-                        o.seed = seed;
-                        return validate_explicit(o);
-                    }};
+    d.validation = {"explicit"};  // run by the research library (validation_suites.h)
     return d;
 }
 

@@ -7,8 +7,6 @@
 #include "glintlab/core/json_reader.h"
 #include "glintlab/glints/glint_model_descriptor.h"
 #include "glintlab/glints/jakob2014/jakob2014.h"
-#include "glintlab/glints/jakob2014/validate_jakob2014.h"
-#include "glintlab/validate/report.h"
 
 namespace glintlab {
 namespace {
@@ -62,11 +60,7 @@ GlintModelDescriptor jakob2014_descriptor() {
                    GlintParamUi::Log),
     };
     d.check = check_jakob2014;
-    d.validation = {"jakob2014", [](uint64_t seed) {
-                        Jakob2014ValidationOptions o;
-                        o.seed = seed;
-                        return validate_jakob2014(o);
-                    }};
+    d.validation = {"jakob2014"};  // run by the research library (validation_suites.h)
     return d;
 }
 

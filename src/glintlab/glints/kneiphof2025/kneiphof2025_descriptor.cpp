@@ -5,8 +5,6 @@
 #include "glintlab/core/json_reader.h"
 #include "glintlab/glints/glint_model_descriptor.h"
 #include "glintlab/glints/kneiphof2025/kneiphof2025.h"
-#include "glintlab/glints/kneiphof2025/validate_kneiphof2025.h"
-#include "glintlab/validate/report.h"
 
 namespace glintlab {
 namespace {
@@ -71,11 +69,7 @@ GlintModelDescriptor kneiphof2025_descriptor() {
     d.check = check_kneiphof2025;
     d.shades_light = kneiphof2025_shades_light;
     d.light_radiance = kneiphof2025_light_radiance;
-    d.validation = {"kneiphof2025", [](uint64_t seed) {
-                        Kneiphof2025ValidationOptions o;
-                        o.seed = seed;
-                        return validate_kneiphof2025(o);
-                    }};
+    d.validation = {"kneiphof2025"};  // run by the research library (validation_suites.h)
     return d;
 }
 

@@ -3,9 +3,7 @@
 // no sphere lights (001 has none).
 #include "glintlab/core/json_reader.h"
 #include "glintlab/glints/glint_model_descriptor.h"
-#include "glintlab/glints/wang2020/validate_wang2020.h"
 #include "glintlab/glints/wang2020/wang2020_model.h"
-#include "glintlab/validate/report.h"
 
 namespace glintlab {
 namespace {
@@ -64,11 +62,7 @@ GlintModelDescriptor wang2020_descriptor() {
     d.check = check_wang2020;
     d.shades_light = wang2020_shades_light;
     d.light_radiance = wang2020_light_radiance;
-    d.validation = {"wang2020", [](uint64_t seed) {
-                        Wang2020ValidationOptions o;
-                        o.seed = seed;
-                        return validate_wang2020(o);
-                    }};
+    d.validation = {"wang2020"};  // run by the research library (validation_suites.h)
     return d;
 }
 

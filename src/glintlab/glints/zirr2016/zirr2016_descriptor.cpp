@@ -1,8 +1,6 @@
 // zirr2016's descriptor (glint_model_descriptor.h): point and directional
 // lights only (000 §3: counts for one half vector).
 #include "glintlab/glints/glint_model_descriptor.h"
-#include "glintlab/glints/zirr2016/validate_zirr2016.h"
-#include "glintlab/validate/report.h"
 
 namespace glintlab {
 
@@ -32,11 +30,7 @@ GlintModelDescriptor zirr2016_descriptor() {
         gp::number("screen_space_scale", &P::screen_space_scale, 0.5, 8.0, "",
                    "texel width in footprint minor widths: LOD = log2(minor * S)"),
     };
-    d.validation = {"zirr2016", [](uint64_t seed) {
-                        Zirr2016ValidationOptions o;
-                        o.seed = seed;
-                        return validate_zirr2016(o);
-                    }};
+    d.validation = {"zirr2016"};  // run by the research library (validation_suites.h)
     return d;
 }
 
