@@ -115,6 +115,11 @@ struct GlintModelDescriptor {
     // after the table is read (desc.params holds its values); errors name
     // the file and JSON path (JsonObject::error).
     void (*check)(JsonObject& block, GlintDesc& desc) = nullptr;
+    // Optional: makes a material that is switched to this model (the viewer's
+    // model switcher, switch_glint_model) one the model accepts, e.g. the NDF
+    // and roughness its check requires. The scene reader never calls it: a
+    // scene file with such a material is an error instead.
+    void (*fit_material)(GlintDesc& desc) = nullptr;
     // Optional (glint_lighting.h): whether the model shades scene.lights[light]
     // itself at the camera's first hit, and that light's reflected radiance
     // towards ctx.wo. Null for models that are plain BRDFs (GlintBxdf) under

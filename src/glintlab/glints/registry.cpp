@@ -147,4 +147,14 @@ std::string glint_models_shading(GlintLightType type) {
     return s;
 }
 
+void switch_glint_model(GlintDesc& desc, GlintModelId model) {
+    const GlintModelDescriptor& m = glint_model(model);
+    desc.model_id = model;
+    desc.params = m.default_params();
+    // The reader's rule (glint_reader.cpp): models that shade their lights
+    // themselves have no diffuse base.
+    if (m.shades_light != nullptr) desc.base_albedo = glm::vec3(0.0f);
+    if (m.fit_material != nullptr) m.fit_material(desc);
+}
+
 }  // namespace glintlab

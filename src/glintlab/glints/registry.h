@@ -19,4 +19,9 @@ std::string glint_model_names();                           // "a, b, c" for erro
 // "a, b, c": the models whose descriptors list `type`.
 std::string glint_models_shading(GlintLightType type);
 
+// Switches a material to `model` with the model's default parameters, fitted
+// by the model's fit_material (e.g. the NDF it requires): the viewer's model
+// switcher and tests that render one scene with every model.
+void switch_glint_model(GlintDesc& desc, GlintModelId model);
+
 }  // namespace glintlab

@@ -29,8 +29,6 @@ std::string glint_model_glsl(GlintModelId model, unsigned program_options = 0);
 // Whether the GPU renderer implements `model`.
 bool gpu_supports_model(GlintModelId model);
 
-// Default parameters of `model` (the viewer's model switcher).
-void reset_model_params(GlintDesc& desc, GlintModelId model);
 
 }  // namespace gl
 }  // namespace glintlab

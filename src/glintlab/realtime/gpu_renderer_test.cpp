@@ -379,7 +379,7 @@ TEST(GpuRenderer, ModelSwitcherRendersEveryModel) {
     for (const GlintModelInfo& m : glint_models()) {
         if (!gl::gpu_supports_model(m.id)) continue;
         SCOPED_TRACE(std::string(m.name));
-        gl::reset_model_params(scene.materials[0].glint, m.id);
+        switch_glint_model(scene.materials[0].glint, m.id);
         renderer.render(scene);
         const Image image = renderer.read_image();
         double sum = 0.0;

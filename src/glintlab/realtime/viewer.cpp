@@ -159,7 +159,7 @@ void model_switcher(GlintDesc& g) {
         for (size_t i = 0; i < models.size(); ++i)
             if (ImGui::Selectable(std::string(models[i]->name).c_str(),
                                   static_cast<int>(i) == current))
-                gl::reset_model_params(g, models[i]->id);
+                switch_glint_model(g, models[i]->id);
         ImGui::EndCombo();
     }
     note("model");
@@ -192,10 +192,18 @@ void material_panel(MaterialDesc& m) {
         return;
     }
     GlintDesc& g = m.glint;
-    int ndf = g.ndf == NdfType::GGX ? 1 : 0;
-    if (g.model_id != GlintModelId::Chermain2020 && ImGui::Combo("ndf", &ndf, "beckmann\0ggx\0"))
-        g.ndf = ndf == 1 ? NdfType::GGX : NdfType::Beckmann;
-    if (g.model_id != GlintModelId::Chermain2020) note("ndf");
+    // The NDF is editable unless the model accepts only one (its descriptor's
+    // fit_material then sets it back: chermain2020, kneiphof2025, wang2020).
+    const GlintModelDescriptor& model = glint_model(g.model_id);
+    GlintDesc probe = g;
+    probe.ndf = g.ndf == NdfType::GGX ? NdfType::Beckmann : NdfType::GGX;
+    if (model.fit_material != nullptr) model.fit_material(probe);
+    if (probe.ndf != g.ndf) {
+        int ndf = g.ndf == NdfType::GGX ? 1 : 0;
+        if (ImGui::Combo("ndf", &ndf, "beckmann\0ggx\0"))
+            g.ndf = ndf == 1 ? NdfType::GGX : NdfType::Beckmann;
+        note("ndf");
+    }
     slider("alpha x", &g.alpha_x, 1e-3f, 1.0f, true);
     slider("alpha y", &g.alpha_y, 1e-3f, 1.0f, true);
     slider("log density", &g.log_density, -20.0f, 60.0f);
@@ -415,9 +423,7 @@ void run_viewer(Scene scene, const ViewerOptions& options) {
                                                 : options.screenshot;
     PassHistory shadow_ms, background_ms, forward_ms, blur_ms, bloom_ms, display_ms;
     bool shadows = true;
-    bool noise_texture = false;
-    bool dynamic_ibl = options.dynamic_ibl;
-    renderer.set_model_option("kneiphof2025", "dynamic_environment", dynamic_ibl);
+    renderer.set_model_option("kneiphof2025", "dynamic_environment", options.dynamic_ibl);
     std::string status;
     int selected_material = 0;
     bool p_was_down = false;
@@ -509,20 +515,21 @@ void run_viewer(Scene scene, const ViewerOptions& options) {
                 ImGui::CollapsingHeader("Material parameters", ImGuiTreeNodeFlags_DefaultOpen)) {
                 MaterialDesc& m = scene.materials[static_cast<size_t>(selected_material)];
                 material_panel(m);
-                if (m.type == MaterialDesc::Type::Glint &&
-                    m.glint.model_id == GlintModelId::Deliot2023) {
-                    if (ImGui::Checkbox("noise texture (000 6.3)", &noise_texture))
-                        renderer.set_model_option("deliot2023", "noise_texture", noise_texture);
-                    note("noise texture (000 6.3)");
-                }
-                // 003 §5: the prefilter as compute passes every frame.
-                if (m.type == MaterialDesc::Type::Glint &&
-                    m.glint.model_id == GlintModelId::Kneiphof2025) {
-                    if (ImGui::Checkbox("dynamic IBL (003 5)", &dynamic_ibl))
-                        renderer.set_model_option("kneiphof2025", "dynamic_environment",
-                                                  dynamic_ibl);
-                    note("dynamic IBL (003 5)");
-                }
+                // The model's GPU options (GpuModelHooks: deliot2023's noise
+                // texture, kneiphof2025's dynamic IBL of 003 §5, ...).
+                if (m.type == MaterialDesc::Type::Glint)
+                    if (const GpuModelHooks* hooks = find_gpu_model_hooks(m.glint.model_id)) {
+                        const std::string model(glint_model(m.glint.model_id).name);
+                        for (const GpuModelOption& o : hooks->options) {
+                            const std::string label(o.name);
+                            bool on = renderer.model_option(model, o.name);
+                            if (ImGui::Checkbox(label.c_str(), &on))
+                                renderer.set_model_option(model, o.name, on);
+                            if (ImGui::IsItemHovered())
+                                ImGui::SetTooltip("%s", std::string(o.description).c_str());
+                            note(label);
+                        }
+                    }
             }
             if (ImGui::CollapsingHeader("Lights")) {
                 for (size_t i = 0; i < scene.lights.size(); ++i) {

@@ -31,6 +31,11 @@ void check_chermain2020(JsonObject& block, GlintDesc& desc) {
     }
 }
 
+// 004 §4.3: the multiscale SDF is separable only for Beckmann.
+void fit_chermain2020(GlintDesc& desc) {
+    desc.ndf = NdfType::Beckmann;
+}
+
 }  // namespace
 
 GlintModelDescriptor chermain2020_descriptor() {
@@ -67,6 +72,7 @@ GlintModelDescriptor chermain2020_descriptor() {
     colours.colours = [](GlintModelParams& v) { return std::get<P>(v).colour_table.data(); };
     d.extra_keys = {colours};
     d.check = check_chermain2020;
+    d.fit_material = fit_chermain2020;
     d.validation = {"chermain2020"};  // run by the research library (validation_suites.h)
     return d;
 }

@@ -1,6 +1,8 @@
 // explicit's descriptor (glint_model_descriptor.h): the ground truth; it
 // enumerates the footprint's mirror facets and shades every light itself
 // (explicit_model.h); D_P for GlintBxdf from its gamma-cone count.
+#include <algorithm>
+
 #include <string>
 
 #include "glintlab/core/error.h"
@@ -22,6 +24,11 @@ void check_explicit(JsonObject& block, GlintDesc& desc) {
             "e^log_density facets per unit uv area are enumerated one by one)",
             block.file(), parent, desc.log_density);
     }
+}
+
+// What check_explicit accepts: ln density in [0, 30].
+void fit_explicit(GlintDesc& desc) {
+    desc.log_density = std::clamp(desc.log_density, 0.0f, 30.0f);
 }
 
 }  // namespace
@@ -55,6 +62,7 @@ GlintModelDescriptor explicit_descriptor() {
                    GlintParamUi::Log),
     };
     d.check = check_explicit;
+    d.fit_material = fit_explicit;
     d.shades_light = explicit_shades_light;
     d.light_radiance = explicit_light_radiance;
     d.validation = {"explicit"};  // run by the research library (validation_suites.h)

@@ -1,6 +1,9 @@
 // jakob2014's descriptor (glint_model_descriptor.h): every light (002 §3.1,
 // §4): a BRDF over the gamma cone; extended lights and environments through
 // light sampling + MIS with its importance sampling.
+#include <algorithm>
+#include <cmath>
+
 #include <string>
 
 #include "glintlab/core/error.h"
@@ -24,6 +27,14 @@ void check_jakob2014(JsonObject& block, GlintDesc& desc) {
             "particles per unit uv area must be an exact integer in double precision, N <= 2^53)",
             block.file(), parent, desc.log_density, jakob2014::kMaxLogDensity);
     }
+}
+
+// What check_jakob2014 accepts: N = e^log_density <= 2^53; the largest float
+// not above the (double) bound, since float(36.7) rounds above it.
+void fit_jakob2014(GlintDesc& desc) {
+    float max = static_cast<float>(jakob2014::kMaxLogDensity);
+    if (static_cast<double>(max) > jakob2014::kMaxLogDensity) max = std::nextafter(max, 0.0f);
+    desc.log_density = std::min(desc.log_density, max);
 }
 
 }  // namespace
@@ -60,6 +71,7 @@ GlintModelDescriptor jakob2014_descriptor() {
                    GlintParamUi::Log),
     };
     d.check = check_jakob2014;
+    d.fit_material = fit_jakob2014;
     d.validation = {"jakob2014"};  // run by the research library (validation_suites.h)
     return d;
 }

@@ -2,6 +2,8 @@
 // and sun-like directional lights by its own counting (003 Eq. 17; K = 1 area
 // lights, 003 Eq. 6-9); point and delta directional lights through
 // deliot2023's D_P (003 Table 1).
+#include <algorithm>
+
 #include "glintlab/core/json_reader.h"
 #include "glintlab/glints/glint_model_descriptor.h"
 #include "glintlab/glints/kneiphof2025/kneiphof2025.h"
@@ -16,6 +18,13 @@ void check_kneiphof2025(JsonObject& block, GlintDesc& desc) {
                     "kneiphof2025 needs an isotropic GGX material with roughness <= 1 "
                     "(\"ndf\": \"ggx\", one roughness value; 003 §7-8: the split-sum "
                     "tables are isotropic GGX)");
+}
+
+// 003 §7-8: the split-sum tables are isotropic GGX with alpha <= 1 (what
+// check_kneiphof2025 requires).
+void fit_kneiphof2025(GlintDesc& desc) {
+    desc.ndf = NdfType::GGX;
+    desc.alpha_x = desc.alpha_y = std::min(desc.alpha_x, 1.0f);
 }
 
 }  // namespace
@@ -67,6 +76,7 @@ GlintModelDescriptor kneiphof2025_descriptor() {
                    "deliot2023's std-dev of the per-cell jitter of ln(density)"),
     };
     d.check = check_kneiphof2025;
+    d.fit_material = fit_kneiphof2025;
     d.shades_light = kneiphof2025_shades_light;
     d.light_radiance = kneiphof2025_light_radiance;
     d.validation = {"kneiphof2025"};  // run by the research library (validation_suites.h)

@@ -1,6 +1,8 @@
 // wang2020's descriptor (glint_model_descriptor.h): environment (Eqs. 16-20),
 // point and directional lights (Eq. 21) by its own three-scale evaluation;
 // no sphere lights (001 has none).
+#include <algorithm>
+
 #include "glintlab/core/json_reader.h"
 #include "glintlab/glints/glint_model_descriptor.h"
 #include "glintlab/glints/wang2020/wang2020_model.h"
@@ -20,6 +22,14 @@ void check_wang2020(JsonObject& block, GlintDesc& desc) {
         block.error("",
                     "wang2020 needs log_density in [0, 19.4] (at most 2^28 particles per uv "
                     "tile: the quadtree stores 28-bit counts)");
+}
+
+// What check_wang2020 requires: isotropic Beckmann, alpha in [0.02, 1] (the
+// DPF roughness set, 001 §4.4), ln N <= 19.4.
+void fit_wang2020(GlintDesc& desc) {
+    desc.ndf = NdfType::Beckmann;
+    desc.alpha_x = desc.alpha_y = std::clamp(desc.alpha_x, 0.02f, 1.0f);
+    desc.log_density = std::clamp(desc.log_density, 0.0f, 19.4f);
 }
 
 }  // namespace
@@ -60,6 +70,7 @@ GlintModelDescriptor wang2020_descriptor() {
                    "samples only"),
     };
     d.check = check_wang2020;
+    d.fit_material = fit_wang2020;
     d.shades_light = wang2020_shades_light;
     d.light_radiance = wang2020_light_radiance;
     d.validation = {"wang2020"};  // run by the research library (validation_suites.h)
