@@ -4,12 +4,14 @@
 
 #include <sys/wait.h>
 #include <array>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
 
 #include <nlohmann/json.hpp>
 
+#include "glintlab/core/image.h"
 #include "glintlab/glints/model_docs.h"
 #include "glintlab/glints/registry.h"
 
@@ -231,6 +233,40 @@ TEST(Cli, OptionsAreValidatedBeforeRendering) {
     EXPECT_EQ(r.status, 1) << r.output;
     EXPECT_NE(r.output.find("8x-3"), std::string::npos) << r.output;
     EXPECT_FALSE(fs::exists(out));
+}
+
+// render --model / --set: the edits change the image, a bad pointer fails
+// before anything is written and names the pointer, and --set takes one
+// value per occurrence (the scene path after it is not swallowed).
+TEST(Cli, ModelAndSetEditTheSceneBeforeLoading) {
+    namespace fs = std::filesystem;
+    const auto scene = write_file("edits.json", kSmallScene);
+    const fs::path dir = temp_dir() / "edits";
+    fs::remove_all(dir);
+    // deliot2023 shades point and directional lights only: the environment
+    // light is replaced by a second point light in the same command.
+    const std::string point = R"('/lights/0={"type": "point", "position": [-2, 3, 2], "intensity": 5}')";
+    RunResult r = run_cli("render -q --model deliot2023 --set /materials/0/log_density=12 --set " +
+                          point + " --set /film/width=16 " + scene.string() + " -o " +
+                          (dir / "a.exr").string());
+    ASSERT_EQ(r.status, 0) << r.output;
+    const Image a = read_image(dir / "a.exr");
+    EXPECT_EQ(a.width, 16);
+    r = run_cli("render -q --set " + point + " --set /film/width=16 " + scene.string() + " -o " +
+                (dir / "b.exr").string());
+    ASSERT_EQ(r.status, 0) << r.output;
+    const Image b = read_image(dir / "b.exr");
+    double diff = 0.0;
+    for (size_t i = 0; i < a.pixels.size(); ++i) diff += std::abs(a.pixels[i].x - b.pixels[i].x);
+    EXPECT_GT(diff, 0.0);  // deliot2023 at ln N = 12 sparkles; smooth does not
+    r = run_cli("render -q --set /materials/3/x=1 " + scene.string() + " -o " +
+                (dir / "c.exr").string());
+    EXPECT_EQ(r.status, 1) << r.output;
+    EXPECT_NE(r.output.find("/materials/3/x"), std::string::npos) << r.output;
+    EXPECT_FALSE(fs::exists(dir / "c.exr"));
+    r = run_cli("render -q --model nosuch " + scene.string() + " -o " + (dir / "d.exr").string());
+    EXPECT_EQ(r.status, 1) << r.output;
+    EXPECT_NE(r.output.find("nosuch"), std::string::npos) << r.output;
 }
 
 // A render estimated above the memory limit fails before allocating, naming

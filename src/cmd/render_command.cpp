@@ -19,6 +19,7 @@
 #if GLINTLAB_WITH_GL
 #include "glintlab/realtime/gpu_renderer.h"
 #endif
+#include "glintlab/scene/scene_edits.h"
 #include "glintlab/scene/scene_loader.h"
 
 namespace glintlab::cmd {
@@ -37,6 +38,7 @@ struct RenderArgs {
     bool no_cache = false;
     bool quiet = false;
     bool gpu = false;
+    SceneEdits edits;  // --model, --set
 };
 
 // One side of --res: a decimal integer in [1, 16384], the whole text.
@@ -117,7 +119,7 @@ int run_render(const RenderArgs& a) {
         set_memory_limit(limit);
     }
 
-    Scene scene = load_scene(a.scene);
+    Scene scene = load_scene(a.scene, a.edits);
     if (a.spp) scene.render.spp = *a.spp;
     if (a.seed) scene.render.seed = static_cast<uint64_t>(*a.seed);
     if (!a.integrator.empty())
@@ -194,6 +196,15 @@ void add_render_command(CLI::App& app, int* status) {
     sub->add_flag("--no-cache", args->no_cache,
                   "Neither read nor write the on-disk table cache (also GLINTLAB_NO_CACHE=1; "
                   "README \"Table cache\")");
+    sub->add_option("--model", args->edits.model,
+                    "Switch every glint material to this glint model (glintlab info lists them)");
+    // One value per occurrence (--set A --set B), so a --set never swallows
+    // the scene path.
+    sub->add_option("--set", args->edits.sets,
+                    "POINTER=VALUE: set a value of the scene document before loading, e.g. "
+                    "--set /materials/0/log_density=14 (JSON pointer, RFC 6901; VALUE is JSON "
+                    "or a bare string); repeatable, applied in order after --model")
+        ->allow_extra_args(false);
     sub->add_flag("-q,--quiet", args->quiet, "No progress bar or summary");
     sub->add_flag("--gpu", args->gpu,
                   "Render with the OpenGL 4.5 forward renderer, headless through EGL (one shading "
