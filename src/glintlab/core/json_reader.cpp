@@ -137,6 +137,14 @@ void JsonObject::error(std::string_view key, std::string_view message) const {
     fail("{}: {}: {}", file_, key.empty() ? path_ : key_path(key), message);
 }
 
+void JsonObject::parent_error(std::string_view key, std::string_view message) const {
+    const size_t slash = path_.rfind('/');
+    const std::string_view parent = slash == std::string::npos
+                                        ? std::string_view(path_)
+                                        : std::string_view(path_).substr(0, slash);
+    fail("{}: {}/{}: {}", file_, parent, key, message);
+}
+
 bool JsonObject::has(std::string_view key) const {
     return value_.contains(std::string(key));
 }

@@ -79,6 +79,9 @@ class JsonObject {
     void finish() const;
 
     [[noreturn]] void error(std::string_view key, std::string_view message) const;
+    // An error at `key` of the object enclosing this one (a model's block
+    // checking a key of its material: "/materials/0/log_density").
+    [[noreturn]] void parent_error(std::string_view key, std::string_view message) const;
 
   private:
     const nlohmann::json* get(std::string_view key);

@@ -3,6 +3,8 @@
 // (explicit_model.h); D_P for GlintBxdf from its gamma-cone count.
 #include <algorithm>
 
+#include <fmt/format.h>
+
 #include <string>
 
 #include "glintlab/core/error.h"
@@ -16,13 +18,11 @@ namespace {
 // N = e^log_density facets per unit uv area are enumerated one by one.
 void check_explicit(JsonObject& block, GlintDesc& desc) {
     if (!(desc.log_density >= 0.0f && desc.log_density <= 30.0f)) {
-        std::string parent = block.path();
-        const size_t slash = parent.rfind('/');
-        if (slash != std::string::npos) parent.resize(slash);
-        fail(
-            "{}: {}/log_density: {} is out of range for the explicit model: [0, 30] (N = "
-            "e^log_density facets per unit uv area are enumerated one by one)",
-            block.file(), parent, desc.log_density);
+        block.parent_error("log_density",
+                           fmt::format("{} is out of range for the explicit model: [0, 30] (N = "
+                                       "e^log_density facets per unit uv area are enumerated one "
+                                       "by one)",
+                                       desc.log_density));
     }
 }
 

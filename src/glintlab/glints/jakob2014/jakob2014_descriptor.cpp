@@ -3,8 +3,9 @@
 // light sampling + MIS with its importance sampling.
 #include <algorithm>
 #include <cmath>
-
 #include <string>
+
+#include <fmt/format.h>
 
 #include "glintlab/core/error.h"
 #include "glintlab/core/json_reader.h"
@@ -18,14 +19,12 @@ namespace {
 // double precision.
 void check_jakob2014(JsonObject& block, GlintDesc& desc) {
     if (double(desc.log_density) > jakob2014::kMaxLogDensity) {
-        std::string parent = block.path();
-        const size_t slash = parent.rfind('/');
-        if (slash != std::string::npos) parent.resize(slash);
-        fail(
-            "{}: {}/log_density: {} is out of range for the jakob2014 model: at most {} (N = "
-            "e^log_density "
-            "particles per unit uv area must be an exact integer in double precision, N <= 2^53)",
-            block.file(), parent, desc.log_density, jakob2014::kMaxLogDensity);
+        block.parent_error(
+            "log_density",
+            fmt::format("{} is out of range for the jakob2014 model: at most {} (N = e^log_density "
+                        "particles per unit uv area must be an exact integer in double precision, "
+                        "N <= 2^53)",
+                        desc.log_density, jakob2014::kMaxLogDensity));
     }
 }
 
