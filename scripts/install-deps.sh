@@ -10,7 +10,9 @@ packages=(
     nlohmann-json3-dev libcli11-dev libfmt-dev libboost-math-dev
     libtinygltf-dev libtinyobjloader-dev libdraco-dev
     libgtest-dev libgmock-dev libbenchmark-dev
-    glslang-tools
+    glslang-tools spirv-cross
+    clang libclang-rt-14-dev
+    chromium chromium-driver python3-selenium
     blender-data
     libepoxy-dev libglfw3-dev libimgui-dev libegl-dev libegl-mesa0 libgl1-mesa-dri
     xvfb xauth
