@@ -214,6 +214,15 @@ GlintParam choice(std::string key, T P::*member, std::vector<std::pair<std::stri
     return p;
 }
 
+// R of 000 Eq. 4 (p = R D(h)/D(n)), shared by the models that count facets
+// on an angular grid (zirr2016, deliot2023, kneiphof2025's point-light path).
+// R in (0, 1] (000 §3); 1e-4 stands for the open end: below it the angular
+// cells h.xy / R are finer than fp32 resolves near the normal.
+template <class P>
+GlintParam microfacet_roughness(float P::*member, std::string doc) {
+    return number("microfacet_roughness", member, 1e-4, 1.0, "", std::move(doc), GlintParamUi::Log);
+}
+
 }  // namespace glint_param
 
 }  // namespace glintlab

@@ -48,16 +48,25 @@ float F_ConductorScalar(float cos_i, float eta, float k) {
     cos_i = clamp(cos_i, 0.0f, 1.0f);
     float cos2 = cos_i * cos_i;
     float sin2 = 1.0f - cos2;
-    float t0 = eta * eta - k * k - sin2;
+    // eta^2 - k^2 - sin^2 written with cos^2: sin2 = 1 - cos2 rounds to 1
+    // below cos ~ 2e-4, which made eta = 1, k = 0 (no interface) reflect
+    // everything at grazing angles.
+    float t0 = (eta * eta - k * k - 1.0f) + cos2;
     float uv2 = sqrt(t0 * t0 + 4.0f * eta * eta * k * k);
     float u = sqrt(max(0.0f, 0.5f * (uv2 + t0)));
     float two_u_cos = 2.0f * u * cos_i;
     float a = uv2 + cos2;
-    float r_s = (a - two_u_cos) / (a + two_u_cos);
+    // Both numerators are >= 0 exactly (a - 2u cos >= (u - cos)^2 and
+    // b - c >= (u cos - sin^2)^2, since u^2 + v^2 >= u^2), but cancel to
+    // rounding noise where the interface vanishes (eta = 1, k = 0: u = cos),
+    // which would leak negative radiance: clamp them at 0. There, at
+    // cos_i = 0, a + 2u cos = 0 too: no interface reflects nothing.
+    float den_s = a + two_u_cos;
+    float r_s = den_s > 0.0f ? max(a - two_u_cos, 0.0f) / den_s : 0.0f;
     float b = uv2 * cos2 + sin2 * sin2;
     float c = two_u_cos * sin2;
-    float r_p = r_s * (b - c) / (b + c);
-    // cos_i = 0: r_s = 1 and b + c = sin^4 = 1 > 0, so both are finite.
+    float r_p = r_s * max(b - c, 0.0f) / (b + c);
+    // cos_i = 0 (with an interface): r_s = 1 and b + c = sin^4 = 1 > 0.
     return 0.5f * (r_s + r_p);
 }
 

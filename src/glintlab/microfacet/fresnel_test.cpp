@@ -63,6 +63,23 @@ TEST(MicrofacetFresnel, ConductorNormalIncidenceAndGrazing) {
     for (int c = 0; c < 3; ++c) EXPECT_NEAR(G[c], 1.0f, 1e-6f);
 }
 
+// eta = 1, k = 0 is no interface: F = 0 at every angle. The numerators
+// cancel there; rounding once made F ~ -1e-8 and rendered negative pixels
+// (issue 15). Never negative, and 0 to fp32 rounding of the cancellation.
+TEST(MicrofacetFresnel, ConductorWithoutInterfaceIsZeroNeverNegative) {
+    for (int i = 0; i <= 100000; ++i) {
+        const float c = static_cast<float>(i) / 100000.0f;
+        const float f = F_ConductorScalar(c, 1.0f, 0.0f);
+        ASSERT_GE(f, 0.0f) << "cos " << c;
+        ASSERT_LT(f, 1e-6f) << "cos " << c;
+    }
+    for (int i = 0; i <= 1000; ++i) {
+        const float c = static_cast<float>(i) / 1000.0f;
+        for (float eta : {0.05f, 0.5f, 1.0f, 1.0001f, 2.0f, 8.0f})
+            for (float k : {0.0f, 1e-4f, 0.5f, 4.0f}) ASSERT_GE(F_ConductorScalar(c, eta, k), 0.0f);
+    }
+}
+
 TEST(MicrofacetFresnel, SchlickEndpoints) {
     EXPECT_FLOAT_EQ(F_Schlick(0.04f, 1.0f), 0.04f);
     EXPECT_FLOAT_EQ(F_Schlick(0.04f, 0.0f), 1.0f);

@@ -195,6 +195,23 @@ std::string view_under_xvfb(const std::string& args, RunResult* out,
     return "";
 }
 
+// Renders `scene` headless to dir/headless.{exr,png}, then shows it in the
+// viewer under Xvfb for 3 frames with `viewer_args`, writing the frame to
+// dir/viewer.png and the window to dir/window.png. Returns why the viewer
+// could not run ("" when it ran; its result is in *viewer).
+std::string render_then_view(const nlohmann::json& scene, const testing::ScratchDir& dir,
+                             const std::string& viewer_args, RunResult* viewer) {
+    std::ofstream(dir / "s.json") << scene.dump();
+    const RunResult headless = run(cli() + " render --gpu -q " + (dir / "s.json").string() +
+                                   " -o " + (dir / "headless.exr").string());
+    EXPECT_EQ(headless.status, 0) << headless.output;
+    if (headless.status != 0) return "";
+    return view_under_xvfb((dir / "s.json").string() + " --frames 3 " + viewer_args +
+                               " --screenshot " + (dir / "viewer.png").string() +
+                               " --window-screenshot " + (dir / "window.png").string(),
+                           viewer);
+}
+
 // The viewer's frame against `render --gpu` (EGL) of the same scene: the
 // same readback + write_png, driver and shaders, so the two PNGs agree to
 // 8-bit rounding. Limits: mean luminance within 0.5%, at most 0.5% of the
@@ -217,15 +234,9 @@ void expect_same_frame(const std::filesystem::path& viewer, const std::filesyste
 TEST(GpuViewer, ScreenshotUnderXvfbMatchesTheHeadlessRender) {
     GLINTLAB_REQUIRE_GL();
     testing::ScratchDir dir;
-    std::ofstream(dir / "s.json") << small_scene().dump();
-    const RunResult headless = run(cli() + " render --gpu -q " + (dir / "s.json").string() +
-                                   " -o " + (dir / "headless.exr").string());
-    ASSERT_EQ(headless.status, 0) << headless.output;
-    RunResult viewer;
-    const std::string why = view_under_xvfb(
-        (dir / "s.json").string() + " --frames 3 --no-ui --screenshot " +
-            (dir / "viewer.png").string() + " --window-screenshot " + (dir / "window.png").string(),
-        &viewer);
+    RunResult viewer{-1, ""};
+    const std::string why = render_then_view(small_scene(), dir, "--no-ui", &viewer);
+    if (::testing::Test::HasFailure()) return;
     if (!why.empty()) GTEST_SKIP() << why;
     ASSERT_EQ(viewer.status, 0) << viewer.output;
     expect_same_frame(dir / "viewer.png", dir / "headless.png");
@@ -258,15 +269,9 @@ TEST(GpuViewer, Kneiphof2025DynamicIblMatchesTheHeadlessRender) {
     scene["materials"][0]["kneiphof2025"] = {{"levels", 4}};
     scene["lights"] = {{{"type", "environment"}, {"file", forest}, {"rotation_deg", 90}}};
     testing::ScratchDir dir;
-    std::ofstream(dir / "s.json") << scene.dump();
-    const RunResult headless = run(cli() + " render --gpu -q " + (dir / "s.json").string() +
-                                   " -o " + (dir / "headless.exr").string());
-    ASSERT_EQ(headless.status, 0) << headless.output;
-    RunResult viewer;
-    const std::string why = view_under_xvfb(
-        (dir / "s.json").string() + " --frames 3 --dynamic-ibl --screenshot " +
-            (dir / "viewer.png").string() + " --window-screenshot " + (dir / "window.png").string(),
-        &viewer);
+    RunResult viewer{-1, ""};
+    const std::string why = render_then_view(scene, dir, "--dynamic-ibl", &viewer);
+    if (::testing::Test::HasFailure()) return;
     if (!why.empty()) GTEST_SKIP() << why;
     ASSERT_EQ(viewer.status, 0) << viewer.output;
     expect_same_frame(dir / "viewer.png", dir / "headless.png");

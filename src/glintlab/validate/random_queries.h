@@ -5,6 +5,7 @@
 // fixed: suites reproduce their published numbers for a given seed.
 #pragma once
 
+#include <cmath>
 #include <cstdint>
 
 #include <glm/glm.hpp>
@@ -38,5 +39,23 @@ struct RobustnessQuery {
     uint32_t seed = 0;
 };
 RobustnessQuery draw_robustness_query(Pcg32& rng);
+
+// The convergence experiments' estimate of E[D_P(h)]: the mean of
+// ndf(footprint, pattern_seed) over n footprints of minor width 1e-3 uv,
+// ratio log-uniform in [1, 8), any angle, uv in [0, 16)^2, each with a fresh
+// pattern seed (draw order: seed, uv, ratio, angle).
+template <class Ndf>
+double mean_over_random_footprints(Pcg32& rng, int n, Ndf&& ndf) {
+    constexpr double kPi = 3.14159265358979323846;
+    double sum = 0.0;
+    for (int i = 0; i < n; ++i) {
+        const uint32_t seed = rng.next_uint();
+        const glm::vec2 uv(rng.next_float() * 16.0f, rng.next_float() * 16.0f);
+        const Footprint fp = oriented_footprint(uv, 1e-3, pow10_uniform(rng, 0.0, std::log10(8.0)),
+                                                rng.next_double() * kPi);
+        sum += ndf(fp, seed);
+    }
+    return sum / n;
+}
 
 }  // namespace glintlab

@@ -18,11 +18,9 @@ GlintModelDescriptor deliot2023_descriptor() {
     d.gpu = true;
     d.default_params = [] { return GlintModelParams(P{}); };
     d.params = {
-        // R in (0, 1] (000 §3); 1e-4 stands for the open end: below it the
-        // angular grid h.xy / R has cells smaller than fp32 resolves near n.
-        gp::number("microfacet_roughness", &P::microfacet_roughness, 1e-4, 1.0, "",
-                   "R of 000 Eq. 4: p = R D(h)/D(n), the angular cell size (micro-roughness)",
-                   GlintParamUi::Log),
+        gp::microfacet_roughness(
+            &P::microfacet_roughness,
+            "R of 000 Eq. 4: p = R D(h)/D(n), the angular cell size (micro-roughness)"),
         // Below 0.5 px glints are smaller than a pixel and alias; above 8 px the
         // cells exceed what the authors' 1.5-2 px range suggests anyone wants.
         gp::number("screen_space_scale", &P::screen_space_scale, 0.5, 8.0, "px",

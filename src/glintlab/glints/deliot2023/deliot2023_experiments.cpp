@@ -4,10 +4,9 @@
 #include <cmath>
 #include <cstring>
 
-#include <tbb/parallel_for.h>
-
 #include "glintlab/core/rng.h"
 #include "glintlab/validate/random_queries.h"
+#include "glintlab/validate/robustness_loop.h"
 
 namespace glintlab {
 namespace {
@@ -35,16 +34,12 @@ std::vector<ConvergenceCase> deliot2023_convergence(int footprints_per_case, uin
         target.log_density = 30.0f;
         Pcg32 rng(c, seed);
         const glm::vec3 h = half_vector_at(k.tan_theta, 0.7);
-        double sum = 0.0;
-        for (int i = 0; i < footprints_per_case; ++i) {
-            target.seed = rng.next_uint();
-            const glm::vec2 uv(rng.next_float() * 16.0f, rng.next_float() * 16.0f);
-            const Footprint fp = oriented_footprint(
-                uv, 1e-3, pow10_uniform(rng, 0.0, std::log10(8.0)), rng.next_double() * kPi);
-            sum += deliot2023_ndf(h, fp, target, params);
-        }
+        k.mean_dp = mean_over_random_footprints(rng, footprints_per_case,
+                                                [&](const Footprint& fp, uint32_t seed) {
+                                                    target.seed = seed;
+                                                    return deliot2023_ndf(h, fp, target, params);
+                                                });
         k.target = deliot2023_target_ndf(h, target);
-        k.mean_dp = sum / footprints_per_case;
         k.rel_err = std::abs(k.mean_dp / k.target - 1.0);
     }
     return cases;
@@ -95,44 +90,23 @@ std::vector<LodTransitionStep> deliot2023_lod_transition(int steps, int footprin
 }
 
 RobustnessResult deliot2023_robustness(int64_t evaluations, uint64_t seed) {
-    constexpr int64_t kBlock = 1 << 14;
-    const int64_t blocks = (evaluations + kBlock - 1) / kBlock;
     std::atomic<int64_t> bad_fixed{0}, bad_original{0};
-    tbb::parallel_for(int64_t{0}, blocks, [&](int64_t b) {
-        Pcg32 rng(static_cast<uint64_t>(b), seed);
-        int64_t bf = 0, bo = 0;
-        const int64_t end = std::min(evaluations, (b + 1) * kBlock);
-        for (int64_t i = b * kBlock; i < end; ++i) {
-            const RobustnessQuery q = draw_robustness_query(rng);
-            const glm::vec3 h = q.h;
-            const Footprint fp = q.footprint;
-            Deliot2023Target t;
-            t.ndf = q.ndf;
-            t.alpha_x = q.alpha_x;
-            t.alpha_y = q.alpha_y;
-            t.log_density = q.log_density;
-            t.seed = q.seed;
-            Deliot2023Params p;
-            const uint32_t rk = rng.next_uint(3);
-            p.microfacet_roughness = rk == 0   ? 1e-4f
-                                     : rk == 1 ? 1.0f
-                                               : static_cast<float>(pow10_uniform(rng, -4, 0));
-            const uint32_t sk = rng.next_uint(3);
-            p.screen_space_scale = sk == 0 ? 0.5f : sk == 1 ? 8.0f : 0.5f + 7.5f * rng.next_float();
-            const uint32_t ck = rng.next_uint(3);
-            p.density_randomization = ck == 0 ? 0.0f : ck == 1 ? 50.0f : 50.0f * rng.next_float();
-            const float d = deliot2023_ndf(h, fp, t, p);
-            if (!std::isfinite(d) || d < 0.0f) ++bf;
-            // The original variant on every 8th sample (cost).
-            if ((i & 7) == 0) {
-                p.original_defects = true;
-                const float o = deliot2023_ndf(h, fp, t, p);
-                if (!std::isfinite(o) || o < 0.0f) ++bo;
-            }
-        }
-        bad_fixed += bf;
-        bad_original += bo;
-    });
+    for_each_robustness_query(evaluations, seed,
+                              [&](Pcg32& rng, int64_t i, const RobustnessQuery& q) {
+                                  const auto t = robustness_target<Deliot2023Target>(q);
+                                  Deliot2023Params p;
+                                  p.microfacet_roughness = draw_log_with_ends(rng, -4, 0);
+                                  p.screen_space_scale = draw_with_ends(rng, 0.5f, 8.0f);
+                                  p.density_randomization = draw_with_ends(rng, 0.0f, 50.0f);
+                                  const float d = deliot2023_ndf(q.h, q.footprint, t, p);
+                                  if (!std::isfinite(d) || d < 0.0f) ++bad_fixed;
+                                  // The original variant on every 8th sample (cost).
+                                  if ((i & 7) == 0) {
+                                      p.original_defects = true;
+                                      const float o = deliot2023_ndf(q.h, q.footprint, t, p);
+                                      if (!std::isfinite(o) || o < 0.0f) ++bad_original;
+                                  }
+                              });
     return {evaluations, bad_fixed.load(), bad_original.load()};
 }
 

@@ -17,11 +17,9 @@ GlintModelDescriptor zirr2016_descriptor() {
     d.gpu = true;
     d.default_params = [] { return GlintModelParams(P{}); };
     d.params = {
-        // R in (0, 1] (000 §3); 1e-4 stands for the open end: below it the
-        // angular cells h.xy / R are finer than fp32 resolves near the normal.
-        gp::number("microfacet_roughness", &P::microfacet_roughness, 1e-4, 1.0, "",
-                   "R of 000 Eq. 4: p = R D(h)/D(n), the angular cell width (micro-roughness)",
-                   GlintParamUi::Log),
+        gp::microfacet_roughness(
+            &P::microfacet_roughness,
+            "R of 000 Eq. 4: p = R D(h)/D(n), the angular cell width (micro-roughness)"),
         // 1 = isotropic filtering only; 64 bounds the march (cost grows linearly).
         gp::number("max_anisotropy", &P::max_anisotropy, 1.0, 64.0, "",
                    "largest footprint ratio marched; beyond it the footprint is widened"),

@@ -8,6 +8,7 @@
 
 #include "glintlab/core/rng.h"
 #include "glintlab/validate/random_queries.h"
+#include "glintlab/validate/robustness_loop.h"
 
 namespace glintlab {
 namespace {
@@ -40,16 +41,12 @@ std::vector<Zirr2016ConvergenceCase> zirr2016_convergence(float log_density,
         target.log_density = log_density;
         Pcg32 rng(i, seed);
         const glm::vec3 h = half_vector_at(k.tan_theta, 0.7);
-        double sum = 0.0;
-        for (int f = 0; f < footprints_per_case; ++f) {
-            target.seed = rng.next_uint();
-            const glm::vec2 uv(rng.next_float() * 16.0f, rng.next_float() * 16.0f);
-            const Footprint fp = oriented_footprint(
-                uv, 1e-3, pow10_uniform(rng, 0.0, std::log10(8.0)), rng.next_double() * kPi);
-            sum += zirr2016_ndf(h, fp, target, params);
-        }
+        k.mean_dp = mean_over_random_footprints(rng, footprints_per_case,
+                                                [&](const Footprint& fp, uint32_t seed) {
+                                                    target.seed = seed;
+                                                    return zirr2016_ndf(h, fp, target, params);
+                                                });
         k.target = zirr2016_target_ndf(h, target);
-        k.mean_dp = sum / footprints_per_case;
         k.rel_err = std::abs(k.mean_dp / k.target - 1.0);
     });
     return cases;
@@ -90,37 +87,17 @@ Zirr2016CountStats zirr2016_count_stats(double lod, double bottom_trials, float 
 }
 
 Zirr2016RobustnessResult zirr2016_robustness(int64_t evaluations, uint64_t seed) {
-    constexpr int64_t kBlock = 1 << 14;
-    const int64_t blocks = (evaluations + kBlock - 1) / kBlock;
     std::atomic<int64_t> bad{0};
-    tbb::parallel_for(int64_t{0}, blocks, [&](int64_t b) {
-        Pcg32 rng(static_cast<uint64_t>(b), seed);
-        int64_t local_bad = 0;
-        const int64_t end = std::min(evaluations, (b + 1) * kBlock);
-        for (int64_t i = b * kBlock; i < end; ++i) {
-            const RobustnessQuery q = draw_robustness_query(rng);
-            const glm::vec3 h = q.h;
-            const Footprint fp = q.footprint;
-            Zirr2016Target t;
-            t.ndf = q.ndf;
-            t.alpha_x = q.alpha_x;
-            t.alpha_y = q.alpha_y;
-            t.log_density = q.log_density;
-            t.seed = q.seed;
-            Zirr2016Params p;
-            const uint32_t rk = rng.next_uint(3);
-            p.microfacet_roughness = rk == 0   ? 1e-4f
-                                     : rk == 1 ? 1.0f
-                                               : static_cast<float>(pow10_uniform(rng, -4, 0));
-            const uint32_t ak = rng.next_uint(3);
-            p.max_anisotropy = ak == 0 ? 1.0f : ak == 1 ? 64.0f : 1.0f + 63.0f * rng.next_float();
-            const uint32_t sk = rng.next_uint(3);
-            p.screen_space_scale = sk == 0 ? 0.5f : sk == 1 ? 8.0f : 0.5f + 7.5f * rng.next_float();
-            const float d = zirr2016_ndf(h, fp, t, p);
-            if (!std::isfinite(d) || d < 0.0f) ++local_bad;
-        }
-        bad += local_bad;
-    });
+    for_each_robustness_query(evaluations, seed,
+                              [&](Pcg32& rng, int64_t, const RobustnessQuery& q) {
+                                  const auto t = robustness_target<Zirr2016Target>(q);
+                                  Zirr2016Params p;
+                                  p.microfacet_roughness = draw_log_with_ends(rng, -4, 0);
+                                  p.max_anisotropy = draw_with_ends(rng, 1.0f, 64.0f);
+                                  p.screen_space_scale = draw_with_ends(rng, 0.5f, 8.0f);
+                                  const float d = zirr2016_ndf(q.h, q.footprint, t, p);
+                                  if (!std::isfinite(d) || d < 0.0f) ++bad;
+                              });
     return {evaluations, bad.load()};
 }
 
