@@ -16,6 +16,7 @@
 #include "glintlab/render/image_check.h"
 #include "glintlab/render/render_memory.h"
 #include "glintlab/render/renderer.h"
+#include "glintlab/render/sampling_advice.h"
 #if GLINTLAB_WITH_GL
 #include "glintlab/realtime/gpu_renderer.h"
 #endif
@@ -128,6 +129,9 @@ int run_render(const RenderArgs& a) {
     if (!a.res.empty()) scene.camera.width = res_w, scene.camera.height = res_h;
     if (a.exposure) scene.film.exposure = *a.exposure;
 
+    if (!a.gpu)
+        for (const std::string& advice : sampling_advice(scene))
+            fmt::print(stderr, "warning: {}\n", advice);
     require_memory(
         estimate_render_memory(scene, a.gpu),
         fmt::format("render of {} at {}x{}", a.scene, scene.camera.width, scene.camera.height));
