@@ -10,6 +10,7 @@
 #include <regex>
 #include <set>
 #include <sstream>
+#include <type_traits>
 
 #include <fmt/format.h>
 #include <fmt/ranges.h>
@@ -303,13 +304,15 @@ std::string read_file(const fs::path& path) {
     return std::string((std::istreambuf_iterator<char>(f)), std::istreambuf_iterator<char>());
 }
 
-// Float32 values as raw little-endian bytes (the host's byte order is checked).
-std::string float_bytes(const std::vector<float>& v) {
-    static_assert(sizeof(float) == 4);
+// Float32 or uint32 values as raw little-endian bytes (the host's byte
+// order is checked).
+template <class T>
+std::string raw_bytes(const std::vector<T>& v) {
+    static_assert(sizeof(T) == 4);
     const uint32_t probe = 1;
     if (*reinterpret_cast<const unsigned char*>(&probe) != 1)
         fail("export: raw resources are little-endian; this host is big-endian");
-    return std::string(reinterpret_cast<const char*>(v.data()), v.size() * sizeof(float));
+    return std::string(reinterpret_cast<const char*>(v.data()), v.size() * sizeof(T));
 }
 
 std::string quote_arg(const std::string& s) {
@@ -479,16 +482,18 @@ std::vector<ExportedFile> export_model(const ExportOptions& o) {
     }
 
     // Resources.
-    auto resource = [&](const std::string& key, const std::vector<float>& values,
-                        nlohmann::json info) {
-        const bool uint = info.value("format", "") == "RG32UI";  // uint32 bit patterns
+    auto resource = [&]<class T>(const std::string& key, const std::vector<T>& values,
+                                 nlohmann::json info) {
+        constexpr bool uint = std::is_same_v<T, uint32_t>;
         const std::string name = fmt::format("{}.{}.{}", model, key, uint ? "u32" : "f32");
-        add(name, "texture", float_bytes(values));
+        const std::string bytes = raw_bytes(values);
+        add(name, "texture", bytes);
         info["file"] = name;
-        info["bytes"] = values.size() * sizeof(float);
-        info["encoding"] =
-            "raw little-endian float32, row-major, first row at texture coordinate "
-            "t = 0 (upload as is), channels interleaved";
+        info["bytes"] = bytes.size();
+        info["encoding"] = fmt::format(
+            "raw little-endian {}, row-major, first row at texture coordinate t = 0 (upload "
+            "as is), channels interleaved",
+            uint ? "uint32" : "float32");
         man.resources.push_back(info);
     };
     if (o.resources && d->id == GlintModelId::Deliot2023) {
@@ -619,12 +624,12 @@ std::vector<ExportedFile> export_model(const ExportOptions& o) {
             env = std::make_shared<EnvironmentMap>(read_image(o.environment), 1.0f, 0.0f);
         const auto model_tables = wang2020_model_for(g, env);
         constexpr size_t kWidth = 4096;  // WANG2020_TABLE_WIDTH
-        auto table = [&](const std::string& key, std::vector<float> values, int channels,
-                         const std::string& format, const std::string& uniform,
-                         const std::string& meaning) {
+        auto table = [&]<class T>(const std::string& key, std::vector<T> values, int channels,
+                                  const std::string& format, const std::string& uniform,
+                                  const std::string& meaning) {
             const size_t elements = values.size() / static_cast<size_t>(channels);
             const size_t rows = std::max<size_t>(1, (elements + kWidth - 1) / kWidth);
-            values.resize(rows * kWidth * static_cast<size_t>(channels), 0.0f);
+            values.resize(rows * kWidth * static_cast<size_t>(channels), T(0));
             resource(
                 key, values,
                 {{"uniform", uniform},
@@ -651,18 +656,13 @@ std::vector<ExportedFile> export_model(const ExportOptions& o) {
               "prefiltered environment tables (001 Eqs. 16-17; one zero texel without --env)");
         {
             // Quadtree nodes {first_child, count_mask} as uint32 pairs (RG32UI).
-            std::vector<float> bits;
+            std::vector<uint32_t> pairs;
             for (const wang2020::QuadtreeNode& n : model_tables->quadtree().nodes()) {
-                float a, b;
-                std::memcpy(&a, &n.first_child, 4);
-                std::memcpy(&b, &n.count_mask, 4);
-                bits.push_back(a);
-                bits.push_back(b);
+                pairs.push_back(n.first_child);
+                pairs.push_back(n.count_mask);
             }
-            table("nodes", bits, 2, "RG32UI", "u_wang2020_nodes_texture",
-                  "particle quadtree nodes {first_child, count_mask} as uint32 (001 4.4)");
-            man.resources.back()["encoding"] =
-                "raw little-endian uint32 pairs, row-major, first row at t = 0";
+            table("nodes", pairs, 2, "RG32UI", "u_wang2020_nodes_texture",
+                  "particle quadtree nodes {first_child, count_mask} (001 4.4)");
         }
         table("cone",
               model_tables->cone_average() ? vec4s(model_tables->cone_average()->data())
