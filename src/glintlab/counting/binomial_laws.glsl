@@ -2,7 +2,7 @@
 // a pure function of (N, p) and uniform numbers in [0, 1); the gated laws
 // cost the same for every N and p (no loop over trials).
 //
-// Papers: 000 = deliot2023, 003 = kneiphof2025 (see /work/shared/papers).
+// Papers: 000 = Deliot & Belcour 2023, 003 = Kneiphof & Klein 2025 (key and full citations: docs/MODELS.md).
 // Counts are real-valued where the paper's law is (003 drops the floor of
 // Eq. 22 for N > 1); consumers that need integers round them.
 #ifndef GLINTLAB_COUNTING_BINOMIAL_LAWS_GLSL
