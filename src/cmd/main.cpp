@@ -16,6 +16,7 @@ int main(int argc, char** argv) {
     glintlab::cmd::add_validate_command(app, &status);
     glintlab::cmd::add_bench_command(app, &status);
     glintlab::cmd::add_dict_command(app, &status);
+    glintlab::cmd::add_export_command(app, &status);
 #if GLINTLAB_WITH_GL
     glintlab::cmd::add_view_command(app, &status);
 #endif

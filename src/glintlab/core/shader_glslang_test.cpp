@@ -88,9 +88,18 @@ std::vector<std::string> forward_prefixes() {
     return out;
 }
 
+// `glintlab export`'s fragment stage (export/shader_export.h): after any glue.
+std::vector<std::string> export_prefixes() {
+    std::vector<std::string> out;
+    for (const std::string& glue : glue_files())
+        out.push_back(fmt::format("#include \"{}\"\n", glue));
+    return out;
+}
+
 const std::map<std::string, std::vector<std::string>>& stage_prefixes() {
     static const std::map<std::string, std::vector<std::string>> table = {
         {"glintlab/realtime/shaders/forward.frag.glsl", forward_prefixes()},
+        {"glintlab/export/glint_export.frag.glsl", export_prefixes()},
     };
     return table;
 }
