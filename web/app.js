@@ -231,7 +231,7 @@ class App {
     this.buildControls();
     this.installOrbit();
     this.ready = true;
-    requestAnimationFrame((t) => this.frame(t));
+    this.schedule();
   }
 
   // The models scripts/export_web.sh exported (its index.json).
@@ -250,6 +250,23 @@ class App {
     return MODELS.filter((m) => index.models.includes(m));
   }
 
+  // Another view from URL parameters without reloading the page (models
+  // already loaded keep their compiled program and resources).
+  async navigate(search) {
+    const state = stateFromUrl(search);
+    if (state.exportBase !== this.state.exportBase)
+      throw new UrlError('navigate: the export directory cannot change without a reload');
+    this.state = state;
+    history.replaceState(null, '', search);
+    this.setShape(state.shape);
+    await this.setModel(state.model);
+    this.buildControls();
+    this.dirty = true;
+    this.lastFrame = null;
+    this.cpuMs = null;
+    this.schedule();
+  }
+
   setShape(shape) {
     this.state.shape = shape;
     this.renderer.setMesh(SHAPES[shape].mesh());
@@ -260,11 +277,9 @@ class App {
     if (!this.models.has(name)) {
       const info = this.info?.models?.find((m) => m.name === name) ?? null;
       this.models.set(name, await ExportedModel.load(this.renderer, this.state.exportBase, name, info));
-    } else {
-      const m = this.models.get(name);
-      m.program = this.renderer.setForwardShader(m.source, `${name} (exported)`);
     }
     this.model = this.models.get(name);
+    this.renderer.forward = this.model.program;
     this.state.model = name;
     // URL values of the model's parameters, checked against the descriptor.
     for (const p of this.model.parameters) {
@@ -279,6 +294,16 @@ class App {
     this.dirty = true;
   }
 
+  // One pending animation frame at most.
+  schedule() {
+    if (this.scheduled) return;
+    this.scheduled = true;
+    requestAnimationFrame((t) => {
+      this.scheduled = false;
+      this.frame(t);
+    });
+  }
+
   frame(time) {
     try {
       if (this.lastFrame !== null && this.state.continuous) {
@@ -291,7 +316,7 @@ class App {
       this.fail(e);
       return;
     }
-    if (this.state.continuous || this.dirty) requestAnimationFrame((t) => this.frame(t));
+    if (this.state.continuous || this.dirty) this.schedule();
   }
 
   draw() {
@@ -332,7 +357,7 @@ class App {
       history.replaceState(null, '', url);
       document.getElementById('permalink').href = url;
     }, 200);
-    if (!this.state.continuous) requestAnimationFrame((t) => this.frame(t));
+    if (!this.state.continuous) this.schedule();
   }
 
   buildControls() {
@@ -432,7 +457,7 @@ class App {
       this.cpuMs = null;
       this.lastFrame = null;
       this.changed();
-      if (v) requestAnimationFrame((t) => this.frame(t));
+      if (v) this.schedule();
     }, 'continuous frames give the frame-time readout');
     this.buildModelControls();
   }
@@ -470,7 +495,6 @@ class App {
 
   // Drag: orbit the eye around the target; wheel: move along the view axis.
   installOrbit() {
-    const c = this.state.camera;
     let drag = null;
     this.canvas.addEventListener('pointerdown', (e) => {
       drag = {x: e.clientX, y: e.clientY};
@@ -481,6 +505,7 @@ class App {
       if (!drag) return;
       const dx = e.clientX - drag.x, dy = e.clientY - drag.y;
       drag = {x: e.clientX, y: e.clientY};
+      const c = this.state.camera;
       const v = c.eye.map((x, i) => x - c.target[i]);
       const r = Math.hypot(...v);
       let theta = Math.acos(Math.max(-1, Math.min(1, v[1] / r)));
@@ -493,6 +518,7 @@ class App {
     });
     this.canvas.addEventListener('wheel', (e) => {
       e.preventDefault();
+      const c = this.state.camera;
       const k = Math.exp(Math.sign(e.deltaY) * 0.1);
       c.eye = c.eye.map((x, i) => c.target[i] + (x - c.target[i]) * k);
       this.changed();
@@ -523,6 +549,11 @@ window.glintlab = {
   get error() { return app.error ?? null; },
   get glErrors() { return app.glErrors.slice(); },
   get frames() { return app.frames; },
+  // Shows the view of URL parameters `search` ("?model=...") in this page.
+  navigate(search) {
+    app.ready = false;
+    app.navigate(search).then(() => { app.ready = true; }, (e) => app.fail(e));
+  },
   get state() { return JSON.parse(JSON.stringify(app.state)); },
   get size() { return [app.renderer.width, app.renderer.height]; },
   // The linear frame (RGBA float32, rows top to bottom, alpha = coverage)

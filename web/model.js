@@ -87,7 +87,7 @@ export class ExportedModel {
     model.manifest = manifest;
     model.source = source;
     model.parameters = parameterTable(manifest, info);
-    model.program = renderer.setForwardShader(source, shader.file);
+    model.program = renderer.forwardProgram(source, shader.file);
     model.textures = [];
     model.constants = {};  // uniforms given by the manifest's resources
     model.environment = null;

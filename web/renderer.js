@@ -191,12 +191,10 @@ export class Renderer {
     return true;
   }
 
-  // The forward program: the page's vertex stage + the exported fragment stage.
-  setForwardShader(fragmentSource, label) {
-    const prog = this.program(FORWARD_VERTEX, fragmentSource, label);
-    if (this.forward) this.gl.deleteProgram(this.forward.handle);
-    this.forward = prog;
-    return prog;
+  // A forward program: the page's vertex stage + the exported fragment
+  // stage (the caller keeps it and sets this.forward to draw with it).
+  forwardProgram(fragmentSource, label) {
+    return this.program(FORWARD_VERTEX, fragmentSource, label);
   }
 
   setMesh(mesh) {

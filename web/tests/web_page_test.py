@@ -94,8 +94,17 @@ class Page:
 
     def open(self, query, timeout=40.0):
         """Loads index.html?query and waits for the first frame or an error;
-        returns (state, browser log entries)."""
+        returns (state, browser log entries since the last call)."""
         self.driver.get(f"{self.base}/index.html?{query}")
+        return self._wait(timeout)
+
+    def navigate(self, query, timeout=40.0):
+        """The same in the loaded page (window.glintlab.navigate: the models
+        already loaded keep their compiled programs)."""
+        self.driver.execute_script("window.glintlab.navigate(arguments[0]);", f"?{query}")
+        return self._wait(timeout)
+
+    def _wait(self, timeout):
         deadline = time.monotonic() + timeout
         while True:
             s = self.driver.execute_script(
@@ -156,7 +165,9 @@ def test_load(page, export_dir):
     ok = True
     for model in models:
         for shape in ("sphere", "plane"):
-            state, log = page.open(f"model={model}&shape={shape}&w=64&h=64&static=1")
+            # A fresh page per model (its own console), the plane in it.
+            query = f"model={model}&shape={shape}&w=64&h=64&static=1"
+            state, log = page.open(query) if shape == "sphere" else page.navigate(query)
             problems = []
             if state.get("error"):
                 problems.append(f"page error: {state['error']}")
@@ -300,9 +311,10 @@ def test_compare(page, export_dir, models, env_file):
             ok = False
             continue
         shapes = ["sphere"] if model == "kneiphof2025" else ["plane", "sphere"]
-        for shape in shapes:
+        for i, shape in enumerate(shapes):
             env = env_file if model == "kneiphof2025" else None
-            state, log = page.open(page_query(model, shape, env is not None))
+            query = page_query(model, shape, env is not None)
+            state, log = page.open(query) if i == 0 else page.navigate(query)
             if state.get("error") or state.get("glErrors") or errors_in(log):
                 print(f"FAIL {model} {shape}: {state.get('error')} {state.get('glErrors')} "
                       f"{errors_in(log)}")
