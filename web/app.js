@@ -286,6 +286,11 @@ class App {
       const raw = this.state.params[p.key];
       if (raw === undefined) continue;
       this.state.params[p.key] = parseParam(p, raw);
+      const v = this.state.params[p.key];
+      if (p.baked && (typeof v === 'number' ? Math.abs(v - p.default) > 1e-6 * Math.abs(p.default)
+                                             : v !== p.default))
+        throw new UrlError(`URL parameter p.${p.key}=${raw}: fixed at ${p.default} by the ` +
+                           `exported files (${p.baked})`);
     }
     for (const key of Object.keys(this.state.params))
       if (!this.model.parameters.some((p) => p.key === key))

@@ -67,7 +67,8 @@ function parameterTable(manifest, info) {
       key: p.key, type: p.type, doc: p.doc, unit: p.unit, range: p.range,
       default: p.default, min: p.min ?? b.min, max: p.max ?? b.max,
       values: p.values ?? b.values, choices: p.choices ?? b.choices,
-      uniform: h.uniform ?? p.uniform ?? null, value: h.value ?? null, baked: h.baked ?? null,
+      uniform: h.baked ? null : h.uniform ?? p.uniform ?? null, value: h.value ?? null,
+      baked: h.baked ?? null,
     };
   });
 }
