@@ -45,6 +45,7 @@ function stateFromUrl(search) {
   const shape = choice(q.get('shape') ?? 'plane', 'shape', Object.keys(SHAPES));
   const s = {
     model: choice(q.get('model') ?? 'deliot2023', 'model', MODELS),
+    variant: q.get('variant') ?? 'default',
     shape,
     width: Math.round(number(q.get('w') ?? '512', 'w', 16, 4096)),
     height: Math.round(number(q.get('h') ?? '384', 'h', 16, 4096)),
@@ -102,6 +103,7 @@ function urlFromState(s) {
   const list = (v) => v.map((x) => +x.toFixed(5)).join(',');
   q.set('model', s.model);
   q.set('shape', s.shape);
+  if (s.variant !== 'default') q.set('variant', s.variant);
   q.set('w', s.width);
   q.set('h', s.height);
   q.set('eye', list(s.camera.eye));
@@ -279,7 +281,7 @@ class App {
       this.models.set(name, await ExportedModel.load(this.renderer, this.state.exportBase, name, info));
     }
     this.model = this.models.get(name);
-    this.renderer.forward = this.model.program;
+    this.renderer.forward = await this.model.program(this.renderer, this.state.variant);
     this.state.model = name;
     // URL values of the model's parameters, checked against the descriptor.
     for (const p of this.model.parameters) {
@@ -375,6 +377,7 @@ class App {
     modelSelect.onchange = async () => {
       try {
         s.params = {};
+        s.variant = 'default';
         await this.setModel(modelSelect.value);
         this.buildModelControls();
         this.changed();
@@ -477,6 +480,14 @@ class App {
       ` — glintlab ${man.glintlab_version}` +
       (this.model.environment ? `; environment ${this.model.environment.file.split('/').pop()}` : '');
     document.getElementById('environment').disabled = !this.model.environment;
+    if (this.model.variants.length > 1)
+      select(box, 'shader variant', this.model.variants, s.variant, async (v) => {
+        try {
+          s.variant = v;
+          this.renderer.forward = await this.model.program(this.renderer, v);
+          this.changed();
+        } catch (e) { this.fail(e); }
+      }, 'the exported fragment stages of this model (its manifest "shaders")');
     if (this.model.parameters.length === 0) box.append(el('p', {class: 'hint'}, 'no parameters'));
     for (const p of this.model.parameters) {
       const value = s.params[p.key] ?? p.default;

@@ -80,15 +80,18 @@ export class ExportedModel {
     if (manifest.model !== name || manifest.language !== 'glsles')
       throw new Error(`${manifestUrl}: a manifest of ${manifest.model} (${manifest.language}), ` +
                       `expected ${name} (glsles)`);
-    const shader = manifest.shaders.find((s) => s.stage === 'fragment' && s.variant === 'default');
-    if (!shader) throw new Error(`${manifestUrl}: no default fragment shader listed`);
-    const source = await (await fetchOk(`${base}/${shader.file}`, 'shader')).text();
     const model = new ExportedModel();
     model.name = name;
+    model.base = base;
     model.manifest = manifest;
-    model.source = source;
+    // The fragment stages: "default" and the model's option variants
+    // (deliot2023's "noise_texture", 000 6.3), compiled on first use.
+    model.shaders = manifest.shaders.filter((s) => s.stage === 'fragment');
+    model.variants = model.shaders.map((s) => s.variant);
+    if (!model.variants.includes('default'))
+      throw new Error(`${manifestUrl}: no default fragment shader listed`);
+    model.programs = new Map();
     model.parameters = parameterTable(manifest, info);
-    model.program = renderer.forwardProgram(source, shader.file);
     model.textures = [];
     model.constants = {};  // uniforms given by the manifest's resources
     model.environment = null;
@@ -121,6 +124,19 @@ export class ExportedModel {
         };
     }
     return model;
+  }
+
+  // The forward program of fragment-stage variant `variant`.
+  async program(renderer, variant) {
+    if (!this.programs.has(variant)) {
+      const shader = this.shaders.find((s) => s.variant === variant);
+      if (!shader)
+        throw new Error(`${this.name} has no shader variant "${variant}" ` +
+                        `(exported: ${this.variants.join(', ')})`);
+      const source = await (await fetchOk(`${this.base}/${shader.file}`, 'shader')).text();
+      this.programs.set(variant, renderer.forwardProgram(source, shader.file));
+    }
+    return this.programs.get(variant);
   }
 
   // Sets every uniform of the forward program for `state` (app.js) and

@@ -163,42 +163,48 @@ def test_load(page, export_dir):
         print(f"FAIL: no exported model in {export_dir}")
         return False
     ok = True
-    for model in models:
-        for shape in ("sphere", "plane"):
-            # A fresh page per model (its own console), the plane in it.
-            query = f"model={model}&shape={shape}&w=64&h=64&static=1"
-            state, log = page.open(query) if shape == "sphere" else page.navigate(query)
-            problems = []
-            if state.get("error"):
-                problems.append(f"page error: {state['error']}")
-            if state.get("glErrors"):
-                problems.append(f"WebGL errors: {state['glErrors']}")
-            problems += [f"console {e['level']}: {e['message']}" for e in errors_in(log)]
-            if not problems:
-                # A frame with light on the shape: a shader that compiled
-                # but wrote nothing (or NaN) would pass the checks above.
-                img = page.hdr()
-                covered = img[..., 3] > 0.5
-                rgb = img[..., :3]
-                if not np.all(np.isfinite(rgb)):
-                    problems.append("non-finite pixels")
-                elif covered.sum() < 100 or rgb[covered].sum() <= 0.0:
-                    problems.append(f"empty frame ({covered.sum()} covered pixels, "
-                                    f"sum {rgb[covered].sum():.3g})")
-                else:
-                    # The canvas shows the frame tone mapped (exposure -1 by
-                    # default, sRGB): within one 8-bit step of the encode of
-                    # the read-back (rounding of the 8-bit target).
-                    exposure = page.driver.execute_script("return window.glintlab.state.exposure;")
-                    want = srgb8(rgb * 2.0 ** exposure)
-                    shown = page.display()[..., :3].astype(np.float64)
-                    off = np.abs(shown - want).max()
-                    if off > 1.0:
-                        problems.append(f"canvas differs from the tone-mapped frame by {off:.0f}/255")
-            print(f"{model:13s} {shape:6s} {'ok' if not problems else 'FAIL'}")
-            for p in problems:
-                print(f"    {p}")
-            ok = ok and not problems
+    views = [(m, shape, "default") for m in models for shape in ("sphere", "plane")]
+    # The other fragment stages of the exports (deliot2023's noise_texture).
+    for m in models:
+        with open(os.path.join(export_dir, f"{m}.glsles.manifest.json")) as f:
+            views += [(m, "sphere", s["variant"]) for s in json.load(f)["shaders"]
+                      if s["stage"] == "fragment" and s["variant"] != "default"]
+    for model, shape, variant in sorted(views, key=lambda v: models.index(v[0])):
+        # A fresh page per model (its own console), its other views in it.
+        query = f"model={model}&shape={shape}&variant={variant}&w=64&h=64&static=1"
+        first = (shape, variant) == ("sphere", "default")
+        state, log = page.open(query) if first else page.navigate(query)
+        problems = []
+        if state.get("error"):
+            problems.append(f"page error: {state['error']}")
+        if state.get("glErrors"):
+            problems.append(f"WebGL errors: {state['glErrors']}")
+        problems += [f"console {e['level']}: {e['message']}" for e in errors_in(log)]
+        if not problems:
+            # A frame with light on the shape: a shader that compiled
+            # but wrote nothing (or NaN) would pass the checks above.
+            img = page.hdr()
+            covered = img[..., 3] > 0.5
+            rgb = img[..., :3]
+            if not np.all(np.isfinite(rgb)):
+                problems.append("non-finite pixels")
+            elif covered.sum() < 100 or rgb[covered].sum() <= 0.0:
+                problems.append(f"empty frame ({covered.sum()} covered pixels, "
+                                f"sum {rgb[covered].sum():.3g})")
+            else:
+                # The canvas shows the frame tone mapped (exposure -1 by
+                # default, sRGB): within one 8-bit step of the encode of
+                # the read-back (rounding of the 8-bit target).
+                exposure = page.driver.execute_script("return window.glintlab.state.exposure;")
+                want = srgb8(rgb * 2.0 ** exposure)
+                shown = page.display()[..., :3].astype(np.float64)
+                off = np.abs(shown - want).max()
+                if off > 1.0:
+                    problems.append(f"canvas differs from the tone-mapped frame by {off:.0f}/255")
+        print(f"{model:13s} {shape:6s} {variant:13s} {'ok' if not problems else 'FAIL'}")
+        for p in problems:
+            print(f"    {p}")
+        ok = ok and not problems
     return ok
 
 
