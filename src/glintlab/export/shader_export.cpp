@@ -1,7 +1,10 @@
 #include "glintlab/export/shader_export.h"
 
+#include <array>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <fstream>
 #include <map>
 #include <regex>
@@ -22,6 +25,8 @@
 #include "glintlab/glints/glint_model_descriptor.h"
 #include "glintlab/glints/kneiphof2025/kneiphof2025_prefilter.h"
 #include "glintlab/glints/registry.h"
+#include "glintlab/glints/wang2020/wang2020_model.h"
+#include "glintlab/glints/wang2020/wang2020_shading.h"
 #include "glintlab/scene/environment.h"
 
 #ifndef GLINTLAB_GIT_COMMIT
@@ -73,6 +78,15 @@ const std::vector<ExportModel>& export_table() {
           "glintlab/glints/kneiphof2025/kneiphof2025_prefilter_partition.comp.glsl",
           "glintlab/glints/kneiphof2025/kneiphof2025_prefilter_reduce.comp.glsl",
           "glintlab/glints/kneiphof2025/kneiphof2025_prefilter_filter.comp.glsl"}},
+        // The renderer's glue reads the tables from SSBOs (wang2020_gpu.glsl);
+        // the export reads them from textures in every language (GLSL ES 3.00
+        // has no storage buffers), the rest of the glue is shared
+        // (wang2020_glue_common.glsl).
+        {GlintModelId::Wang2020,
+         "glintlab/glints/wang2020/wang2020_export_textures.glsl",
+         nullptr,
+         nullptr,
+         {}},
     };
     return table;
 }
@@ -461,7 +475,8 @@ std::vector<ExportedFile> export_model(const ExportOptions& o) {
     // Resources.
     auto resource = [&](const std::string& key, const std::vector<float>& values,
                         nlohmann::json info) {
-        const std::string name = fmt::format("{}.{}.f32", model, key);
+        const bool uint = info.value("format", "") == "RG32UI";  // uint32 bit patterns
+        const std::string name = fmt::format("{}.{}.{}", model, key, uint ? "u32" : "f32");
         add(name, "texture", float_bytes(values));
         info["file"] = name;
         info["bytes"] = values.size() * sizeof(float);
@@ -584,6 +599,100 @@ std::vector<ExportedFile> export_model(const ExportOptions& o) {
                 {"u_kneiphof2025_radiance_scale", 1.0f},
                 {"levels_K", pre.levels()}};
         }
+    }
+
+    if (d->id == GlintModelId::Wang2020) {
+        // The tables of the default wang2020 material (switch_glint_model:
+        // the descriptor's defaults, isotropic Beckmann), under --env's
+        // environment if given: the arrays the renderer uploads as SSBOs,
+        // laid out in textures WANG2020_TABLE_WIDTH (4096) texels wide.
+        GlintDesc g;
+        switch_glint_model(g, GlintModelId::Wang2020);
+        std::shared_ptr<const EnvironmentMap> env;
+        if (!o.environment.empty())
+            env = std::make_shared<EnvironmentMap>(read_image(o.environment), 1.0f, 0.0f);
+        const auto model_tables = wang2020_model_for(g, env);
+        constexpr size_t kWidth = 4096;  // WANG2020_TABLE_WIDTH
+        auto table = [&](const std::string& key, std::vector<float> values, int channels,
+                         const std::string& format, const std::string& uniform,
+                         const std::string& meaning) {
+            const size_t elements = values.size() / static_cast<size_t>(channels);
+            const size_t rows = std::max<size_t>(1, (elements + kWidth - 1) / kWidth);
+            values.resize(rows * kWidth * static_cast<size_t>(channels), 0.0f);
+            resource(
+                key, values,
+                {{"uniform", uniform},
+                 {"format", format},
+                 {"width", kWidth},
+                 {"height", rows},
+                 {"elements", elements},
+                 {"filter", "nearest"},
+                 {"wrap", "clamp_to_edge"},
+                 {"mipmaps", false},
+                 {"meaning", meaning + "; element i at texel (i % 4096, i / 4096), texelFetch"}});
+        };
+        auto vec4s = [](const std::vector<glm::vec4>& v) {
+            std::vector<float> out;
+            for (const glm::vec4& e : v) out.insert(out.end(), {e.x, e.y, e.z, e.w});
+            return out;
+        };
+        table("dpf", model_tables->dpf().values(), 1, "R32F", "u_wang2020_dpf_texture",
+              "extracted DPF table P(i, o, gamma) (001 Eq. 6, 4.4)");
+        table("prefilter",
+              model_tables->prefiltered() ? vec4s(model_tables->prefiltered()->data())
+                                          : std::vector<float>(4, 0.0f),
+              4, "RGBA32F", "u_wang2020_prefilter_texture",
+              "prefiltered environment tables (001 Eqs. 16-17; one zero texel without --env)");
+        {
+            // Quadtree nodes {first_child, count_mask} as uint32 pairs (RG32UI).
+            std::vector<float> bits;
+            for (const wang2020::QuadtreeNode& n : model_tables->quadtree().nodes()) {
+                float a, b;
+                std::memcpy(&a, &n.first_child, 4);
+                std::memcpy(&b, &n.count_mask, 4);
+                bits.push_back(a);
+                bits.push_back(b);
+            }
+            table("nodes", bits, 2, "RG32UI", "u_wang2020_nodes_texture",
+                  "particle quadtree nodes {first_child, count_mask} as uint32 (001 4.4)");
+            man.resources.back()["encoding"] =
+                "raw little-endian uint32 pairs, row-major, first row at t = 0";
+        }
+        table("cone",
+              model_tables->cone_average() ? vec4s(model_tables->cone_average()->data())
+                                           : std::vector<float>(4, 0.0f),
+              4, "RGBA32F", "u_wang2020_cone_texture",
+              "cone-averaged environment L_gamma (micro per_particle mode; one zero texel "
+              "otherwise)");
+        const wang2020::DpfResolution& dr = model_tables->dpf().resolution();
+        std::array<int, 4> pres{1, 1, 1, 1};
+        if (model_tables->prefiltered()) {
+            const wang2020::PrefilterResolution& pr = model_tables->prefiltered()->resolution();
+            pres = {pr.theta_n, pr.phi_n, pr.theta_o, pr.phi_o};
+        }
+        const std::array<int, 2> cres =
+            model_tables->cone_average()
+                ? std::array<int, 2>{model_tables->cone_average()->width(),
+                                     model_tables->cone_average()->height()}
+                : std::array<int, 2>{1, 1};
+        man.resources.back()["uniforms"] = {
+            {"u_wang2020_dpf_res", {dr.theta_i, dr.theta_o, dr.phi}},
+            {"u_wang2020_prefilter_res", pres},
+            {"u_wang2020_depth", model_tables->quadtree().depth()},
+            {"u_wang2020_seed", model_tables->material().seed},
+            {"u_wang2020_particles", static_cast<double>(model_tables->quadtree().particles())},
+            {"u_wang2020_sigma", static_cast<double>(model_tables->sigma_o())},
+            {"u_wang2020_micro",
+             model_tables->material().micro == wang2020::MicroMode::PerParticle ? 1 : 0},
+            {"u_wang2020_cone_res", cres},
+            {"u_wang2020_cos_gamma",
+             std::cos(model_tables->material().gamma_deg * 3.14159265358979323846 / 180.0)},
+            {"u_glint_alpha", {g.alpha_x, g.alpha_y}},
+            {"u_glint_log_density", g.log_density},
+            {"u_glint_seed", g.seed}};
+        man.resources.back()["note"] =
+            "the tables are those of the default wang2020 material (uniforms above): a "
+            "material with another alpha, density, seed or parameters needs its own tables";
     }
 
     nlohmann::json j;

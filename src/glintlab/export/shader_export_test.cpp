@@ -117,7 +117,9 @@ TEST_P(ExportEach, EveryFileCompilesStandaloneAndTheManifestMatches) {
     }
     for (const auto& r : j.at("resources")) {
         const std::string format = r.at("format");
-        const uint64_t channels = format == "R32F" ? 1 : format == "RG32F" ? 2 : 4;
+        const uint64_t channels = format == "R32F"                          ? 1
+                                  : format == "RG32F" || format == "RG32UI" ? 2
+                                                                            : 4;
         const uint64_t layers = r.contains("layers") ? r.at("layers").get<uint64_t>() : 1;
         const uint64_t expected =
             r.at("width").get<uint64_t>() * r.at("height").get<uint64_t>() * layers * channels * 4;

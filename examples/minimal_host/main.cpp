@@ -1,0 +1,395 @@
+// minimal_host: the smallest program that draws a glint material from the
+// files of `glintlab export MODEL --lang glsl` alone — no glintlab library,
+// no glintlab header (docs/INTEGRATION.md "Minimal host"). It renders the PLANE_25
+// view of Deliot & Belcour 2023's Table 1 (an 8 x 8 quad with uv scale 8,
+// camera 25 degrees above it at distance 3, a directional light, silver
+// conductor Fresnel, Beckmann roughness 0.3) headless through EGL
+// (surfaceless Mesa platform) into an RGBA32F framebuffer and writes the
+// linear radiance as a PFM file.
+//
+// Usage: minimal_host EXPORT_DIR MODEL OUT.pfm [WIDTH HEIGHT LOG_DENSITY]
+//
+// What a host does with an export, in order:
+//  1. read MODEL.glsl.manifest.json: the fragment shader's file, the model's
+//     parameters (uniform name, default) and resources (file, format, size,
+//     filtering, uniform);
+//  2. compile its own vertex stage (outputs v_position, v_normal, v_uv,
+//     v_dpdu in world space) with the exported fragment stage;
+//  3. upload each resource as a texture and point its sampler uniform at a unit;
+//  4. set the material, light and camera uniforms; draw.
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <fstream>
+#include <iterator>
+#include <map>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include <epoxy/egl.h>
+#include <epoxy/gl.h>
+#include <nlohmann/json.hpp>
+
+namespace {
+
+[[noreturn]] void die(const std::string& what) {
+    throw std::runtime_error(what);
+}
+
+std::string slurp(const std::string& path) {
+    std::ifstream f(path, std::ios::binary);
+    if (!f) die("cannot read " + path);
+    return std::string((std::istreambuf_iterator<char>(f)), std::istreambuf_iterator<char>());
+}
+
+// A headless OpenGL 4.5 core context on Mesa's surfaceless EGL platform.
+void make_context() {
+    const char* ext = eglQueryString(EGL_NO_DISPLAY, EGL_EXTENSIONS);
+    if (ext == nullptr || std::strstr(ext, "EGL_MESA_platform_surfaceless") == nullptr)
+        die("EGL_MESA_platform_surfaceless is not available");
+    EGLDisplay display =
+        eglGetPlatformDisplayEXT(EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY, nullptr);
+    EGLint major = 0, minor = 0;
+    if (display == EGL_NO_DISPLAY || !eglInitialize(display, &major, &minor))
+        die("eglInitialize failed");
+    const EGLint config_attribs[] = {EGL_RENDERABLE_TYPE, EGL_OPENGL_BIT, EGL_SURFACE_TYPE,
+                                     EGL_PBUFFER_BIT, EGL_NONE};
+    EGLConfig config = nullptr;
+    EGLint count = 0;
+    if (!eglChooseConfig(display, config_attribs, &config, 1, &count) || count < 1) {
+        // Surfaceless displays may expose no config: a context without one.
+        config = nullptr;
+    }
+    if (!eglBindAPI(EGL_OPENGL_API)) die("eglBindAPI(EGL_OPENGL_API) failed");
+    const EGLint context_attribs[] = {EGL_CONTEXT_MAJOR_VERSION,
+                                      4,
+                                      EGL_CONTEXT_MINOR_VERSION,
+                                      5,
+                                      EGL_CONTEXT_OPENGL_PROFILE_MASK,
+                                      EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT,
+                                      EGL_NONE};
+    EGLContext context = eglCreateContext(display, config, EGL_NO_CONTEXT, context_attribs);
+    if (context == EGL_NO_CONTEXT) die("no OpenGL 4.5 core context");
+    if (!eglMakeCurrent(display, EGL_NO_SURFACE, EGL_NO_SURFACE, context))
+        die("eglMakeCurrent failed");
+}
+
+GLuint compile(GLenum stage, const std::string& text, const std::string& name) {
+    GLuint s = glCreateShader(stage);
+    const char* src = text.c_str();
+    glShaderSource(s, 1, &src, nullptr);
+    glCompileShader(s);
+    GLint ok = 0;
+    glGetShaderiv(s, GL_COMPILE_STATUS, &ok);
+    if (!ok) {
+        char log[8192];
+        glGetShaderInfoLog(s, sizeof log, nullptr, log);
+        die(name + ": " + log);
+    }
+    return s;
+}
+
+// The vertex stage the exported fragment stage expects (world-space inputs).
+const char* kVertex = R"(#version 450 core
+layout(location = 0) in vec3 a_position;
+layout(location = 1) in vec3 a_normal;
+layout(location = 2) in vec2 a_uv;
+layout(location = 3) in vec3 a_dpdu;
+uniform mat4 u_view_projection;
+out vec3 v_position;
+out vec3 v_normal;
+out vec2 v_uv;
+out vec3 v_dpdu;
+void main() {
+    v_position = a_position;
+    v_normal = a_normal;
+    v_uv = a_uv;
+    v_dpdu = a_dpdu;
+    gl_Position = u_view_projection * vec4(a_position, 1.0);
+}
+)";
+
+// Column-major 4x4 matrices (OpenGL's layout).
+struct Mat4 {
+    float m[16] = {};
+};
+Mat4 multiply(const Mat4& a, const Mat4& b) {
+    Mat4 r;
+    for (int c = 0; c < 4; ++c)
+        for (int row = 0; row < 4; ++row)
+            for (int k = 0; k < 4; ++k) r.m[c * 4 + row] += a.m[k * 4 + row] * b.m[c * 4 + k];
+    return r;
+}
+struct Vec3 {
+    float x, y, z;
+};
+Vec3 sub(Vec3 a, Vec3 b) {
+    return {a.x - b.x, a.y - b.y, a.z - b.z};
+}
+Vec3 cross(Vec3 a, Vec3 b) {
+    return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
+}
+float dot(Vec3 a, Vec3 b) {
+    return a.x * b.x + a.y * b.y + a.z * b.z;
+}
+Vec3 normalize(Vec3 a) {
+    const float l = std::sqrt(dot(a, a));
+    return {a.x / l, a.y / l, a.z / l};
+}
+// gluLookAt / gluPerspective (vertical field of view).
+Mat4 look_at(Vec3 eye, Vec3 target, Vec3 up) {
+    const Vec3 f = normalize(sub(target, eye));
+    const Vec3 s = normalize(cross(f, up));
+    const Vec3 u = cross(s, f);
+    Mat4 r;
+    r.m[0] = s.x, r.m[4] = s.y, r.m[8] = s.z;
+    r.m[1] = u.x, r.m[5] = u.y, r.m[9] = u.z;
+    r.m[2] = -f.x, r.m[6] = -f.y, r.m[10] = -f.z;
+    r.m[12] = -dot(s, eye), r.m[13] = -dot(u, eye), r.m[14] = dot(f, eye);
+    r.m[15] = 1.0f;
+    return r;
+}
+Mat4 perspective(float fovy, float aspect, float near_plane, float far_plane) {
+    const float t = std::tan(fovy / 2.0f);
+    Mat4 r;
+    r.m[0] = 1.0f / (aspect * t);
+    r.m[5] = 1.0f / t;
+    r.m[10] = -(far_plane + near_plane) / (far_plane - near_plane);
+    r.m[11] = -1.0f;
+    r.m[14] = -(2.0f * far_plane * near_plane) / (far_plane - near_plane);
+    return r;
+}
+
+// Sets a uniform from JSON values by the uniform's declared type.
+void set_uniform(GLuint program, const std::map<std::string, GLenum>& types,
+                 const std::string& name, const nlohmann::json& v) {
+    const GLint loc = glGetUniformLocation(program, name.c_str());
+    const auto it = types.find(name);
+    if (loc < 0 || it == types.end()) return;  // optimised out: nothing to set
+    auto f = [&](int i) { return v.is_array() ? v.at(i).get<float>() : v.get<float>(); };
+    auto n = [&](int i) {
+        const nlohmann::json& e = v.is_array() ? v.at(i) : v;
+        return e.is_boolean() ? (e.get<bool>() ? 1 : 0) : e.get<int>();
+    };
+    switch (it->second) {
+        case GL_FLOAT:
+            glProgramUniform1f(program, loc, f(0));
+            break;
+        case GL_FLOAT_VEC2:
+            glProgramUniform2f(program, loc, f(0), f(1));
+            break;
+        case GL_FLOAT_VEC3:
+            glProgramUniform3f(program, loc, f(0), f(1), f(2));
+            break;
+        case GL_FLOAT_VEC4:
+            glProgramUniform4f(program, loc, f(0), f(1), f(2), f(3));
+            break;
+        case GL_INT:
+        case GL_BOOL:
+            glProgramUniform1i(program, loc, n(0));
+            break;
+        case GL_UNSIGNED_INT:
+            glProgramUniform1ui(program, loc, static_cast<GLuint>(n(0)));
+            break;
+        case GL_INT_VEC3:
+            glProgramUniform3i(program, loc, n(0), n(1), n(2));
+            break;
+        default:
+            die("uniform " + name + ": type not handled by this host");
+    }
+}
+
+void write_pfm(const std::string& path, int w, int h, const std::vector<float>& rgb) {
+    std::ofstream f(path, std::ios::binary);
+    f << "PF\n" << w << " " << h << "\n-1.0\n";  // little-endian, rows bottom to top
+    f.write(reinterpret_cast<const char*>(rgb.data()),
+            static_cast<std::streamsize>(rgb.size() * sizeof(float)));
+    if (!f) die("cannot write " + path);
+}
+
+int run(int argc, char** argv) {
+    if (argc != 4 && argc != 7) {
+        std::fprintf(stderr, "usage: %s EXPORT_DIR MODEL OUT.pfm [WIDTH HEIGHT LOG_DENSITY]\n",
+                     argv[0]);
+        return 2;
+    }
+    const std::string dir = argv[1], model = argv[2], out = argv[3];
+    const int width = argc == 7 ? std::atoi(argv[4]) : 128;
+    const int height = argc == 7 ? std::atoi(argv[5]) : 128;
+    const float log_density = argc == 7 ? static_cast<float>(std::atof(argv[6])) : 12.0f;
+    if (width < 1 || height < 1 || width > 8192 || height > 8192) die("bad image size");
+
+    const nlohmann::json manifest =
+        nlohmann::json::parse(slurp(dir + "/" + model + ".glsl.manifest.json"));
+    std::string fragment_file;
+    for (const auto& s : manifest.at("shaders"))
+        if (s.at("variant") == "default") fragment_file = s.at("file");
+    if (fragment_file.empty()) die("manifest lists no default fragment shader");
+
+    make_context();
+    GLuint program = glCreateProgram();
+    glAttachShader(program, compile(GL_VERTEX_SHADER, kVertex, "vertex stage"));
+    glAttachShader(program,
+                   compile(GL_FRAGMENT_SHADER, slurp(dir + "/" + fragment_file), fragment_file));
+    glLinkProgram(program);
+    GLint linked = 0;
+    glGetProgramiv(program, GL_LINK_STATUS, &linked);
+    if (!linked) {
+        char log[8192];
+        glGetProgramInfoLog(program, sizeof log, nullptr, log);
+        die(std::string("link: ") + log);
+    }
+    std::map<std::string, GLenum> types;
+    GLint active = 0;
+    glGetProgramiv(program, GL_ACTIVE_UNIFORMS, &active);
+    for (GLint i = 0; i < active; ++i) {
+        char name[256];
+        GLint size = 0;
+        GLenum type = 0;
+        glGetActiveUniform(program, static_cast<GLuint>(i), sizeof name, nullptr, &size, &type,
+                           name);
+        std::string n(name);
+        if (n.size() > 3 && n.substr(n.size() - 3) == "[0]") n.resize(n.size() - 3);
+        types[n] = type;
+    }
+
+    // Resources: textures at units from 4 on, as the manifest describes them.
+    int unit = 4;
+    for (const auto& r : manifest.at("resources")) {
+        if (r.contains("used_by")) continue;  // a variant's resource
+        const std::string format = r.at("format");
+        const int w = r.at("width"), h = r.at("height");
+        const std::string data = slurp(dir + "/" + r.at("file").get<std::string>());
+        GLenum internal = GL_RGBA32F, fmt = GL_RGBA;
+        if (format == "R32F") internal = GL_R32F, fmt = GL_RED;
+        if (format == "RG32F") internal = GL_RG32F, fmt = GL_RG;
+        if (r.contains("layers")) die("texture arrays are not handled by this host");
+        GLuint tex = 0;
+        glCreateTextures(GL_TEXTURE_2D, 1, &tex);
+        glTextureStorage2D(tex, 1, internal, w, h);
+        glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+        glTextureSubImage2D(tex, 0, 0, 0, w, h, fmt, GL_FLOAT, data.data());
+        const GLint filter = r.at("filter") == "linear" ? GL_LINEAR : GL_NEAREST;
+        glTextureParameteri(tex, GL_TEXTURE_MIN_FILTER, filter);
+        glTextureParameteri(tex, GL_TEXTURE_MAG_FILTER, filter);
+        const GLint wrap = r.at("wrap") == "repeat" ? GL_REPEAT : GL_CLAMP_TO_EDGE;
+        glTextureParameteri(tex, GL_TEXTURE_WRAP_S, wrap);
+        glTextureParameteri(tex, GL_TEXTURE_WRAP_T, wrap);
+        glBindTextureUnit(static_cast<GLuint>(unit), tex);
+        glProgramUniform1i(
+            program, glGetUniformLocation(program, r.at("uniform").get<std::string>().c_str()),
+            unit);
+        if (r.contains("uniforms"))
+            for (const auto& [name, value] : r.at("uniforms").items())
+                set_uniform(program, types, name, value);
+        ++unit;
+    }
+    // The model's parameters at their defaults.
+    for (const auto& p : manifest.at("parameters")) {
+        if (!p.contains("uniform")) {
+            std::fprintf(stderr, "minimal_host: %s.%s is host-side; left at the shader's default\n",
+                         model.c_str(), p.at("key").get<std::string>().c_str());
+            continue;
+        }
+        set_uniform(program, types, p.at("uniform"), p.at("default"));
+    }
+
+    // PLANE_25: camera 25 degrees above an 8 x 8 quad (uv scale 8), fov 45.
+    const float pi = 3.14159265358979f;
+    const float e = 25.0f * pi / 180.0f;
+    const Vec3 eye{0.0f, 3.0f * std::sin(e), 3.0f * std::cos(e)};
+    // Depth range from the quad's bounding sphere (radius 4 sqrt 2), as glintlab's renderer.
+    const float radius = std::sqrt(32.0f);
+    const float along = std::sqrt(dot(eye, eye));
+    const float far_plane = along + radius * 1.01f;
+    const float near_plane = std::fmax(along - radius * 1.01f, far_plane * 1e-5f);
+    const Mat4 vp = multiply(
+        perspective(45.0f * pi / 180.0f, static_cast<float>(width) / static_cast<float>(height),
+                    near_plane, far_plane),
+        look_at(eye, {0, 0, 0}, {0, 1, 0}));
+    glProgramUniformMatrix4fv(program, glGetUniformLocation(program, "u_view_projection"), 1,
+                              GL_FALSE, vp.m);
+    set_uniform(program, types, "u_eye", {eye.x, eye.y, eye.z});
+    // Material: Beckmann (0), alpha 0.3, silver conductor (Fresnel mode 2).
+    set_uniform(program, types, "u_glint_ndf", 0);
+    set_uniform(program, types, "u_glint_alpha", {0.3f, 0.3f});
+    set_uniform(program, types, "u_glint_log_density", log_density);
+    set_uniform(program, types, "u_glint_seed", 0);
+    set_uniform(program, types, "u_glint_color", {1.0f, 1.0f, 1.0f});
+    set_uniform(program, types, "u_glint_base_albedo", {0.0f, 0.0f, 0.0f});
+    set_uniform(program, types, "u_fresnel_mode", 2);
+    set_uniform(program, types, "u_fresnel_eta", {0.155f, 0.116f, 0.138f});
+    set_uniform(program, types, "u_fresnel_k", {4.828f, 3.122f, 2.147f});
+    set_uniform(program, types, "u_glint_g2", model == "chermain2020" ? 1 : 0);
+    // One directional light towards (0.3, 0.8, 0.5), irradiance 2.
+    const Vec3 l = normalize({0.3f, 0.8f, 0.5f});
+    set_uniform(program, types, "u_directional_count", 1);
+    set_uniform(program, types, "u_directional_direction", {l.x, l.y, l.z});
+    set_uniform(program, types, "u_directional_irradiance", {2.0f, 2.0f, 2.0f});
+    set_uniform(program, types, "u_point_count", 0);
+    set_uniform(program, types, "u_environment_on", false);
+
+    // The quad: y = 0, normal +y, uv (0,0) at (-4, 0, 4), dp/du = (1, 0, 0).
+    const float v[] = {
+        -4, 0, 4,  0, 1, 0, 0, 0, 1, 0, 0,  //
+        4,  0, 4,  0, 1, 0, 8, 0, 1, 0, 0,  //
+        4,  0, -4, 0, 1, 0, 8, 8, 1, 0, 0,  //
+        -4, 0, -4, 0, 1, 0, 0, 8, 1, 0, 0,
+    };
+    const GLuint indices[] = {0, 1, 2, 0, 2, 3};
+    GLuint vbo = 0, ibo = 0, vao = 0;
+    glCreateBuffers(1, &vbo);
+    glNamedBufferStorage(vbo, sizeof v, v, 0);
+    glCreateBuffers(1, &ibo);
+    glNamedBufferStorage(ibo, sizeof indices, indices, 0);
+    glCreateVertexArrays(1, &vao);
+    glVertexArrayVertexBuffer(vao, 0, vbo, 0, 11 * sizeof(float));
+    glVertexArrayElementBuffer(vao, ibo);
+    const int sizes[] = {3, 3, 2, 3}, offsets[] = {0, 3, 6, 8};
+    for (GLuint a = 0; a < 4; ++a) {
+        glEnableVertexArrayAttrib(vao, a);
+        glVertexArrayAttribFormat(vao, a, sizes[a], GL_FLOAT, GL_FALSE,
+                                  static_cast<GLuint>(offsets[a] * sizeof(float)));
+        glVertexArrayAttribBinding(vao, a, 0);
+    }
+
+    // A linear RGBA32F target: the exported shader writes radiance, not sRGB.
+    GLuint color = 0, depth = 0, fbo = 0;
+    glCreateTextures(GL_TEXTURE_2D, 1, &color);
+    glTextureStorage2D(color, 1, GL_RGBA32F, width, height);
+    glCreateRenderbuffers(1, &depth);
+    glNamedRenderbufferStorage(depth, GL_DEPTH_COMPONENT32F, width, height);
+    glCreateFramebuffers(1, &fbo);
+    glNamedFramebufferTexture(fbo, GL_COLOR_ATTACHMENT0, color, 0);
+    glNamedFramebufferRenderbuffer(fbo, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, depth);
+    if (glCheckNamedFramebufferStatus(fbo, GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
+        die("framebuffer incomplete");
+    glBindFramebuffer(GL_FRAMEBUFFER, fbo);
+    glViewport(0, 0, width, height);
+    glClearColor(0, 0, 0, 1);
+    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    glEnable(GL_DEPTH_TEST);
+    glUseProgram(program);
+    glBindVertexArray(vao);
+    glDrawElements(GL_TRIANGLES, 6, GL_UNSIGNED_INT, nullptr);
+
+    std::vector<float> rgb(static_cast<size_t>(width) * height * 3);
+    glPixelStorei(GL_PACK_ALIGNMENT, 4);
+    glReadPixels(0, 0, width, height, GL_RGB, GL_FLOAT, rgb.data());
+    if (glGetError() != GL_NO_ERROR) die("OpenGL error");
+    write_pfm(out, width, height, rgb);
+    return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    try {
+        return run(argc, argv);
+    } catch (const std::exception& e) {
+        std::fprintf(stderr, "minimal_host: %s\n", e.what());
+        return 1;
+    }
+}

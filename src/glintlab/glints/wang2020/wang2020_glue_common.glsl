@@ -1,0 +1,53 @@
+// The part of wang2020's GPU glue that does not depend on how the tables are
+// stored: the model's uniforms, the Wang2020Tables they fill and the
+// functions the forward pass calls (GLINTLAB_GLINT_OWN_LIGHTS). Included by
+// wang2020_gpu.glsl (tables in SSBOs, the renderer) and
+// wang2020_export_textures.glsl (tables in textures, `glintlab export` for
+// GLSL ES / WebGL2), after they define the four table reads.
+#ifndef GLINTLAB_GLINTS_WANG2020_GLUE_COMMON_GLSL
+#define GLINTLAB_GLINTS_WANG2020_GLUE_COMMON_GLSL
+
+#include "glintlab/glints/glint_uniforms.glsl"
+#include "glintlab/glints/wang2020/wang2020_tables.glsl"
+#define GLINTLAB_GLINT_OWN_LIGHTS 1
+uniform ivec3 u_wang2020_dpf_res;
+uniform ivec4 u_wang2020_prefilter_res;
+uniform int u_wang2020_depth;
+uniform uint u_wang2020_seed;
+uniform float u_wang2020_particles;
+uniform float u_wang2020_sigma;
+uniform int u_wang2020_micro;
+uniform ivec2 u_wang2020_cone_res;
+uniform float u_wang2020_cos_gamma;
+Wang2020Tables wang2020_tables() {
+    Wang2020Tables t;
+    t.dpf_res = u_wang2020_dpf_res;
+    t.prefilter_res = u_wang2020_prefilter_res;
+    t.depth = u_wang2020_depth;
+    t.seed = u_wang2020_seed;
+    t.particles = u_wang2020_particles;
+    t.sigma = u_wang2020_sigma;
+    t.alpha = u_glint_alpha.x;
+    t.micro = u_wang2020_micro;
+    t.cone_res = u_wang2020_cone_res;
+    t.cos_gamma = u_wang2020_cos_gamma;
+    return t;
+}
+// Eq. 21 (the CPU's wang2020_light_radiance, untinted).
+vec3 glint_own_light(vec3 wo, vec3 wi, vec3 li, Footprint fp) {
+    vec2 lo, hi;
+    wang2020_footprint_box(fp, lo, hi);
+    return wang2020_light(wang2020_tables(), lo, hi, wi, wo, li);
+}
+// Eqs. 18-20 (untinted; no directional occlusion on the GPU).
+vec3 glint_own_environment(vec3 n, vec3 o_world, Footprint fp) {
+    vec2 lo, hi;
+    wang2020_footprint_box(fp, lo, hi);
+    return wang2020_environment(wang2020_tables(), lo, hi, n, o_world);
+}
+// The smooth Beckmann limit (the CPU GlintBxdf's wang2020 case): eval_bsdf
+// needs glint_ndf, but every light of the forward pass (point, sphere as
+// point, directional, environment) goes through the functions above.
+#include "glintlab/glints/smooth_gpu.glsl"
+
+#endif
