@@ -2,8 +2,8 @@
 # Exports the glint models for the WebGL2 page (web/, docs/WEB.md):
 #     scripts/export_web.sh [GLINTLAB_CLI] [OUT_DIR]
 # runs `glintlab export MODEL --lang glsles -o OUT_DIR` for every model the
-# exporter accepts (kneiphof2025 with `--env` the environment map, so the
-# page has its prefiltered maps) and writes OUT_DIR/models.json
+# exporter accepts (kneiphof2025 and wang2020 with `--env` the environment
+# map, so the page has their prefiltered maps / tables) and writes OUT_DIR/models.json
 # (`glintlab info --json`: the parameters' ranges for the sliders) and
 # OUT_DIR/index.json (the exported models, the page's model list).
 # Defaults: build/release/glintlab, web/export (gitignored). The map is
@@ -13,7 +13,7 @@ set -euo pipefail
 cli="${1:-build/release/glintlab}"
 out="${2:-web/export}"
 env_map="${GLINTLAB_WEB_ENV:-/usr/share/blender/datafiles/studiolights/world/forest.exr}"
-models=(smooth zirr2016 chermain2020 deliot2023 kneiphof2025)
+models=(smooth zirr2016 chermain2020 deliot2023 kneiphof2025 wang2020)
 
 if [[ ! -x "$cli" ]]; then
     echo "export_web.sh: $cli is not an executable glintlab (build it: make build)" >&2
@@ -28,7 +28,7 @@ mkdir -p "$out"
 mv "$out/models.json.tmp" "$out/models.json"
 for model in "${models[@]}"; do
     args=(export "$model" --lang glsles -o "$out")
-    [[ "$model" == kneiphof2025 ]] && args+=(--env "$env_map")
+    [[ "$model" == kneiphof2025 || "$model" == wang2020 ]] && args+=(--env "$env_map")
     "$cli" "${args[@]}"
 done
 names=$(printf '"%s", ' "${models[@]}")

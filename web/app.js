@@ -76,6 +76,7 @@ function stateFromUrl(search) {
     exposure: number(q.get('exposure') ?? '-1', 'exposure', -20, 20),
     params: {},
     continuous: q.get('static') !== '1',
+    explicit: [...q.keys()],
     exportBase: q.get('export') ?? 'export',
   };
   if (q.has('roughness')) {
@@ -283,6 +284,19 @@ class App {
     this.model = this.models.get(name);
     this.renderer.forward = await this.model.program(this.renderer, this.state.variant);
     this.state.model = name;
+    // Material inputs the export fixes (wang2020's tables): the state shows
+    // them; a URL asking for another value is an error.
+    const m = this.state.material;
+    for (const [key, fixed] of Object.entries(this.model.fixedMaterial)) {
+      const current = key === 'roughness' ? m.roughness : [m[key]];
+      const want = Array.isArray(fixed) ? fixed : [fixed];
+      const differs = current.some((v, i) => Math.abs(v - want[i]) > 1e-6 * Math.max(1, Math.abs(want[i])));
+      if (differs && this.state.explicit.includes(key))
+        throw new UrlError(`URL parameter ${key}=${current.join(',')}: ${name}'s exported tables ` +
+                           `were built for ${key} ${want.join(',')} (export again for another)`);
+      if (key === 'roughness') m.roughness = want.slice();
+      else m[key] = want[0];
+    }
     // URL values of the model's parameters, checked against the descriptor.
     for (const p of this.model.parameters) {
       const raw = this.state.params[p.key];
@@ -378,8 +392,9 @@ class App {
       try {
         s.params = {};
         s.variant = 'default';
+        s.explicit = [];
         await this.setModel(modelSelect.value);
-        this.buildModelControls();
+        this.buildControls();
         this.changed();
       } catch (e) { this.fail(e); }
     };
@@ -419,12 +434,17 @@ class App {
     const mat = document.getElementById('material-controls');
     mat.replaceChildren(el('legend', {}, 'Glint material'));
     const m = s.material;
+    const fixed = (key) => key in this.model.fixedMaterial;
+    const fixedNote = `fixed by ${s.model}'s exported tables`;
     select(mat, 'ndf', ['beckmann', 'ggx'], m.ndf, (v) => { m.ndf = v; this.changed(); });
-    slider(mat, 'roughness α', {min: 0.001, max: 1, value: m.roughness[0], log: true},
+    slider(mat, 'roughness α', {min: 0.001, max: 1, value: m.roughness[0], log: true,
+                                disabled: fixed('roughness'), title: fixed('roughness') ? fixedNote : ''},
            (v) => { m.roughness = [v, v]; this.changed(); });
-    slider(mat, 'log_density', {min: -20, max: 60, value: m.log_density},
-           (v) => { m.log_density = v; this.changed(); }, 'ln(microfacets per unit uv area)');
-    slider(mat, 'seed', {min: 0, max: 1000, value: m.seed, integer: true},
+    slider(mat, 'log_density', {min: -20, max: 60, value: m.log_density, disabled: fixed('log_density'),
+                                title: fixed('log_density') ? fixedNote : 'ln(microfacets per unit uv area)'},
+           (v) => { m.log_density = v; this.changed(); });
+    slider(mat, 'seed', {min: 0, max: 1000, value: m.seed, integer: true, disabled: fixed('seed'),
+                         title: fixed('seed') ? fixedNote : ''},
            (v) => { m.seed = v; this.changed(); });
     ['r', 'g', 'b'].forEach((c, i) => slider(mat, `color ${c}`, {min: 0, max: 1, value: m.color[i]},
                                             (v) => { m.color[i] = v; this.changed(); }));
@@ -479,7 +499,7 @@ class App {
       man.citations.map((c) => `${c.authors} (${c.year}), ${c.venue}`).join('; ') +
       ` — glintlab ${man.glintlab_version}` +
       (this.model.environment ? `; environment ${this.model.environment.file.split('/').pop()}` : '');
-    document.getElementById('environment').disabled = !this.model.environment;
+    document.getElementById('environment').disabled = !this.model.environmentLit;
     if (this.model.variants.length > 1)
       select(box, 'shader variant', this.model.variants, s.variant, async (v) => {
         try {

@@ -20,6 +20,21 @@ const HOST_PARAMS = {
     gamma_deg: {uniform: 'u_kneiphof2025_gamma_solid_angle',
                 value: (v) => 2 * Math.PI * (1 - Math.cos(v * Math.PI / 180))},
   },
+  // Every wang2020 parameter shapes its tables (DPF, quadtree, prefilter,
+  // cone average), exported for the default material; blur and
+  // directional_occlusion are the renderer's post pass and occlusion ray,
+  // which the exported stage does not have.
+  wang2020: Object.fromEntries(
+      ['gamma_deg', 'depth', 'dpf_theta', 'dpf_phi', 'prefilter_samples', 'micro', 'prefilter']
+          .map((k) => [k, {baked: 'built into the exported tables'}])
+          .concat(['blur', 'directional_occlusion']
+                      .map((k) => [k, {baked: 'a renderer pass, not in the exported shader'}]))),
+};
+
+// Material inputs a model's export fixes (its tables were built for them):
+// the manifest's resource uniforms of these names.
+export const MATERIAL_UNIFORMS = {
+  u_glint_alpha: 'roughness', u_glint_log_density: 'log_density', u_glint_seed: 'seed',
 };
 
 // Fresnel reflectance at normal incidence of the material's Fresnel
@@ -63,6 +78,8 @@ function parameterTable(manifest, info) {
   return manifest.parameters.map((p) => {
     const b = bounds.get(p.key) ?? {};
     const h = host[p.key] ?? {};
+    // An enum switch without a host mapping cannot be set as a number.
+    if (p.type === 'enum' && !h.value && !h.baked) h.baked = 'an enum switch set at export';
     return {
       key: p.key, type: p.type, doc: p.doc, unit: p.unit, range: p.range,
       default: p.default, min: p.min ?? b.min, max: p.max ?? b.max,
@@ -95,9 +112,12 @@ export class ExportedModel {
     model.textures = [];
     model.constants = {};  // uniforms given by the manifest's resources
     model.environment = null;
+    model.fixedMaterial = {};  // material keys the export fixes (wang2020)
     for (const r of manifest.resources) {
-      const data = new Float32Array(await (await fetchOk(`${base}/${r.file}`, 'resource')).arrayBuffer());
-      const channels = {RGBA32F: 4, RGB32F: 3, RG32F: 2, R32F: 1}[r.format];
+      const bytes = await (await fetchOk(`${base}/${r.file}`, 'resource')).arrayBuffer();
+      const data = r.format.endsWith('UI') ? new Uint32Array(bytes) : new Float32Array(bytes);
+      const channels = {RGBA32F: 4, RGB32F: 3, RG32F: 2, R32F: 1, RG32UI: 2}[r.format];
+      if (!channels) throw new Error(`${r.file}: unsupported format "${r.format}"`);
       const layers = r.layers ?? 1;
       const expected = r.width * r.height * layers * channels;
       if (data.length !== expected)
@@ -112,6 +132,8 @@ export class ExportedModel {
       });
       model.textures.push({uniform: r.uniform, texture});
       Object.assign(model.constants, r.uniforms ?? {});
+      for (const [u, key] of Object.entries(MATERIAL_UNIFORMS))
+        if (r.uniforms && u in r.uniforms) model.fixedMaterial[key] = r.uniforms[u];
       // The prefiltered radiance's layer 0 (sqrt(alpha) = 0: the map
       // itself at the prefilter's resolution) is the page's background.
       if (r.environment && r.uniform === 'kneiphof2025_radiance_layers')
@@ -123,6 +145,12 @@ export class ExportedModel {
           }),
         };
     }
+    // Whether the export carries environment lighting: kneiphof2025's
+    // prefiltered maps, wang2020's prefiltered tables (one zero texel and
+    // resolution 1 x 1 x 1 x 1 when exported without --env).
+    const res = model.constants.u_wang2020_prefilter_res;
+    model.environmentLit = model.environment !== null ||
+                           (Array.isArray(res) && res.reduce((a, b) => a * b, 1) > 1);
     return model;
   }
 
@@ -164,7 +192,7 @@ export class ExportedModel {
     set('u_directional_direction', normalize3(l.direction));
     set('u_directional_irradiance', [l.irradiance, l.irradiance, l.irradiance]);
     set('u_point_count', 0);
-    const env = state.environment.on && this.environment !== null;
+    const env = state.environment.on && this.environmentLit;
     set('u_environment_on', env ? 1 : 0);
     for (const [name, value] of Object.entries(this.constants)) set(name, value);
     if (this.name === 'kneiphof2025') {

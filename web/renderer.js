@@ -176,7 +176,8 @@ export class Renderer {
       case gl.FLOAT_VEC4: gl.uniform4fv(u.location, v); break;
       case gl.INT: case gl.BOOL: case gl.SAMPLER_2D: case gl.SAMPLER_3D:
       case gl.SAMPLER_2D_ARRAY: case gl.SAMPLER_CUBE: case gl.INT_SAMPLER_2D:
-      case gl.UNSIGNED_INT_SAMPLER_2D:
+      case gl.UNSIGNED_INT_SAMPLER_2D: case gl.INT_SAMPLER_2D_ARRAY:
+      case gl.UNSIGNED_INT_SAMPLER_2D_ARRAY: case gl.SAMPLER_2D_SHADOW:
         gl.uniform1iv(u.location, v.map((x) => Math.trunc(x))); break;
       case gl.INT_VEC2: case gl.BOOL_VEC2: gl.uniform2iv(u.location, v); break;
       case gl.INT_VEC3: case gl.BOOL_VEC3: gl.uniform3iv(u.location, v); break;
@@ -221,31 +222,35 @@ export class Renderer {
     this.mesh = {vao, vbo, ibo, count: mesh.indices.length, bounds: mesh.bounds};
   }
 
-  // A float texture from raw data: `format` RGBA32F | RGB32F | RG32F | R32F,
-  // 2D, or 2D array / 3D with `depth`.
+  // A texture from raw data: `format` RGBA32F | RGB32F | RG32F | R32F
+  // (Float32Array) or RG32UI (Uint32Array, unfiltered), 2D, or 2D array / 3D
+  // with `depth`.
   floatTexture({data, width, height, depth = 0, format = 'RGBA32F', target = '2d',
                 filter = 'linear', wrap = 'clamp', mipmaps = false}) {
     const gl = this.gl;
     const formats = {
-      RGBA32F: [gl.RGBA32F, gl.RGBA], RGB32F: [gl.RGB32F, gl.RGB],
-      RG32F: [gl.RG32F, gl.RG], R32F: [gl.R32F, gl.RED],
+      RGBA32F: [gl.RGBA32F, gl.RGBA, gl.FLOAT], RGB32F: [gl.RGB32F, gl.RGB, gl.FLOAT],
+      RG32F: [gl.RG32F, gl.RG, gl.FLOAT], R32F: [gl.R32F, gl.RED, gl.FLOAT],
+      RG32UI: [gl.RG32UI, gl.RG_INTEGER, gl.UNSIGNED_INT],
     };
     if (!formats[format]) throw new Error(`texture format ${format} is not one of ${Object.keys(formats)}`);
-    const [internal, fmt] = formats[format];
+    const [internal, fmt, type] = formats[format];
+    const integer = type === gl.UNSIGNED_INT;
     const t = gl.createTexture();
     const glTarget = target === '2d' ? gl.TEXTURE_2D : target === '3d' ? gl.TEXTURE_3D
                                                                        : gl.TEXTURE_2D_ARRAY;
     gl.bindTexture(glTarget, t);
     gl.pixelStorei(gl.UNPACK_ALIGNMENT, 1);
     if (glTarget === gl.TEXTURE_2D)
-      gl.texImage2D(glTarget, 0, internal, width, height, 0, fmt, gl.FLOAT, data);
+      gl.texImage2D(glTarget, 0, internal, width, height, 0, fmt, type, data);
     else
-      gl.texImage3D(glTarget, 0, internal, width, height, depth, 0, fmt, gl.FLOAT, data);
-    const linear = filter === 'linear' && this.floatLinear;
-    if (mipmaps && this.floatLinear) gl.generateMipmap(glTarget);
+      gl.texImage3D(glTarget, 0, internal, width, height, depth, 0, fmt, type, data);
+    // Integer textures are never filtered; float ones need OES_texture_float_linear.
+    const linear = filter === 'linear' && this.floatLinear && !integer;
+    const mips = mipmaps && this.floatLinear && !integer;
+    if (mips) gl.generateMipmap(glTarget);
     gl.texParameteri(glTarget, gl.TEXTURE_MIN_FILTER,
-                     mipmaps && this.floatLinear ? gl.LINEAR_MIPMAP_LINEAR
-                                                 : linear ? gl.LINEAR : gl.NEAREST);
+                     mips ? gl.LINEAR_MIPMAP_LINEAR : linear ? gl.LINEAR : gl.NEAREST);
     gl.texParameteri(glTarget, gl.TEXTURE_MAG_FILTER, linear ? gl.LINEAR : gl.NEAREST);
     const wrapS = wrap === 'repeat' || wrap === 'repeat_u' ? gl.REPEAT : gl.CLAMP_TO_EDGE;
     const wrapT = wrap === 'repeat' ? gl.REPEAT : gl.CLAMP_TO_EDGE;
