@@ -94,6 +94,10 @@ TEST(Cli, BadInputGivesClearErrors) {
          {"cannot create the output directory"}},
         {"frobnicate", {"frobnicate"}},
         {"validate no_such_suite", {"no_such_suite"}},
+        {"export nope", {"\"nope\"", "deliot2023"}},
+        {"export jakob2014", {"jakob2014", "exportable"}},
+        {"export deliot2023 --lang glsl330", {"--lang", "glsles"}},
+        {"export deliot2023 -o " + scene.string() + "/sub", {"cannot create output directory"}},
     };
     for (const Case& c : cases) {
         const RunResult r = run_cli(c.args);
@@ -104,6 +108,15 @@ TEST(Cli, BadInputGivesClearErrors) {
                 << c.args << ": expected \"" << e << "\" in:\n"
                 << r.output;
     }
+}
+
+TEST(Cli, ExportWritesTheShaderAndManifest) {
+    const auto dir = temp_dir() / "export";
+    const RunResult r = run_cli("export smooth --lang glsles -o " + dir.string());
+    ASSERT_EQ(r.status, 0) << r.output;
+    EXPECT_TRUE(std::filesystem::exists(dir / "smooth.glsles.frag.glsl"));
+    EXPECT_TRUE(std::filesystem::exists(dir / "smooth.glsles.manifest.json"));
+    EXPECT_NE(r.output.find("smooth.glsles.frag.glsl"), std::string::npos) << r.output;
 }
 
 TEST(Cli, ValidateCountingJsonFollowsTheContract) {
@@ -245,10 +258,11 @@ TEST(Cli, ModelAndSetEditTheSceneBeforeLoading) {
     fs::remove_all(dir);
     // deliot2023 shades point and directional lights only: the environment
     // light is replaced by a second point light in the same command.
-    const std::string point = R"('/lights/0={"type": "point", "position": [-2, 3, 2], "intensity": 5}')";
-    RunResult r = run_cli("render -q --model deliot2023 --set /materials/0/log_density=12 --set " +
-                          point + " --set /film/width=16 " + scene.string() + " -o " +
-                          (dir / "a.exr").string());
+    const std::string point =
+        R"('/lights/0={"type": "point", "position": [-2, 3, 2], "intensity": 5}')";
+    RunResult r =
+        run_cli("render -q --model deliot2023 --set /materials/0/log_density=12 --set " + point +
+                " --set /film/width=16 " + scene.string() + " -o " + (dir / "a.exr").string());
     ASSERT_EQ(r.status, 0) << r.output;
     const Image a = read_image(dir / "a.exr");
     EXPECT_EQ(a.width, 16);

@@ -23,6 +23,8 @@
 #include "glintlab/glints/chermain2020/dictionary.h"
 #include "glintlab/glints/deliot2023/deliot2023.h"
 #include "glintlab/glints/glint_model_descriptor.h"
+#include "glintlab/glints/kneiphof2025/kneiphof2025.h"
+#include "glintlab/glints/kneiphof2025/kneiphof2025_params.h"
 #include "glintlab/glints/kneiphof2025/kneiphof2025_prefilter.h"
 #include "glintlab/glints/registry.h"
 #include "glintlab/glints/wang2020/wang2020_model.h"
@@ -221,7 +223,8 @@ std::string parameter_rows(const GlintModelDescriptor& d, const std::string& sha
     std::string out;
     for (const GlintParam& p : d.params) {
         const std::string uniform = fmt::format("u_{}_{}", d.name, p.key);
-        const bool is_uniform = shader.find(" " + uniform + ";") != std::string::npos;
+        const bool is_uniform =
+            p.type != GlintParamType::Enum && shader.find(" " + uniform + ";") != std::string::npos;
         out += fmt::format(
             "  {:<28} {} {}{}, default {}: {}\n", is_uniform ? uniform : fmt::format("({})", p.key),
             glint_param_type_name(p.type), p.range_text(), p.unit.empty() ? "" : " " + p.unit,
@@ -695,7 +698,44 @@ std::vector<ExportedFile> export_model(const ExportOptions& o) {
             "material with another alpha, density, seed or parameters needs its own tables";
     }
 
+    // Uniforms the host derives from parameters (the renderer's GPU hooks
+    // compute them in C++), at the defaults, with how to compute them.
+    nlohmann::json derived = nlohmann::json::array();
+    if (d->id == GlintModelId::Kneiphof2025) {
+        const Kneiphof2025Params k;
+        derived = {{{"uniform", "u_kneiphof2025_wang2020_style"},
+                    {"value", k.variant == Kneiphof2025Params::Variant::Wang2020Style},
+                    {"from", "variant == \"wang2020_style\""}},
+                   {{"uniform", "u_kneiphof2025_conditional"},
+                    {"value", k.conditional_gaussian},
+                    {"from", "gaussian == \"conditional\""}},
+                   {{"uniform", "u_kneiphof2025_gamma_solid_angle"},
+                    {"value", 2.0 * 3.14159265358979323846 *
+                                  (1.0 - std::cos(k.gamma_deg * 3.14159265358979323846 / 180.0))},
+                    {"from", "2 pi (1 - cos(gamma_deg))"}},
+                   {{"uniform", "u_kneiphof2025_smooth"},
+                    {"value", kneiphof2025_smooth_mode(k)},
+                    {"from", "smooth: \"split_sum\" -> 0, \"lobe\" -> 1 (KNEIPHOF2025_SMOOTH_*)"}},
+                   {{"uniform", "u_kneiphof2025_f0"},
+                    {"value", {1.0, 1.0, 1.0}},
+                    {"from",
+                     "Schlick F0 of the material's Fresnel: none -> 1, schlick -> f0, conductor / "
+                     "dielectric -> their Fresnel at normal incidence"}},
+                   {{"uniform", "u_kneiphof2025_radiance_scale"},
+                    {"value", 1.0},
+                    {"from", "current environment scale / the scale the maps were prefiltered at"}},
+                   {{"uniform", "kneiphof2025_env_rotation"},
+                    {"value", 0.0},
+                    {"from", "environment rotation about +y, radians"}},
+                   {{"uniform", "black_level"},
+                    {"value", k.black_level},
+                    {"from",
+                     "not a uniform: the prefilter's black level (the --env maps use the "
+                     "default)"}}};
+    }
+
     nlohmann::json j;
+    j["derived_uniforms"] = derived;
     j["glintlab_version"] = GLINTLAB_VERSION;
     j["glintlab_commit"] = GLINTLAB_GIT_COMMIT;
     j["model"] = model;
@@ -717,12 +757,14 @@ std::vector<ExportedFile> export_model(const ExportOptions& o) {
         const GlintParamValue v = d->default_value(p);
         std::visit([&](const auto& x) { q["default"] = x; }, v);
         const std::string uniform = fmt::format("u_{}_{}", model, p.key);
-        for (const ExportedFile& f : files)
-            if (f.kind == "fragment_shader" &&
-                read_file(o.out_dir / f.name).find(uniform) != std::string::npos) {
-                q["uniform"] = uniform;
-                break;
-            }
+        // An enum's uniform (if any) holds a code the host derives: host-side.
+        if (p.type != GlintParamType::Enum)
+            for (const ExportedFile& f : files)
+                if (f.kind == "fragment_shader" &&
+                    read_file(o.out_dir / f.name).find(uniform) != std::string::npos) {
+                    q["uniform"] = uniform;
+                    break;
+                }
         params.push_back(q);
     }
     j["parameters"] = params;
