@@ -11,7 +11,7 @@ namespace glintlab::cmd {
 void add_export_command(CLI::App& app, int* status) {
     struct Args {
         std::string model, lang = "glsl", out = "export", env;
-        bool quiet = false;
+        bool quiet = false, shaders_only = false;
     };
     auto args = std::make_shared<Args>();
     CLI::App* sub = app.add_subcommand(
@@ -26,6 +26,8 @@ void add_export_command(CLI::App& app, int* status) {
     sub->add_option("--env", args->env,
                     "Environment map (EXR/HDR/PNG, lat-long): kneiphof2025 also writes its "
                     "prefiltered maps for it");
+    sub->add_flag("--shaders-only", args->shaders_only,
+                  "Write the shaders and the manifest only (no resource files)");
     sub->add_flag("-q,--quiet", args->quiet, "Print nothing on success");
     sub->callback([args, status] {
         ExportOptions o;
@@ -33,6 +35,7 @@ void add_export_command(CLI::App& app, int* status) {
         o.language = parse_export_language(args->lang);
         o.out_dir = args->out;
         o.environment = args->env;
+        o.resources = !args->shaders_only;
         const std::vector<ExportedFile> files = export_model(o);
         if (!args->quiet)
             for (const ExportedFile& f : files)

@@ -36,6 +36,9 @@ struct ExportOptions {
     // Optional environment map (lat-long EXR/HDR/PNG): kneiphof2025 also
     // writes its prefiltered maps for it.
     std::filesystem::path environment;
+    // false: shaders and manifest only (no resource files, the manifest's
+    // `resources` empty) — for checking shaders without building tables.
+    bool resources = true;
     // The glslangValidator and spirv-cross executables the HLSL route runs
     // (searched on PATH when only a name).
     std::string glslang_validator = "glslangValidator";
