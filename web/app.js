@@ -10,10 +10,13 @@ import {Renderer} from './renderer.js';
 const MODELS = ['smooth', 'zirr2016', 'chermain2020', 'deliot2023', 'kneiphof2025', 'wang2020'];
 
 // The native scenes the page mirrors: scenes/plane_25.json (000 PLANE at
-// 25 degrees: an 8 x 8 quad, uv scale 8) and scenes/sphere.json.
+// 25 degrees: an 8 x 8 quad, uv scale 8) and scenes/sphere.json, with their
+// cameras and directional lights.
 const SHAPES = {
-  plane: {mesh: () => makeQuad([8, 8], [8, 8]), eye: [0, 1.27, 2.72], target: [0, 0, 0]},
-  sphere: {mesh: () => makeSphere(1), eye: [0, 0, 3.2], target: [0, 0, 0]},
+  plane: {mesh: () => makeQuad([8, 8], [8, 8]), eye: [0, 1.27, 2.72], target: [0, 0, 0],
+          light: [0, 0.55, -1], irradiance: 1},
+  sphere: {mesh: () => makeSphere(1), eye: [0, 0, 3.2], target: [0, 0, 0],
+           light: [0.5, 0.6, 0.8], irradiance: 1.5},
 };
 
 class UrlError extends Error {}
@@ -65,8 +68,9 @@ function stateFromUrl(search) {
     },
     light: {
       on: (q.get('light_on') ?? '1') !== '0',
-      direction: q.has('light') ? numbers(q.get('light'), 'light', [3]) : [0, 0.55, -1],
-      irradiance: number(q.get('irradiance') ?? '1', 'irradiance', 0, 1000),
+      direction: q.has('light') ? numbers(q.get('light'), 'light', [3]) : SHAPES[shape].light.slice(),
+      irradiance: q.has('irradiance') ? number(q.get('irradiance'), 'irradiance', 0, 1000)
+                                      : SHAPES[shape].irradiance,
     },
     environment: {
       on: (q.get('env') ?? '1') !== '0',
@@ -404,6 +408,9 @@ class App {
       this.setShape(shapeSelect.value);
       s.camera.eye = SHAPES[s.shape].eye.slice();
       s.camera.target = SHAPES[s.shape].target.slice();
+      s.light.direction = SHAPES[s.shape].light.slice();
+      s.light.irradiance = SHAPES[s.shape].irradiance;
+      this.buildControls();
       this.changed();
     };
     const envBox = document.getElementById('environment');
