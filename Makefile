@@ -6,7 +6,7 @@ BUILD       ?= build/release
 BUILD_ASAN  ?= build/asan
 CMAKE_FLAGS ?=
 
-.PHONY: all deps configure build demo test test-asan bench clean
+.PHONY: all deps configure build demo test test-asan bench web clean
 
 all: build
 
@@ -45,6 +45,12 @@ test-asan: deps $(BUILD_ASAN)/build.ninja
 
 bench: build
 	$(BUILD)/glintlab_bench
+
+# The WebGL2 page (docs/WEB.md): exports every model's GLSL ES shader and
+# resources into web/export/; then `python3 -m http.server` in the
+# repository root and http://localhost:8000/web/.
+web: build
+	bash scripts/export_web.sh $(BUILD)/glintlab web/export
 
 clean:
 	rm -rf build out

@@ -1,0 +1,222 @@
+// Loads one model's files written by `glintlab export MODEL --lang glsles`
+// (docs/INTEGRATION.md "Manifest"): the manifest, the flattened GLSL ES
+// fragment stage and the raw float32 resources, and binds them for a frame.
+// The page never carries model code: what it adds is the host side the
+// export documents (which scene parameter goes to which uniform, the
+// host-computed uniforms listed below).
+
+// Model parameters the exported shader does not read under their own name
+// `u_<model>_<key>`: the host computes a uniform from them (as the native
+// hooks do, glints/<model>/<model>_gpu.cpp), or they were applied when the
+// files were exported (`baked`: changing them means exporting again).
+const HOST_PARAMS = {
+  kneiphof2025: {
+    levels: {baked: 'K of the prefiltered maps (glintlab export --env)'},
+    black_level: {baked: 'black level of the prefiltered maps (glintlab export --env)'},
+    variant: {uniform: 'u_kneiphof2025_wang2020_style', value: (v) => (v === 'wang2020_style' ? 1 : 0)},
+    gaussian: {uniform: 'u_kneiphof2025_conditional', value: (v) => (v === 'conditional' ? 1 : 0)},
+    smooth: {uniform: 'u_kneiphof2025_smooth', value: (v) => (v === 'lobe' ? 1 : 0)},
+    // The solid angle of the cone of half-angle gamma: 2 pi (1 - cos gamma).
+    gamma_deg: {uniform: 'u_kneiphof2025_gamma_solid_angle',
+                value: (v) => 2 * Math.PI * (1 - Math.cos(v * Math.PI / 180))},
+  },
+  // Every wang2020 parameter shapes its tables (DPF, quadtree, prefilter,
+  // cone average), exported for the default material; blur and
+  // directional_occlusion are the renderer's post pass and occlusion ray,
+  // which the exported stage does not have.
+  wang2020: Object.fromEntries(
+      ['gamma_deg', 'depth', 'dpf_theta', 'dpf_phi', 'prefilter_samples', 'micro', 'prefilter']
+          .map((k) => [k, {baked: 'built into the exported tables'}])
+          .concat(['blur', 'directional_occlusion']
+                      .map((k) => [k, {baked: 'a renderer pass, not in the exported shader'}]))),
+};
+
+// Material inputs a model's export fixes (its tables were built for them):
+// the manifest's resource uniforms of these names.
+export const MATERIAL_UNIFORMS = {
+  u_glint_alpha: 'roughness', u_glint_log_density: 'log_density', u_glint_seed: 'seed',
+};
+
+// Fresnel reflectance at normal incidence of the material's Fresnel
+// (kneiphof2025_f0 of glints/kneiphof2025/kneiphof2025.cpp: the host input
+// u_kneiphof2025_f0 of the kneiphof2025 export).
+function fresnelF0(material) {
+  const f = material.fresnel;
+  if (f.type === 'schlick') return f.f0;
+  if (f.type === 'dielectric') {
+    const r = (f.eta - 1) / (f.eta + 1);
+    return [r * r, r * r, r * r];
+  }
+  if (f.type === 'conductor')
+    return f.eta.map((eta, c) => {
+      const k = f.k[c];
+      return ((eta - 1) ** 2 + k * k) / ((eta + 1) ** 2 + k * k);
+    });
+  return [1, 1, 1];
+}
+
+const FRESNEL_MODE = {none: 0, schlick: 1, conductor: 2, dielectric: 3};
+
+async function fetchOk(url, what) {
+  let response;
+  try {
+    response = await fetch(url);
+  } catch (e) {
+    throw new Error(`cannot fetch ${what} ${url}: ${e.message}`);
+  }
+  if (!response.ok)
+    throw new Error(`cannot fetch ${what} ${url}: HTTP ${response.status} ` +
+                    '(run `make web` to export the models into web/export/)');
+  return response;
+}
+
+// Parameter descriptors: the manifest's (key, type, default, uniform) with
+// the numeric bounds of `glintlab info --json` (export/models.json).
+function parameterTable(manifest, info) {
+  const bounds = new Map((info?.parameters ?? []).map((p) => [p.key, p]));
+  const host = HOST_PARAMS[manifest.model] ?? {};
+  return manifest.parameters.map((p) => {
+    const b = bounds.get(p.key) ?? {};
+    const h = host[p.key] ?? {};
+    // An enum switch without a host mapping cannot be set as a number.
+    if (p.type === 'enum' && !h.value && !h.baked) h.baked = 'an enum switch set at export';
+    return {
+      key: p.key, type: p.type, doc: p.doc, unit: p.unit, range: p.range,
+      default: p.default, min: p.min ?? b.min, max: p.max ?? b.max,
+      values: p.values ?? b.values, choices: p.choices ?? b.choices,
+      uniform: h.baked ? null : h.uniform ?? p.uniform ?? null, value: h.value ?? null,
+      baked: h.baked ?? null,
+    };
+  });
+}
+
+export class ExportedModel {
+  static async load(renderer, base, name, info) {
+    const manifestUrl = `${base}/${name}.glsles.manifest.json`;
+    const manifest = await (await fetchOk(manifestUrl, 'manifest')).json();
+    if (manifest.model !== name || manifest.language !== 'glsles')
+      throw new Error(`${manifestUrl}: a manifest of ${manifest.model} (${manifest.language}), ` +
+                      `expected ${name} (glsles)`);
+    const model = new ExportedModel();
+    model.name = name;
+    model.base = base;
+    model.manifest = manifest;
+    // The fragment stages: "default" and the model's option variants
+    // (deliot2023's "noise_texture", 000 6.3), compiled on first use.
+    model.shaders = manifest.shaders.filter((s) => s.stage === 'fragment');
+    model.variants = model.shaders.map((s) => s.variant);
+    if (!model.variants.includes('default'))
+      throw new Error(`${manifestUrl}: no default fragment shader listed`);
+    model.programs = new Map();
+    model.parameters = parameterTable(manifest, info);
+    model.textures = [];
+    model.constants = {};  // uniforms given by the manifest's resources
+    model.environment = null;
+    model.fixedMaterial = {};  // material keys the export fixes (wang2020)
+    for (const r of manifest.resources) {
+      const bytes = await (await fetchOk(`${base}/${r.file}`, 'resource')).arrayBuffer();
+      const data = r.format.endsWith('UI') ? new Uint32Array(bytes) : new Float32Array(bytes);
+      const channels = {RGBA32F: 4, RGB32F: 3, RG32F: 2, R32F: 1, RG32UI: 2}[r.format];
+      if (!channels) throw new Error(`${r.file}: unsupported format "${r.format}"`);
+      const layers = r.layers ?? 1;
+      const expected = r.width * r.height * layers * channels;
+      if (data.length !== expected)
+        throw new Error(`${r.file}: ${data.length} floats, the manifest's ${r.format} ` +
+                        `${r.width}x${r.height}x${layers} needs ${expected}`);
+      const wrap = {repeat: 'repeat', clamp_to_edge: 'clamp', repeat_s_clamp_t: 'repeat_u'}[r.wrap];
+      if (!wrap) throw new Error(`${r.file}: unknown wrap mode "${r.wrap}"`);
+      const target = r.target === '2D_ARRAY' ? 'array' : '2d';
+      const texture = renderer.floatTexture({
+        data, width: r.width, height: r.height, depth: layers, format: r.format, target,
+        filter: r.filter, wrap, mipmaps: !!r.mipmaps,
+      });
+      model.textures.push({uniform: r.uniform, texture});
+      Object.assign(model.constants, r.uniforms ?? {});
+      for (const [u, key] of Object.entries(MATERIAL_UNIFORMS))
+        if (r.uniforms && u in r.uniforms) model.fixedMaterial[key] = r.uniforms[u];
+      // The prefiltered radiance's layer 0 (sqrt(alpha) = 0: the map
+      // itself at the prefilter's resolution) is the page's background.
+      if (r.environment && r.uniform === 'kneiphof2025_radiance_layers')
+        model.environment = {
+          file: r.environment,
+          texture: renderer.floatTexture({
+            data: data.subarray(0, r.width * r.height * 4), width: r.width, height: r.height,
+            format: 'RGBA32F', target: '2d', filter: 'linear', wrap: 'repeat_u',
+          }),
+        };
+    }
+    // Whether the export carries environment lighting: kneiphof2025's
+    // prefiltered maps, wang2020's prefiltered tables (one zero texel and
+    // resolution 1 x 1 x 1 x 1 when exported without --env).
+    const res = model.constants.u_wang2020_prefilter_res;
+    model.environmentLit = model.environment !== null ||
+                           (Array.isArray(res) && res.reduce((a, b) => a * b, 1) > 1);
+    return model;
+  }
+
+  // The forward program of fragment-stage variant `variant`.
+  async program(renderer, variant) {
+    if (!this.programs.has(variant)) {
+      const shader = this.shaders.find((s) => s.variant === variant);
+      if (!shader)
+        throw new Error(`${this.name} has no shader variant "${variant}" ` +
+                        `(exported: ${this.variants.join(', ')})`);
+      const source = await (await fetchOk(`${this.base}/${shader.file}`, 'shader')).text();
+      this.programs.set(variant, renderer.forwardProgram(source, shader.file));
+    }
+    return this.programs.get(variant);
+  }
+
+  // Sets every uniform of the forward program for `state` (app.js) and
+  // binds the resources; called by Renderer.render before the draw.
+  bind(renderer, prog, state) {
+    const gl = renderer.gl;
+    const set = (name, value) => renderer.setUniform(prog, name, value);
+    const m = state.material;
+    set('u_glint_ndf', m.ndf === 'ggx' ? 1 : 0);
+    set('u_glint_alpha', m.roughness);
+    set('u_glint_log_density', m.log_density);
+    set('u_glint_seed', m.seed);
+    set('u_glint_color', m.color);
+    set('u_glint_base_albedo', [0, 0, 0]);
+    set('u_fresnel_mode', FRESNEL_MODE[m.fresnel.type]);
+    set('u_fresnel_f0', m.fresnel.f0 ?? [0, 0, 0]);
+    const eta = m.fresnel.eta ?? 1.5;
+    set('u_fresnel_eta', Array.isArray(eta) ? eta : [eta, eta, eta]);
+    set('u_fresnel_k', m.fresnel.k ?? [0, 0, 0]);
+    // chermain2020's P-NDF has the V-cavity masking (004 Eq. 14-16), every
+    // other model the height-correlated Smith G2 (the export's header).
+    set('u_glint_g2', this.name === 'chermain2020' ? 1 : 0);
+    const l = state.light;
+    set('u_directional_count', l.on ? 1 : 0);
+    set('u_directional_direction', normalize3(l.direction));
+    set('u_directional_irradiance', [l.irradiance, l.irradiance, l.irradiance]);
+    set('u_point_count', 0);
+    const env = state.environment.on && this.environmentLit;
+    set('u_environment_on', env ? 1 : 0);
+    for (const [name, value] of Object.entries(this.constants)) set(name, value);
+    if (this.name === 'kneiphof2025') {
+      set('u_kneiphof2025_f0', fresnelF0(m));
+      set('u_kneiphof2025_levels', this.constants.levels_K ?? 8);
+      set('u_kneiphof2025_radiance_scale', state.environment.scale);
+      set('kneiphof2025_env_rotation', state.environment.rotation);
+    }
+    for (const p of this.parameters) {
+      if (!p.uniform) continue;
+      const v = state.params[p.key] ?? p.default;
+      set(p.uniform, p.value ? p.value(v) : typeof v === 'boolean' ? (v ? 1 : 0) : v);
+    }
+    this.textures.forEach((t, i) => {
+      const unit = 1 + i;  // unit 0: the background's environment
+      gl.activeTexture(gl.TEXTURE0 + unit);
+      gl.bindTexture(t.texture.target, t.texture.texture);
+      set(t.uniform, unit);
+    });
+    gl.activeTexture(gl.TEXTURE0);
+  }
+}
+
+function normalize3(v) {
+  const l = Math.hypot(v[0], v[1], v[2]);
+  return l > 0 ? v.map((x) => x / l) : [0, 1, 0];
+}
