@@ -15,11 +15,11 @@ namespace glintlab {
 
 struct CompareValidationOptions {
     uint64_t seed = 1;
-    int size = 64;         // W = H
-    int realizations = 4;  // seeds per model
+    int size = 48;         // W = H
+    int realizations = 3;  // seeds per model
     int frames = 4;        // flicker path
     double orbit_deg = 4.0;
-    int spp = 16;  // the CPU renders (the ground truth's noise is part of every check)
+    int spp = 8;  // the CPU renders (the ground truth's noise is part of every check)
     // Scene stems of scenes/compare/ (e.g. "sphere_city"); empty: every scene.
     std::vector<std::string> scenes;
     // Models; empty: every model. The ground truth is always rendered.
