@@ -1,11 +1,14 @@
 #include <gtest/gtest.h>
 
 #include <cstdlib>
+#include <filesystem>
+#include <fstream>
 #include <set>
 #include <string>
 
 #include "glintlab/compare/validate_compare.h"
 #include "glintlab/core/error.h"
+#include "glintlab/scene/scene_loader.h"
 
 namespace glintlab {
 namespace {
@@ -57,6 +60,42 @@ TEST(CompareValidation, RejectsUnknownScenesAndSizes) {
     o.size = 4;
     EXPECT_THROW(validate_compare(o), Error);
     EXPECT_EQ(compare_scene_names().size(), 10u);
+}
+
+}  // namespace
+}  // namespace glintlab
+
+namespace glintlab {
+namespace {
+
+// Every compare scene loads (strictly, with its HDRI and mesh), and together
+// they use every Blender HDRI, a sphere, a quad, a glTF mesh and scenes
+// without an environment (docs/VALIDATION.md "compare", "Scenes").
+TEST(CompareValidation, SceneListCoversEveryHdriAndShape) {
+    const std::filesystem::path dir =
+        std::filesystem::path(GLINTLAB_SOURCE_DIR) / "scenes" / "compare";
+    std::set<std::string> hdris, shapes;
+    int without_environment = 0;
+    for (const std::string& name : compare_scene_names()) {
+        std::ifstream in(dir / (name + ".json"));
+        ASSERT_TRUE(in) << name;
+        const nlohmann::json doc = nlohmann::json::parse(in);
+        for (const nlohmann::json& s : doc["shapes"]) shapes.insert(s["type"].get<std::string>());
+        bool env = false;
+        for (const nlohmann::json& l : doc["lights"])
+            if (l["type"] == "environment") {
+                env = true;
+                hdris.insert(std::filesystem::path(l["file"].get<std::string>()).stem());
+            }
+        without_environment += !env;
+        const Scene scene = load_scene(dir / (name + ".json"));  // strict: throws on any error
+        EXPECT_EQ(scene.materials.at(0).type, MaterialDesc::Type::Glint) << name;
+    }
+    EXPECT_EQ(hdris, (std::set<std::string>{"city", "courtyard", "forest", "interior", "night",
+                                            "studio", "sunrise", "sunset"}));
+    for (const char* shape : {"sphere", "quad", "gltf"})
+        EXPECT_EQ(shapes.count(shape), 1u) << shape;
+    EXPECT_GE(without_environment, 2);
 }
 
 }  // namespace
