@@ -258,6 +258,27 @@ PYBIND11_MODULE(_glintlab, m) {
         },
         py::arg("suite"), py::arg("seed") = 1);
     m.def(
+        "compare_json",
+        [](const std::string& scene, const std::vector<std::string>& sets,
+           const std::string& material, const std::vector<std::string>& models, int realizations,
+           int width, int height, int spp, int frames, double orbit_deg, uint64_t seed, bool gpu,
+           int threads, const std::string& output) {
+            glintlab::python::CompareArgs a{scene,     sets,   material, models, realizations,
+                                            width,     height, spp,      frames, threads,
+                                            orbit_deg, seed,   gpu,      output};
+            nlohmann::json j;
+            {
+                py::gil_scoped_release release;
+                j = glintlab::python::run_compare(a);
+            }
+            return j.dump();
+        },
+        py::arg("scene"), py::arg("sets"), py::arg("material"), py::arg("models"),
+        py::arg("realizations"), py::arg("width"), py::arg("height"), py::arg("spp"),
+        py::arg("frames"), py::arg("orbit_deg"), py::arg("seed"), py::arg("gpu"),
+        py::arg("threads"), py::arg("output"),
+        "glintlab compare: the metrics.json document (docs/VALIDATION.md \"compare\")");
+    m.def(
         "read_image", [](const std::string& path) { return to_numpy(read_image(path)); },
         py::arg("path"), "Reads .exr/.hdr/.png/.jpg to a linear float32 (H, W, 3) array");
     m.def(

@@ -1,5 +1,6 @@
 #include "validate_suites.h"
 
+#include "glintlab/compare/compare.h"
 #include "glintlab/glints/validation_suites.h"
 
 namespace glintlab::python {
@@ -12,6 +13,25 @@ std::vector<std::string> validation_suite_names() {
 
 nlohmann::json run_validation_suite(const std::string& suite, uint64_t seed) {
     return glintlab::run_validation_suite(suite, seed).to_json();
+}
+
+nlohmann::json run_compare(const CompareArgs& a) {
+    compare::CompareOptions o;
+    o.scene = a.scene;
+    o.sets = a.sets;
+    o.material = a.material;
+    o.models = a.models;
+    o.realizations = a.realizations;
+    o.width = a.width, o.height = a.height;
+    o.spp = a.spp;
+    o.frames = a.frames;
+    o.orbit_deg = a.orbit_deg;
+    o.seed = a.seed;
+    o.gpu = a.gpu;
+    o.threads = a.threads;
+    const compare::CompareResult r = compare::run_compare(o);
+    if (!a.output.empty()) compare::write_compare_outputs(r, a.output);
+    return r.to_json();
 }
 
 }  // namespace glintlab::python

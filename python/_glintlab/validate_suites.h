@@ -15,4 +15,20 @@ std::vector<std::string> validation_suite_names();
 // glintlab::Error for an unknown suite, listing the known ones.
 nlohmann::json run_validation_suite(const std::string& suite, uint64_t seed);
 
+// glintlab.compare(...): compare::run_compare (compare/compare.h) with its
+// metrics.json document as the result; writes the files of `glintlab compare
+// -o` when `output` is not empty.
+struct CompareArgs {
+    std::string scene;
+    std::vector<std::string> sets;
+    std::string material;
+    std::vector<std::string> models;
+    int realizations = 4, width = 0, height = 0, spp = 0, frames = 8, threads = 0;
+    double orbit_deg = 4.0;
+    uint64_t seed = 1;
+    bool gpu = false;
+    std::string output;
+};
+nlohmann::json run_compare(const CompareArgs& args);
+
 }  // namespace glintlab::python

@@ -19,7 +19,7 @@ from ._glintlab import Error, Scene, SceneError
 __all__ = [
     "Error", "SceneError", "OverrideError", "Scene", "parse_scene", "load_document",
     "apply_overrides", "set_model", "render", "models", "eval_brdf", "eval_ndf", "validate",
-    "validation_suites", "read_image", "write_image", "sweep", "__version__",
+    "validation_suites", "compare", "read_image", "write_image", "sweep", "__version__",
 ]
 __version__ = _glintlab.__version__
 with_gl = _glintlab.with_gl
@@ -223,6 +223,22 @@ def validate(suite, seed=1):
     """The report of a validation suite as `glintlab validate SUITE --json`
     prints it (a dict; "passed" says whether every check passed)."""
     return json.loads(_glintlab.validate_json(suite, seed))
+
+
+def compare(scene, models=None, material=None, realizations=4, res=None, spp=None, frames=8,
+            orbit_deg=4.0, seed=1, gpu=False, threads=0, overrides=None, output=None):
+    """`glintlab compare` on a scene file: every model that can shade the
+    scene's lights against the explicit ground truth (docs/VALIDATION.md
+    "compare"). Returns the metrics.json document as a dict (one entry per
+    model in "models"); `output` (a directory) also writes the images and
+    tables. `overrides` is a list of "POINTER=VALUE" strings (render --set)."""
+    width, height = _resolution(res) if res is not None else (0, 0)
+    if isinstance(models, str):
+        models = [models]
+    return json.loads(_glintlab.compare_json(
+        os.fspath(scene), list(overrides or []), material or "", list(models or []),
+        int(realizations), width, height, int(spp or 0), int(frames), float(orbit_deg),
+        int(seed), bool(gpu), int(threads), os.fspath(output) if output else ""))
 
 
 def read_image(path):

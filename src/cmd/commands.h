@@ -16,6 +16,7 @@ void add_validate_command(CLI::App& app, int* status);
 void add_bench_command(CLI::App& app, int* status);
 void add_dict_command(CLI::App& app, int* status);
 void add_export_command(CLI::App& app, int* status);
+void add_compare_command(CLI::App& app, int* status);
 // The two files `render -o output` writes for `scene_file` (render_command.cpp).
 struct RenderOutputs {
     std::filesystem::path exr, png;

@@ -17,6 +17,7 @@ int main(int argc, char** argv) {
     glintlab::cmd::add_bench_command(app, &status);
     glintlab::cmd::add_dict_command(app, &status);
     glintlab::cmd::add_export_command(app, &status);
+    glintlab::cmd::add_compare_command(app, &status);
 #if GLINTLAB_WITH_GL
     glintlab::cmd::add_view_command(app, &status);
 #endif
@@ -28,7 +29,8 @@ int main(int argc, char** argv) {
             names += (names.empty() ? "" : ", ") + sub->get_name();
         }
         if (!known) {
-            fmt::print(stderr, "glintlab: unknown command '{}' (commands: {}; see --help)\n", argv[1], names);
+            fmt::print(stderr, "glintlab: unknown command '{}' (commands: {}; see --help)\n",
+                       argv[1], names);
             return 1;
         }
     }

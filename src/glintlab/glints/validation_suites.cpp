@@ -2,6 +2,7 @@
 
 #include <string>
 
+#include "glintlab/compare/validate_compare.h"
 #include "glintlab/core/error.h"
 #include "glintlab/counting/validate_counting.h"
 #include "glintlab/glints/chermain2020/validate_chermain2020.h"
@@ -44,6 +45,7 @@ const std::map<std::string, ValidationSuiteRunner>& validation_suites() {
             {"zirr2016", seeded<Zirr2016ValidationOptions, validate_zirr2016>()},
         };
         t["robustness"] = [](uint64_t seed) { return validate_robustness(seed); };
+        t["compare"] = seeded<CompareValidationOptions, validate_compare>();
         // A descriptor naming a suite this table lacks is a programming
         // error: `glintlab validate` would list a suite it cannot run.
         for (const GlintModelDescriptor& m : glint_models())

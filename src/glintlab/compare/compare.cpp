@@ -1,0 +1,345 @@
+#include "glintlab/compare/compare.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <limits>
+#include <map>
+#include <memory>
+#include <optional>
+
+#include <fmt/format.h>
+
+#include "glintlab/core/error.h"
+#include "glintlab/glints/registry.h"
+#include "glintlab/render/accel.h"
+#include "glintlab/render/renderer.h"
+#include "glintlab/scene/scene_edits.h"
+#if GLINTLAB_WITH_GL
+#include "glintlab/realtime/gl_context.h"
+#include "glintlab/realtime/glint_programs.h"
+#include "glintlab/realtime/gpu_renderer.h"
+#endif
+
+namespace glintlab::compare {
+namespace {
+
+GlintLightType light_type(const Light& light) {
+    return std::visit(
+        [](const auto& l) {
+            using T = std::decay_t<decltype(l)>;
+            if constexpr (std::is_same_v<T, PointLight>) return GlintLightType::Point;
+            if constexpr (std::is_same_v<T, DirectionalLight>) return GlintLightType::Directional;
+            if constexpr (std::is_same_v<T, SphereLight>) return GlintLightType::Sphere;
+            return GlintLightType::Environment;
+        },
+        light);
+}
+
+// The camera of frame t of the flicker path: the eye orbits the target about
+// the camera's up axis, orbit_deg over the whole path (Rodrigues' rotation).
+Camera path_camera(const Camera& camera, int t, int frames, double orbit_deg) {
+    Camera c = camera;
+    if (t == 0 || frames < 2) return c;
+    const double angle = orbit_deg * 3.14159265358979323846 / 180.0 * double(t) / (frames - 1);
+    const glm::dvec3 k = glm::normalize(glm::dvec3(camera.up));
+    const glm::dvec3 v = glm::dvec3(camera.eye - camera.target);
+    const glm::dvec3 r = v * std::cos(angle) + glm::cross(k, v) * std::sin(angle) +
+                         k * glm::dot(k, v) * (1.0 - std::cos(angle));
+    c.eye = camera.target + glm::vec3(r);
+    return c;
+}
+
+// The pixels whose centre ray first hits a shape of material `material`.
+Mask material_mask(const Scene& scene, const Accelerator& accel, const Camera& camera,
+                   int material) {
+    Mask mask(size_t(camera.width) * size_t(camera.height), 0);
+    for (int y = 0; y < camera.height; ++y)
+        for (int x = 0; x < camera.width; ++x) {
+            const Ray ray = camera.generate(glm::vec2(x + 0.5f, y + 0.5f)).ray;
+            const std::optional<SurfaceHit> hit =
+                accel.intersect(ray, std::numeric_limits<float>::infinity());
+            if (hit && hit->shape >= 0 && scene.shapes[size_t(hit->shape)].material == material)
+                mask[size_t(y) * camera.width + x] = 1;
+        }
+    return mask;
+}
+
+std::string truth_key(const GlintDesc& d) {
+    return fmt::format("explicit {} alpha {:.4g}x{:.4g} ln density {:.4g}",
+                       d.ndf == NdfType::GGX ? "ggx" : "beckmann", d.alpha_x, d.alpha_y,
+                       d.log_density);
+}
+
+// One set of renders: a model (or the truth) on R realizations and F frames.
+struct Job {
+    size_t row = 0;  // index into result.models
+    GlintDesc desc;
+    bool gpu = false;
+    std::vector<Plane> realizations, frames;
+    std::vector<double> means;
+};
+
+double ratio(double a, double b) {
+    if (b > 0.0) return a / b;
+    return a == 0.0 ? 1.0 : std::numeric_limits<double>::infinity();
+}
+
+void check_options(const CompareOptions& o) {
+    const std::string scene = o.scene.string();
+    if (o.realizations < 2 || o.realizations > 256)
+        fail("compare {}: --realizations must be in [2, 256] (a variance needs two), got {}", scene,
+             o.realizations);
+    if (o.frames < 2 || o.frames > 256)
+        fail("compare {}: --frames must be in [2, 256], got {}", scene, o.frames);
+    if ((o.width != 0 || o.height != 0) &&
+        (o.width < 1 || o.height < 1 || o.width > 16384 || o.height > 16384))
+        fail("compare {}: --res: W and H must be in [1, 16384], got {}x{}", scene, o.width,
+             o.height);
+    if (o.spp < 0 || o.spp > (1 << 20))
+        fail("compare {}: --spp must be in [1, 1048576], got {}", scene, o.spp);
+    if (!(std::isfinite(o.orbit_deg) && o.orbit_deg > 0.0 && o.orbit_deg <= 90.0))
+        fail("compare {}: --orbit must be in (0, 90] degrees, got {}", scene, o.orbit_deg);
+    if (o.threads < 0 || o.threads > 1024)
+        fail("compare {}: --threads must be in [0, 1024], got {}", scene, o.threads);
+}
+
+}  // namespace
+
+const ModelMetrics* CompareResult::find(const std::string& model) const {
+    for (const ModelMetrics& m : models)
+        if (m.model == model) return &m;
+    return nullptr;
+}
+
+CompareResult run_compare(const CompareOptions& o) {
+    check_options(o);
+    const std::string scene_name = o.scene.string();
+    Scene base = load_scene(o.scene, SceneEdits{"", o.sets});
+    if (o.width > 0) base.camera.width = o.width, base.camera.height = o.height;
+    if (o.spp > 0) base.render.spp = o.spp;
+
+    // The compared material.
+    int mi = -1;
+    std::string glint_names;
+    for (size_t i = 0; i < base.materials.size(); ++i) {
+        const MaterialDesc& m = base.materials[i];
+        if (m.type != MaterialDesc::Type::Glint) continue;
+        glint_names += (glint_names.empty() ? "" : ", ") + m.name;
+        if (mi < 0 && (o.material.empty() || m.name == o.material)) mi = int(i);
+    }
+    if (glint_names.empty())
+        fail("compare {}: the scene has no glint material (\"type\": \"glint\") to compare",
+             scene_name);
+    if (mi < 0)
+        fail("compare {}: --material {}: no glint material of that name (glint materials: {})",
+             scene_name, o.material, glint_names);
+    const GlintDesc original = base.materials[size_t(mi)].glint;
+
+    // The models asked for.
+    std::vector<const GlintModelDescriptor*> asked;
+    const bool all = o.models.empty() || (o.models.size() == 1 && o.models[0] == "all");
+    for (const GlintModelDescriptor& m : glint_models())
+        if (all || std::find(o.models.begin(), o.models.end(), m.name) != o.models.end())
+            asked.push_back(&m);
+    if (!all)
+        for (const std::string& name : o.models)
+            if (find_glint_model(name) == nullptr)
+                fail("compare {}: --models: unknown model \"{}\" (known: {}, or all)", scene_name,
+                     name, glint_model_names());
+
+    CompareResult result;
+    result.scene = scene_name;
+    result.material = base.materials[size_t(mi)].name;
+    std::vector<GlintLightType> types;
+    for (const Light& l : base.lights) {
+        const GlintLightType t = light_type(l);
+        if (std::find(types.begin(), types.end(), t) == types.end()) types.push_back(t);
+    }
+    for (GlintLightType t : types)
+        result.lights +=
+            (result.lights.empty() ? "" : ", ") + std::string(glint_light_type_name(t));
+    result.width = base.camera.width, result.height = base.camera.height;
+    result.spp = base.render.spp;
+    result.realizations = o.realizations, result.frames = o.frames;
+    result.orbit_deg = o.orbit_deg;
+    result.blur_sigma_px = sparkle_blur_sigma(result.width, result.height);
+
+#if GLINTLAB_WITH_GL
+    const bool gl = true;
+#else
+    const bool gl = false;
+    if (o.gpu) fail("compare --gpu: this glintlab was built without OpenGL (GLINTLAB_WITH_GL=OFF)");
+#endif
+
+    // One job per model that can shade the scene's lights, and one ground
+    // truth per distinct material they were fitted to (a model's
+    // fit_material may change the NDF, roughness or density: each is compared
+    // with explicit microfacets of the same distribution).
+    std::vector<Job> jobs;
+    std::map<std::string, size_t> truth_job;  // key -> index into jobs
+    auto add_truth = [&](const GlintDesc& fitted) {
+        GlintDesc t = original;
+        switch_glint_model(t, GlintModelId::Explicit);
+        if (original.model_id == GlintModelId::Explicit) t.params = original.params;
+        t.ndf = fitted.ndf, t.alpha_x = fitted.alpha_x, t.alpha_y = fitted.alpha_y;
+        t.log_density = std::clamp(fitted.log_density, 0.0f, 30.0f);  // explicit's range
+        t.base_albedo = glm::vec3(0.0f);
+        const std::string key = truth_key(t);
+        const auto it = truth_job.find(key);
+        if (it != truth_job.end()) return std::pair{it->second, key};
+        ModelMetrics row;
+        row.model = "explicit", row.compared = true, row.reference = true, row.backend = "cpu";
+        row.truth = key;
+        result.models.push_back(row);
+        Job j;
+        j.row = result.models.size() - 1, j.desc = t;
+        jobs.push_back(std::move(j));
+        truth_job[key] = jobs.size() - 1;
+        return std::pair{jobs.size() - 1, key};
+    };
+    // The scene's own material first: its truth is the first row.
+    {
+        GlintDesc d = original;
+        if (d.model_id != GlintModelId::Explicit && find_glint_model(d.model_id)->fit_material)
+            find_glint_model(d.model_id)->fit_material(d);
+        add_truth(d);
+    }
+    std::vector<std::pair<size_t, size_t>> pairs;  // (model job, truth job)
+    for (const GlintModelDescriptor* m : asked) {
+        if (m->id == GlintModelId::Explicit) continue;  // the truth rows
+        ModelMetrics row;
+        row.model = std::string(m->name);
+        std::string missing;
+        for (GlintLightType t : types)
+            if (!m->shades(t))
+                missing += (missing.empty() ? "" : ", ") + std::string(glint_light_type_name(t));
+        if (!missing.empty()) {
+            std::string shades;
+            for (GlintLightType t : m->lights)
+                shades += (shades.empty() ? "" : ", ") + std::string(glint_light_type_name(t));
+            row.reason = fmt::format("cannot shade {} lights (it shades {})", missing, shades);
+            result.models.push_back(row);
+            continue;
+        }
+        bool on_gpu = false;
+#if GLINTLAB_WITH_GL
+        on_gpu = o.gpu && m->gpu && gl::gpu_supports_model(m->id);
+#endif
+        if (!m->cpu && !on_gpu) {
+            row.reason = gl ? "GPU only: use --gpu" : "GPU only, and this build has no OpenGL";
+            result.models.push_back(row);
+            continue;
+        }
+        GlintDesc d = original;
+        switch_glint_model(d, m->id);
+        d.base_albedo = glm::vec3(0.0f);  // the truth has no diffuse base either
+        const auto [truth, key] = add_truth(d);
+        row.compared = true;
+        row.backend = on_gpu ? "gpu" : "cpu";
+        row.truth = key;
+        result.models.push_back(row);
+        Job j;
+        j.row = result.models.size() - 1, j.desc = d, j.gpu = on_gpu;
+        jobs.push_back(std::move(j));
+        pairs.emplace_back(jobs.size() - 1, truth);
+    }
+
+    // Cameras and masks of the path.
+    const Accelerator accel(base);
+    std::vector<Camera> cameras;
+    std::vector<Mask> masks;
+    for (int t = 0; t < o.frames; ++t) {
+        cameras.push_back(path_camera(base.camera, t, o.frames, o.orbit_deg));
+        masks.push_back(material_mask(base, accel, cameras.back(), mi));
+    }
+    result.mask = masks[0];
+    result.mask_pixels = std::count(masks[0].begin(), masks[0].end(), uint8_t(1));
+    if (result.mask_pixels == 0)
+        fail("compare {}: material \"{}\" covers no pixel of the camera's view", scene_name,
+             result.material);
+
+#if GLINTLAB_WITH_GL
+    std::unique_ptr<HeadlessContext> context;
+    std::unique_ptr<GpuRenderer> gpu;
+#endif
+    const int per_job = o.realizations + o.frames - 1;
+    const int total = int(jobs.size()) * per_job;
+    int done = 0;
+    for (Job& job : jobs) {
+        ModelMetrics& row = result.models[job.row];
+        double seconds = 0.0;
+        for (int k = 0; k < per_job; ++k) {
+            // k < R: realization k at frame 0; then frames 1.. of realization 0.
+            const int r = k < o.realizations ? k : 0;
+            const int t = k < o.realizations ? 0 : k - o.realizations + 1;
+            Scene s = base;
+            s.camera = cameras[size_t(t)];
+            s.render.seed = o.seed + uint64_t(r);
+            s.materials[size_t(mi)].glint = job.desc;
+            s.materials[size_t(mi)].glint.seed =
+                uint32_t(original.seed + uint32_t(o.seed) + uint32_t(r));
+            const auto start = std::chrono::steady_clock::now();
+            Image image;
+            if (job.gpu) {
+#if GLINTLAB_WITH_GL
+                if (!context) {
+                    context = std::make_unique<HeadlessContext>();
+                    gpu = std::make_unique<GpuRenderer>(s);
+                }
+                gpu->render(s);
+                image = gpu->read_image();
+#endif
+            } else {
+                image = render_scene(s, accel, RenderOptions{o.threads, true});
+            }
+            const double dt =
+                std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+            row.faults += count_pixel_faults(image);
+            Plane plane = luminance_plane(image);
+            if (k < o.realizations) {
+                seconds += dt;
+                job.means.push_back(masked_mean(plane, masks[0]));
+                if (k == 0) {
+                    row.image = std::move(image);
+                    job.frames.push_back(plane);
+                }
+                job.realizations.push_back(std::move(plane));
+            } else {
+                job.frames.push_back(std::move(plane));
+            }
+            ++done;
+            if (o.progress) o.progress(done, total);
+        }
+        row.seconds = seconds / o.realizations;
+        row.mean_plane = average(job.realizations);
+        row.mean_luminance = 0.0;
+        for (double m : job.means) row.mean_luminance += m / double(job.means.size());
+        row.pixel_variance = mean_pixel_variance(job.realizations, masks[0]);
+        row.flicker = flicker(job.frames, masks);
+    }
+
+    // Metrics against each model's truth.
+    for (const Job& truth : jobs) {
+        if (!result.models[truth.row].reference) continue;
+        ModelMetrics& row = result.models[truth.row];
+        row.variance_ratio = 1.0, row.flicker_ratio = 1.0;
+    }
+    for (const auto& [mj, tj] : pairs) {
+        const Job &model = jobs[mj], &truth = jobs[tj];
+        ModelMetrics& row = result.models[model.row];
+        const ModelMetrics& t = result.models[truth.row];
+        const MeanError e = mean_relative_error(model.means, truth.means);
+        row.mean_rel_err = e.relative_error, row.mean_rel_err_se = e.standard_error;
+        row.blurred_rel_rmse =
+            blurred_relative_rmse(row.mean_plane, t.mean_plane, masks[0], result.blur_sigma_px);
+        row.variance_ratio = ratio(row.pixel_variance, t.pixel_variance);
+        row.wasserstein = ratio(wasserstein1(pooled_masked_values(model.realizations, masks[0]),
+                                             pooled_masked_values(truth.realizations, masks[0])),
+                                t.mean_luminance);
+        row.flicker_ratio = ratio(row.flicker, t.flicker);
+    }
+    return result;
+}
+
+}  // namespace glintlab::compare

@@ -1,0 +1,172 @@
+#include "glintlab/compare/validate_compare.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+#include <nlohmann/json.hpp>
+
+#include "glintlab/compare/compare.h"
+#include "glintlab/core/error.h"
+#include "glintlab/glints/registry.h"
+#include "glintlab/scene/scene_loader.h"
+
+namespace glintlab {
+namespace {
+
+// The scenes of scenes/compare/: every Blender HDRI once, a sphere, a plane
+// seen 25 degrees above it and the glTF blob, roughness 0.1-0.7, and two
+// scenes with point, directional and sphere lights only.
+const std::vector<std::string>& scene_list() {
+    static const std::vector<std::string> list = {
+        "sphere_city",        "sphere_courtyard", "plane25_forest",
+        "plane25_interior",   "gltf_night",       "gltf_studio",
+        "sphere_sunrise",     "sphere_sunset",    "lights_point_directional",
+        "lights_sphere_light"};
+    return list;
+}
+
+// ln(density) from which a scene counts as dense (ln 12-13: tens to hundreds
+// of facets per pixel footprint at 48x48, over 10^4 on the object: the image
+// mean is bounded by 5 %); below it (ln 7-8, about one facet per pixel) the
+// bound adds two standard errors.
+constexpr double kDenseLogDensity = 11.0;
+constexpr double kMeanBound = 0.05;
+constexpr double kFlickerFactor = 2.0;
+
+std::filesystem::path default_scene_dir() {
+    if (const char* env = std::getenv("GLINTLAB_SOURCE_DIR"); env != nullptr && *env != '\0')
+        return std::filesystem::path(env) / "scenes" / "compare";
+    return std::filesystem::path(GLINTLAB_SOURCE_DIR) / "scenes" / "compare";
+}
+
+// The models whose image mean the issue bounds on a scene: under an
+// environment the ones made for it (kneiphof2025, wang2020) and the smooth
+// BRDF; under point, directional and sphere lights every model.
+bool mean_bounded(const std::string& model, bool environment) {
+    if (!environment) return true;
+    return model == "smooth" || model == "kneiphof2025" || model == "wang2020";
+}
+
+// Real-time glint models: a GPU back end and sparkle (smooth has none).
+bool flicker_bounded(const std::string& model) {
+    const GlintModelDescriptor* m = find_glint_model(model);
+    return m != nullptr && m->gpu && m->id != GlintModelId::Smooth;
+}
+
+}  // namespace
+
+std::vector<std::string> compare_scene_names() {
+    return scene_list();
+}
+
+ValidationReport validate_compare(const CompareValidationOptions& o) {
+    if (o.size < 8 || o.size > 1024)
+        fail("validate compare: size must be in [8, 1024], got {}", o.size);
+    const std::filesystem::path dir = o.scene_dir.empty() ? default_scene_dir() : o.scene_dir;
+    std::vector<std::string> scenes = o.scenes.empty() ? scene_list() : o.scenes;
+    for (const std::string& s : scenes)
+        if (std::find(scene_list().begin(), scene_list().end(), s) == scene_list().end())
+            fail("validate compare: unknown scene \"{}\" (scenes/compare/: {})", s,
+                 fmt::format("{}", fmt::join(scene_list(), ", ")));
+
+    ValidationReport report;
+    report.suite = "compare";
+    double mean_high = 0.0, mean_low_excess = -1e300;
+    double flicker_max = 0.0, flicker_min = 1e300;
+    int64_t nan = 0, inf = 0, negative = 0;
+    int mean_bounded_count = 0, flicker_count = 0;
+    std::string worst_high, worst_low, worst_flicker_max, worst_flicker_min;
+    nlohmann::json details = nlohmann::json::array();
+    std::string text = fmt::format(
+        "compare suite: {0}x{0}, {1} realizations, {2} spp, {3} frames over {4} deg; bounds: "
+        "|mean err| <= {5:.0f}% (dense, ln density >= {6}) or <= 2 se + {5:.0f}% (sparse); "
+        "flicker ratio in [1/{7}, {7}]\n",
+        o.size, o.realizations, o.spp, o.frames, o.orbit_deg, 100.0 * kMeanBound, kDenseLogDensity,
+        kFlickerFactor);
+
+    for (const std::string& name : scenes) {
+        compare::CompareOptions c;
+        c.scene = dir / (name + ".json");
+        c.models = o.models;
+        c.realizations = o.realizations;
+        c.width = c.height = o.size;
+        c.spp = o.spp;
+        c.frames = o.frames;
+        c.orbit_deg = o.orbit_deg;
+        c.seed = o.seed;
+        c.threads = o.threads;
+        const compare::CompareResult r = compare::run_compare(c);
+        const Scene scene = load_scene(c.scene);
+        const bool environment = scene.environment >= 0;
+        float log_density = 0.0f;
+        for (const MaterialDesc& m : scene.materials)
+            if (m.name == r.material) log_density = m.glint.log_density;
+        const bool dense = log_density >= kDenseLogDensity;
+
+        nlohmann::json sj = r.to_json();
+        sj["scene"] = name;
+        sj["density"] = dense ? "dense" : "sparse";
+        text += "\n" + r.to_text();
+        for (size_t i = 0; i < r.models.size(); ++i) {
+            nlohmann::json& mj = sj["models"][i];  // to_json keeps the order of r.models
+            const compare::ModelMetrics* m = &r.models[i];
+            if (!m->compared) continue;
+            nan += m->faults.nan, inf += m->faults.inf, negative += m->faults.negative;
+            if (m->reference) continue;
+            const bool bounded = mean_bounded(m->model, environment);
+            mj["mean_bounded"] = bounded;
+            const std::string where = fmt::format("{} {}", name, m->model);
+            if (bounded) {
+                ++mean_bounded_count;
+                const double err = std::abs(m->mean_rel_err);
+                if (dense) {
+                    if (!(err <= mean_high)) mean_high = err, worst_high = where;
+                } else {
+                    const double excess = err - 2.0 * m->mean_rel_err_se;
+                    if (!(excess <= mean_low_excess)) mean_low_excess = excess, worst_low = where;
+                }
+            }
+            const bool fb = flicker_bounded(m->model);
+            mj["flicker_bounded"] = fb;
+            if (fb) {
+                ++flicker_count;
+                if (!(m->flicker_ratio <= flicker_max))
+                    flicker_max = m->flicker_ratio, worst_flicker_max = where;
+                if (!(m->flicker_ratio >= flicker_min))
+                    flicker_min = m->flicker_ratio, worst_flicker_min = where;
+            }
+        }
+        details.push_back(sj);
+    }
+    if (mean_low_excess < -1e299) mean_low_excess = 0.0;
+    if (flicker_count == 0) flicker_min = 1.0;
+
+    report.check("mean_rel_err_max", mean_high, "<=", kMeanBound);
+    report.check("mean_rel_err_sparse_minus_2se_max", mean_low_excess, "<=", kMeanBound);
+    report.check("nan_count", double(nan), "==", 0.0);
+    report.check("inf_count", double(inf), "==", 0.0);
+    report.check("negative_count", double(negative), "==", 0.0);
+    report.check("flicker_ratio_max", flicker_max, "<=", kFlickerFactor);
+    report.check("flicker_ratio_min", flicker_min, ">=", 1.0 / kFlickerFactor);
+    report.check("mean_bounded_pairs", double(mean_bounded_count), ">=", 1.0);
+    report.details["scenes"] = details;
+    report.details["worst"] = {{"mean_rel_err_max", worst_high},
+                               {"mean_rel_err_sparse_minus_2se_max", worst_low},
+                               {"flicker_ratio_max", worst_flicker_max},
+                               {"flicker_ratio_min", worst_flicker_min}};
+    report.details["options"] = {
+        {"size", o.size},     {"realizations", o.realizations}, {"spp", o.spp},
+        {"frames", o.frames}, {"orbit_deg", o.orbit_deg},       {"seed", o.seed}};
+    text += fmt::format(
+        "\nworst: dense mean {} ({}), sparse mean - 2 se {} ({}), flicker max {} ({}), min {} "
+        "({})\n",
+        mean_high, worst_high, mean_low_excess, worst_low, flicker_max, worst_flicker_max,
+        flicker_min, worst_flicker_min);
+    report.text = text;
+    return report;
+}
+
+}  // namespace glintlab

@@ -1,0 +1,38 @@
+// `glintlab validate compare` (issue 15): the compare scenes of
+// scenes/compare/ at small size, every model against the explicit ground
+// truth (compare/compare.h), with the bounds of docs/VALIDATION.md
+// "compare".
+#pragma once
+
+#include <cstdint>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "glintlab/validate/report.h"
+
+namespace glintlab {
+
+struct CompareValidationOptions {
+    uint64_t seed = 1;
+    int size = 48;         // W = H
+    int realizations = 3;  // seeds per model
+    int frames = 4;        // flicker path
+    double orbit_deg = 4.0;
+    int spp = 8;  // the CPU renders (the ground truth's noise is part of every check)
+    // Scene stems of scenes/compare/ (e.g. "sphere_city"); empty: every scene.
+    std::vector<std::string> scenes;
+    // Models; empty: every model. The ground truth is always rendered.
+    std::vector<std::string> models;
+    // The directory of the scenes; empty: <source dir>/scenes/compare
+    // (GLINTLAB_SOURCE_DIR of the environment, else of the build).
+    std::filesystem::path scene_dir;
+    int threads = 0;
+};
+
+// The compare scenes, by stem, in the suite's order.
+std::vector<std::string> compare_scene_names();
+
+ValidationReport validate_compare(const CompareValidationOptions& options);
+
+}  // namespace glintlab
