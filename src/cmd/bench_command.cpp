@@ -14,7 +14,7 @@ void add_bench_command(CLI::App& app, int* status) {
         "bench", "Time every glint model on the 000 Table 1 scenes (CPU direct integrator)");
     sub->add_option("--scene", o->scenes,
                     "Scenes (default: all): PLANE_90 PLANE_25 HEIGHTMAP_90 "
-                    "HEIGHTMAP_25 SPHERE MONKEY MANY (and TORUS)");
+                    "HEIGHTMAP_25 SPHERE MONKEY MANY (and TORUS, PEER_CHERMAIN2020)");
     sub->add_option("--model", o->models,
                     "Glint models (default: smooth deliot2023 zirr2016 chermain2020)");
     sub->add_option("--res", *res, "Resolution WxH (default 320x180)");

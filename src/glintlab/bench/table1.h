@@ -50,7 +50,9 @@ struct Table1Row {
 // PLANE_90, PLANE_25, HEIGHTMAP_90, HEIGHTMAP_25, SPHERE, MONKEY (the
 // MONKEY-like mesh: the procedural head of scene/shapes.h, 64k triangles with
 // uvs; no CC0 Suzanne is available offline), MANY (a grid of 64 spheres).
-// TORUS (a tessellated torus) is accepted too.
+// TORUS (a tessellated torus) and PEER_CHERMAIN2020 (the configuration of
+// chermain2020's official viewer: sphere, point light, alpha 0.5, zeta = 2 for
+// chermain2020; sweep it with --log-density 17 20 23 27) are accepted too.
 std::vector<std::string> table1_scene_names();
 
 // The scene file (JSON) of a Table 1 scene with a glint material "g" of
