@@ -30,6 +30,9 @@ void add_bench_command(CLI::App& app, int* status) {
         "default resolution 1920x1080");
     sub->add_flag("--noise-texture", o->gpu_noise_texture,
                   "GPU: deliot2023 with its noise texture (000 6.3) instead of the hash");
+    sub->add_flag("--stochastic-grid", o->gpu_stochastic_grid,
+                  "GPU: deliot2023 with its option stochastic_grid (one of the 4 grids per pixel "
+                  "and frame, same mean; not the model's default)");
     sub->add_option("--log-density", o->log_densities,
                     "ln N values of the sweep (default 8 12 16 20; wang2020 needs <= 19.4)")
         ->check(CLI::Range(0.0f, 40.0f));
@@ -54,6 +57,7 @@ void add_bench_command(CLI::App& app, int* status) {
             o->width = 1920, o->height = 1080;  // the resolution of 000 Table 1
         }
         if (o->gpu_noise_texture && !o->gpu) fail("--noise-texture needs --gpu");
+        if (o->gpu_stochastic_grid && !o->gpu) fail("--stochastic-grid needs --gpu");
         const auto rows = run_table1(*o);
         if (*json)
             fmt::print("{}\n", table1_to_json(*o, rows).dump(2));

@@ -183,6 +183,7 @@ nlohmann::json table1_to_json(const Table1Options& o, const std::vector<Table1Ro
     if (o.gpu) {
         j["device"] = gpu_bench_device();
         j["deliot2023_noise_texture"] = o.gpu_noise_texture;
+        j["deliot2023_stochastic_grid"] = o.gpu_stochastic_grid;
     }
 #endif
     j["resolution"] = {o.width, o.height};

@@ -25,6 +25,8 @@ struct Table1Options {
     bool gpu = false;
     int gpu_warmup = 5;
     bool gpu_noise_texture = false;  // deliot2023 rows: the 000 §6.3 noise-texture variant
+    bool gpu_stochastic_grid =
+        false;  // deliot2023 rows: option stochastic_grid (one grid per pixel)
     // "000": deliot2023's Table 1 (above); "003": Kneiphof & Klein 2025's
     // Table 1 (GPU only; bench/table1_003_gpu.h: IBL static / dynamic /
     // directional rows, smooth / wang2020-style / K = 4 / K = 8 columns).
