@@ -11,7 +11,7 @@ the optimised module: all of them, and by kind (extended GLSL.std.450 calls
 such as Log/Exp/Sqrt, texture reads, loops/branches, arithmetic).
 
 Usage: scripts/shader_instruction_counts.py [--point N] [--directional N]
-       [--environment] [--define NAME[=VALUE]]... GLUE.glsl...
+       [--environment] [--define NAME[=VALUE]]... [--src DIR] GLUE.glsl...
 GLUE is a path under src/, e.g. glintlab/glints/deliot2023/deliot2023_gpu.glsl.
 Requires glslangValidator, spirv-opt and spirv-dis (Debian: glslang-tools,
 spirv-tools).
@@ -29,6 +29,7 @@ INCLUDE = re.compile(r'^\s*#\s*include\s+"([^"]+)"\s*$')
 
 
 def expand(text, seen):
+    global SRC
     out = []
     for line in text.splitlines():
         m = INCLUDE.match(line)
@@ -97,7 +98,11 @@ def main():
     ap.add_argument("--directional", type=int, default=1)
     ap.add_argument("--environment", action="store_true")
     ap.add_argument("--define", action="append", default=[])
+    ap.add_argument("--src", help="source tree (default: this checkout's src/)")
     a = ap.parse_args()
+    if a.src:
+        global SRC
+        SRC = a.src
     for g in a.glue:
         c = counts(assemble(g, a.point, a.directional, a.environment, a.define))
         print(g + ": " + ", ".join(f"{k} {v}" for k, v in c.items()))
