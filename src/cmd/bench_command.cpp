@@ -14,7 +14,7 @@ void add_bench_command(CLI::App& app, int* status) {
         "bench", "Time every glint model on the 000 Table 1 scenes (CPU direct integrator)");
     sub->add_option("--scene", o->scenes,
                     "Scenes (default: all): PLANE_90 PLANE_25 HEIGHTMAP_90 "
-                    "HEIGHTMAP_25 SPHERE MONKEY MANY (and TORUS)");
+                    "HEIGHTMAP_25 SPHERE MONKEY MANY (and TORUS, PEER_CHERMAIN2020)");
     sub->add_option("--model", o->models,
                     "Glint models (default: smooth deliot2023 zirr2016 chermain2020)");
     sub->add_option("--res", *res, "Resolution WxH (default 320x180)");
@@ -30,6 +30,9 @@ void add_bench_command(CLI::App& app, int* status) {
         "default resolution 1920x1080");
     sub->add_flag("--noise-texture", o->gpu_noise_texture,
                   "GPU: deliot2023 with its noise texture (000 6.3) instead of the hash");
+    sub->add_flag("--stochastic-grid", o->gpu_stochastic_grid,
+                  "GPU: deliot2023 with its option stochastic_grid (one of the 4 grids per pixel "
+                  "and frame, same mean; not the model's default)");
     sub->add_option("--log-density", o->log_densities,
                     "ln N values of the sweep (default 8 12 16 20; wang2020 needs <= 19.4)")
         ->check(CLI::Range(0.0f, 40.0f));
@@ -54,6 +57,7 @@ void add_bench_command(CLI::App& app, int* status) {
             o->width = 1920, o->height = 1080;  // the resolution of 000 Table 1
         }
         if (o->gpu_noise_texture && !o->gpu) fail("--noise-texture needs --gpu");
+        if (o->gpu_stochastic_grid && !o->gpu) fail("--stochastic-grid needs --gpu");
         const auto rows = run_table1(*o);
         if (*json)
             fmt::print("{}\n", table1_to_json(*o, rows).dump(2));

@@ -20,6 +20,8 @@
 namespace glintlab {
 namespace {
 
+const char* const kPeerChermain2020 = "PEER_CHERMAIN2020";
+
 // Camera at `elevation_deg` above a plane (90° = straight down), as the
 // PLANE / HEIGHTMAP rows of 000 Table 1.
 nlohmann::json camera_at(float elevation_deg, float distance) {
@@ -60,6 +62,14 @@ nlohmann::json scene_json(const std::string& name) {
                         {"minor_radius", 0.35},
                         {"uv_scale", {4, 2}},
                         {"material", "g"}}};
+    } else if (name == kPeerChermain2020) {
+        // The configuration of chermain2020's official viewer (issue 17):
+        // UV sphere of radius 1 seen from (0, 0, 2.2) down -z, 60 deg
+        // vertical fov, one point light at (5, 5, 5) of intensity 100; the
+        // material (Beckmann alpha 0.5, zeta = 2) in table1_scene_json.
+        j["camera"] = {{"eye", {0, 0, 2.2}}, {"target", {0, 0, 0}}, {"fov_deg", 60}};
+        j["shapes"] = {{{"type", "sphere"}, {"radius", 1.0}, {"material", "g"}}};
+        j["lights"] = {{{"type", "point"}, {"position", {5, 5, 5}}, {"intensity", 100.0}}};
     } else if (name == "MANY") {
         j["camera"] = {{"eye", {0, 9, 9}}, {"target", {0, 0, 0}}, {"fov_deg", 50}};
         nlohmann::json shapes = {quad};
@@ -95,6 +105,11 @@ nlohmann::json table1_scene_json(const std::string& scene_name, const std::strin
                        {"roughness", 0.3},
                        {"log_density", log_density},
                        {"fresnel", {{"type", "conductor"}, {"metal", "silver"}}}}};
+    if (scene_name == kPeerChermain2020) {
+        j["materials"][0]["roughness"] = 0.5;
+        if (model == "chermain2020")
+            j["materials"][0]["chermain2020"] = {{"density_randomization", 2.0}};
+    }
     return j;
 }
 
@@ -134,15 +149,8 @@ std::vector<Table1Row> run_table1(const Table1Options& options) {
         for (const std::string& model : models) {
             Table1Row row{scene_name, model, {}, 0.0, 0.0, {}, {}, {}, {}, {}};
             for (float log_density : options.log_densities) {
-                nlohmann::json j = scene_json(scene_name);
-                j["film"] = {{"width", options.width}, {"height", options.height}};
-                j["materials"] = {{{"name", "g"},
-                                   {"type", "glint"},
-                                   {"model", model},
-                                   {"ndf", "beckmann"},
-                                   {"roughness", 0.3},
-                                   {"log_density", log_density},
-                                   {"fresnel", {{"type", "conductor"}, {"metal", "silver"}}}}};
+                const nlohmann::json j = table1_scene_json(scene_name, model, log_density,
+                                                           options.width, options.height);
                 const Scene scene = parse_scene(j, "bench:" + scene_name);
                 std::vector<double> times;
                 // Frame time = shading + ray casting, without the BVH build
@@ -175,6 +183,7 @@ nlohmann::json table1_to_json(const Table1Options& o, const std::vector<Table1Ro
     if (o.gpu) {
         j["device"] = gpu_bench_device();
         j["deliot2023_noise_texture"] = o.gpu_noise_texture;
+        j["deliot2023_stochastic_grid"] = o.gpu_stochastic_grid;
     }
 #endif
     j["resolution"] = {o.width, o.height};

@@ -25,6 +25,8 @@ struct Table1Options {
     bool gpu = false;
     int gpu_warmup = 5;
     bool gpu_noise_texture = false;  // deliot2023 rows: the 000 §6.3 noise-texture variant
+    bool gpu_stochastic_grid =
+        false;  // deliot2023 rows: option stochastic_grid (one grid per pixel)
     // "000": deliot2023's Table 1 (above); "003": Kneiphof & Klein 2025's
     // Table 1 (GPU only; bench/table1_003_gpu.h: IBL static / dynamic /
     // directional rows, smooth / wang2020-style / K = 4 / K = 8 columns).
@@ -50,7 +52,9 @@ struct Table1Row {
 // PLANE_90, PLANE_25, HEIGHTMAP_90, HEIGHTMAP_25, SPHERE, MONKEY (the
 // MONKEY-like mesh: the procedural head of scene/shapes.h, 64k triangles with
 // uvs; no CC0 Suzanne is available offline), MANY (a grid of 64 spheres).
-// TORUS (a tessellated torus) is accepted too.
+// TORUS (a tessellated torus) and PEER_CHERMAIN2020 (the configuration of
+// chermain2020's official viewer: sphere, point light, alpha 0.5, zeta = 2 for
+// chermain2020; sweep it with --log-density 17 20 23 27) are accepted too.
 std::vector<std::string> table1_scene_names();
 
 // The scene file (JSON) of a Table 1 scene with a glint material "g" of

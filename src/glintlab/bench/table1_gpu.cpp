@@ -58,6 +58,10 @@ std::vector<Table1Row> run_table1_gpu(const Table1Options& options,
         [&](GpuRenderer& renderer, const Scene& scene, const std::string&, const std::string& model,
             Table1Row& row) {
             renderer.set_model_option("deliot2023", "noise_texture", options.gpu_noise_texture);
+            renderer.set_model_option("deliot2023", "stochastic_grid", options.gpu_stochastic_grid);
+            // The engine baseline (docs/BENCHMARKS.md): smooth under an
+            // environment = one split-sum lookup (no effect without one).
+            renderer.set_model_option("smooth", "split_sum_environment", true);
             time_gpu_frames(renderer, scene, options.gpu_warmup, options.frames, row);
             // wang2020: 001 Table 3's passes (wang2020_gpu_passes.h).
             if (model == "wang2020")

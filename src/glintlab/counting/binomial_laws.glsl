@@ -96,12 +96,32 @@ float binomial_deliot2023(float N, float p, float xi0, float xi1) {
 // gate probability min(N p, P(>=1)) (= N p for N < 1, Appendix B), then
 // Phi^-1(xi2; 1 + (N - 1) p, (N - 1) p (1 - p)) clamped to [1, max(N, 1)],
 // i.e. the Gaussian part is clamped to the N - 1 remaining trials.
-float binomial_single_gated(float N, float p, float xi1, float xi2) {
+// Split into the part that depends on (N, p) only and the draw, so that a
+// caller drawing several counts of one (N, p) (deliot2023's 4 angular
+// corners of a vertex) computes the gate's power once; the same operations
+// in the same order, so the counts are bit for bit those of the one-call form.
+struct SingleGatedLaw {
+    float p_gate;  // min(N p, P(>=1))
+    float mean;    // 1 + (N - 1) p
+    float sd;      // sqrt((N - 1) p (1 - p))
+    float top;     // max(N, 1)
+};
+SingleGatedLaw binomial_single_gated_law(float N, float p) {
     float n = max(N, 0.0f);
-    float p_gate = min(n * p, 1.0f - pow_one_minus_stable(p, n));
     float rest = max(n - 1.0f, 0.0f);
-    float g = gaussian_deviate(1.0f + rest * p, rest * p * (1.0f - p), xi2);
-    return xi1 < p_gate ? clamp(g, 1.0f, max(n, 1.0f)) : 0.0f;
+    SingleGatedLaw law;
+    law.p_gate = min(n * p, 1.0f - pow_one_minus_stable(p, n));
+    law.mean = 1.0f + rest * p;
+    law.sd = sqrt(max(rest * p * (1.0f - p), 0.0f));
+    law.top = max(n, 1.0f);
+    return law;
+}
+float binomial_single_gated_draw(SingleGatedLaw law, float xi1, float xi2) {
+    float g = law.mean + law.sd * normal_quantile(xi2);
+    return xi1 < law.p_gate ? clamp(g, 1.0f, law.top) : 0.0f;
+}
+float binomial_single_gated(float N, float p, float xi1, float xi2) {
+    return binomial_single_gated_draw(binomial_single_gated_law(N, p), xi1, xi2);
 }
 
 // Law 6: kneiphof2025's dual-gated Gaussian, 003 Algorithm 1. Returns

@@ -8,20 +8,12 @@
 namespace glintlab {
 
 // Defined beside each model (glints/<model>/<model>_gpu*.cpp).
+const GpuModelHooks& smooth_gpu_hooks();
 const GpuModelHooks& deliot2023_gpu_hooks();
 const GpuModelHooks& zirr2016_gpu_hooks();
 const GpuModelHooks& chermain2020_gpu_hooks();
 const GpuModelHooks& kneiphof2025_gpu_hooks();
 const GpuModelHooks& wang2020_gpu_hooks();
-
-namespace {
-
-// smooth: the glint-free reference, no state of its own.
-std::string smooth_glue_path(unsigned) {
-    return "glintlab/glints/smooth_gpu.glsl";
-}
-
-}  // namespace
 
 void GpuModelState::begin_frame(const GpuFrame&, unsigned) {}
 void GpuModelState::post_pass(unsigned, unsigned, int, int) {}
@@ -41,15 +33,9 @@ int GpuModelHooks::option_index(std::string_view name) const {
 
 std::span<const GpuModelHooks> gpu_model_hooks() {
     static const std::array<GpuModelHooks, 6> table = [] {
-        GpuModelHooks smooth;
-        smooth.model = GlintModelId::Smooth;
-        smooth.glue_path = smooth_glue_path;
-        std::array<GpuModelHooks, 6> t = {smooth,
-                                          deliot2023_gpu_hooks(),
-                                          zirr2016_gpu_hooks(),
-                                          chermain2020_gpu_hooks(),
-                                          kneiphof2025_gpu_hooks(),
-                                          wang2020_gpu_hooks()};
+        std::array<GpuModelHooks, 6> t = {smooth_gpu_hooks(),       deliot2023_gpu_hooks(),
+                                          zirr2016_gpu_hooks(),     chermain2020_gpu_hooks(),
+                                          kneiphof2025_gpu_hooks(), wang2020_gpu_hooks()};
         std::sort(t.begin(), t.end(), [](const GpuModelHooks& a, const GpuModelHooks& b) {
             return static_cast<int>(a.model) < static_cast<int>(b.model);
         });

@@ -94,7 +94,13 @@ ViewerPanelReport* g_report = nullptr;
 void note(const std::string& what) {
     if (g_report == nullptr) return;
     const ImVec2 lo = ImGui::GetItemRectMin(), hi = ImGui::GetItemRectMax();
-    g_report->items.push_back({what, lo.x, lo.y, hi.x, hi.y, ImGui::IsItemVisible()});
+    // Visible = wholly inside the panel's clip rectangle: an item cut by the
+    // bottom edge of a panel that scrolls (more rows than the window's
+    // height) is partly scrolled out, not drawn past the panel.
+    const ImDrawList* dl = ImGui::GetWindowDrawList();
+    const bool whole =
+        lo.y >= dl->GetClipRectMin().y - 0.5f && hi.y <= dl->GetClipRectMax().y + 0.5f;
+    g_report->items.push_back({what, lo.x, lo.y, hi.x, hi.y, ImGui::IsItemVisible() && whole});
 }
 
 // A text line that wraps at the panel's edge instead of running past it.

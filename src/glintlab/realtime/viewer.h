@@ -48,7 +48,7 @@ struct ViewerPanelReport {
     struct Item {
         std::string label;
         float x0, y0, x1, y1;  // the item's rectangle, its label included
-        bool visible;          // false: scrolled out or under a collapsed header
+        bool visible;          // false: scrolled out (even partly) or under a collapsed header
     };
     int window_width = 0, window_height = 0;
     std::array<float, 4> panel{};  // x0, y0, x1, y1

@@ -66,8 +66,11 @@ Chermain2020Cell chermain2020_cell(ivec2 cell, int level, Chermain2020Dict d, fl
     c.kept = hash_random(state) < relative_area;  // line 3-4: discard if U_beta > beta
     // Lines 5-6: n = 4^l / 4^(nLevels-1) rho facets in the cell, l_dist = log(n) / (2 log 2).
     float l_dist = 0.5f * (log_density * 1.44269504f + 2.0f * float(level) - 2.0f * float(d.n_levels - 1));
-    // Line 8: density randomisation, l_dist ~ N(l_dist, zeta^2).
-    l_dist += density_randomization * normal_quantile(hash_random(state));
+    // Line 8: density randomisation, l_dist ~ N(l_dist, zeta^2). The uniform
+    // is drawn in any case (the stream stays the same); without randomisation
+    // the quantile is not evaluated (it is finite, so zeta z would add 0).
+    float u_zeta = hash_random(state);
+    if (density_randomization != 0.0f) l_dist += density_randomization * normal_quantile(u_zeta);
     // Line 9: round (half up, identical in GLSL and C++) and clamp.
     c.dist_level = int(clamp(floor(l_dist + 0.5f), 0.0f, float(d.n_levels)));
     c.colour_u = hash_random(state);
@@ -167,10 +170,28 @@ vec3 chermain2020_level_p22(vec2 slope, vec2 uv, vec3 ellipse, int level, Cherma
     int x1 = int(floor(centre.x + ex));
     int y0 = int(floor(centre.y - ey));
     int y1 = int(floor(centre.y + ey));
+    // Per row, only the cells whose centres can fall in the ellipse: with
+    // p = (px, py) the centre's offset, the ellipse is q2 px^2 + q1 px py +
+    // q0 py^2 < 1; the row's roots, widened by one cell against rounding,
+    // bound x (the r2 test below still decides every cell, so the sums are
+    // those of the whole bounding box, bit for bit, in the same order).
+    float im2 = 1.0f / (major * major);
+    float in2 = 1.0f / (minor * minor);
+    float q2 = ca * ca * im2 + sa * sa * in2;
+    float q1 = 2.0f * ca * sa * (im2 - in2);
+    float q0 = sa * sa * im2 + ca * ca * in2;
     vec3 sum_p = vec3(0.0f);
     float sum_w = 0.0f;
     for (int y = y0; y <= y1; ++y) {
-        for (int x = x0; x <= x1; ++x) {
+        float py = float(y) + 0.5f - centre.y;
+        float half_b = 0.5f * q1 * py;
+        float disc = sqrt(max(half_b * half_b - q2 * (q0 * py * py - 1.0f), 0.0f));
+        float lo = centre.x + (-half_b - disc) / q2 - 0.5f;
+        float hi = centre.x + (-half_b + disc) / q2 - 0.5f;
+        // Bounds outside (x0, x1), infinite or NaN (degenerate axes) keep the box.
+        int xa = lo > float(x0) && lo < float(x1) ? max(x0, int(floor(lo)) - 1) : x0;
+        int xb = hi > float(x0) && hi < float(x1) ? min(x1, int(floor(hi)) + 1) : x1;
+        for (int x = xa; x <= xb; ++x) {
             vec2 p = vec2(float(x) + 0.5f, float(y) + 0.5f) - centre;
             float a = (p.x * ca + p.y * sa) / major;
             float b = (-p.x * sa + p.y * ca) / minor;

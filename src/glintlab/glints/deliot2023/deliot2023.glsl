@@ -317,13 +317,15 @@ vec2 deliot2023_grid_counts(ivec3 id, float weight, vec2 uv, vec2 slope, float p
         vec2 af = floor(a);
         ivec2 ac = ivec2(af);
         vec2 at = clamp(a - af, 0.0f, 1.0f);
+        // The 4 corners share (N, p): the gate's power once per vertex.
+        SingleGatedLaw law = binomial_single_gated_law(N, p);
         float count = 0.0f;
         for (int c = 0; c < 4; ++c) {
             ivec2 corner = ac + ivec2(c & 1, c >> 1);
             float wc = ((c & 1) == 1 ? at.x : 1.0f - at.x) * ((c >> 1) == 1 ? at.y : 1.0f - at.y);
             vec2 xi = deliot2023_uniform_pair(hash_cell(corner & ivec2(DELIOT2023_LATTICE_MASK), vs));
             float b = original_defects ? deliot2023_original_law(N, p, xi.x, xi.y)
-                                       : binomial_single_gated(N, p, xi.x, xi.y);
+                                       : binomial_single_gated_draw(law, xi.x, xi.y);
             count += wc * b;
         }
         acc += bv * vec2(count, N);
@@ -346,6 +348,40 @@ Deliot2023Grids deliot2023_footprint_grids(Footprint fp, float screen_space_scal
     return deliot2023_select_grids(lod, ratio, ellipse.z, original_defects);
 }
 
+// Early exits of the GPU glue (issue 17), compiled in where the back end
+// defines GLINTLAB_DELIOT2023_EXPECTATION_EXITS (the GPU glues; the CPU
+// keeps the plain evaluation, so its renders are unchanged): D_P is replaced
+// by its expectation D(h) (Eq. 5-6) where the counts cannot tell otherwise
+// within fp32, from bounds on the 12 vertices' trials of the 4 grids (the
+// density jitter z of deliot2023_vertex_trials is at most
+// DELIOT2023_MAX_JITTER_Z in magnitude, normal_quantile clamping its argument
+// to [2^-24, 1 - 2^-24]):
+//  (a) sum of the vertices' N p < 2^-24: every gate probability min(N p, .)
+//      is below the 2^-24 resolution of the gate's uniform, so the counts are
+//      all 0 except with probability <= 48 x 2^-24 ~ 3e-6 per pixel (the
+//      NDF's tail); D(h) keeps the mean, where 0 would drop the tail's mass;
+//  (b) every vertex's N p > 2^48: every gate passes (P(>=1) = 1 in fp32) and
+//      each count is N p within 5.3 sqrt(N p (1 - p)) / (N p) < 3.2e-7
+//      relative, so D_P = D(n) / R x count / trials is D(h) to a few ulps.
+// Whole 4 x 4 blocks of pixels that exit skip the 48 binomials (llvmpipe and
+// GPUs branch over code no lane runs).
+const float DELIOT2023_MAX_JITTER_Z = 5.3f;  // normal_quantile(1 - 2^-24) = 5.29
+bool deliot2023_expectation_exit(Deliot2023Grids grids, float p, float log_density,
+                                 float density_randomization) {
+    float jitter = abs(density_randomization) * DELIOT2023_MAX_JITTER_Z;
+    float most = 0.0f;         // bound above of the sum of the vertices' trials
+    float least = 3.4e38f;     // bound below of one vertex's trials
+    for (int i = 0; i < 4; ++i) {
+        if (grids.weight[i] <= 0.0f) continue;
+        float lt = log_density + log(grids.weight[i]) +
+                   float(2 * grids.id[i].x + grids.id[i].y) * DELIOT2023_LN2;
+        most += 3.0f * exp(clamp(lt + jitter, -DELIOT2023_MAX_LOG_TRIALS, DELIOT2023_MAX_LOG_TRIALS));
+        least = min(least, exp(clamp(lt - jitter, -DELIOT2023_MAX_LOG_TRIALS,
+                                     DELIOT2023_MAX_LOG_TRIALS)));
+    }
+    return most * p < 5.9604645e-8f || least * p > 2.8147498e14f;  // 2^-24, 2^48
+}
+
 // D_P(h) of Eq. 3-4 for a local half vector h (z = normal) and a uv footprint.
 // ndf, alpha_x, alpha_y: target NDF D; log_density: ln(facets per unit uv area);
 // seed: the material's seed. microfacet_roughness = R in (0, 1];
@@ -360,6 +396,10 @@ float deliot2023_ndf(vec3 h, Footprint fp, int ndf, float alpha_x, float alpha_y
     float p = clamp(R * d_h / d_n, 0.0f, 1.0f);  // Eq. 4 success probability
 
     Deliot2023Grids grids = deliot2023_footprint_grids(fp, screen_space_scale, original_defects);
+#ifdef GLINTLAB_DELIOT2023_EXPECTATION_EXITS
+    if (!original_defects && deliot2023_expectation_exit(grids, p, log_density, density_randomization))
+        return d_h;
+#endif
 
     vec2 slope = vec2(h.x, h.y) / R;
     vec2 acc = vec2(0.0f);
@@ -370,6 +410,50 @@ float deliot2023_ndf(vec3 h, Footprint fp, int ndf, float alpha_x, float alpha_y
     }
     // Eq. 4 with the footprint's trial count: D(n)/R x count/N, E = D(h) (Eq. 5-6).
     // (count/trials first: both reach 1e35 at the largest densities.)
+    return acc.y > 0.0f ? d_n / R * (acc.x / acc.y) : d_h;
+}
+
+// Stochastic grid selection (the GPU option "stochastic_grid", issue 17; a
+// separate option for renderers with temporal accumulation, never the
+// model's default): of the 4 grids of the footprint, ONE is evaluated, grid
+// i with probability weight_i, drawn with the pixel's uniform u in [0, 1),
+// with the trials it holds in the blend (weight_i of the footprint's), so
+// every vertex draws its counts from the same law as in the blend (the
+// gated law's small-N bias included; with all the trials in the chosen grid
+// the image mean was 4 % lower on the test's plane). Each grid's D(n) / R x
+// count / trials has mean D(h) (Eq. 5-6), so the mixture has the blend's
+// mean: averaged over frames (a new u per frame) it converges to the same
+// expectation, at a quarter of the binomials per frame. Single frames are
+// noisier (one grid's counts over a share of the trials).
+float deliot2023_ndf_stochastic(vec3 h, Footprint fp, int ndf, float alpha_x, float alpha_y,
+                                float log_density, uint seed, float microfacet_roughness,
+                                float screen_space_scale, float density_randomization, float u) {
+    float d_h = D_Microfacet(ndf, h, alpha_x, alpha_y);
+    if (!(d_h > 0.0f)) return 0.0f;
+    float d_n = D_Microfacet(ndf, vec3(0.0f, 0.0f, 1.0f), alpha_x, alpha_y);
+    float R = microfacet_roughness;
+    float p = clamp(R * d_h / d_n, 0.0f, 1.0f);
+    Deliot2023Grids grids = deliot2023_footprint_grids(fp, screen_space_scale, false);
+#ifdef GLINTLAB_DELIOT2023_EXPECTATION_EXITS
+    if (deliot2023_expectation_exit(grids, p, log_density, density_randomization)) return d_h;
+#endif
+    // Inverse CDF over the weights; rounding that leaves u above their sum
+    // picks the last grid of positive weight.
+    ivec3 id = grids.id[0];
+    float weight = grids.weight[0];
+    float below = 0.0f;
+    bool found = false;
+    for (int i = 0; i < 4; ++i) {
+        if (grids.weight[i] <= 0.0f) continue;
+        if (!found) {
+            id = grids.id[i];
+            weight = grids.weight[i];
+        }
+        below += grids.weight[i];
+        if (u < below) found = true;
+    }
+    vec2 acc = deliot2023_grid_counts(id, weight, fp.uv, vec2(h.x, h.y) / R, p, log_density, seed,
+                                      density_randomization, false);
     return acc.y > 0.0f ? d_n / R * (acc.x / acc.y) : d_h;
 }
 

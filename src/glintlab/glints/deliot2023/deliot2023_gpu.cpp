@@ -13,19 +13,27 @@ namespace {
 
 static_assert(kDeliot2023NoiseUnit == 5);  // deliot2023_noise_texture_gpu.glsl
 
-constexpr unsigned kNoiseTexture = 1u << 0;  // options[0]
+constexpr unsigned kNoiseTexture = 1u << 0;    // options[0]
+constexpr unsigned kStochasticGrid = 1u << 1;  // options[1]
 
 constexpr GpuModelOption kOptions[] = {
     {"noise_texture",
      "uniforms of the gated-Gaussian evaluations from a 64 x 64 noise texture (000 6.3) instead "
      "of the hash",
      true},
+    {"stochastic_grid",
+     "one of the 4 grids per pixel and frame, chosen by its weight (same mean; for temporal "
+     "accumulation; a quarter of the binomials)",
+     true},
 };
 
 std::string glue_path(unsigned options) {
-    return (options & kNoiseTexture) != 0
-               ? "glintlab/glints/deliot2023/deliot2023_noise_texture_gpu.glsl"
-               : "glintlab/glints/deliot2023/deliot2023_gpu.glsl";
+    const bool noise = (options & kNoiseTexture) != 0;
+    if ((options & kStochasticGrid) != 0)
+        return noise ? "glintlab/glints/deliot2023/deliot2023_noise_texture_stochastic_gpu.glsl"
+                     : "glintlab/glints/deliot2023/deliot2023_stochastic_gpu.glsl";
+    return noise ? "glintlab/glints/deliot2023/deliot2023_noise_texture_gpu.glsl"
+                 : "glintlab/glints/deliot2023/deliot2023_gpu.glsl";
 }
 
 class State final : public GpuModelState {
@@ -34,6 +42,8 @@ class State final : public GpuModelState {
         if (noise_ != 0) glDeleteTextures(1, &noise_);
     }
 
+    // The frame number of the stochastic grid choice (a new draw per frame).
+    void begin_frame(const GpuFrame&, unsigned) override { ++frame_; }
     void prepare(unsigned program, gl::UniformCache& u, const GlintDesc& desc, const GpuFrame&,
                  unsigned options) override {
         auto loc = [&](const char* name) { return u.location(program, name); };
@@ -45,6 +55,8 @@ class State final : public GpuModelState {
                            p.density_randomization);
         glProgramUniform1i(program, loc("u_deliot2023_original_defects"),
                            p.original_defects ? 1 : 0);
+        if ((options & kStochasticGrid) != 0)
+            glProgramUniform1ui(program, loc("u_deliot2023_frame"), frame_);
         if ((options & kNoiseTexture) == 0) return;
         if (noise_ == 0) {
             const std::vector<float> pairs = deliot2023_noise_pairs();
@@ -60,6 +72,7 @@ class State final : public GpuModelState {
 
   private:
     GLuint noise_ = 0;  // RG32F 64 x 64, uploaded on first use
+    unsigned frame_ = 0;
 };
 
 }  // namespace

@@ -7,6 +7,9 @@
 #ifndef GLINTLAB_GLINTS_DELIOT2023_DELIOT2023_GPU_GLSL
 #define GLINTLAB_GLINTS_DELIOT2023_DELIOT2023_GPU_GLSL
 
+// D_P's expectation where the counts cannot differ from it in fp32
+// (deliot2023.glsl deliot2023_expectation_exit; the CPU evaluates in full).
+#define GLINTLAB_DELIOT2023_EXPECTATION_EXITS 1
 #include "glintlab/glints/glint_uniforms.glsl"
 #include "glintlab/microfacet/ndf.glsl"
 #include "glintlab/glints/deliot2023/deliot2023.glsl"
@@ -14,11 +17,32 @@ uniform float u_deliot2023_microfacet_roughness;
 uniform float u_deliot2023_screen_space_scale;
 uniform float u_deliot2023_density_randomization;
 uniform bool u_deliot2023_original_defects;
+#ifdef GLINTLAB_DELIOT2023_STOCHASTIC_GRID
+// Option stochastic_grid: one grid per pixel, drawn from the pixel, the
+// material's seed and the frame number (deliot2023_ndf_stochastic).
+uniform uint u_deliot2023_frame;
+vec3 glint_ndf(vec3 h, Footprint fp) {
+    if (u_deliot2023_original_defects)
+        return vec3(deliot2023_ndf(h, fp, u_glint_ndf, u_glint_alpha.x, u_glint_alpha.y,
+                                   u_glint_log_density, u_glint_seed,
+                                   u_deliot2023_microfacet_roughness,
+                                   u_deliot2023_screen_space_scale,
+                                   u_deliot2023_density_randomization, true));
+    uint pixel = hash_cell(ivec2(gl_FragCoord.xy), u_glint_seed ^ 0x5bd1e995u);
+    float u = uint_to_unit_float(pcg_hash(pixel ^ (u_deliot2023_frame * 0x9e3779b9u)));
+    return vec3(deliot2023_ndf_stochastic(h, fp, u_glint_ndf, u_glint_alpha.x, u_glint_alpha.y,
+                                          u_glint_log_density, u_glint_seed,
+                                          u_deliot2023_microfacet_roughness,
+                                          u_deliot2023_screen_space_scale,
+                                          u_deliot2023_density_randomization, u));
+}
+#else
 vec3 glint_ndf(vec3 h, Footprint fp) {
     return vec3(deliot2023_ndf(h, fp, u_glint_ndf, u_glint_alpha.x, u_glint_alpha.y,
                                u_glint_log_density, u_glint_seed,
                                u_deliot2023_microfacet_roughness, u_deliot2023_screen_space_scale,
                                u_deliot2023_density_randomization, u_deliot2023_original_defects));
 }
+#endif
 
 #endif

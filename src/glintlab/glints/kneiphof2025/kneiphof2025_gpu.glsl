@@ -14,6 +14,9 @@
 #ifndef GLINTLAB_GLINTS_KNEIPHOF2025_KNEIPHOF2025_GPU_GLSL
 #define GLINTLAB_GLINTS_KNEIPHOF2025_KNEIPHOF2025_GPU_GLSL
 
+// D_P's expectation where the counts cannot differ from it in fp32
+// (deliot2023.glsl deliot2023_expectation_exit; the CPU evaluates in full).
+#define GLINTLAB_DELIOT2023_EXPECTATION_EXITS 1
 #include "glintlab/glints/glint_uniforms.glsl"
 #include "glintlab/microfacet/ndf.glsl"
 #include "glintlab/glints/kneiphof2025/kneiphof2025.glsl"

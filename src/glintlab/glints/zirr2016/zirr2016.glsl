@@ -64,15 +64,22 @@ vec3 zirr2016_footprint_axes(vec2 dx, vec2 dy) {
 // Eq. 15 count in one angular cell of one texel, with the cell's uniforms
 // drawn from its hash: 1 for the Gaussian, then as many as the Bernoulli sum
 // reads (ceil(N) <= 16; none when N p > 5).
+// binomial_zirr2016 (counting/binomial_laws.glsl) with its trials drawn and
+// counted in one loop, without the 4 x 4 matrix of uniforms (a dynamically
+// indexed local array, which shader compilers keep in scratch memory): the
+// same draws compared with the same q, so the same counts bit for bit.
 float zirr2016_cell_law(float N, float p, uint cell_hash) {
     uint s = cell_hash;
     float xi_gauss = hash_random(s);
-    mat4 xi = mat4(0.0f);
-    if (!(N * p > 5.0f)) {
-        int trials = int(min(ceil(max(N, 0.0f)), 16.0f));
-        for (int k = 0; k < trials; ++k) xi[k / 4][k % 4] = hash_random(s);
+    float n = max(N, 0.0f);
+    if (n * p > 5.0f) {
+        return clamp(floor(gaussian_deviate(n * p, n * p * (1.0f - p), xi_gauss)), 0.0f, n);
     }
-    return binomial_zirr2016(N, p, xi_gauss, xi);
+    int trials = int(min(ceil(n), 16.0f));
+    float q = trials > 0 ? n * p / float(trials) : 0.0f;
+    float count = 0.0f;
+    for (int k = 0; k < trials; ++k) count += hash_random(s) < q ? 1.0f : 0.0f;
+    return count;
 }
 
 // Count of one texel (level l, index t): the 4 angular cells around
@@ -132,6 +139,15 @@ float zirr2016_ndf(vec3 h, Footprint fp, int ndf, float alpha_x, float alpha_y, 
     float n_bottom = exp(clamp(log_bottom, -ZIRR2016_MAX_LOG_TRIALS, ZIRR2016_MAX_LOG_TRIALS));
     float n_top = exp(clamp(log_bottom + 2.0f * ZIRR2016_LN2, -ZIRR2016_MAX_LOG_TRIALS,
                             ZIRR2016_MAX_LOG_TRIALS));
+
+#ifdef GLINTLAB_ZIRR2016_EXPECTATION_EXIT
+    // GPU glue (issue 17): where the footprint's 2 x 4 x steps angular cells
+    // hold fewer than 2^-24 expected successes in all (each cell N p, Eq. 15's
+    // Bernoulli regime, whose mean is exactly N p), every count is 0 but with
+    // a probability below 2^-24 in exact arithmetic: D_P is replaced by its
+    // mean D(h), and the march is skipped. The CPU evaluates in full.
+    if (8.0f * float(steps) * max(n_bottom, n_top) * p < 5.9604645e-8f) return d_h;
+#endif
 
     vec2 slope = vec2(h.x, h.y) / R;
     vec2 dir = vec2(cos(axes.z), sin(axes.z));

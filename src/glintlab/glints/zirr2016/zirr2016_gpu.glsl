@@ -5,6 +5,9 @@
 #ifndef GLINTLAB_GLINTS_ZIRR2016_ZIRR2016_GPU_GLSL
 #define GLINTLAB_GLINTS_ZIRR2016_ZIRR2016_GPU_GLSL
 
+// D_P's mean where no cell can count a success (zirr2016.glsl; the CPU
+// evaluates in full).
+#define GLINTLAB_ZIRR2016_EXPECTATION_EXIT 1
 #include "glintlab/glints/glint_uniforms.glsl"
 #include "glintlab/microfacet/ndf.glsl"
 #include "glintlab/glints/zirr2016/zirr2016.glsl"
