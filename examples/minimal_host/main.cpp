@@ -2,8 +2,9 @@
 // files of `glintlab export MODEL --lang glsl` alone — no glintlab library,
 // no glintlab header (docs/INTEGRATION.md "Minimal host"). It renders the PLANE_25
 // view of Deliot & Belcour 2023's Table 1 (an 8 x 8 quad with uv scale 8,
-// camera 25 degrees above it at distance 3, a directional light, silver
-// conductor Fresnel, Beckmann roughness 0.3) headless through EGL
+// camera 25 degrees above it at distance 3, a directional light; the
+// material is the manifest's: export with --scene of a PLANE_25 scene file
+// for its silver conductor, Beckmann roughness 0.3) headless through EGL
 // (surfaceless Mesa platform) into an RGBA32F framebuffer and writes the
 // linear radiance as a PFM file.
 //
