@@ -2,8 +2,9 @@
 // files of `glintlab export MODEL --lang glsl` alone — no glintlab library,
 // no glintlab header (docs/INTEGRATION.md "Minimal host"). It renders the PLANE_25
 // view of Deliot & Belcour 2023's Table 1 (an 8 x 8 quad with uv scale 8,
-// camera 25 degrees above it at distance 3, a directional light, silver
-// conductor Fresnel, Beckmann roughness 0.3) headless through EGL
+// camera 25 degrees above it at distance 3, a directional light; the
+// material is the manifest's: export with --scene of a PLANE_25 scene file
+// for its silver conductor, Beckmann roughness 0.3) headless through EGL
 // (surfaceless Mesa platform) into an RGBA32F framebuffer and writes the
 // linear radiance as a PFM file.
 //
@@ -193,8 +194,14 @@ void set_uniform(GLuint program, const std::map<std::string, GLenum>& types,
         case GL_UNSIGNED_INT:
             glProgramUniform1ui(program, loc, static_cast<GLuint>(n(0)));
             break;
+        case GL_INT_VEC2:
+            glProgramUniform2i(program, loc, n(0), n(1));
+            break;
         case GL_INT_VEC3:
             glProgramUniform3i(program, loc, n(0), n(1), n(2));
+            break;
+        case GL_INT_VEC4:
+            glProgramUniform4i(program, loc, n(0), n(1), n(2), n(3));
             break;
         default:
             die("uniform " + name + ": type not handled by this host");
@@ -257,26 +264,46 @@ int run(int argc, char** argv) {
 
     // Resources: textures at units from 4 on, as the manifest describes them.
     int unit = 4;
+    bool environment = false;  // the export holds environment maps/tables
     for (const auto& r : manifest.at("resources")) {
         if (r.contains("used_by")) continue;  // a variant's resource
         const std::string format = r.at("format");
         const int w = r.at("width"), h = r.at("height");
         const std::string data = slurp(dir + "/" + r.at("file").get<std::string>());
-        GLenum internal = GL_RGBA32F, fmt = GL_RGBA;
+        // Formats: float R/RG/RGBA, and RG32UI (wang2020's quadtree nodes,
+        // raw uint32 pairs: an integer texture, read with texelFetch).
+        GLenum internal = GL_RGBA32F, fmt = GL_RGBA, type = GL_FLOAT;
         if (format == "R32F") internal = GL_R32F, fmt = GL_RED;
         if (format == "RG32F") internal = GL_RG32F, fmt = GL_RG;
-        if (r.contains("layers")) die("texture arrays are not handled by this host");
+        if (format == "RG32UI") internal = GL_RG32UI, fmt = GL_RG_INTEGER, type = GL_UNSIGNED_INT;
+        if (r.value("mipmaps", false))
+            die(r.at("file").get<std::string>() + ": mipmaps not handled");
+        // "layers": a 2D array texture (kneiphof2025's prefiltered maps, one
+        // roughness per layer), layer after layer in the file.
+        const int layers = r.value("layers", 0);
         GLuint tex = 0;
-        glCreateTextures(GL_TEXTURE_2D, 1, &tex);
-        glTextureStorage2D(tex, 1, internal, w, h);
         glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
-        glTextureSubImage2D(tex, 0, 0, 0, w, h, fmt, GL_FLOAT, data.data());
+        if (layers > 0) {
+            glCreateTextures(GL_TEXTURE_2D_ARRAY, 1, &tex);
+            glTextureStorage3D(tex, 1, internal, w, h, layers);
+            glTextureSubImage3D(tex, 0, 0, 0, 0, w, h, layers, fmt, type, data.data());
+        } else {
+            glCreateTextures(GL_TEXTURE_2D, 1, &tex);
+            glTextureStorage2D(tex, 1, internal, w, h);
+            glTextureSubImage2D(tex, 0, 0, 0, w, h, fmt, type, data.data());
+        }
         const GLint filter = r.at("filter") == "linear" ? GL_LINEAR : GL_NEAREST;
         glTextureParameteri(tex, GL_TEXTURE_MIN_FILTER, filter);
         glTextureParameteri(tex, GL_TEXTURE_MAG_FILTER, filter);
-        const GLint wrap = r.at("wrap") == "repeat" ? GL_REPEAT : GL_CLAMP_TO_EDGE;
-        glTextureParameteri(tex, GL_TEXTURE_WRAP_S, wrap);
-        glTextureParameteri(tex, GL_TEXTURE_WRAP_T, wrap);
+        const std::string wrap = r.at("wrap");
+        const GLint wrap_s =
+            wrap == "repeat" || wrap == "repeat_s_clamp_t" ? GL_REPEAT : GL_CLAMP_TO_EDGE;
+        const GLint wrap_t = wrap == "repeat" ? GL_REPEAT : GL_CLAMP_TO_EDGE;
+        glTextureParameteri(tex, GL_TEXTURE_WRAP_S, wrap_s);
+        glTextureParameteri(tex, GL_TEXTURE_WRAP_T, wrap_t);
+        // A resource made for an environment (kneiphof2025's maps, wang2020's
+        // prefiltered table): the model's environment lighting is on.
+        if (r.contains("environment")) environment = true;
         glBindTextureUnit(static_cast<GLuint>(unit), tex);
         glProgramUniform1i(
             program, glGetUniformLocation(program, r.at("uniform").get<std::string>().c_str()),
@@ -286,15 +313,19 @@ int run(int argc, char** argv) {
                 set_uniform(program, types, name, value);
         ++unit;
     }
-    // The model's parameters at their defaults.
+    // The model's parameters at the exported material's values (`value`; the
+    // descriptor's `default` without --scene).
     for (const auto& p : manifest.at("parameters")) {
         if (!p.contains("uniform")) {
             std::fprintf(stderr, "minimal_host: %s.%s is host-side; left at the shader's default\n",
                          model.c_str(), p.at("key").get<std::string>().c_str());
             continue;
         }
-        set_uniform(program, types, p.at("uniform"), p.at("default"));
+        set_uniform(program, types, p.at("uniform"), p.value("value", p.at("default")));
     }
+    // Uniforms the renderer derives from parameters, precomputed by the export.
+    for (const auto& u : manifest.at("derived_uniforms"))
+        set_uniform(program, types, u.at("uniform"), u.at("value"));
 
     // PLANE_25: camera 25 degrees above an 8 x 8 quad (uv scale 8), fov 45.
     const float pi = 3.14159265358979f;
@@ -312,16 +343,12 @@ int run(int argc, char** argv) {
     glProgramUniformMatrix4fv(program, glGetUniformLocation(program, "u_view_projection"), 1,
                               GL_FALSE, vp.m);
     set_uniform(program, types, "u_eye", {eye.x, eye.y, eye.z});
-    // Material: Beckmann (0), alpha 0.3, silver conductor (Fresnel mode 2).
-    set_uniform(program, types, "u_glint_ndf", 0);
-    set_uniform(program, types, "u_glint_alpha", {0.3f, 0.3f});
-    set_uniform(program, types, "u_glint_log_density", log_density);
-    set_uniform(program, types, "u_glint_seed", 0);
-    set_uniform(program, types, "u_glint_color", {1.0f, 1.0f, 1.0f});
-    set_uniform(program, types, "u_glint_base_albedo", {0.0f, 0.0f, 0.0f});
-    set_uniform(program, types, "u_fresnel_mode", 2);
-    set_uniform(program, types, "u_fresnel_eta", {0.155f, 0.116f, 0.138f});
-    set_uniform(program, types, "u_fresnel_k", {4.828f, 3.122f, 2.147f});
+    // Material: the manifest's (the scene material it was exported from;
+    // PLANE_25's is Beckmann alpha 0.3 with silver conductor Fresnel), ln N
+    // from the command line if given.
+    for (const auto& [name, value] : manifest.at("material").at("uniforms").items())
+        set_uniform(program, types, name, value);
+    if (argc == 7) set_uniform(program, types, "u_glint_log_density", log_density);
     set_uniform(program, types, "u_glint_g2", model == "chermain2020" ? 1 : 0);
     // One directional light towards (0.3, 0.8, 0.5), irradiance 2.
     const Vec3 l = normalize({0.3f, 0.8f, 0.5f});
@@ -329,7 +356,7 @@ int run(int argc, char** argv) {
     set_uniform(program, types, "u_directional_direction", {l.x, l.y, l.z});
     set_uniform(program, types, "u_directional_irradiance", {2.0f, 2.0f, 2.0f});
     set_uniform(program, types, "u_point_count", 0);
-    set_uniform(program, types, "u_environment_on", false);
+    set_uniform(program, types, "u_environment_on", environment);
 
     // The quad: y = 0, normal +y, uv (0,0) at (-4, 0, 4), dp/du = (1, 0, 0).
     const float v[] = {

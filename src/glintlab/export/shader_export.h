@@ -36,6 +36,15 @@ struct ExportOptions {
     // Optional environment map (lat-long EXR/HDR/PNG): kneiphof2025 also
     // writes its prefiltered maps for it.
     std::filesystem::path environment;
+    // Optional scene file and glint material of it (`--scene`, `--material`):
+    // the resources (wang2020's tables, kneiphof2025's prefiltered maps with
+    // the material's K and black level) and the manifest's parameter values
+    // and material uniforms are those of this material instead of the
+    // model's defaults. An empty `material` picks the scene's first glint
+    // material of `model`. The scene's environment is used when
+    // `environment` is empty.
+    std::filesystem::path scene;
+    std::string material;
     // false: shaders and manifest only (no resource files, the manifest's
     // `resources` empty) — for checking shaders without building tables.
     bool resources = true;
@@ -53,8 +62,10 @@ struct ExportedFile {
 
 // Writes the files of one model and language; returns them (manifest last).
 // Throws glintlab::Error for an unknown model, a model without GPU back end,
-// a language the model cannot be exported to, a missing tool or an
-// unwritable directory.
+// a language the model cannot be exported to, a missing tool, an
+// unwritable directory, or a scene material that is missing, not a glint
+// material or of another model (the message names the scene file and the
+// material).
 std::vector<ExportedFile> export_model(const ExportOptions& options);
 
 // The flattened fragment stage of `model` in GLSL 4.50 or GLSL ES 3.00

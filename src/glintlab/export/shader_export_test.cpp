@@ -5,6 +5,7 @@
 // the sizes it states.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstdlib>
 #include <fstream>
 #include <set>
@@ -18,6 +19,8 @@
 #include "glintlab/core/image_test_util.h"
 #include "glintlab/core/shader_sources.h"
 #include "glintlab/export/shader_export.h"
+#include "glintlab/glints/glint_bxdf.h"
+#include "glintlab/glints/glint_desc.h"
 #include "glintlab/glints/registry.h"
 
 namespace glintlab {
@@ -234,6 +237,151 @@ TEST(Export, Kneiphof2025EnvironmentMapsOfAConstantEnvironment) {
         EXPECT_NEAR(t[4 * i + 0], 0.5f, 1e-4f * 0.5f) << i;
         EXPECT_NEAR(t[4 * i + 1], 1.0f, 1e-4f) << i;
         EXPECT_NEAR(t[4 * i + 2], 2.0f, 2e-4f) << i;
+    }
+}
+
+// --scene / --material: the resources and values of a scene material. Two
+// wang2020 materials with the same (small, fast) tables resolution: "plain"
+// keeps the default alpha and seed (ln N 14: wang2020's range ends at 19.4),
+// "sparkle" changes alpha, density and seed.
+// Each manifest records its material's values, and the tables built for the
+// default glint values differ from those of "sparkle" (other DPF lobe,
+// other particles): the export does not fall back to the defaults.
+constexpr const char* kMaterialsScene = R"({
+  "film": {"width": 16, "height": 16},
+  "camera": {"eye": [0, 0, 3], "target": [0, 0, 0], "fov_deg": 45},
+  "materials": [
+    {"name": "plain", "type": "glint", "model": "wang2020", "ndf": "beckmann", "log_density": 14,
+     "wang2020": {"dpf_theta": 8, "dpf_phi": 16, "depth": 6}},
+    {"name": "sparkle", "type": "glint", "model": "wang2020", "ndf": "beckmann",
+     "roughness": 0.25, "log_density": 12, "seed": 7,
+     "wang2020": {"dpf_theta": 8, "dpf_phi": 16, "depth": 6, "gamma_deg": 4}},
+    {"name": "paint", "type": "diffuse"},
+    {"name": "shiny", "type": "glint", "model": "kneiphof2025", "ndf": "ggx"}
+  ],
+  "shapes": [{"name": "s", "type": "sphere", "radius": 1.0, "material": "sparkle"}],
+  "lights": [{"type": "point", "position": [2, 2, 3], "intensity": 20}]
+})";
+
+TEST(Export, Wang2020SceneMaterialTablesAndValues) {
+    testing::ScratchDir dir;
+    const fs::path scene = dir / "materials.json";
+    { std::ofstream(scene) << kMaterialsScene; }
+    auto run = [&](const std::string& material) {
+        ExportOptions o;
+        o.model = "wang2020";
+        o.out_dir = dir / material;
+        o.scene = scene;
+        o.material = material;
+        export_model(o);
+        return nlohmann::json::parse(slurp(o.out_dir / "wang2020.glsl.manifest.json"));
+    };
+    const nlohmann::json plain = run("plain"), sparkle = run("sparkle");
+    EXPECT_EQ(sparkle.at("material").at("name"), "sparkle");
+    const auto& u = sparkle.at("material").at("uniforms");
+    EXPECT_FLOAT_EQ(u.at("u_glint_alpha")[0].get<float>(), 0.25f);
+    EXPECT_FLOAT_EQ(u.at("u_glint_log_density").get<float>(), 12.0f);
+    EXPECT_EQ(u.at("u_glint_seed").get<uint32_t>(), 7u);
+    EXPECT_FLOAT_EQ(plain.at("material").at("uniforms").at("u_glint_alpha")[0].get<float>(), 0.3f);
+    // Parameter values: the material's, next to the descriptor's default.
+    for (const auto& p : sparkle.at("parameters")) {
+        if (p.at("key") == "gamma_deg") {
+            EXPECT_DOUBLE_EQ(p.at("value").get<double>(), 4.0);
+            EXPECT_DOUBLE_EQ(p.at("default").get<double>(), 1.0);
+        }
+        if (p.at("key") == "dpf_theta") {
+            EXPECT_EQ(p.at("value").get<int>(), 8);
+        }
+    }
+    // The tables' uniforms follow the material (cos gamma of 4 degrees).
+    nlohmann::json tables;
+    for (const auto& r : sparkle.at("resources"))
+        if (r.contains("uniforms")) tables = r.at("uniforms");
+    ASSERT_FALSE(tables.is_null());
+    EXPECT_EQ(tables.at("u_wang2020_seed").get<uint32_t>(), 7u);
+    EXPECT_NEAR(tables.at("u_wang2020_cos_gamma").get<double>(), std::cos(4.0 * M_PI / 180.0),
+                1e-12);
+    EXPECT_EQ(tables.at("u_wang2020_dpf_res")[0].get<int>(), 8);
+    for (const char* t : {"wang2020.dpf.f32", "wang2020.nodes.u32"}) {
+        const std::string a = slurp(dir / "plain" / t), b = slurp(dir / "sparkle" / t);
+        EXPECT_FALSE(a.empty()) << t;
+        EXPECT_NE(a, b) << t << " is the same for both materials";
+    }
+}
+
+// Bad --scene/--material requests name the file, the material and the problem.
+TEST(Export, SceneMaterialErrorsNameFileAndMaterial) {
+    testing::ScratchDir dir;
+    const fs::path scene = dir / "materials.json";
+    { std::ofstream(scene) << kMaterialsScene; }
+    auto error = [&](const std::string& model, const std::string& material, bool with_scene) {
+        ExportOptions o;
+        o.model = model;
+        o.out_dir = dir / "out";
+        o.resources = false;
+        if (with_scene) o.scene = scene;
+        o.material = material;
+        try {
+            export_model(o);
+        } catch (const Error& e) {
+            return std::string(e.what());
+        }
+        return std::string("(no error)");
+    };
+    std::string e = error("wang2020", "nope", true);
+    EXPECT_NE(e.find("materials.json"), std::string::npos) << e;
+    EXPECT_NE(e.find("\"nope\""), std::string::npos) << e;
+    EXPECT_NE(e.find("sparkle"), std::string::npos) << e;  // lists what exists
+    e = error("wang2020", "paint", true);
+    EXPECT_NE(e.find("\"paint\""), std::string::npos) << e;
+    EXPECT_NE(e.find("not a glint material"), std::string::npos) << e;
+    e = error("wang2020", "shiny", true);
+    EXPECT_NE(e.find("uses model \"kneiphof2025\""), std::string::npos) << e;
+    EXPECT_NE(e.find("materials.json"), std::string::npos) << e;
+    e = error("deliot2023", "", true);
+    EXPECT_NE(e.find("no glint material of model \"deliot2023\""), std::string::npos) << e;
+    e = error("wang2020", "sparkle", false);
+    EXPECT_NE(e.find("needs --scene"), std::string::npos) << e;
+}
+
+// D3D's y runs down the image, OpenGL's up: the exported HLSL (SPIRV-Cross
+// maps dFdyFine to ddy_fine) computes duvdy = -ddy_fine(uv), the mirror of
+// the GLSL footprint's. Every model's footprint NDF depends on duvdy only
+// through sign-free forms (the J J^T ellipse of deliot2023, zirr2016 and
+// chermain2020 — products of two duvdy components —, |det J|, and
+// wang2020's AABB |duvdx| + |duvdy|), so negating duvdy must give the same
+// D_P to the bit (IEEE negation is exact, (-a)(-b) = ab exactly). Checked
+// on the shared shader functions through the CPU renderer's GlintBxdf over
+// 64 half vectors (wang2020 needs its tables; its AABB uses abs() only).
+TEST(Export, FootprintNdfIgnoresTheSignOfDuvdy) {
+    for (GlintModelId id : {GlintModelId::Smooth, GlintModelId::Deliot2023, GlintModelId::Zirr2016,
+                            GlintModelId::Chermain2020, GlintModelId::Kneiphof2025}) {
+        GlintDesc g;
+        switch_glint_model(g, id);
+        g.log_density = 12.0f;
+        GlintBxdf up, down;
+        up.desc = down.desc = &g;
+        up.has_footprint = down.has_footprint = true;
+        up.footprint.uv = glm::vec2(0.3f, 0.7f);
+        up.footprint.duvdx = glm::vec2(0.004f, 0.001f);
+        up.footprint.duvdy = glm::vec2(-0.0015f, 0.003f);
+        down.footprint = up.footprint;
+        down.footprint.duvdy = -up.footprint.duvdy;
+        int nonzero = 0;
+        const glm::vec3 wo = glm::normalize(glm::vec3(0.2f, -0.3f, 0.9f));
+        for (int i = 0; i < 64; ++i) {
+            // Half vectors within ~0.35 rad of the normal (where glints are).
+            const float a = 0.35f * static_cast<float>(i % 8) / 8.0f;
+            const float phi = 6.2831853f * static_cast<float>(i / 8) / 8.0f;
+            const glm::vec3 h(std::sin(a) * std::cos(phi), std::sin(a) * std::sin(phi),
+                              std::cos(a));
+            const glm::vec3 wi = glm::reflect(-wo, h);
+            if (wi.z <= 0.0f) continue;
+            const float du = up.footprint_ndf(wo, wi, h), dd = down.footprint_ndf(wo, wi, h);
+            EXPECT_EQ(du, dd) << glint_model(id).name << " h " << i;
+            nonzero += du > 0.0f;
+        }
+        EXPECT_GT(nonzero, 0) << glint_model(id).name;  // the check saw glints
     }
 }
 
