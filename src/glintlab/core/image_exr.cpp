@@ -108,11 +108,23 @@ Image read_exr(const std::filesystem::path& path) {
         const Imf::Header& header = file.header();
         const Imf::ChannelList& channels = header.channels();
         const Imath::Box2i data_box = header.dataWindow();
-        const Window dw = window_of(data_box);
-        const Window display = window_of(header.displayWindow());
-        if (dw.width <= 0 || dw.height <= 0 || display.width <= 0 || display.height <= 0)
+        // Sizes in 64 bits: max - min + 1 overflows int for windows that
+        // span the int range, which a header may claim.
+        const Imath::Box2i display_box = header.displayWindow();
+        auto side = [](int lo, int hi) { return int64_t(hi) - int64_t(lo) + 1; };
+        const int64_t dw_w = side(data_box.min.x, data_box.max.x),
+                      dw_h = side(data_box.min.y, data_box.max.y);
+        const int64_t display_w = side(display_box.min.x, display_box.max.x),
+                      display_h = side(display_box.min.y, display_box.max.y);
+        if (dw_w <= 0 || dw_h <= 0 || display_w <= 0 || display_h <= 0)
             fail("{}: OpenEXR image has zero size (data window {}x{}, display window {}x{})",
-                 path.string(), dw.width, dw.height, display.width, display.height);
+                 path.string(), dw_w, dw_h, display_w, display_h);
+        // The data window is read into its own buffer (12 bytes a pixel, 8
+        // more for luminance/chroma files), then placed in the display window.
+        require_image_memory(path, "OpenEXR display window", display_w, display_h, 0);
+        require_image_memory(path, "OpenEXR data window", dw_w, dw_h, 20);
+        const Window dw = window_of(data_box);
+        const Window display = window_of(display_box);
 
         const bool has_rgb =
             channels.findChannel("R") || channels.findChannel("G") || channels.findChannel("B");

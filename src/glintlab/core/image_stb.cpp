@@ -36,6 +36,9 @@ struct StbFree {
 
 Image read_radiance_hdr(const std::filesystem::path& path) {
     int w = 0, h = 0, channels_in_file = 0;
+    // stb decodes into 3 floats a pixel (12 bytes) before the copy.
+    if (stbi_info(path.string().c_str(), &w, &h, &channels_in_file))
+        require_image_memory(path, "Radiance .hdr image", w, h, 12);
     // Radiance RGBE is linear already; stbi_loadf applies no transfer curve to .hdr input.
     std::unique_ptr<float, StbFree> data(
         stbi_loadf(path.string().c_str(), &w, &h, &channels_in_file, 3));
@@ -55,6 +58,10 @@ Image read_srgb_8bit_or_16bit(const std::filesystem::path& path) {
     int w = 0, h = 0, channels_in_file = 0;
     // stbi_loadf would linearise with a pure 2.2 gamma; load the integer codes instead and
     // apply the exact sRGB curve. Grey and grey+alpha files are expanded to RGB by stb.
+    // stb decodes into up to 3 x 16 bits a pixel (plus its own row buffers,
+    // counted as as much again).
+    if (stbi_info(name.c_str(), &w, &h, &channels_in_file))
+        require_image_memory(path, "PNG/JPEG image", w, h, 12);
     Image image;
     if (stbi_is_16_bit(name.c_str())) {
         std::unique_ptr<stbi_us, StbFree> data(

@@ -13,6 +13,7 @@
 
 #include "glintlab/core/error.h"
 #include "glintlab/core/image_test_util.h"
+#include "glintlab/core/memory_limit.h"
 
 namespace glintlab {
 namespace {
@@ -171,6 +172,56 @@ TEST(ImageErrors, MissingUnknownEmptyAndCorruptFilesNameTheFile) {
     std::filesystem::copy_file(dir / "full.exr", dir / "cut.exr");
     std::filesystem::resize_file(dir / "cut.exr", size / 2);
     expect_error([&] { read_image(dir / "cut.exr"); }, {"cut.exr"});
+}
+
+void put_be32(std::string& s, uint32_t v) {
+    for (int b = 3; b >= 0; --b) s.push_back(static_cast<char>((v >> (8 * b)) & 0xff));
+}
+
+// A file's header can claim any size: a few hundred bytes claiming 60000² or
+// 2³¹ pixels must be an error naming the file and the size before anything
+// of that size is allocated (60000² × 12 bytes = 40 GiB, above the default
+// limit of at most 8 GiB; the limit is set to 64 MiB here so the test never
+// depends on the machine).
+TEST(ImageErrors, HeaderSizesAreCheckedAgainstTheMemoryLimitBeforeAllocating) {
+    ScratchDir dir;
+    set_memory_limit(uint64_t(64) << 20);
+    {
+        // EXR: a 1x1 data window inside a 60000x60000 display window.
+        const Imath::Box2i display(Imath::V2i(0, 0), Imath::V2i(59999, 59999));
+        const Imath::Box2i data(Imath::V2i(0, 0), Imath::V2i(0, 0));
+        Imf::Header header(display, data);
+        header.channels().insert("R", Imf::Channel(Imf::FLOAT));
+        float r = 1.0f;
+        Imf::FrameBuffer frame;
+        frame.insert("R", Imf::Slice(Imf::FLOAT, reinterpret_cast<char*>(&r), sizeof r, sizeof r));
+        Imf::OutputFile file((dir / "huge.exr").c_str(), header);
+        file.setFrameBuffer(frame);
+        file.writePixels(1);
+    }
+    EXPECT_LT(std::filesystem::file_size(dir / "huge.exr"), 1000u);
+    expect_error([&] { read_image(dir / "huge.exr"); },
+                 {"huge.exr: reading the OpenEXR display window needs about", "image 60000x60000",
+                  "more than the memory limit of 64.0 MiB"});
+    // PNG: signature, an IHDR chunk claiming 16000x16000 RGB, IEND (stb reads
+    // the size from IHDR before decoding).
+    std::string png = "\x89PNG\r\n\x1a\n";
+    put_be32(png, 13);
+    png += "IHDR";
+    put_be32(png, 16000);
+    put_be32(png, 16000);
+    png += std::string("\x08\x02\x00\x00\x00", 5);
+    put_be32(png, 0);  // CRC (stb does not check it)
+    put_be32(png, 0);
+    png += "IEND";
+    put_be32(png, 0);
+    std::ofstream(dir / "huge.png", std::ios::binary) << png;
+    expect_error([&] { read_image(dir / "huge.png"); },
+                 {"huge.png: reading the PNG/JPEG image needs about", "image 16000x16000"});
+    // A small image still reads under the small limit.
+    write_png(Image(4, 4, glm::vec3(0.25f)), dir / "small.png");
+    EXPECT_EQ(read_image(dir / "small.png").width, 4);
+    set_memory_limit(std::nullopt);
 }
 
 TEST(ImageErrors, RejectsNonFinitePixelsOnReadWithCoordinates) {

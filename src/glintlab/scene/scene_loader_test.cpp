@@ -6,6 +6,7 @@
 #include <fstream>
 
 #include "glintlab/core/error.h"
+#include "glintlab/core/memory_limit.h"
 #include "glintlab/scene/scene_loader.h"
 
 namespace glintlab {
@@ -60,62 +61,97 @@ struct BadCase {
 
 TEST(SceneLoader, MalformedScenesGiveClearErrors) {
     const std::vector<BadCase> cases = {
-        {"unknown top-level key", [](auto& j) { j["lightz"] = 1; },
+        {"unknown top-level key",
+         [](auto& j) { j["lightz"] = 1; },
          {"bad.json", "/lightz", "unknown key"}},
-        {"unknown material key", [](auto& j) { j["materials"][0]["colour"] = 1; },
+        {"unknown material key",
+         [](auto& j) { j["materials"][0]["colour"] = 1; },
          {"/materials/0/colour", "unknown key", "albedo"}},
-        {"albedo out of range", [](auto& j) { j["materials"][0]["albedo"] = {0.5, 1.5, 0.5}; },
+        {"albedo out of range",
+         [](auto& j) {
+             j["materials"][0]["albedo"] = {0.5, 1.5, 0.5};
+         },
          {"/materials/0/albedo", "component 1", "[0, 1]"}},
-        {"albedo wrong type", [](auto& j) { j["materials"][0]["albedo"] = "grey"; },
+        {"albedo wrong type",
+         [](auto& j) { j["materials"][0]["albedo"] = "grey"; },
          {"/materials/0/albedo", "expected an RGB array"}},
-        {"roughness out of range", [](auto& j) { j["materials"][1]["roughness"] = 3.0; },
+        {"roughness out of range",
+         [](auto& j) { j["materials"][1]["roughness"] = 3.0; },
          {"/materials/1/roughness", "out of range", "[0.001, 1]"}},
         {"unknown glint model",
          [](auto& j) { j["materials"][1]["model"] = "zirr2099"; },
          {"/materials/1/model", "unknown glint model \"zirr2099\"", "smooth"}},
-        {"unknown ndf", [](auto& j) { j["materials"][1]["ndf"] = "phong"; },
+        {"unknown ndf",
+         [](auto& j) { j["materials"][1]["ndf"] = "phong"; },
          {"/materials/1/ndf", "phong", "beckmann, ggx"}},
-        {"unknown material type", [](auto& j) { j["materials"][0]["type"] = "velvet"; },
+        {"unknown material type",
+         [](auto& j) { j["materials"][0]["type"] = "velvet"; },
          {"/materials/0/type", "velvet", "diffuse"}},
-        {"duplicate material", [](auto& j) { j["materials"][1]["name"] = "floor"; },
+        {"duplicate material",
+         [](auto& j) { j["materials"][1]["name"] = "floor"; },
          {"/materials/1/name", "duplicate"}},
-        {"unknown material reference", [](auto& j) { j["shapes"][0]["material"] = "nope"; },
+        {"unknown material reference",
+         [](auto& j) { j["shapes"][0]["material"] = "nope"; },
          {"/shapes/0/material", "unknown material \"nope\""}},
-        {"missing material", [](auto& j) { j["shapes"][0].erase("material"); },
+        {"missing material",
+         [](auto& j) { j["shapes"][0].erase("material"); },
          {"/shapes/0/material", "missing"}},
-        {"negative radius", [](auto& j) { j["shapes"][1]["radius"] = -1; },
+        {"negative radius",
+         [](auto& j) { j["shapes"][1]["radius"] = -1; },
          {"/shapes/1/radius", "out of range"}},
-        {"NaN-like value", [](auto& j) { j["camera"]["fov_deg"] = nullptr; },
+        {"NaN-like value",
+         [](auto& j) { j["camera"]["fov_deg"] = nullptr; },
          {"/camera/fov_deg", "expected a number", "[0.01, 179]"}},
-        {"fov out of range", [](auto& j) { j["camera"]["fov_deg"] = 180; },
+        {"fov out of range",
+         [](auto& j) { j["camera"]["fov_deg"] = 180; },
          {"/camera/fov_deg", "[0.01, 179]"}},
-        {"eye equals target", [](auto& j) { j["camera"]["target"] = {0, 1, 4}; },
+        {"eye equals target",
+         [](auto& j) {
+             j["camera"]["target"] = {0, 1, 4};
+         },
          {"/camera/target", "must differ"}},
-        {"zero width", [](auto& j) { j["film"]["width"] = 0; },
-         {"/film/width", "[1, 16384]"}},
-        {"non-integer spp", [](auto& j) { j["render"]["spp"] = 1.5; },
+        {"zero width", [](auto& j) { j["film"]["width"] = 0; }, {"/film/width", "[1, 16384]"}},
+        {"non-integer spp",
+         [](auto& j) { j["render"]["spp"] = 1.5; },
          {"/render/spp", "expected an integer"}},
-        {"unknown integrator", [](auto& j) { j["render"]["integrator"] = "bdpt"; },
+        {"unknown integrator",
+         [](auto& j) { j["render"]["integrator"] = "bdpt"; },
          {"/render/integrator", "bdpt", "path, direct"}},
         {"missing obj file",
-         [](auto& j) { j["shapes"][0] = {{"type", "obj"}, {"file", "missing.obj"}, {"material", "floor"}}; },
+         [](auto& j) {
+             j["shapes"][0] = {{"type", "obj"}, {"file", "missing.obj"}, {"material", "floor"}};
+         },
          {"/shapes/0/file", "file not found", "missing.obj"}},
         {"missing environment file",
-         [](auto& j) { j["lights"][0] = {{"type", "environment"}, {"file", "nope.exr"}}; },
+         [](auto& j) {
+             j["lights"][0] = {{"type", "environment"}, {"file", "nope.exr"}};
+         },
          {"/lights/0/file", "file not found"}},
         {"environment without source",
-         [](auto& j) { j["lights"][0] = {{"type", "environment"}}; },
+         [](auto& j) {
+             j["lights"][0] = {{"type", "environment"}};
+         },
          {"/lights/0/file", "exactly one"}},
         {"zero light direction",
-         [](auto& j) { j["lights"][0] = {{"type", "directional"}, {"direction", {0, 0, 0}}}; },
+         [](auto& j) {
+             j["lights"][0] = {{"type", "directional"}, {"direction", {0, 0, 0}}};
+         },
          {"/lights/0/direction", "non-zero"}},
         {"non-similarity sphere transform",
-         [](auto& j) { j["shapes"][1]["transform"] = {{"scale", {1, 2, 1}}}; },
+         [](auto& j) {
+             j["shapes"][1]["transform"] = {{"scale", {1, 2, 1}}};
+         },
          {"/shapes/1/transform", "uniform"}},
         {"camera missing", [](auto& j) { j.erase("camera"); }, {"/camera", "missing"}},
-        {"materials not an array", [](auto& j) { j["materials"] = {{"a", 1}}; },
+        {"materials not an array",
+         [](auto& j) {
+             j["materials"] = {{"a", 1}};
+         },
          {"/materials", "expected an array"}},
-        {"bloom strength out of range", [](auto& j) { j["film"]["bloom"] = {{"strength", 2}}; },
+        {"bloom strength out of range",
+         [](auto& j) {
+             j["film"]["bloom"] = {{"strength", 2}};
+         },
          {"/film/bloom/strength", "[0, 1]"}},
         {"glint material on a mesh without uvs",
          [](auto& j) {
@@ -183,6 +219,39 @@ TEST(SceneLoader, DocumentedBoundsAreAccepted) {
     EXPECT_NE(error_of(d).find("/materials/0/eta: value 1 out of range: allowed in (1, 4]"),
               std::string::npos)
         << error_of(d);
+}
+
+// Generated grid meshes are checked against the memory limit before they
+// are built (a 4096² heightfield is about 1 GiB): the error names the file,
+// the shape's JSON path, the size and the limit. The estimate is exact
+// arithmetic: 4097² vertices × 36 bytes + 2·4096² triangles × 12 bytes =
+// 604 MiB + 384 MiB = 988 MiB, above a 512 MiB limit and below 1 GiB.
+TEST(SceneLoader, GridMeshesAboveTheMemoryLimitAreRejectedBeforeBuilding) {
+    set_memory_limit(uint64_t(512) << 20);
+    nlohmann::json j = valid_scene();
+    j["shapes"][0] = {{"type", "heightfield"}, {"resolution", 4096}, {"material", "floor"}};
+    const std::string m = error_of(j);
+    EXPECT_NE(m.find("bad.json: /shapes/0 (heightfield of resolution 4096x4096) needs about"),
+              std::string::npos)
+        << m;
+    EXPECT_NE(m.find("more than the memory limit of 512.0 MiB (set by --memory-limit)"),
+              std::string::npos)
+        << m;
+    j["shapes"][0] = {{"type", "torus"},
+                      {"segments_major", 8192},
+                      {"segments_minor", 8192},
+                      {"material", "floor"}};
+    EXPECT_NE(error_of(j).find("/shapes/0 (torus of segments 8192x8192)"), std::string::npos)
+        << error_of(j);
+    j["shapes"][0] = {
+        {"type", "head"}, {"segments_phi", 8192}, {"rings_theta", 8192}, {"material", "floor"}};
+    EXPECT_NE(error_of(j).find("/shapes/0 (head of segments x rings 8192x8192)"), std::string::npos)
+        << error_of(j);
+    // A small grid passes and is built.
+    set_memory_limit(uint64_t(1) << 30);
+    j["shapes"][0] = {{"type", "heightfield"}, {"resolution", 8}, {"material", "floor"}};
+    EXPECT_EQ(error_of(j), "<no error>");
+    set_memory_limit(std::nullopt);
 }
 
 }  // namespace
