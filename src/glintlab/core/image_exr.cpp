@@ -1,8 +1,10 @@
 // OpenEXR reading and writing through the generic InputFile/FrameBuffer API,
 // which decodes every compression (including lossy DWAA/DWAB/B44 and PIZ)
 // and converts half channels to float for us.
+#include <algorithm>
 #include <cstdint>
 #include <exception>
+#include <fstream>
 #include <string>
 
 #include <OpenEXR/ImfChannelList.h>
@@ -100,9 +102,82 @@ std::vector<glm::vec3> read_rgb_or_grey(Imf::InputFile& file, const std::filesys
     return data;
 }
 
+uint32_t little_endian_32(const char* b) {
+    return uint32_t(uint8_t(b[0])) | uint32_t(uint8_t(b[1])) << 8 | uint32_t(uint8_t(b[2])) << 16 |
+           uint32_t(uint8_t(b[3])) << 24;
+}
+
+// OpenEXR's header reader allocates each attribute's value at the size the
+// file declares before reading it (OpaqueAttribute::readValueFrom for types
+// it does not know, PreviewImage for "preview"), so a 250-byte file declaring
+// a 1.6 GB attribute made every read allocate 1.6 GB (found by the image
+// fuzzer). The header is a list of (name\0, type\0, int32 size, value) ended
+// by an empty name, one header per part for multi-part files (version flag
+// 0x1000), the list ended by an empty header (OpenEXR file layout, "Header").
+// This walks it as OpenEXR does: a "chlist" value is read entry by entry up
+// to its empty name, whatever its declared size; a "preview" allocates
+// width x height x 4 bytes; any other value is its declared size. Every
+// allocation must fit in what is left of the file. A structure this walk
+// cannot follow is left to OpenEXR to report.
+void check_exr_attribute_sizes(const std::filesystem::path& path) {
+    std::error_code ec;
+    const uint64_t file_size = std::filesystem::file_size(path, ec);
+    std::ifstream in(path, std::ios::binary);
+    char head[8];
+    if (ec || !in.read(head, 8)) return;
+    const bool multipart = (little_endian_32(head + 4) & 0x1000) != 0;
+    auto read_string = [&](std::string& s) {
+        s.clear();
+        for (char c; in.get(c);) {
+            if (c == '\0') return true;
+            s += c;
+            if (s.size() > 255) return false;  // names and types are at most 255 bytes
+        }
+        return false;
+    };
+    auto left = [&] {
+        const std::streamoff pos = in.tellg();
+        return pos < 0 ? 0 : file_size - std::min(file_size, uint64_t(pos));
+    };
+    auto require_fits = [&](const std::string& name, const std::string& type, uint64_t bytes) {
+        if (bytes > left())
+            fail(
+                "{}: cannot read OpenEXR file: header attribute '{}' of type '{}' declares {} "
+                "bytes but only {} bytes of the file follow it",
+                path.string(), name, type, bytes, left());
+    };
+    std::string name, type, channel;
+    for (bool any = true; any;) {
+        any = false;
+        while (read_string(name) && !name.empty()) {
+            any = true;
+            char word[8];
+            if (!read_string(type) || !in.read(word, 4)) return;
+            const auto size = static_cast<int32_t>(little_endian_32(word));
+            if (size < 0) return;  // OpenEXR rejects it
+            if (type == "chlist") {
+                // Entries: name\0, then 16 bytes (type, pLinear, reserved, sampling).
+                while (read_string(channel) && !channel.empty())
+                    if (!in.seekg(16, std::ios::cur)) return;
+                if (!in) return;
+            } else if (type == "preview") {
+                if (size < 8 || !in.read(word, 8)) return;
+                require_fits(name, type,
+                             uint64_t(little_endian_32(word)) * little_endian_32(word + 4) * 4);
+                in.seekg(size - 8, std::ios::cur);
+            } else {
+                require_fits(name, type, uint64_t(size));
+                in.seekg(size, std::ios::cur);
+            }
+        }
+        if (!in || !multipart) return;
+    }
+}
+
 }  // namespace
 
 Image read_exr(const std::filesystem::path& path) {
+    check_exr_attribute_sizes(path);
     try {
         Imf::InputFile file(path.c_str());
         const Imf::Header& header = file.header();

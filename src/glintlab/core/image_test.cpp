@@ -218,6 +218,17 @@ TEST(ImageErrors, HeaderSizesAreCheckedAgainstTheMemoryLimitBeforeAllocating) {
     std::ofstream(dir / "huge.png", std::ios::binary) << png;
     expect_error([&] { read_image(dir / "huge.png"); },
                  {"huge.png: reading the PNG/JPEG image needs about", "image 16000x16000"});
+    // EXR: a header attribute declaring 1.5 GiB in a 30-byte file. OpenEXR
+    // would allocate the declared size before reading; the reader refuses
+    // first, naming the attribute (found by the image fuzzer).
+    std::string exr("v/1\x01\x02\x00\x00\x00", 8);
+    exr += std::string("foo\0bar\0", 8);
+    exr += std::string("\x00\x00\x00\x60", 4);  // 0x60000000 bytes, little-endian
+    exr += "0123456789";
+    std::ofstream(dir / "attr.exr", std::ios::binary) << exr;
+    expect_error([&] { read_image(dir / "attr.exr"); },
+                 {"attr.exr: cannot read OpenEXR file: header attribute 'foo' of type 'bar' "
+                  "declares 1610612736 bytes but only 10 bytes of the file follow it"});
     // A small image still reads under the small limit.
     write_png(Image(4, 4, glm::vec3(0.25f)), dir / "small.png");
     EXPECT_EQ(read_image(dir / "small.png").width, 4);
