@@ -43,7 +43,8 @@ run_target() {
     local args=(-max_total_time="$seconds" -timeout=30 -rss_limit_mb=2048 -print_final_stats=1
                 -artifact_prefix="$root/$build/artifacts/$t/")
     [ "$t" = scene ] && args+=(-dict="$root/fuzz/scene.dict")
-    local inputs=("$root/$corpus" "$root/$seeds" "$root/fuzz/regressions/$t")
+    local inputs=("$root/$corpus" "$root/$seeds")
+    [ -d "fuzz/regressions/$t" ] && inputs+=("$root/fuzz/regressions/$t")
     if [ "$mode" = long ]; then
         # -jobs workers each write fuzz-N.log into the working directory.
         mkdir -p "$logs/$t"
@@ -64,8 +65,8 @@ for t in "${targets[@]}"; do
 done
 for t in "${targets[@]}"; do
     if wait "${pid[$t]}"; then status=ok; else status=FAILED; failed=1; fi
-    execs=$(grep -ho 'stat::number_of_executed_units: *[0-9]*' "$build"/logs/"$t".log \
-                "$build"/logs/"$t"/fuzz-*.log 2>/dev/null | awk '{s += $2} END {print s + 0}')
+    execs=$( (grep -ho 'stat::number_of_executed_units: *[0-9]*' "$build"/logs/"$t".log \
+                  "$build"/logs/"$t"/fuzz-*.log 2>/dev/null || true) | awk '{s += $2} END {print s + 0}')
     echo "fuzz $t: $status, $execs executions in ${seconds} s (log $build/logs/$t.log)"
     if [ $status = FAILED ]; then
         grep -h -A12 'ERROR:\|terminate called\|runtime error' "$build"/logs/"$t".log \

@@ -235,6 +235,32 @@ TEST(ImageErrors, HeaderSizesAreCheckedAgainstTheMemoryLimitBeforeAllocating) {
     set_memory_limit(std::nullopt);
 }
 
+// stb_image's Radiance decoder loops forever on a run of length 0, which is
+// also what it reads past the end of a truncated file: both were hangs
+// (found by the image fuzzer). A flat file cut short decoded as black.
+TEST(ImageErrors, TruncatedOrCorruptHdrIsAnErrorNotAHang) {
+    ScratchDir dir;
+    write_hdr(ramp_image(16, 6), dir / "full.hdr");  // run-length encoded (width 16)
+    EXPECT_EQ(read_image(dir / "full.hdr").width, 16);
+    const auto size = std::filesystem::file_size(dir / "full.hdr");
+    std::filesystem::copy_file(dir / "full.hdr", dir / "cut.hdr");
+    std::filesystem::resize_file(dir / "cut.hdr", size - 20);
+    expect_error([&] { read_image(dir / "cut.hdr"); },
+                 {"cut.hdr: cannot read Radiance .hdr file: the pixel data ends in scanline",
+                  "(truncated file)"});
+    // One RLE scanline whose first run has length 0.
+    std::string zero = "#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y 1 +X 8\n";
+    zero += std::string("\x02\x02\x00\x08\x00", 5);
+    std::ofstream(dir / "zero.hdr", std::ios::binary) << zero;
+    expect_error([&] { read_image(dir / "zero.hdr"); },
+                 {"zero.hdr: cannot read Radiance .hdr file: a run of length 0 in scanline 0"});
+    // Flat (width 4 < 8) data for 2 of 3 scanlines.
+    std::string flat = "#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y 3 +X 4\n";
+    flat += std::string(4 * 4 * 2, '\x40');
+    std::ofstream(dir / "flat.hdr", std::ios::binary) << flat;
+    expect_error([&] { read_image(dir / "flat.hdr"); }, {"flat.hdr", "scanline 2 of 3"});
+}
+
 TEST(ImageErrors, RejectsNonFinitePixelsOnReadWithCoordinates) {
     ScratchDir dir;
     // write_exr refuses NaN, so write the bad map with OpenEXR directly.
