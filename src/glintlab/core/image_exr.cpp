@@ -107,6 +107,24 @@ uint32_t little_endian_32(const char* b) {
            uint32_t(uint8_t(b[3])) << 24;
 }
 
+// The size OpenEXR 3.1 reads for a known attribute type of fixed layout
+// (its TypedAttribute readers ignore the declared size), 0 for the others.
+int fixed_attribute_size(const std::string& type) {
+    static const std::pair<const char*, int> kSizes[] = {
+        {"box2i", 16},      {"box2f", 16},   {"chromaticities", 32},
+        {"compression", 1}, {"double", 8},   {"envmap", 1},
+        {"float", 4},       {"int", 4},      {"keycode", 28},
+        {"lineOrder", 1},   {"m33f", 36},    {"m33d", 72},
+        {"m44f", 64},       {"m44d", 128},   {"rational", 8},
+        {"tiledesc", 9},    {"timecode", 8}, {"v2i", 8},
+        {"v2f", 8},         {"v2d", 16},     {"v3i", 12},
+        {"v3f", 12},        {"v3d", 24},     {"deepImageState", 1},
+    };
+    for (const auto& [name, size] : kSizes)
+        if (type == name) return size;
+    return 0;
+}
+
 // OpenEXR's header reader allocates each attribute's value at the size the
 // file declares before reading it (OpaqueAttribute::readValueFrom for types
 // it does not know, PreviewImage for "preview"), so a 250-byte file declaring
@@ -114,11 +132,12 @@ uint32_t little_endian_32(const char* b) {
 // fuzzer). The header is a list of (name\0, type\0, int32 size, value) ended
 // by an empty name, one header per part for multi-part files (version flag
 // 0x1000), the list ended by an empty header (OpenEXR file layout, "Header").
-// This walks it as OpenEXR does: a "chlist" value is read entry by entry up
-// to its empty name, whatever its declared size; a "preview" allocates
-// width x height x 4 bytes; any other value is its declared size. Every
-// allocation must fit in what is left of the file. A structure this walk
-// cannot follow is left to OpenEXR to report.
+// This walks it as OpenEXR 3.1 does: a value of a fixed-size known type
+// (box2i, v3f, ...) is read at that type's size whatever its declared size,
+// a "chlist" entry by entry up to its empty name, a "preview" allocates
+// width x height x 4 bytes; any other value is its declared size, allocated
+// first. Every allocation must fit in what is left of the file. A structure
+// this walk cannot follow is left to OpenEXR to report.
 void check_exr_attribute_sizes(const std::filesystem::path& path) {
     std::error_code ec;
     const uint64_t file_size = std::filesystem::file_size(path, ec);
@@ -155,7 +174,9 @@ void check_exr_attribute_sizes(const std::filesystem::path& path) {
             if (!read_string(type) || !in.read(word, 4)) return;
             const auto size = static_cast<int32_t>(little_endian_32(word));
             if (size < 0) return;  // OpenEXR rejects it
-            if (type == "chlist") {
+            if (const int fixed = fixed_attribute_size(type); fixed > 0) {
+                in.seekg(fixed, std::ios::cur);
+            } else if (type == "chlist") {
                 // Entries: name\0, then 16 bytes (type, pLinear, reserved, sampling).
                 while (read_string(channel) && !channel.empty())
                     if (!in.seekg(16, std::ios::cur)) return;
