@@ -12,6 +12,7 @@
 #include <stb/stb_image_write.h>
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <cstdint>
 #include <fstream>
@@ -122,6 +123,33 @@ std::string read_file_bytes(const std::filesystem::path& path) {
     return bytes;
 }
 
+// stb_image's PNG reader grows its compressed-data buffer to the length an
+// IDAT chunk declares before reading the chunk, so a 175-byte PNG declaring
+// a 1 GB IDAT allocated 1 GB (found by the image fuzzer). The chunks
+// (big-endian length, type, data, CRC; PNG specification §5.3) are walked
+// first: a declared length beyond the end of the file is an error naming
+// the file and the chunk. Not a PNG: nothing to check here.
+void check_png_chunk_lengths(const std::string& bytes, const std::filesystem::path& path) {
+    if (bytes.size() < 8 || bytes.compare(0, 8, "\x89PNG\r\n\x1a\n") != 0) return;
+    size_t pos = 8;
+    while (bytes.size() - pos >= 8) {
+        uint32_t length = 0;
+        for (int b = 0; b < 4; ++b) length = length << 8 | uint8_t(bytes[pos + b]);
+        std::string type = bytes.substr(pos + 4, 4);
+        for (char& c : type)
+            if (!std::isalpha(static_cast<unsigned char>(c))) c = '?';
+        pos += 8;
+        if (length > bytes.size() - pos)
+            fail(
+                "{}: cannot read PNG file: chunk '{}' declares {} bytes but only {} bytes of the "
+                "file follow it",
+                path.string(), type, length, bytes.size() - pos);
+        if (type == "IEND") return;
+        pos += length;
+        pos += std::min<size_t>(4, bytes.size() - pos);  // CRC
+    }
+}
+
 }  // namespace
 
 Image read_radiance_hdr(const std::filesystem::path& path) {
@@ -158,6 +186,7 @@ Image read_srgb_8bit_or_16bit(const std::filesystem::path& path) {
     // counted as as much again).
     if (stbi_info(name.c_str(), &w, &h, &channels_in_file))
         require_image_memory(path, "PNG/JPEG image", w, h, 12);
+    check_png_chunk_lengths(read_file_bytes(path), path);
     Image image;
     if (stbi_is_16_bit(name.c_str())) {
         std::unique_ptr<stbi_us, StbFree> data(

@@ -229,6 +229,21 @@ TEST(ImageErrors, HeaderSizesAreCheckedAgainstTheMemoryLimitBeforeAllocating) {
     expect_error([&] { read_image(dir / "attr.exr"); },
                  {"attr.exr: cannot read OpenEXR file: header attribute 'foo' of type 'bar' "
                   "declares 1610612736 bytes but only 10 bytes of the file follow it"});
+    // PNG: a valid 4x4 IHDR, then an IDAT chunk declaring 1 GiB in a file of
+    // 60 bytes (stb grew its buffer to the declared length before reading).
+    std::string idat = "\x89PNG\r\n\x1a\n";
+    put_be32(idat, 13);
+    idat += "IHDR";
+    put_be32(idat, 4);
+    put_be32(idat, 4);
+    idat += std::string("\x08\x02\x00\x00\x00", 5);
+    put_be32(idat, 0);
+    put_be32(idat, 1u << 30);
+    idat += "IDAT0123456789";
+    std::ofstream(dir / "idat.png", std::ios::binary) << idat;
+    expect_error([&] { read_image(dir / "idat.png"); },
+                 {"idat.png: cannot read PNG file: chunk 'IDAT' declares 1073741824 bytes but "
+                  "only 10 bytes of the file follow it"});
     // A small image still reads under the small limit.
     write_png(Image(4, 4, glm::vec3(0.25f)), dir / "small.png");
     EXPECT_EQ(read_image(dir / "small.png").width, 4);
