@@ -7,6 +7,7 @@
 
 #include "glintlab/core/error.h"
 #include "glintlab/core/image_formats.h"
+#include "glintlab/core/memory_limit.h"
 
 namespace glintlab {
 
@@ -123,5 +124,21 @@ void write_image(const Image& image, const std::filesystem::path& path, float ex
         fail("{}: unknown output image extension '{}' (allowed: .exr, .hdr, .png)", path.string(),
              ext);
 }
+
+namespace image_formats {
+
+void require_image_memory(const std::filesystem::path& path, const char* what, int64_t width,
+                          int64_t height, uint64_t decode_bytes_per_pixel) {
+    constexpr int64_t kMaxSide = (int64_t(1) << 31) - 1;
+    if (width < 1 || height < 1 || width > kMaxSide || height > kMaxSide)
+        fail("{}: {} claims a size of {}x{} pixels; each side must be in [1, {}]", path.string(),
+             what, width, height, kMaxSide);
+    const uint64_t pixels = uint64_t(width) * uint64_t(height);
+    require_memory({{fmt::format("image {}x{}", width, height), pixels * sizeof(glm::vec3)},
+                    {"decoder buffers", pixels * decode_bytes_per_pixel}},
+                   fmt::format("{}: reading the {}", path.string(), what));
+}
+
+}  // namespace image_formats
 
 }  // namespace glintlab

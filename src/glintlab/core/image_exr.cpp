@@ -1,8 +1,10 @@
 // OpenEXR reading and writing through the generic InputFile/FrameBuffer API,
 // which decodes every compression (including lossy DWAA/DWAB/B44 and PIZ)
 // and converts half channels to float for us.
+#include <algorithm>
 #include <cstdint>
 #include <exception>
+#include <fstream>
 #include <string>
 
 #include <OpenEXR/ImfChannelList.h>
@@ -100,19 +102,125 @@ std::vector<glm::vec3> read_rgb_or_grey(Imf::InputFile& file, const std::filesys
     return data;
 }
 
+uint32_t little_endian_32(const char* b) {
+    return uint32_t(uint8_t(b[0])) | uint32_t(uint8_t(b[1])) << 8 | uint32_t(uint8_t(b[2])) << 16 |
+           uint32_t(uint8_t(b[3])) << 24;
+}
+
+// The size OpenEXR 3.1 reads for a known attribute type of fixed layout
+// (its TypedAttribute readers ignore the declared size), 0 for the others.
+int fixed_attribute_size(const std::string& type) {
+    static const std::pair<const char*, int> kSizes[] = {
+        {"box2i", 16},      {"box2f", 16},   {"chromaticities", 32},
+        {"compression", 1}, {"double", 8},   {"envmap", 1},
+        {"float", 4},       {"int", 4},      {"keycode", 28},
+        {"lineOrder", 1},   {"m33f", 36},    {"m33d", 72},
+        {"m44f", 64},       {"m44d", 128},   {"rational", 8},
+        {"tiledesc", 9},    {"timecode", 8}, {"v2i", 8},
+        {"v2f", 8},         {"v2d", 16},     {"v3i", 12},
+        {"v3f", 12},        {"v3d", 24},     {"deepImageState", 1},
+    };
+    for (const auto& [name, size] : kSizes)
+        if (type == name) return size;
+    return 0;
+}
+
+// OpenEXR's header reader allocates each attribute's value at the size the
+// file declares before reading it (OpaqueAttribute::readValueFrom for types
+// it does not know, PreviewImage for "preview"), so a 250-byte file declaring
+// a 1.6 GB attribute made every read allocate 1.6 GB (found by the image
+// fuzzer). The header is a list of (name\0, type\0, int32 size, value) ended
+// by an empty name, one header per part for multi-part files (version flag
+// 0x1000), the list ended by an empty header (OpenEXR file layout, "Header").
+// This walks it as OpenEXR 3.1 does: a value of a fixed-size known type
+// (box2i, v3f, ...) is read at that type's size whatever its declared size,
+// a "chlist" entry by entry up to its empty name, a "preview" allocates
+// width x height x 4 bytes; any other value is its declared size, allocated
+// first. Every allocation must fit in what is left of the file. A structure
+// this walk cannot follow is left to OpenEXR to report.
+void check_exr_attribute_sizes(const std::filesystem::path& path) {
+    std::error_code ec;
+    const uint64_t file_size = std::filesystem::file_size(path, ec);
+    std::ifstream in(path, std::ios::binary);
+    char head[8];
+    if (ec || !in.read(head, 8)) return;
+    const bool multipart = (little_endian_32(head + 4) & 0x1000) != 0;
+    auto read_string = [&](std::string& s) {
+        s.clear();
+        for (char c; in.get(c);) {
+            if (c == '\0') return true;
+            s += c;
+            if (s.size() > 255) return false;  // names and types are at most 255 bytes
+        }
+        return false;
+    };
+    auto left = [&] {
+        const std::streamoff pos = in.tellg();
+        return pos < 0 ? 0 : file_size - std::min(file_size, uint64_t(pos));
+    };
+    auto require_fits = [&](const std::string& name, const std::string& type, uint64_t bytes) {
+        if (bytes > left())
+            fail(
+                "{}: cannot read OpenEXR file: header attribute '{}' of type '{}' declares {} "
+                "bytes but only {} bytes of the file follow it",
+                path.string(), name, type, bytes, left());
+    };
+    std::string name, type, channel;
+    for (bool any = true; any;) {
+        any = false;
+        while (read_string(name) && !name.empty()) {
+            any = true;
+            char word[8];
+            if (!read_string(type) || !in.read(word, 4)) return;
+            const auto size = static_cast<int32_t>(little_endian_32(word));
+            if (size < 0) return;  // OpenEXR rejects it
+            if (const int fixed = fixed_attribute_size(type); fixed > 0) {
+                in.seekg(fixed, std::ios::cur);
+            } else if (type == "chlist") {
+                // Entries: name\0, then 16 bytes (type, pLinear, reserved, sampling).
+                while (read_string(channel) && !channel.empty())
+                    if (!in.seekg(16, std::ios::cur)) return;
+                if (!in) return;
+            } else if (type == "preview") {
+                if (size < 8 || !in.read(word, 8)) return;
+                require_fits(name, type,
+                             uint64_t(little_endian_32(word)) * little_endian_32(word + 4) * 4);
+                in.seekg(size - 8, std::ios::cur);
+            } else {
+                require_fits(name, type, uint64_t(size));
+                in.seekg(size, std::ios::cur);
+            }
+        }
+        if (!in || !multipart) return;
+    }
+}
+
 }  // namespace
 
 Image read_exr(const std::filesystem::path& path) {
+    check_exr_attribute_sizes(path);
     try {
         Imf::InputFile file(path.c_str());
         const Imf::Header& header = file.header();
         const Imf::ChannelList& channels = header.channels();
         const Imath::Box2i data_box = header.dataWindow();
-        const Window dw = window_of(data_box);
-        const Window display = window_of(header.displayWindow());
-        if (dw.width <= 0 || dw.height <= 0 || display.width <= 0 || display.height <= 0)
+        // Sizes in 64 bits: max - min + 1 overflows int for windows that
+        // span the int range, which a header may claim.
+        const Imath::Box2i display_box = header.displayWindow();
+        auto side = [](int lo, int hi) { return int64_t(hi) - int64_t(lo) + 1; };
+        const int64_t dw_w = side(data_box.min.x, data_box.max.x),
+                      dw_h = side(data_box.min.y, data_box.max.y);
+        const int64_t display_w = side(display_box.min.x, display_box.max.x),
+                      display_h = side(display_box.min.y, display_box.max.y);
+        if (dw_w <= 0 || dw_h <= 0 || display_w <= 0 || display_h <= 0)
             fail("{}: OpenEXR image has zero size (data window {}x{}, display window {}x{})",
-                 path.string(), dw.width, dw.height, display.width, display.height);
+                 path.string(), dw_w, dw_h, display_w, display_h);
+        // The data window is read into its own buffer (12 bytes a pixel, 8
+        // more for luminance/chroma files), then placed in the display window.
+        require_image_memory(path, "OpenEXR display window", display_w, display_h, 0);
+        require_image_memory(path, "OpenEXR data window", dw_w, dw_h, 20);
+        const Window dw = window_of(data_box);
+        const Window display = window_of(display_box);
 
         const bool has_rgb =
             channels.findChannel("R") || channels.findChannel("G") || channels.findChannel("B");

@@ -3,11 +3,21 @@
 // and pixels before and after these run.
 #pragma once
 
+#include <cstdint>
 #include <filesystem>
 
 #include "glintlab/core/image.h"
 
 namespace glintlab::image_formats {
+
+// Before a reader allocates an image of the size a file's header claims:
+// an Image of width x height (12 bytes a pixel) plus `decode_bytes_per_pixel`
+// of the decoder's own buffers must fit the memory limit
+// (core/memory_limit.h), and both sides must be in [1, 2^31). A file of a
+// few bytes can claim 2^31 x 2^31 pixels; this is an error naming the file
+// and its size instead of an allocation that exhausts the machine.
+void require_image_memory(const std::filesystem::path& path, const char* what, int64_t width,
+                          int64_t height, uint64_t decode_bytes_per_pixel);
 
 // OpenEXR (image_exr.cpp).
 Image read_exr(const std::filesystem::path& path);

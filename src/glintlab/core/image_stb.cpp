@@ -12,9 +12,14 @@
 #include <stb/stb_image_write.h>
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <cstdint>
+#include <fstream>
+#include <iterator>
+#include <limits>
 #include <memory>
+#include <string>
 #include <vector>
 
 #include "glintlab/core/error.h"
@@ -34,14 +39,136 @@ struct StbFree {
 
 }  // namespace
 
+namespace {
+
+// stb_image's Radiance decoder loops forever on a run count of 0 in an RLE
+// scanline, and 0 is what it reads past the end of the file (stbi__get8),
+// so a truncated .hdr hung the reader (found by the image fuzzer); a flat
+// (not run-length encoded) file that ends early decoded its missing pixels
+// as black without a word. So the pixel data is walked first as stb decodes
+// it: after the header (lines up to an empty one) and the resolution line,
+// widths in [8, 32768) are RLE scanlines "2 2 hi lo" (lo + 256 hi = width),
+// then per channel runs: a count above 128 repeats the next byte count − 128
+// times, a count up to 128 is followed by that many bytes; other widths, or a
+// scanline not starting with 2 2, are flat from there (4 bytes a pixel for
+// the whole image, as stb restarts). A zero count or data ending before the
+// last pixel is an error naming the file and the scanline; what stb itself
+// rejects (wrong scanline length, runs past the width) is left to it.
+void check_radiance_pixel_data(const std::string& bytes, int width, int height,
+                               const std::filesystem::path& path) {
+    size_t pos = 0;
+    for (bool empty = false; !empty;) {  // header lines up to an empty one
+        const size_t end = bytes.find('\n', pos);
+        if (end == std::string::npos) return;
+        empty = end == pos;
+        pos = end + 1;
+    }
+    const size_t resolution_end = bytes.find('\n', pos);
+    if (resolution_end == std::string::npos) return;
+    pos = resolution_end + 1;
+    const size_t n = bytes.size();
+    auto truncated = [&](int scanline) {
+        fail(
+            "{}: cannot read Radiance .hdr file: the pixel data ends in scanline {} of {} "
+            "(truncated file)",
+            path.string(), scanline, height);
+    };
+    auto byte = [&](int scanline) {
+        if (pos >= n) truncated(scanline);
+        return static_cast<unsigned>(static_cast<uint8_t>(bytes[pos++]));
+    };
+    const uint64_t flat_bytes = 4 * uint64_t(width) * uint64_t(height);
+    if (width < 8 || width >= 32768) {
+        if (n - pos < flat_bytes) truncated(int((n - pos) / 4 / uint64_t(width)));
+        return;
+    }
+    for (int j = 0; j < height; ++j) {
+        if (n - pos < 4) truncated(j);
+        const unsigned c1 = uint8_t(bytes[pos]), c2 = uint8_t(bytes[pos + 1]),
+                       hi = uint8_t(bytes[pos + 2]), lo = uint8_t(bytes[pos + 3]);
+        if (c1 != 2 || c2 != 2 || (hi & 0x80)) {
+            if (n - pos < flat_bytes) truncated(j);
+            return;
+        }
+        pos += 4;
+        if (int((hi << 8) | lo) != width) return;
+        for (int channel = 0; channel < 4; ++channel) {
+            for (int i = 0; i < width;) {
+                unsigned count = byte(j);
+                if (count > 128) {
+                    byte(j);
+                    count -= 128;
+                } else {
+                    if (count == 0)
+                        fail(
+                            "{}: cannot read Radiance .hdr file: a run of length 0 in scanline "
+                            "{} (corrupt run-length data)",
+                            path.string(), j);
+                    if (n - pos < count) truncated(j);
+                    pos += count;
+                }
+                if (count > unsigned(width - i)) return;
+                i += int(count);
+            }
+        }
+    }
+}
+
+std::string read_file_bytes(const std::filesystem::path& path) {
+    std::ifstream in(path, std::ios::binary);
+    if (!in) fail("{}: cannot open image file", path.string());
+    std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    if (bytes.size() > size_t(std::numeric_limits<int>::max()))
+        fail("{}: image file too large (over 2 GiB)", path.string());
+    return bytes;
+}
+
+// stb_image's PNG reader grows its compressed-data buffer to the length an
+// IDAT chunk declares before reading the chunk, so a 175-byte PNG declaring
+// a 1 GB IDAT allocated 1 GB (found by the image fuzzer). The chunks
+// (big-endian length, type, data, CRC; PNG specification §5.3) are walked
+// first: a declared length beyond the end of the file is an error naming
+// the file and the chunk. Not a PNG: nothing to check here.
+void check_png_chunk_lengths(const std::string& bytes, const std::filesystem::path& path) {
+    if (bytes.size() < 8 || bytes.compare(0, 8, "\x89PNG\r\n\x1a\n") != 0) return;
+    size_t pos = 8;
+    while (bytes.size() - pos >= 8) {
+        uint32_t length = 0;
+        for (int b = 0; b < 4; ++b) length = length << 8 | uint8_t(bytes[pos + b]);
+        std::string type = bytes.substr(pos + 4, 4);
+        for (char& c : type)
+            if (!std::isalpha(static_cast<unsigned char>(c))) c = '?';
+        pos += 8;
+        if (length > bytes.size() - pos)
+            fail(
+                "{}: cannot read PNG file: chunk '{}' declares {} bytes but only {} bytes of the "
+                "file follow it",
+                path.string(), type, length, bytes.size() - pos);
+        if (type == "IEND") return;
+        pos += length;
+        pos += std::min<size_t>(4, bytes.size() - pos);  // CRC
+    }
+}
+
+}  // namespace
+
 Image read_radiance_hdr(const std::filesystem::path& path) {
+    const std::string bytes = read_file_bytes(path);
+    const auto* p = reinterpret_cast<const stbi_uc*>(bytes.data());
+    const int size = static_cast<int>(bytes.size());
     int w = 0, h = 0, channels_in_file = 0;
+    if (stbi_is_hdr_from_memory(p, size) &&
+        stbi_info_from_memory(p, size, &w, &h, &channels_in_file)) {
+        // stb decodes into 3 floats a pixel (12 bytes) before the copy.
+        require_image_memory(path, "Radiance .hdr image", w, h, 12);
+        check_radiance_pixel_data(bytes, w, h, path);
+    }
     // Radiance RGBE is linear already; stbi_loadf applies no transfer curve to .hdr input.
     std::unique_ptr<float, StbFree> data(
-        stbi_loadf(path.string().c_str(), &w, &h, &channels_in_file, 3));
+        stbi_loadf_from_memory(p, size, &w, &h, &channels_in_file, 3));
     if (!data) fail_decode(path, "Radiance .hdr");
     // stb would silently accept an 8-bit image here and invent a gamma for it.
-    if (!stbi_is_hdr(path.string().c_str()))
+    if (!stbi_is_hdr_from_memory(p, size))
         fail("{}: not a Radiance .hdr file (no RGBE header)", path.string());
     Image image(w, h);
     for (size_t i = 0; i < image.pixels.size(); ++i)
@@ -55,6 +182,11 @@ Image read_srgb_8bit_or_16bit(const std::filesystem::path& path) {
     int w = 0, h = 0, channels_in_file = 0;
     // stbi_loadf would linearise with a pure 2.2 gamma; load the integer codes instead and
     // apply the exact sRGB curve. Grey and grey+alpha files are expanded to RGB by stb.
+    // stb decodes into up to 3 x 16 bits a pixel (plus its own row buffers,
+    // counted as as much again).
+    if (stbi_info(name.c_str(), &w, &h, &channels_in_file))
+        require_image_memory(path, "PNG/JPEG image", w, h, 12);
+    check_png_chunk_lengths(read_file_bytes(path), path);
     Image image;
     if (stbi_is_16_bit(name.c_str())) {
         std::unique_ptr<stbi_us, StbFree> data(

@@ -13,6 +13,7 @@
 
 #include "glintlab/core/error.h"
 #include "glintlab/core/image_test_util.h"
+#include "glintlab/core/memory_limit.h"
 
 namespace glintlab {
 namespace {
@@ -171,6 +172,108 @@ TEST(ImageErrors, MissingUnknownEmptyAndCorruptFilesNameTheFile) {
     std::filesystem::copy_file(dir / "full.exr", dir / "cut.exr");
     std::filesystem::resize_file(dir / "cut.exr", size / 2);
     expect_error([&] { read_image(dir / "cut.exr"); }, {"cut.exr"});
+}
+
+void put_be32(std::string& s, uint32_t v) {
+    for (int b = 3; b >= 0; --b) s.push_back(static_cast<char>((v >> (8 * b)) & 0xff));
+}
+
+// A file's header can claim any size: a few hundred bytes claiming 60000² or
+// 2³¹ pixels must be an error naming the file and the size before anything
+// of that size is allocated (60000² × 12 bytes = 40 GiB, above the default
+// limit of at most 8 GiB; the limit is set to 64 MiB here so the test never
+// depends on the machine).
+TEST(ImageErrors, HeaderSizesAreCheckedAgainstTheMemoryLimitBeforeAllocating) {
+    ScratchDir dir;
+    set_memory_limit(uint64_t(64) << 20);
+    {
+        // EXR: a 1x1 data window inside a 60000x60000 display window.
+        const Imath::Box2i display(Imath::V2i(0, 0), Imath::V2i(59999, 59999));
+        const Imath::Box2i data(Imath::V2i(0, 0), Imath::V2i(0, 0));
+        Imf::Header header(display, data);
+        header.channels().insert("R", Imf::Channel(Imf::FLOAT));
+        float r = 1.0f;
+        Imf::FrameBuffer frame;
+        frame.insert("R", Imf::Slice(Imf::FLOAT, reinterpret_cast<char*>(&r), sizeof r, sizeof r));
+        Imf::OutputFile file((dir / "huge.exr").c_str(), header);
+        file.setFrameBuffer(frame);
+        file.writePixels(1);
+    }
+    EXPECT_LT(std::filesystem::file_size(dir / "huge.exr"), 1000u);
+    expect_error([&] { read_image(dir / "huge.exr"); },
+                 {"huge.exr: reading the OpenEXR display window needs about", "image 60000x60000",
+                  "more than the memory limit of 64.0 MiB"});
+    // PNG: signature, an IHDR chunk claiming 16000x16000 RGB, IEND (stb reads
+    // the size from IHDR before decoding).
+    std::string png = "\x89PNG\r\n\x1a\n";
+    put_be32(png, 13);
+    png += "IHDR";
+    put_be32(png, 16000);
+    put_be32(png, 16000);
+    png += std::string("\x08\x02\x00\x00\x00", 5);
+    put_be32(png, 0);  // CRC (stb does not check it)
+    put_be32(png, 0);
+    png += "IEND";
+    put_be32(png, 0);
+    std::ofstream(dir / "huge.png", std::ios::binary) << png;
+    expect_error([&] { read_image(dir / "huge.png"); },
+                 {"huge.png: reading the PNG/JPEG image needs about", "image 16000x16000"});
+    // EXR: a header attribute declaring 1.5 GiB in a 30-byte file. OpenEXR
+    // would allocate the declared size before reading; the reader refuses
+    // first, naming the attribute (found by the image fuzzer).
+    std::string exr("v/1\x01\x02\x00\x00\x00", 8);
+    exr += std::string("foo\0bar\0", 8);
+    exr += std::string("\x00\x00\x00\x60", 4);  // 0x60000000 bytes, little-endian
+    exr += "0123456789";
+    std::ofstream(dir / "attr.exr", std::ios::binary) << exr;
+    expect_error([&] { read_image(dir / "attr.exr"); },
+                 {"attr.exr: cannot read OpenEXR file: header attribute 'foo' of type 'bar' "
+                  "declares 1610612736 bytes but only 10 bytes of the file follow it"});
+    // PNG: a valid 4x4 IHDR, then an IDAT chunk declaring 1 GiB in a file of
+    // 60 bytes (stb grew its buffer to the declared length before reading).
+    std::string idat = "\x89PNG\r\n\x1a\n";
+    put_be32(idat, 13);
+    idat += "IHDR";
+    put_be32(idat, 4);
+    put_be32(idat, 4);
+    idat += std::string("\x08\x02\x00\x00\x00", 5);
+    put_be32(idat, 0);
+    put_be32(idat, 1u << 30);
+    idat += "IDAT0123456789";
+    std::ofstream(dir / "idat.png", std::ios::binary) << idat;
+    expect_error([&] { read_image(dir / "idat.png"); },
+                 {"idat.png: cannot read PNG file: chunk 'IDAT' declares 1073741824 bytes but "
+                  "only 10 bytes of the file follow it"});
+    // A small image still reads under the small limit.
+    write_png(Image(4, 4, glm::vec3(0.25f)), dir / "small.png");
+    EXPECT_EQ(read_image(dir / "small.png").width, 4);
+    set_memory_limit(std::nullopt);
+}
+
+// stb_image's Radiance decoder loops forever on a run of length 0, which is
+// also what it reads past the end of a truncated file: both were hangs
+// (found by the image fuzzer). A flat file cut short decoded as black.
+TEST(ImageErrors, TruncatedOrCorruptHdrIsAnErrorNotAHang) {
+    ScratchDir dir;
+    write_hdr(ramp_image(16, 6), dir / "full.hdr");  // run-length encoded (width 16)
+    EXPECT_EQ(read_image(dir / "full.hdr").width, 16);
+    const auto size = std::filesystem::file_size(dir / "full.hdr");
+    std::filesystem::copy_file(dir / "full.hdr", dir / "cut.hdr");
+    std::filesystem::resize_file(dir / "cut.hdr", size - 20);
+    expect_error([&] { read_image(dir / "cut.hdr"); },
+                 {"cut.hdr: cannot read Radiance .hdr file: the pixel data ends in scanline",
+                  "(truncated file)"});
+    // One RLE scanline whose first run has length 0.
+    std::string zero = "#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y 1 +X 8\n";
+    zero += std::string("\x02\x02\x00\x08\x00", 5);
+    std::ofstream(dir / "zero.hdr", std::ios::binary) << zero;
+    expect_error([&] { read_image(dir / "zero.hdr"); },
+                 {"zero.hdr: cannot read Radiance .hdr file: a run of length 0 in scanline 0"});
+    // Flat (width 4 < 8) data for 2 of 3 scanlines.
+    std::string flat = "#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y 3 +X 4\n";
+    flat += std::string(4 * 4 * 2, '\x40');
+    std::ofstream(dir / "flat.hdr", std::ios::binary) << flat;
+    expect_error([&] { read_image(dir / "flat.hdr"); }, {"flat.hdr", "scanline 2 of 3"});
 }
 
 TEST(ImageErrors, RejectsNonFinitePixelsOnReadWithCoordinates) {

@@ -547,6 +547,11 @@ TriangleMesh load_gltf(const std::filesystem::path& path) {
         if (!in) fail("{}: cannot open glTF file", name);
         file.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
     }
+    return load_gltf_bytes(file, name, path.parent_path());
+}
+
+TriangleMesh load_gltf_bytes(const std::string& file, const std::string& name,
+                             const std::filesystem::path& base_dir) {
     // Binary glTF starts with the magic "glTF" (glTF 2.0 §4.4.3.1).
     const bool binary = file.size() >= 4 && std::memcmp(file.data(), "glTF", 4) == 0;
 
@@ -554,21 +559,17 @@ TriangleMesh load_gltf(const std::filesystem::path& path) {
     loader.SetImageLoader(skip_image, nullptr);
     tinygltf::Model model;
     std::string err, warn;
-    bool ok = false;
-    if (const std::optional<std::string> rewritten = strip_draco_indices(file, binary)) {
-        if (rewritten->size() > std::numeric_limits<unsigned int>::max())
-            fail("{}: glTF file too large", name);
-        const std::string base_dir = path.parent_path().string();
-        const auto size = static_cast<unsigned int>(rewritten->size());
-        ok = binary ? loader.LoadBinaryFromMemory(
-                          &model, &err, &warn,
-                          reinterpret_cast<const unsigned char*>(rewritten->data()), size, base_dir)
-                    : loader.LoadASCIIFromString(&model, &err, &warn, rewritten->data(), size,
-                                                 base_dir);
-    } else {
-        ok = binary ? loader.LoadBinaryFromFile(&model, &err, &warn, name)
-                    : loader.LoadASCIIFromFile(&model, &err, &warn, name);
-    }
+    const std::optional<std::string> rewritten = strip_draco_indices(file, binary);
+    const std::string& bytes = rewritten ? *rewritten : file;
+    if (bytes.size() > std::numeric_limits<unsigned int>::max())
+        fail("{}: glTF file too large", name);
+    const auto size = static_cast<unsigned int>(bytes.size());
+    const std::string dir = base_dir.string();
+    const bool ok =
+        binary ? loader.LoadBinaryFromMemory(&model, &err, &warn,
+                                             reinterpret_cast<const unsigned char*>(bytes.data()),
+                                             size, dir)
+               : loader.LoadASCIIFromString(&model, &err, &warn, bytes.data(), size, dir);
     if (!ok) fail("{}: cannot parse glTF: {}", name, err.empty() ? warn : err);
     for (const std::string& ext : model.extensionsRequired)
         if (!extension_supported(ext))

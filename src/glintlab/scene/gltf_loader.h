@@ -3,6 +3,7 @@
 #pragma once
 
 #include <filesystem>
+#include <string>
 
 #include "glintlab/scene/mesh.h"
 
@@ -24,5 +25,11 @@ namespace glintlab {
 // unsupported primitive mode or accessor layout, out-of-range indices,
 // non-finite values, no triangles.
 TriangleMesh load_gltf(const std::filesystem::path& path);
+
+// The same from the file's bytes already in memory: `name` names it in
+// messages, external buffer URIs are resolved against `base_dir`. The
+// fuzzing entry (src/glintlab/fuzz) reads glTF files through it.
+TriangleMesh load_gltf_bytes(const std::string& bytes, const std::string& name,
+                             const std::filesystem::path& base_dir);
 
 }  // namespace glintlab

@@ -25,18 +25,16 @@ glm::vec<Dim, float> fetch(const std::vector<tinyobj::real_t>& values, int index
     return v;
 }
 
-}  // namespace
-
-TriangleMesh load_obj(const std::filesystem::path& path) {
-    const std::string name = path.string();
-    std::error_code ec;
-    if (!std::filesystem::is_regular_file(path, ec)) fail("{}: OBJ file not found", name);
-
+tinyobj::ObjReaderConfig reader_config() {
     tinyobj::ObjReaderConfig config;
     config.triangulate = true;
     config.vertex_color = false;
-    tinyobj::ObjReader reader;
-    if (!reader.ParseFromFile(name, config)) fail("{}: cannot parse OBJ: {}", name, reader.Error());
+    return config;
+}
+
+// The mesh of a parsed file (`name` names it in messages).
+TriangleMesh mesh_from_reader(const tinyobj::ObjReader& reader, const std::string& name) {
+    const std::filesystem::path path(name);
     const tinyobj::attrib_t& attrib = reader.GetAttrib();
 
     // First pass: decide which attributes every face corner has.
@@ -89,6 +87,25 @@ TriangleMesh load_obj(const std::filesystem::path& path) {
     }
     mesh.validate(name);
     return mesh;
+}
+
+}  // namespace
+
+TriangleMesh load_obj(const std::filesystem::path& path) {
+    const std::string name = path.string();
+    std::error_code ec;
+    if (!std::filesystem::is_regular_file(path, ec)) fail("{}: OBJ file not found", name);
+    tinyobj::ObjReader reader;
+    if (!reader.ParseFromFile(name, reader_config()))
+        fail("{}: cannot parse OBJ: {}", name, reader.Error());
+    return mesh_from_reader(reader, name);
+}
+
+TriangleMesh load_obj_text(const std::string& text, const std::string& name) {
+    tinyobj::ObjReader reader;
+    if (!reader.ParseFromString(text, std::string(), reader_config()))
+        fail("{}: cannot parse OBJ: {}", name, reader.Error());
+    return mesh_from_reader(reader, name);
 }
 
 }  // namespace glintlab

@@ -2,6 +2,7 @@
 #pragma once
 
 #include <filesystem>
+#include <string>
 
 #include "glintlab/scene/mesh.h"
 
@@ -15,5 +16,10 @@ namespace glintlab {
 // Throws glintlab::Error naming the file when it is missing or malformed,
 // has no triangles, indices out of range or non-finite values.
 TriangleMesh load_obj(const std::filesystem::path& path);
+
+// The same from the file's text already in memory (`name` names it in
+// messages; "mtllib" lines are ignored, materials are not read anyway).
+// The fuzzing entry (src/glintlab/fuzz) reads OBJ files through it.
+TriangleMesh load_obj_text(const std::string& text, const std::string& name);
 
 }  // namespace glintlab

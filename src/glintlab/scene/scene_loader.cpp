@@ -11,6 +11,7 @@
 #include "glintlab/core/error.h"
 #include "glintlab/core/image.h"
 #include "glintlab/core/json_reader.h"
+#include "glintlab/core/memory_limit.h"
 #include "glintlab/glints/glint_reader.h"
 #include "glintlab/scene/environment_file.h"
 #include "glintlab/scene/gltf_loader.h"
@@ -23,7 +24,6 @@
 namespace glintlab {
 namespace {
 
-constexpr double kInf = std::numeric_limits<double>::infinity();
 // Scene coordinates beyond this are certainly a mistake (and break fp32 traversal).
 constexpr float kMaxCoord = 1e6f;
 
@@ -177,6 +177,19 @@ Transform read_transform(JsonObject& parent) {
     return t;
 }
 
+// The generated grid meshes (torus, head, heightfield) of a × b cells hold
+// (a+1)(b+1) vertices of 32 bytes (position, normal, uv; `extra` more per
+// vertex while building, e.g. the heightfield's heights) and 2ab triangles
+// of 12 bytes. Checked against the memory limit (core/memory_limit.h) before
+// they are built: an 8192² torus needs about 3.7 GiB.
+void require_grid_memory(const JsonObject& o, const char* what, int a, int b, int extra = 0) {
+    const uint64_t vertices = uint64_t(a + 1) * uint64_t(b + 1);
+    const uint64_t triangles = 2 * uint64_t(a) * uint64_t(b);
+    require_memory({{fmt::format("{} vertices", vertices), vertices * uint64_t(32 + extra)},
+                    {fmt::format("{} triangles", triangles), triangles * 12}},
+                   fmt::format("{}: {} ({} {}x{})", o.file(), o.path(), what, a, b));
+}
+
 struct LoadContext {
     std::map<std::string, int> material_index;
     Scene* scene;
@@ -191,6 +204,7 @@ TriangleMesh read_heightfield(JsonObject& o) {
     s.octaves = o.integer("octaves", s.octaves, 1, 16);
     s.seed = static_cast<uint32_t>(o.number("seed", 1.0, 0.0, 4294967295.0));
     s.uv_scale = o.vec2("uv_scale", s.uv_scale, 1e-6f, 1e6f);
+    require_grid_memory(o, "heightfield of resolution", s.resolution, s.resolution, 4);
     if (o.has("file")) {
         // Height image: luminance in [0, 1] mapped to [-1, 1], bilinear.
         auto image = std::make_shared<Image>(read_image(o.file_path("file")));
@@ -283,12 +297,14 @@ void read_shape(JsonObject& o, LoadContext& ctx) {
                 o.error("minor_radius", fmt::format("must be < major_radius = {}", major));
             const int seg_major = o.integer("segments_major", 256, 3, 8192);
             const int seg_minor = o.integer("segments_minor", 128, 3, 8192);
+            require_grid_memory(o, "torus of segments", seg_major, seg_minor);
             mesh = make_torus(major, minor, seg_major, seg_minor,
                               o.vec2("uv_scale", glm::vec2(1.0f), 1e-6f, 1e6f));
         } else if (type == "head") {
-            mesh = make_head(o.integer("segments_phi", 256, 3, 8192),
-                             o.integer("rings_theta", 128, 2, 8192),
-                             o.vec2("uv_scale", glm::vec2(1.0f), 1e-6f, 1e6f));
+            const int segments = o.integer("segments_phi", 256, 3, 8192);
+            const int rings = o.integer("rings_theta", 128, 2, 8192);
+            require_grid_memory(o, "head of segments x rings", segments, rings);
+            mesh = make_head(segments, rings, o.vec2("uv_scale", glm::vec2(1.0f), 1e-6f, 1e6f));
         } else if (type == "heightfield") {
             mesh = read_heightfield(o);
         } else if (type == "obj") {

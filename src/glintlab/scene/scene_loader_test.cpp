@@ -6,6 +6,7 @@
 #include <fstream>
 
 #include "glintlab/core/error.h"
+#include "glintlab/core/memory_limit.h"
 #include "glintlab/scene/scene_loader.h"
 
 namespace glintlab {
@@ -183,6 +184,39 @@ TEST(SceneLoader, DocumentedBoundsAreAccepted) {
     EXPECT_NE(error_of(d).find("/materials/0/eta: value 1 out of range: allowed in (1, 4]"),
               std::string::npos)
         << error_of(d);
+}
+
+// Generated grid meshes are checked against the memory limit before they
+// are built (a 4096² heightfield is about 1 GiB): the error names the file,
+// the shape's JSON path, the size and the limit. The estimate is exact
+// arithmetic: 4097² vertices × 36 bytes + 2·4096² triangles × 12 bytes =
+// 604 MiB + 384 MiB = 988 MiB, above a 512 MiB limit and below 1 GiB.
+TEST(SceneLoader, GridMeshesAboveTheMemoryLimitAreRejectedBeforeBuilding) {
+    set_memory_limit(uint64_t(512) << 20);
+    nlohmann::json j = valid_scene();
+    j["shapes"][0] = {{"type", "heightfield"}, {"resolution", 4096}, {"material", "floor"}};
+    const std::string m = error_of(j);
+    EXPECT_NE(m.find("bad.json: /shapes/0 (heightfield of resolution 4096x4096) needs about"),
+              std::string::npos)
+        << m;
+    EXPECT_NE(m.find("more than the memory limit of 512.0 MiB (set by --memory-limit)"),
+              std::string::npos)
+        << m;
+    j["shapes"][0] = {{"type", "torus"},
+                      {"segments_major", 8192},
+                      {"segments_minor", 8192},
+                      {"material", "floor"}};
+    EXPECT_NE(error_of(j).find("/shapes/0 (torus of segments 8192x8192)"), std::string::npos)
+        << error_of(j);
+    j["shapes"][0] = {
+        {"type", "head"}, {"segments_phi", 8192}, {"rings_theta", 8192}, {"material", "floor"}};
+    EXPECT_NE(error_of(j).find("/shapes/0 (head of segments x rings 8192x8192)"), std::string::npos)
+        << error_of(j);
+    // A small grid passes and is built.
+    set_memory_limit(uint64_t(1) << 30);
+    j["shapes"][0] = {{"type", "heightfield"}, {"resolution", 8}, {"material", "floor"}};
+    EXPECT_EQ(error_of(j), "<no error>");
+    set_memory_limit(std::nullopt);
 }
 
 }  // namespace

@@ -7,7 +7,11 @@
 
 #include <tbb/parallel_for.h>
 
+#include <fmt/format.h>
+
+#include "glintlab/core/disk_cache.h"
 #include "glintlab/core/error.h"
+#include "glintlab/core/progress.h"
 #include "glintlab/core/rng.h"
 
 namespace glintlab {
@@ -76,7 +80,9 @@ void check_dictionary_params(const DictionaryParams& p) {
         fail("dictionary: table_size = {} must be in [4, 4096]", p.table_size);
 }
 
-Dictionary generate_dictionary(const DictionaryParams& params) {
+namespace {
+
+Dictionary generate(const DictionaryParams& params, ProgressReporter* progress) {
     check_dictionary_params(params);
     Dictionary d;
     d.params = params;
@@ -87,12 +93,57 @@ Dictionary generate_dictionary(const DictionaryParams& params) {
     // the thread count.
     tbb::parallel_for(0, params.n_dists, [&](int i) {
         generate_marginal(params, d.slope_max, i, d.values.data() + per_dist * i);
+        if (progress) progress->update();
     });
     return d;
 }
 
+// Bumped whenever generate_marginal changes what it computes.
+constexpr uint32_t kDictionaryTableVersion = 1;
+constexpr const char* kDictionaryCacheName = "chermain2020_dictionary";
+
+}  // namespace
+
+Dictionary generate_dictionary(const DictionaryParams& params) {
+    return generate(params, nullptr);
+}
+
+uint64_t dictionary_cache_key(const DictionaryParams& p) {
+    CacheKey key(kDictionaryCacheName, kDictionaryTableVersion);
+    key.add(p.n_levels).add(p.n_dists).add(p.alpha_dict).add(p.lobe_sigma).add(p.table_size);
+    key.add(p.seed);
+    return key.value();
+}
+
+Dictionary load_or_generate_dictionary(const DictionaryParams& params) {
+    check_dictionary_params(params);
+    const uint64_t key = dictionary_cache_key(params);
+    if (const auto bytes = disk_cache_load(kDictionaryCacheName, key)) {
+        ByteReader in(*bytes);
+        Dictionary d;
+        d.params = params;
+        const size_t expected =
+            size_t(params.n_dists) * size_t(params.n_levels) * size_t(params.table_size);
+        if (in.get(d.slope_max) && in.get_vector(d.values) && in.at_end() &&
+            d.values.size() == expected)
+            return d;
+    }
+    ProgressReporter progress(params.n_dists,
+                              fmt::format("chermain2020 dictionary, {} marginals x {} levels "
+                                          "(cached afterwards)",
+                                          params.n_dists, params.n_levels),
+                              false);
+    Dictionary d = generate(params, &progress);
+    progress.done();
+    ByteWriter out;
+    out.put(d.slope_max);
+    out.put_vector(d.values);
+    disk_cache_store(kDictionaryCacheName, key, out.bytes);
+    return d;
+}
+
 const Dictionary& default_dictionary() {
-    static const Dictionary dict = generate_dictionary(DictionaryParams{});
+    static const Dictionary dict = load_or_generate_dictionary(DictionaryParams{});
     return dict;
 }
 

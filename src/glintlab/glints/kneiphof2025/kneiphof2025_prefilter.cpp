@@ -11,9 +11,11 @@
 #include <tbb/task_arena.h>
 #include <glm/gtc/constants.hpp>
 
+#include "glintlab/core/disk_cache.h"
 #include "glintlab/core/error.h"
 #include "glintlab/core/glsl.h"
 #include "glintlab/core/image.h"
+#include "glintlab/core/progress.h"
 #include "glintlab/microfacet/microfacet.h"
 #include "glintlab/scene/environment.h"
 
@@ -446,13 +448,50 @@ glm::vec3 Kneiphof2025DfgLut::integrate(float cos_o, float roughness, int sample
             static_cast<float>(E / n / kneiphof2025_total_facet_area(alpha))};
 }
 
-Kneiphof2025DfgLut::Kneiphof2025DfgLut() : table_(size_t(kSize) * kSize) {
+namespace {
+// Bumped whenever integrate() changes what it computes.
+constexpr uint32_t kDfgTableVersion = 1;
+constexpr const char* kDfgCacheName = "kneiphof2025_dfg";
+}  // namespace
+
+std::vector<glm::vec3> Kneiphof2025DfgLut::compute_table(ProgressReporter* progress) {
+    std::vector<glm::vec3> table(size_t(kSize) * kSize);
     parallel_rows(kSize, [&](int j) {
         for (int i = 0; i < kSize; ++i)
-            table_[size_t(j) * kSize + i] =
+            table[size_t(j) * kSize + i] =
                 integrate((i + 0.5f) / kSize, (j + 0.5f) / kSize, kSamples);
+        if (progress) progress->update();
     });
+    return table;
 }
+
+uint64_t Kneiphof2025DfgLut::cache_key() {
+    CacheKey key(kDfgCacheName, kDfgTableVersion);
+    key.add(kSize).add(kSamples);
+    return key.value();
+}
+
+std::vector<glm::vec3> Kneiphof2025DfgLut::load_or_compute_table() {
+    if (const auto bytes = disk_cache_load(kDfgCacheName, cache_key())) {
+        ByteReader in(*bytes);
+        std::vector<glm::vec3> table;
+        if (in.get_vector(table) && in.at_end() && table.size() == size_t(kSize) * kSize)
+            return table;
+    }
+    ProgressReporter progress(kSize,
+                              fmt::format("kneiphof2025 DFG table {}x{}, {} samples an entry "
+                                          "(cached afterwards)",
+                                          kSize, kSize, kSamples),
+                              false);
+    std::vector<glm::vec3> table = compute_table(&progress);
+    progress.done();
+    ByteWriter out;
+    out.put_vector(table);
+    disk_cache_store(kDfgCacheName, cache_key(), out.bytes);
+    return table;
+}
+
+Kneiphof2025DfgLut::Kneiphof2025DfgLut() : table_(load_or_compute_table()) {}
 
 const Kneiphof2025DfgLut& Kneiphof2025DfgLut::get() {
     static const Kneiphof2025DfgLut lut;

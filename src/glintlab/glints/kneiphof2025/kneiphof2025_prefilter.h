@@ -25,6 +25,7 @@
 #pragma once
 
 #include <array>
+#include <cstdint>
 #include <memory>
 #include <vector>
 
@@ -33,6 +34,7 @@
 namespace glintlab {
 
 class EnvironmentMap;
+class ProgressReporter;
 
 struct Kneiphof2025PrefilterOptions {
     int levels = 8;             // K in {4, 8}
@@ -142,6 +144,15 @@ class Kneiphof2025DfgLut {
     glm::vec3 lookup(float cos_o, float roughness) const;
     // One entry computed directly (the table's integrand), for tests.
     static glm::vec3 integrate(float cos_o, float roughness, int samples);
+    // The whole table (row-major over (roughness, cos_o)), computed; with a
+    // progress reporter, one update per row.
+    static std::vector<glm::vec3> compute_table(ProgressReporter* progress = nullptr);
+    // compute_table through the on-disk table cache (core/disk_cache.h),
+    // keyed by kSize, kSamples and a table version: a hit is the computed
+    // table bit for bit; otherwise it is computed with a progress bar (on a
+    // terminal) and stored. get() builds its table this way.
+    static std::vector<glm::vec3> load_or_compute_table();
+    static uint64_t cache_key();
 
   private:
     Kneiphof2025DfgLut();
