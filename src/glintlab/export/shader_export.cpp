@@ -1,3 +1,10 @@
+// GCC 12 reports a false -Wmaybe-uninitialized inside libstdc++'s std::regex
+// (std::function members of its NFA states, GCC bug 105562) when this file is
+// built with -fsanitize=address; the pragma must precede every include, since
+// the warning is located in std_function.h.
+#if defined(__GNUC__) && !defined(__clang__)
+#pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
+#endif
 #include "glintlab/export/shader_export.h"
 
 #include <array>
