@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <utility>
 
 namespace glintlab {
 namespace {
@@ -14,8 +15,10 @@ Scene scene_with(GlintModelId model, bool environment, int spp) {
     m.type = MaterialDesc::Type::Glint;
     m.glint.model_id = model;
     s.materials.push_back(m);
-    s.lights.push_back(PointLight{});
-    if (environment) s.lights.push_back(EnvironmentLight{});
+    // Built in place: a temporary Light variant makes GCC 12 with ASan warn
+    // falsely -Wmaybe-uninitialized about EnvironmentLight's path.
+    s.lights.emplace_back(std::in_place_type<PointLight>);
+    if (environment) s.lights.emplace_back(std::in_place_type<EnvironmentLight>);
     s.render.spp = spp;
     return s;
 }
