@@ -5,11 +5,13 @@
 
 #include <cstdlib>
 #include <cstring>
+#include <string>
 #include <string_view>
 #include <vector>
 
 #include <epoxy/egl.h>
 #include <epoxy/gl.h>
+#include <fmt/format.h>
 
 #include "glintlab/core/error.h"
 
@@ -84,12 +86,21 @@ bool initialise(EGLDisplay display) {
     return true;
 }
 
-EGLDisplay open_device_display(bool hardware_only) {
-    for (EGLDeviceEXT device : egl_devices()) {
-        if (hardware_only && is_software(device)) continue;
-        EGLDisplay d = eglGetPlatformDisplayEXT(EGL_PLATFORM_DEVICE_EXT, device, nullptr);
+// Opens the first EGL device display that initialises. `why` says what was
+// tried when none does (the device count, each device's EGL error), so that
+// GLINTLAB_EGL_PLATFORM=device can say which step failed.
+EGLDisplay open_device_display(bool hardware_only, std::string* why = nullptr) {
+    const std::vector<EGLDeviceEXT> devices = egl_devices();
+    std::string tried = fmt::format("{} EGL device(s) enumerated", devices.size());
+    for (size_t i = 0; i < devices.size(); ++i) {
+        if (hardware_only && is_software(devices[i])) continue;
+        EGLDisplay d = eglGetPlatformDisplayEXT(EGL_PLATFORM_DEVICE_EXT, devices[i], nullptr);
         if (initialise(d)) return d;
+        tried += fmt::format("; device {}: {} (EGL error 0x{:04x})", i,
+                             d == EGL_NO_DISPLAY ? "no display" : "eglInitialize failed",
+                             static_cast<unsigned>(eglGetError()));
     }
+    if (why != nullptr) *why = tried;
     return EGL_NO_DISPLAY;
 }
 
@@ -121,14 +132,18 @@ HeadlessContext::HeadlessContext(EglPlatform platform) {
             "libegl-mesa0 + libgl1-mesa-dri, or the NVIDIA driver)");
     EGLDisplay display = EGL_NO_DISPLAY;
     switch (platform) {
-        case EglPlatform::Device:
-            display = open_device_display(false);
+        case EglPlatform::Device: {
+            std::string why;
+            display = open_device_display(false, &why);
             platform_ = "device";
             if (display == EGL_NO_DISPLAY)
                 fail(
                     "OpenGL renderer: GLINTLAB_EGL_PLATFORM=device but no EGL device could be "
-                    "initialised (EGL_EXT_platform_device)");
+                    "initialised (EGL_EXT_platform_device: {}); unset it to fall back to the "
+                    "surfaceless platform, which Mesa and NVIDIA's EGL also provide",
+                    why);
             break;
+        }
         case EglPlatform::Surfaceless:
             display = open_surfaceless_display();
             platform_ = "surfaceless";
@@ -138,8 +153,10 @@ HeadlessContext::HeadlessContext(EglPlatform platform) {
                     "no EGL_MESA_platform_surfaceless display (install Mesa: libegl-mesa0)");
             break;
         case EglPlatform::Auto:
-            // A hardware device first (NVIDIA exposes no surfaceless platform),
-            // then Mesa's surfaceless platform (llvmpipe without a GPU).
+            // A hardware device first, then the surfaceless platform: Mesa's
+            // (llvmpipe without a GPU), and NVIDIA's EGL has one too (driver
+            // 580 in a VM rendered there when its device platform would not
+            // initialise; docs/BENCHMARKS.md "On an NVIDIA GPU").
             display = open_device_display(true);
             platform_ = "device";
             if (display == EGL_NO_DISPLAY) {

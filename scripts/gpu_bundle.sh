@@ -1,0 +1,28 @@
+#!/usr/bin/env bash
+# Packs a built glintlab binary with the shared libraries it needs (all but
+# glibc and the GL/EGL dispatch, which the GPU machine's driver provides) and
+# the environment maps the benchmarks read, so that `glintlab bench --gpu` can
+# run on a bare machine with an NVIDIA driver and no Debian packages
+# (docs/BENCHMARKS.md, "On an NVIDIA GPU").
+#
+#   scripts/gpu_bundle.sh build/release/glintlab BUNDLE_DIR
+#   # on the GPU machine:
+#   LD_LIBRARY_PATH=BUNDLE_DIR/lib BUNDLE_DIR/glintlab bench --gpu ...
+set -euo pipefail
+bin=${1:?usage: gpu_bundle.sh GLINTLAB_BINARY BUNDLE_DIR}
+out=${2:?usage: gpu_bundle.sh GLINTLAB_BINARY BUNDLE_DIR}
+mkdir -p "$out/lib" "$out/world"
+cp "$bin" "$out/glintlab"
+strip "$out/glintlab"
+# glibc and the GL vendor-neutral dispatch stay the target's own: the first
+# must match its loader, the second must reach its driver.
+skip='^(linux-vdso|ld-linux|libc\.|libm\.|libdl\.|librt\.|libpthread\.|libEGL\.|libGL|libOpenGL\.|libGLX|libGLdispatch\.)'
+ldd "$bin" | awk '/=> \//{print $1, $3}' | while read -r name path; do
+    if [[ ! $name =~ $skip ]]; then
+        cp -L "$path" "$out/lib/$name"
+        strip --strip-unneeded "$out/lib/$name" 2>/dev/null || true
+    fi
+done
+world=/usr/share/blender/datafiles/studiolights/world
+[[ -d $world ]] && cp "$world"/*.exr "$out/world/"
+du -sh "$out"
