@@ -60,7 +60,7 @@ TEST(CompareCli, WritesTheFilesAndTheJsonTable) {
     const auto out = dir / "out";
     const RunResult r = run("compare " + scene.string() +
                             " --models smooth,zirr2016,kneiphof2025 --realizations 2 --frames 2 "
-                            "--json -o " +
+                            "--truth-realizations 3 --json -o " +
                             out.string() + " 2>/dev/null");
     ASSERT_EQ(r.status, 0) << r.output;
     const nlohmann::json j = nlohmann::json::parse(r.output);  // stdout is the JSON alone
@@ -69,6 +69,7 @@ TEST(CompareCli, WritesTheFilesAndTheJsonTable) {
         EXPECT_TRUE(j.contains(key)) << key;
     EXPECT_EQ(j["width"], 24);
     EXPECT_EQ(j["realizations"], 2);
+    EXPECT_EQ(j["truth_realizations"], 3);        // the explicit rows' own seeds
     EXPECT_GT(j["mask_pixels"].get<int>(), 100);  // the sphere fills ~40 % of 576 pixels
     std::map<std::string, nlohmann::json> rows;
     for (const nlohmann::json& m : j["models"]) rows[m["model"]] = m;
@@ -122,6 +123,9 @@ TEST(CompareCli, BadOptionsNameTheOption) {
     r = run(base + "--realizations 1 2>&1");
     EXPECT_NE(r.status, 0);
     EXPECT_NE(r.output.find("realizations"), std::string::npos) << r.output;
+    r = run(base + "--truth-realizations 1 2>&1");
+    EXPECT_NE(r.status, 0);
+    EXPECT_NE(r.output.find("truth-realizations"), std::string::npos) << r.output;
     r = run(base + "--res 0x4 2>&1");
     EXPECT_EQ(r.status, 1);
     EXPECT_NE(r.output.find("--res"), std::string::npos) << r.output;

@@ -103,6 +103,10 @@ void add_compare_command(CLI::App& app, int* status) {
                     "Seeds per model (microstructure and sampling), for the standard errors "
                     "and the pixel variance")
         ->check(CLI::Range(2, 256));
+    sub->add_option("--truth-realizations", o.truth_realizations,
+                    "Seeds of the explicit ground truth (default: --realizations); more where "
+                    "sparse facets reflect a small bright source (docs/VALIDATION.md)")
+        ->check(CLI::Range(2, 4096));
     sub->add_option("--res", args->res, "Resolution WxH (overrides the scene), e.g. 128x128");
     sub->add_option("--spp", o.spp, "Samples per pixel of the CPU renders (overrides the scene)")
         ->check(CLI::Range(1, 1 << 20));

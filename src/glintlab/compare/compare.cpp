@@ -90,6 +90,11 @@ void check_options(const CompareOptions& o) {
     if (o.realizations < 2 || o.realizations > 256)
         fail("compare {}: --realizations must be in [2, 256] (a variance needs two), got {}", scene,
              o.realizations);
+    if (o.truth_realizations != 0 && (o.truth_realizations < 2 || o.truth_realizations > 4096))
+        fail(
+            "compare {}: --truth-realizations must be 0 (as --realizations) or in [2, 4096], got "
+            "{}",
+            scene, o.truth_realizations);
     if (o.frames < 2 || o.frames > 256)
         fail("compare {}: --frames must be in [2, 256], got {}", scene, o.frames);
     if ((o.width != 0 || o.height != 0) &&
@@ -162,6 +167,7 @@ CompareResult run_compare(const CompareOptions& o) {
     result.width = base.camera.width, result.height = base.camera.height;
     result.spp = base.render.spp;
     result.realizations = o.realizations, result.frames = o.frames;
+    result.truth_realizations = o.truth_realizations > 0 ? o.truth_realizations : o.realizations;
     result.orbit_deg = o.orbit_deg;
     result.blur_sigma_px = sparkle_blur_sigma(result.width, result.height);
 
@@ -263,16 +269,22 @@ CompareResult run_compare(const CompareOptions& o) {
     std::unique_ptr<HeadlessContext> context;
     std::unique_ptr<GpuRenderer> gpu;
 #endif
-    const int per_job = o.realizations + o.frames - 1;
-    const int total = int(jobs.size()) * per_job;
+    const int truth_realizations = o.truth_realizations > 0 ? o.truth_realizations : o.realizations;
+    const auto realizations_of = [&](const Job& job) {
+        return result.models[job.row].reference ? truth_realizations : o.realizations;
+    };
+    int total = 0;
+    for (const Job& job : jobs) total += realizations_of(job) + o.frames - 1;
     int done = 0;
     for (Job& job : jobs) {
         ModelMetrics& row = result.models[job.row];
+        const int R = realizations_of(job);
+        const int per_job = R + o.frames - 1;
         double seconds = 0.0;
         for (int k = 0; k < per_job; ++k) {
             // k < R: realization k at frame 0; then frames 1.. of realization 0.
-            const int r = k < o.realizations ? k : 0;
-            const int t = k < o.realizations ? 0 : k - o.realizations + 1;
+            const int r = k < R ? k : 0;
+            const int t = k < R ? 0 : k - R + 1;
             Scene s = base;
             s.camera = cameras[size_t(t)];
             s.render.seed = o.seed + uint64_t(r);
@@ -297,7 +309,7 @@ CompareResult run_compare(const CompareOptions& o) {
                 std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
             row.faults += count_pixel_faults(image);
             Plane plane = luminance_plane(image);
-            if (k < o.realizations) {
+            if (k < R) {
                 seconds += dt;
                 job.means.push_back(masked_mean(plane, masks[0]));
                 if (k == 0) {
@@ -311,7 +323,7 @@ CompareResult run_compare(const CompareOptions& o) {
             ++done;
             if (o.progress) o.progress(done, total);
         }
-        row.seconds = seconds / o.realizations;
+        row.seconds = seconds / R;
         row.mean_plane = average(job.realizations);
         row.mean_luminance = 0.0;
         for (double m : job.means) row.mean_luminance += m / double(job.means.size());

@@ -82,6 +82,7 @@ nlohmann::json CompareResult::to_json() const {
     j["lights"] = lights;
     j["width"] = width, j["height"] = height, j["spp"] = spp;
     j["realizations"] = realizations, j["frames"] = frames;
+    j["truth_realizations"] = truth_realizations;
     j["orbit_deg"] = orbit_deg;
     j["blur_sigma_px"] = blur_sigma_px;
     j["mask_pixels"] = mask_pixels;
@@ -139,10 +140,10 @@ std::string CompareResult::to_csv() const {
 
 std::string CompareResult::to_text() const {
     std::string s = fmt::format(
-        "{}: material {}, lights {}, {}x{}, {} spp, {} realizations, {} frames over {} deg, "
-        "blur sigma {:.2g} px, {} material pixels\n",
-        scene, material, lights, width, height, spp, realizations, frames, orbit_deg, blur_sigma_px,
-        mask_pixels);
+        "{}: material {}, lights {}, {}x{}, {} spp, {} realizations ({} of the truth), {} frames "
+        "over {} deg, blur sigma {:.2g} px, {} material pixels\n",
+        scene, material, lights, width, height, spp, realizations, truth_realizations, frames,
+        orbit_deg, blur_sigma_px, mask_pixels);
     s += fmt::format("{:<14} {:<4} {:>16} {:>9} {:>9} {:>8} {:>9} {:>9} {:>12}\n", "model", "dev",
                      "mean err (se)", "blur rmse", "var ratio", "W1", "flicker x", "time s",
                      "nan/inf/neg");

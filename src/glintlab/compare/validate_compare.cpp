@@ -81,17 +81,19 @@ ValidationReport validate_compare(const CompareValidationOptions& o) {
     std::string worst_high, worst_low, worst_flicker_max, worst_flicker_min;
     nlohmann::json details = nlohmann::json::array();
     std::string text = fmt::format(
-        "compare suite: {0}x{0}, {1} realizations, {2} spp, {3} frames over {4} deg; bounds: "
+        "compare suite: {0}x{0}, {1} realizations ({8} of the truth), {2} spp, {3} frames over "
+        "{4} deg; bounds: "
         "|mean err| <= {5:.0f}% (dense, ln density >= {6}) or <= 2 se + {5:.0f}% (sparse); "
         "flicker ratio in [1/{7}, {7}]\n",
         o.size, o.realizations, o.spp, o.frames, o.orbit_deg, 100.0 * kMeanBound, kDenseLogDensity,
-        kFlickerFactor);
+        kFlickerFactor, o.truth_realizations);
 
     for (const std::string& name : scenes) {
         compare::CompareOptions c;
         c.scene = dir / (name + ".json");
         c.models = o.models;
         c.realizations = o.realizations;
+        c.truth_realizations = o.truth_realizations;
         c.width = c.height = o.size;
         c.spp = o.spp;
         c.frames = o.frames;
@@ -157,9 +159,10 @@ ValidationReport validate_compare(const CompareValidationOptions& o) {
                                {"mean_rel_err_sparse_minus_2se_max", worst_low},
                                {"flicker_ratio_max", worst_flicker_max},
                                {"flicker_ratio_min", worst_flicker_min}};
-    report.details["options"] = {
-        {"size", o.size},     {"realizations", o.realizations}, {"spp", o.spp},
-        {"frames", o.frames}, {"orbit_deg", o.orbit_deg},       {"seed", o.seed}};
+    report.details["options"] = {{"size", o.size},     {"realizations", o.realizations},
+                                 {"spp", o.spp},       {"truth_realizations", o.truth_realizations},
+                                 {"frames", o.frames}, {"orbit_deg", o.orbit_deg},
+                                 {"seed", o.seed}};
     text += fmt::format(
         "\nworst: dense mean {} ({}), sparse mean - 2 se {} ({}), flicker max {} ({}), min {} "
         "({})\n",

@@ -17,7 +17,10 @@ struct CompareValidationOptions {
     uint64_t seed = 1;
     int size = 48;         // W = H
     int realizations = 3;  // seeds per model
-    int frames = 4;        // flicker path
+    // Seeds of the explicit truth (compare.h: its mean is heavy-tailed under
+    // environments with small bright sources; docs/VALIDATION.md "compare").
+    int truth_realizations = 64;
+    int frames = 4;  // flicker path
     double orbit_deg = 4.0;
     int spp = 8;  // the CPU renders (the ground truth's noise is part of every check)
     // Scene stems of scenes/compare/ (e.g. "sphere_city"); empty: every scene.

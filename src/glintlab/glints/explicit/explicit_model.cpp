@@ -83,9 +83,20 @@ glm::vec3 explicit_light_radiance(const GlintLightingContext& ctx, int light) {
         GlintBxdf bxdf;
         bxdf.desc = &desc;
         const EnvironmentMap& map = *e->map;
+        // Each facet's mirror direction is occluded or not (one shadow ray
+        // per lit facet): the truth is the smooth BRDF's reflection of the
+        // visible environment, ∫ f V L cos dwi, as the integrators' light
+        // sampling computes it for every other BSDF. Without V, concave or
+        // self-shadowing shapes (the compare blob) were too bright.
         const glm::vec3 L = explicit_environment_radiance(
             explicit_field(desc), ctx.footprint, ctx.wo,
-            [&](glm::vec3 r) { return map.eval(ctx.to_world(r)); },
+            [&](glm::vec3 r) {
+                const glm::vec3 d = ctx.to_world(r);
+                const glm::vec3 le = map.eval(d);
+                if (le == glm::vec3(0.0f) || (ctx.visible && !ctx.visible(d, inf)))
+                    return glm::vec3(0.0f);
+                return le;
+            },
             [&](float cos_om) { return bxdf.fresnel(cos_om); });
         return desc.color * L;
     }
