@@ -269,9 +269,11 @@ TEST(Export, Kneiphof2025EnvironmentMapsOfAConstantEnvironment) {
         EXPECT_EQ(t[4 * i + 3], 0.0f) << i;  // no sun: the sun channel is 0
     }
     // No sun: its derived uniforms say none (power 0).
-    for (const auto& u : j.at("derived_uniforms"))
-        if (u.at("uniform") == "kneiphof2025_sun_power")
+    for (const auto& u : j.at("derived_uniforms")) {
+        if (u.at("uniform") == "kneiphof2025_sun_power") {
             EXPECT_EQ(u.at("value"), nlohmann::json({0.0, 0.0, 0.0}));
+        }
+    }
 }
 
 // The "lobe_sun" smooth term (the default) reads the environment's sun from
