@@ -15,7 +15,9 @@ const HOST_PARAMS = {
     black_level: {baked: 'black level of the prefiltered maps (glintlab export --env)'},
     variant: {uniform: 'u_kneiphof2025_wang2020_style', value: (v) => (v === 'wang2020_style' ? 1 : 0)},
     gaussian: {uniform: 'u_kneiphof2025_conditional', value: (v) => (v === 'conditional' ? 1 : 0)},
-    smooth: {uniform: 'u_kneiphof2025_smooth', value: (v) => (v === 'lobe' ? 1 : 0)},
+    // KNEIPHOF2025_SMOOTH_*: as_published / split_sum 0, lobe 1, lobe_sun 2.
+    smooth: {uniform: 'u_kneiphof2025_smooth',
+             value: (v) => ({lobe: 1, lobe_sun: 2}[v] ?? 0)},
     // The solid angle of the cone of half-angle gamma: 2 pi (1 - cos gamma).
     gamma_deg: {uniform: 'u_kneiphof2025_gamma_solid_angle',
                 value: (v) => 2 * Math.PI * (1 - Math.cos(v * Math.PI / 180))},
@@ -111,6 +113,10 @@ export class ExportedModel {
     model.parameters = parameterTable(manifest, info);
     model.textures = [];
     model.constants = {};  // uniforms given by the manifest's resources
+    // The manifest's derived uniforms (kneiphof2025's sun, taken out of
+    // the exported maps: its map-frame direction, power, radius, colour).
+    model.derived = Object.fromEntries(
+        (manifest.derived_uniforms ?? []).map((u) => [u.uniform, u.value]));
     model.environment = null;
     model.fixedMaterial = {};  // material keys the export fixes (wang2020)
     for (const r of manifest.resources) {
@@ -200,6 +206,20 @@ export class ExportedModel {
       set('u_kneiphof2025_levels', this.constants.levels_K ?? 8);
       set('u_kneiphof2025_radiance_scale', state.environment.scale);
       set('kneiphof2025_env_rotation', state.environment.rotation);
+      // The sun of the "lobe_sun" smooth term (the radiance array's alpha
+      // holds its channel): the manifest's map-frame direction turned by
+      // the environment rotation about +y (world phi = map phi + rotation,
+      // as kneiphof2025_latlong_uv and the native kneiphof2025_gpu.cpp);
+      // power 0 (no sun) where the export has none.
+      const d = this.derived;
+      const a = d.kneiphof2025_sun_direction ?? [0, 1, 0];
+      const r = state.environment.rotation;
+      const c = Math.cos(r), sn = Math.sin(r);
+      set('kneiphof2025_sun_direction',
+          normalize3([a[0] * c - a[2] * sn, a[1], a[2] * c + a[0] * sn]));
+      set('kneiphof2025_sun_power', d.kneiphof2025_sun_power ?? [0, 0, 0]);
+      set('kneiphof2025_sun_radius', d.kneiphof2025_sun_radius ?? 0);
+      set('kneiphof2025_sun_color', d.kneiphof2025_sun_color ?? [0, 0, 0]);
     }
     for (const p of this.parameters) {
       if (!p.uniform) continue;

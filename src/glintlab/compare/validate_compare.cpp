@@ -34,6 +34,18 @@ const std::vector<std::string>& scene_list() {
 // bound adds two standard errors.
 constexpr double kDenseLogDensity = 11.0;
 constexpr double kMeanBound = 0.05;
+// The dense bound applies to the model's expected error; the measured error
+// carries the standard error se of R realizations (model and truth), which
+// is not negligible on every dense scene: a sun's reflection is a rare event
+// for the facets even at ln density 13 (sphere_city, kneiphof2025: se 4.3 %
+// with 3 realizations, 1.9 % with 12; its error +5.4 % with 3, +0.7 % with
+// 12, +0.4 % +- 1.5 % with 32). A dense check is conclusive only where
+// se <= kMeanBound / 2: an unbiased model is then outside the bound in at
+// most ~5 % of seed sets (|z| > 2), and a bias of twice the bound is found
+// in ~97 %. Above it the run needs more realizations, which the check
+// mean_rel_err_dense_se_max says (it fails) instead of a mean that
+// reflects the draw.
+constexpr double kDenseSeBound = kMeanBound / 2.0;
 constexpr double kFlickerFactor = 2.0;
 
 std::filesystem::path default_scene_dir() {
@@ -74,19 +86,18 @@ ValidationReport validate_compare(const CompareValidationOptions& o) {
 
     ValidationReport report;
     report.suite = "compare";
-    double mean_high = 0.0, mean_low_excess = -1e300;
+    double mean_high = 0.0, mean_low_excess = -1e300, dense_se = 0.0;
     double flicker_max = 0.0, flicker_min = 1e300;
     int64_t nan = 0, inf = 0, negative = 0;
     int mean_bounded_count = 0, flicker_count = 0;
-    std::string worst_high, worst_low, worst_flicker_max, worst_flicker_min;
+    std::string worst_high, worst_low, worst_se, worst_flicker_max, worst_flicker_min;
     nlohmann::json details = nlohmann::json::array();
     std::string text = fmt::format(
-        "compare suite: {0}x{0}, {1} realizations ({8} of the truth), {2} spp, {3} frames over "
-        "{4} deg; bounds: "
-        "|mean err| <= {5:.0f}% (dense, ln density >= {6}) or <= 2 se + {5:.0f}% (sparse); "
-        "flicker ratio in [1/{7}, {7}]\n",
+        "compare suite: {0}x{0}, {1} realizations ({9} of the truth), {2} spp, {3} frames over "
+        "{4} deg; bounds: |mean err| <= {5:.0f}% with se <= {8:.1f}% (dense, ln density >= {6}) "
+        "or <= 2 se + {5:.0f}% (sparse); flicker ratio in [1/{7}, {7}]\n",
         o.size, o.realizations, o.spp, o.frames, o.orbit_deg, 100.0 * kMeanBound, kDenseLogDensity,
-        kFlickerFactor, o.truth_realizations);
+        kFlickerFactor, 100.0 * kDenseSeBound, o.truth_realizations);
 
     for (const std::string& name : scenes) {
         compare::CompareOptions c;
@@ -126,6 +137,8 @@ ValidationReport validate_compare(const CompareValidationOptions& o) {
                 const double err = std::abs(m->mean_rel_err);
                 if (dense) {
                     if (!(err <= mean_high)) mean_high = err, worst_high = where;
+                    if (!(m->mean_rel_err_se <= dense_se))
+                        dense_se = m->mean_rel_err_se, worst_se = where;
                 } else {
                     const double excess = err - 2.0 * m->mean_rel_err_se;
                     if (!(excess <= mean_low_excess)) mean_low_excess = excess, worst_low = where;
@@ -147,6 +160,7 @@ ValidationReport validate_compare(const CompareValidationOptions& o) {
     if (flicker_count == 0) flicker_min = 1.0;
 
     report.check("mean_rel_err_max", mean_high, "<=", kMeanBound);
+    report.check("mean_rel_err_dense_se_max", dense_se, "<=", kDenseSeBound);
     report.check("mean_rel_err_sparse_minus_2se_max", mean_low_excess, "<=", kMeanBound);
     report.check("nan_count", double(nan), "==", 0.0);
     report.check("inf_count", double(inf), "==", 0.0);
@@ -156,6 +170,7 @@ ValidationReport validate_compare(const CompareValidationOptions& o) {
     report.check("mean_bounded_pairs", double(mean_bounded_count), ">=", 1.0);
     report.details["scenes"] = details;
     report.details["worst"] = {{"mean_rel_err_max", worst_high},
+                               {"mean_rel_err_dense_se_max", worst_se},
                                {"mean_rel_err_sparse_minus_2se_max", worst_low},
                                {"flicker_ratio_max", worst_flicker_max},
                                {"flicker_ratio_min", worst_flicker_min}};
@@ -164,10 +179,10 @@ ValidationReport validate_compare(const CompareValidationOptions& o) {
                                  {"frames", o.frames}, {"orbit_deg", o.orbit_deg},
                                  {"seed", o.seed}};
     text += fmt::format(
-        "\nworst: dense mean {} ({}), sparse mean - 2 se {} ({}), flicker max {} ({}), min {} "
-        "({})\n",
-        mean_high, worst_high, mean_low_excess, worst_low, flicker_max, worst_flicker_max,
-        flicker_min, worst_flicker_min);
+        "\nworst: dense mean {} ({}), dense se {} ({}), sparse mean - 2 se {} ({}), flicker max "
+        "{} ({}), min {} ({})\n",
+        mean_high, worst_high, dense_se, worst_se, mean_low_excess, worst_low, flicker_max,
+        worst_flicker_max, flicker_min, worst_flicker_min);
     report.text = text;
     return report;
 }

@@ -1,10 +1,13 @@
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <set>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "glintlab/compare/validate_compare.h"
 #include "glintlab/core/error.h"
@@ -18,39 +21,51 @@ namespace {
 // kneiphof2025 and smooth on the dense sphere under 'city' and the dense
 // plane under 'forest'. Renders are deterministic (fixed seeds, per-pixel
 // sample streams), so the values are those of the table, not a random draw.
+// Realizations per scene: as many as the dense bound needs to be conclusive
+// (standard error <= 2.5 %, check mean_rel_err_dense_se_max): city's sun
+// makes its image mean a rare-event estimate (kneiphof2025 se 4.3 % with 3
+// realizations, where it measured +5.4 %; 1.9 % with 12: +0.7 %; +0.4 % +-
+// 1.5 % with 32), forest's se is 0.6 % with 3.
 // Under the sanitizers (GLINTLAB_SANITIZED, ~5x slower) only the sphere.
 // The other scenes and models are run by `glintlab validate compare`, where
 // some fail today: the measured numbers and the defects behind them are in
 // docs/VALIDATION.md.
 TEST(CompareValidation, ReducedSuitePassesWithTheContractChecks) {
     const bool sanitized = std::getenv("GLINTLAB_SANITIZED") != nullptr;
-    CompareValidationOptions o;
-    o.size = 48;
-    o.realizations = 3;
-    o.truth_realizations = 8;  // dense scenes: the truth's mean is not heavy-tailed here
-    o.frames = 3;
-    o.spp = 8;
-    o.scenes = sanitized ? std::vector<std::string>{"sphere_city"}
-                         : std::vector<std::string>{"sphere_city", "plane25_forest"};
-    o.models = {"smooth", "kneiphof2025"};
-    const ValidationReport r = validate_compare(o);
-    EXPECT_EQ(r.suite, "compare");
-    std::set<std::string> names;
-    for (const ValidationCheck& c : r.checks) {
-        names.insert(c.name);
-        EXPECT_TRUE(c.pass) << c.name << " = " << c.value << " " << c.relation << " " << c.limit;
+    std::vector<std::pair<std::string, int>> runs = {{"sphere_city", 12}};
+    if (!sanitized) runs.emplace_back("plane25_forest", 3);
+    for (const auto& [scene, realizations] : runs) {
+        SCOPED_TRACE(scene);
+        CompareValidationOptions o;
+        o.size = 48;
+        o.realizations = realizations;
+        // The truth: at least 8 realizations (dense scenes, its mean is not
+        // heavy-tailed here), as many as the model's where those are needed.
+        o.truth_realizations = std::max(8, realizations);
+        o.frames = 3;
+        o.spp = 8;
+        o.scenes = {scene};
+        o.models = {"smooth", "kneiphof2025"};
+        const ValidationReport r = validate_compare(o);
+        EXPECT_EQ(r.suite, "compare");
+        std::set<std::string> names;
+        for (const ValidationCheck& c : r.checks) {
+            names.insert(c.name);
+            EXPECT_TRUE(c.pass) << c.name << " = " << c.value << " " << c.relation << " "
+                                << c.limit;
+        }
+        for (const char* name : {"mean_rel_err_max", "mean_rel_err_dense_se_max", "nan_count",
+                                 "negative_count", "flicker_ratio_max", "flicker_ratio_min"})
+            EXPECT_EQ(names.count(name), 1u) << name;
+        const nlohmann::json j = r.to_json();
+        ASSERT_EQ(j["scenes"].size(), 1u);
+        for (const nlohmann::json& s : j["scenes"]) {
+            EXPECT_EQ(s["density"], "dense");
+            // explicit (one truth per fitted NDF), smooth, kneiphof2025.
+            EXPECT_GE(s["models"].size(), 3u);
+        }
+        EXPECT_TRUE(r.passed());
     }
-    for (const char* name : {"mean_rel_err_max", "nan_count", "negative_count", "flicker_ratio_max",
-                             "flicker_ratio_min"})
-        EXPECT_EQ(names.count(name), 1u) << name;
-    const nlohmann::json j = r.to_json();
-    ASSERT_EQ(j["scenes"].size(), o.scenes.size());
-    for (const nlohmann::json& s : j["scenes"]) {
-        EXPECT_EQ(s["density"], "dense");
-        // explicit (one truth per fitted NDF), smooth, kneiphof2025.
-        EXPECT_GE(s["models"].size(), 3u);
-    }
-    EXPECT_TRUE(r.passed());
 }
 
 TEST(CompareValidation, RejectsUnknownScenesAndSizes) {

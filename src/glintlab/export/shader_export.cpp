@@ -626,6 +626,9 @@ std::vector<ExportedFile> export_model(const ExportOptions& o) {
                      {dict.params.n_levels, dict.params.n_dists, dict.params.table_size}},
                     {"u_chermain2020_dict_range", {dict.params.alpha_dict, dict.slope_max}}}}});
     }
+    // kneiphof2025's sun (the "lobe_sun" smooth term): found by the prefilter
+    // of the exported environment; none without one (power 0).
+    Kneiphof2025Sun kneiphof2025_sun;
     if (o.resources && d->id == GlintModelId::Kneiphof2025) {
         constexpr int n = Kneiphof2025DfgLut::kSize;
         std::vector<float> rgba(static_cast<size_t>(n) * n * 4, 0.0f);
@@ -661,14 +664,18 @@ std::vector<ExportedFile> export_model(const ExportOptions& o) {
             const int layers = static_cast<int>(pre.mips().size());
             const int w = pre.mips()[0].width, h = pre.mips()[0].height;
             const int channels = pre.channels();
+            kneiphof2025_sun = pre.sun();
             std::vector<float> rad, wa, wb;
-            for (const Kneiphof2025Level& l : pre.mips()) {
+            for (size_t i = 0; i < pre.mips().size(); ++i) {
+                const Kneiphof2025Level& l = pre.mips()[i];
+                const Kneiphof2025Level& sun = pre.sun_mips()[i];
                 // The data's rows run from v = 0 (zenith) down; a texture's
-                // row 0 is t = 0, the same v: no flip.
+                // row 0 is t = 0, the same v: no flip. The radiance's alpha
+                // is the sun channel (kneiphof2025_gpu.cpp does the same).
                 for (int p = 0; p < l.width * l.height; ++p) {
                     const float* src = &l.data[static_cast<size_t>(p) * channels];
                     for (int c = 0; c < 4; ++c) {
-                        rad.push_back(c < 3 ? src[c] : 1.0f);
+                        rad.push_back(c < 3 ? src[c] : sun.data[static_cast<size_t>(p)]);
                         wa.push_back(3 + c < channels ? src[3 + c] : 0.0f);
                         wb.push_back(7 + c < channels ? src[7 + c] : 0.0f);
                     }
@@ -686,7 +693,9 @@ std::vector<ExportedFile> export_model(const ExportOptions& o) {
             nlohmann::json r = common;
             r["uniform"] = "kneiphof2025_radiance_layers";
             r["meaning"] =
-                "prefiltered radiance (003 Eq. 11), layer i: sqrt(alpha) = i / "
+                "prefiltered radiance (003 Eq. 11) in rgb and, in alpha, the luminance of the "
+                "environment's sun alone prefiltered by the same kernel (0 without a sun; the "
+                "lobe_sun smooth term, kneiphof2025_sun_* uniforms), layer i: sqrt(alpha) = i / "
                 "(layers - 1), lat-long, v = 0 at the zenith";
             resource("env_radiance", rad, r);
             r = common;
@@ -797,6 +806,7 @@ std::vector<ExportedFile> export_model(const ExportOptions& o) {
 
     // Uniforms the host derives from parameters (the renderer's GPU hooks
     // compute them in C++), at the defaults, with how to compute them.
+    auto v3 = [](const glm::vec3& v) { return nlohmann::json{v.x, v.y, v.z}; };
     nlohmann::json derived = nlohmann::json::array();
     if (d->id == GlintModelId::Kneiphof2025) {
         const Kneiphof2025Params& k = std::get<Kneiphof2025Params>(g.params);
@@ -813,7 +823,9 @@ std::vector<ExportedFile> export_model(const ExportOptions& o) {
                     {"from", "2 pi (1 - cos(gamma_deg))"}},
                    {{"uniform", "u_kneiphof2025_smooth"},
                     {"value", kneiphof2025_smooth_mode(k)},
-                    {"from", "smooth: \"split_sum\" -> 0, \"lobe\" -> 1 (KNEIPHOF2025_SMOOTH_*)"}},
+                    {"from",
+                     "smooth: \"as_published\" or \"split_sum\" -> 0, \"lobe\" -> 1, "
+                     "\"lobe_sun\" -> 2 (KNEIPHOF2025_SMOOTH_*)"}},
                    {{"uniform", "u_kneiphof2025_f0"},
                     {"value", {f0.x, f0.y, f0.z}},
                     {"from",
@@ -825,6 +837,29 @@ std::vector<ExportedFile> export_model(const ExportOptions& o) {
                    {{"uniform", "kneiphof2025_env_rotation"},
                     {"value", 0.0},
                     {"from", "environment rotation about +y, radians"}},
+                   // The sun the prefilter took out of the exported maps
+                   // (Kneiphof2025Sun; read by "lobe_sun", with the radiance
+                   // array's alpha): power 0 without one (no --env, or a
+                   // map without a sun), and for maps prefiltered by the
+                   // compute passes, which have no sun channel.
+                   {{"uniform", "kneiphof2025_sun_direction"},
+                    {"value", v3(kneiphof2025_sun.map_direction)},
+                    {"from",
+                     "the sun's direction in the map's frame (value: rotation 0) turned about +y "
+                     "by the environment rotation r: (x cos r - z sin r, y, z cos r + x sin r)"}},
+                   {{"uniform", "kneiphof2025_sun_power"},
+                    {"value", v3(kneiphof2025_sun.power)},
+                    {"from",
+                     "the sun's RGB power (radiance x solid angle) at the scale the maps were "
+                     "prefiltered at; 0 without a sun"}},
+                   {{"uniform", "kneiphof2025_sun_radius"},
+                    {"value", kneiphof2025_sun.radius},
+                    {"from", "the sun's angular radius, radians"}},
+                   {{"uniform", "kneiphof2025_sun_color"},
+                    {"value", v3(kneiphof2025_sun.color)},
+                    {"from",
+                     "power / luminance(power): the sun channel (radiance alpha) times it is "
+                     "the sun's RGB"}},
                    {{"uniform", "black_level"},
                     {"value", k.black_level},
                     {"from",
@@ -868,7 +903,6 @@ std::vector<ExportedFile> export_model(const ExportOptions& o) {
     }
     j["parameters"] = params;
     // The shared glint-material uniforms of the exported material.
-    auto v3 = [](const glm::vec3& v) { return nlohmann::json{v.x, v.y, v.z}; };
     j["material"] = {
         {"name", material_name.empty() ? std::string("(model defaults)") : material_name},
         {"scene", o.scene.string()},

@@ -9,6 +9,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <fstream>
+#include <map>
 #include <set>
 #include <sstream>
 
@@ -22,7 +23,9 @@
 #include "glintlab/export/shader_export.h"
 #include "glintlab/glints/glint_bxdf.h"
 #include "glintlab/glints/glint_desc.h"
+#include "glintlab/glints/kneiphof2025/kneiphof2025_prefilter.h"
 #include "glintlab/glints/registry.h"
+#include "glintlab/scene/environment.h"
 
 namespace glintlab {
 namespace {
@@ -263,7 +266,89 @@ TEST(Export, Kneiphof2025EnvironmentMapsOfAConstantEnvironment) {
         EXPECT_NEAR(t[4 * i + 0], 0.5f, 1e-4f * 0.5f) << i;
         EXPECT_NEAR(t[4 * i + 1], 1.0f, 1e-4f) << i;
         EXPECT_NEAR(t[4 * i + 2], 2.0f, 2e-4f) << i;
+        EXPECT_EQ(t[4 * i + 3], 0.0f) << i;  // no sun: the sun channel is 0
     }
+    // No sun: its derived uniforms say none (power 0).
+    for (const auto& u : j.at("derived_uniforms")) {
+        if (u.at("uniform") == "kneiphof2025_sun_power") {
+            EXPECT_EQ(u.at("value"), nlohmann::json({0.0, 0.0, 0.0}));
+        }
+    }
+}
+
+// The "lobe_sun" smooth term (the default) reads the environment's sun from
+// the radiance array's alpha and the kneiphof2025_sun_* uniforms: the export
+// carries both, those of the renderer's prefilter (kneiphof2025_gpu.cpp
+// uploads the same). A map of radiance 0.2 with a small sun: 2 x 2 texels of
+// (5000, 4000, 3000) centred on theta = 45 deg, u = 0.75 of the map's frame.
+TEST(Export, Kneiphof2025EnvironmentMapsCarryTheSun) {
+    constexpr double kPi = 3.14159265358979323846;
+    testing::ScratchDir dir;
+    const fs::path env = dir / "sun.exr";
+    Image sky(128, 64, glm::vec3(0.2f));
+    for (int y = 15; y <= 16; ++y)
+        for (int x = 95; x <= 96; ++x) sky.at(x, y) = glm::vec3(5000.0f, 4000.0f, 3000.0f);
+    write_image(sky, env);
+    ExportOptions o;
+    o.model = "kneiphof2025";
+    o.language = ExportLanguage::GlslEs;
+    o.out_dir = dir / "out";
+    o.environment = env;
+    export_model(o);
+    const nlohmann::json j =
+        nlohmann::json::parse(slurp(o.out_dir / "kneiphof2025.glsles.manifest.json"));
+    std::map<std::string, nlohmann::json> derived;
+    for (const auto& u : j.at("derived_uniforms")) derived[u.at("uniform")] = u.at("value");
+    EXPECT_EQ(derived.at("u_kneiphof2025_smooth"), 2);  // KNEIPHOF2025_SMOOTH_LOBE_SUN
+
+    // The renderer's prefilter of the same map (default K and black level).
+    const Kneiphof2025Environment pre(EnvironmentMap(read_image(env), 1.0f, 0.0f),
+                                      Kneiphof2025PrefilterOptions{});
+    const Kneiphof2025Sun& sun = pre.sun();
+    ASSERT_TRUE(sun.found);
+    auto expect_vec3 = [](const nlohmann::json& v, glm::vec3 want, const char* what) {
+        ASSERT_EQ(v.size(), 3u) << what;
+        for (int c = 0; c < 3; ++c)
+            EXPECT_NEAR(v[c].get<double>(), want[c], 1e-6 * (1.0 + std::abs(want[c]))) << what;
+    };
+    expect_vec3(derived.at("kneiphof2025_sun_direction"), sun.map_direction, "direction");
+    expect_vec3(derived.at("kneiphof2025_sun_power"), sun.power, "power");
+    expect_vec3(derived.at("kneiphof2025_sun_color"), sun.color, "color");
+    EXPECT_NEAR(derived.at("kneiphof2025_sun_radius").get<double>(), sun.radius, 1e-7);
+    // ... and that sun is the one in the map: direction (sin 45, cos 45, 0)
+    // (u = 0.5 + atan2(x, -z) / 2 pi), power ~ 4 texels' solid angle times
+    // their radiance (the prefilter resamples the map to 256 x 128).
+    EXPECT_NEAR(sun.map_direction.x, std::sin(kPi / 4.0), 0.03);
+    EXPECT_NEAR(sun.map_direction.y, std::cos(kPi / 4.0), 0.03);
+    EXPECT_NEAR(sun.map_direction.z, 0.0, 0.03);
+    const double texel = (2.0 * kPi / 128.0) * (kPi / 64.0) * std::sin(kPi / 4.0);
+    EXPECT_NEAR(sun.power.x, 4.0 * texel * 5000.0, 0.2 * 4.0 * texel * 5000.0);
+    EXPECT_GT(sun.radius, 0.0f);
+    EXPECT_LT(sun.radius, 0.1f);
+
+    // The radiance's alpha is the sun channel of every layer.
+    nlohmann::json info;
+    for (const auto& r : j.at("resources"))
+        if (r.at("uniform") == "kneiphof2025_radiance_layers") info = r;
+    const int w = info.at("width"), h = info.at("height"), layers = info.at("layers");
+    const std::string rad = slurp(o.out_dir / "kneiphof2025.env_radiance.f32");
+    ASSERT_EQ(rad.size(), size_t(w) * size_t(h) * size_t(layers) * 16u);
+    ASSERT_EQ(pre.sun_mips().size(), size_t(layers));
+    const float* t = reinterpret_cast<const float*>(rad.data());
+    float base_max = 0.0f;
+    size_t mismatches = 0;
+    for (int i = 0; i < layers; ++i) {
+        const Kneiphof2025Level& l = pre.sun_mips()[size_t(i)];
+        ASSERT_EQ(l.width, w);
+        ASSERT_EQ(l.height, h);
+        for (size_t p = 0; p < size_t(w) * size_t(h); ++p) {
+            const float a = t[(size_t(i) * size_t(w) * size_t(h) + p) * 4 + 3];
+            mismatches += a != l.data[p];
+            if (i == 0) base_max = std::max(base_max, a);
+        }
+    }
+    EXPECT_EQ(mismatches, 0u);
+    EXPECT_GT(base_max, 1000.0f);  // the sun's luminance (~4140) at layer 0
 }
 
 // --scene / --material: the resources and values of a scene material. Two

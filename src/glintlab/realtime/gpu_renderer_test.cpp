@@ -315,7 +315,10 @@ nlohmann::json kneiphof2025_scene(const std::string& light) {
     }
     const std::string forest = "/usr/share/blender/datafiles/studiolights/world/forest.exr";
     if (light == "environment_lobe") j["materials"][0]["kneiphof2025"]["smooth"] = "lobe";
-    if (light == "environment" || light == "environment_plane" || light == "environment_lobe") {
+    if (light == "environment_split_sum")
+        j["materials"][0]["kneiphof2025"]["smooth"] = "as_published";
+    if (light == "environment" || light == "environment_plane" || light == "environment_lobe" ||
+        light == "environment_split_sum") {
         nlohmann::json env = {{"type", "environment"}};
         if (std::filesystem::exists(forest))
             env.update({{"file", forest}, {"rotation_deg", 90}});
@@ -351,7 +354,8 @@ TEST_P(GpuKneiphof2025, MatchesCpuDirect) {
     // with the lobe estimate 1.6% / 2.9% / 4.2% (3.8%), on the plane
     // 0.07% / 0.6% / 1.3% (0), sun 0.35% / 3.5% / 1.1% (1.0%), sphere light
     // 0.94% / 6.6% / 0.5% (0.5%).
-    const bool env = GetParam() == "environment" || GetParam() == "environment_lobe";
+    const bool env = GetParam() == "environment" || GetParam() == "environment_lobe" ||
+                     GetParam() == "environment_split_sum";
     EXPECT_LT(a.mean_relative_error, 0.03);
     if (GetParam() == "environment_plane") {
         // Exact normals and uv: the even rows, where the footprints agree
@@ -367,8 +371,9 @@ TEST_P(GpuKneiphof2025, MatchesCpuDirect) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Lights, GpuKneiphof2025,
-                         ::testing::Values("environment", "environment_lobe", "environment_plane",
-                                           "sun", "sphere"));
+                         ::testing::Values("environment", "environment_lobe",
+                                           "environment_split_sum", "environment_plane", "sun",
+                                           "sphere"));
 
 // The viewer's model switcher: the same material switched to every GPU model
 // (with that model's defaults) renders a lit, finite image.

@@ -57,6 +57,16 @@ GLINTLAB_SHADER_FUNCTIONS_BEGIN
 vec3 kneiphof2025_radiance_fetch(vec3 dir, float roughness) {
     return t_env->fetch_radiance(dir, roughness);
 }
+vec4 kneiphof2025_radiance_sun_fetch(vec3 dir, float roughness) {
+    return t_env->fetch_radiance_sun(dir, roughness);
+}
+void kneiphof2025_sun(vec3& direction, vec3& power, float& radius, vec3& color) {
+    const glintlab::Kneiphof2025Sun& s = t_env->sun();
+    direction = s.direction;
+    power = s.found ? s.power : vec3(0.0f);
+    radius = s.radius;
+    color = s.color;
+}
 vec4 kneiphof2025_weights_fetch(vec3 dir, float roughness, int group) {
     const float* c = fetch_all(dir, roughness);
     const int K = t_env->levels();
@@ -175,8 +185,15 @@ glm::vec3 kneiphof2025_environment_smooth(const Kneiphof2025Environment& env, gl
 }
 
 int kneiphof2025_smooth_mode(const Kneiphof2025Params& p) {
-    return p.smooth == Kneiphof2025Params::Smooth::Lobe ? shader::KNEIPHOF2025_SMOOTH_LOBE
-                                                        : shader::KNEIPHOF2025_SMOOTH_SPLIT_SUM;
+    switch (p.smooth) {
+        case Kneiphof2025Params::Smooth::Lobe:
+            return shader::KNEIPHOF2025_SMOOTH_LOBE;
+        case Kneiphof2025Params::Smooth::LobeSun:
+            return shader::KNEIPHOF2025_SMOOTH_LOBE_SUN;
+        case Kneiphof2025Params::Smooth::SplitSum:
+            break;
+    }
+    return shader::KNEIPHOF2025_SMOOTH_SPLIT_SUM;
 }
 
 float kneiphof2025_area_factor(glm::vec3 h_center, const Footprint& footprint, float p,

@@ -61,9 +61,13 @@ GlintModelDescriptor kneiphof2025_descriptor() {
                    "Gaussian of the dual-gated law: exact interior moments, or 003 Algorithm 1 "
                    "as published"),
         gp::choice("smooth", &P::smooth,
-                   {{"split_sum", P::Smooth::SplitSum}, {"lobe", P::Smooth::Lobe}},
-                   "smooth radiance the glint factor multiplies (Eq. 11): one split-sum lookup "
-                   "(003) or the filtered reflection lobe"),
+                   {{"lobe_sun", P::Smooth::LobeSun},
+                    {"as_published", P::Smooth::SplitSum},
+                    {"split_sum", P::Smooth::SplitSum},
+                    {"lobe", P::Smooth::Lobe}},
+                   "smooth radiance the glint factor multiplies (Eq. 11): the filtered "
+                   "reflection lobe without the sun plus the sun analytically, 003's split sum "
+                   "(split_sum: its old name), or the lobe with the sun in the maps"),
         // Cone half-angle of the wang2020-style probability.
         gp::number("gamma_deg", &P::gamma_deg, 0.01, 45.0, "deg",
                    "cone half-angle of the wang2020_style probability", GlintParamUi::Log),

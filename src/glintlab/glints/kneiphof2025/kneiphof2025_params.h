@@ -21,14 +21,17 @@ struct Kneiphof2025Params {
     // E[b] by up to ~20 % where N p ~ 1-10; docs/VALIDATION.md). Like
     // deliot2023's original_defects, the published form is an option.
     bool conditional_gaussian = true;
-    // The smooth radiance the glint factor multiplies (Eq. 11): "split_sum"
-    // (default: 003 as published, one prefiltered lookup whose kernel assumes
-    // n = v = r; 7 % high on the validation sphere at sqrt(alpha) = 0.7) or
-    // "lobe" (an improvement over 003: the reflection lobe of wo by 32
-    // filtered importance samples of the same maps, 2-3 % there, ~4x the
-    // CPU cost per footprint; docs/MODELS.md).
-    enum class Smooth { Lobe, SplitSum };
-    Smooth smooth = Smooth::SplitSum;
+    // The smooth radiance the glint factor multiplies (Eq. 11), docs/MODELS.md:
+    // "lobe_sun" (default; ours): the reflection lobe of wo by 32 filtered
+    // importance samples of the maps without the environment's sun, plus
+    // the sun by the BRDF at its direction; within 4 % of the exact integral
+    // on every blender-data map at alpha 0.25 and 0.5 (docs/VALIDATION.md).
+    // "as_published" (alias "split_sum"): 003's split sum, one prefiltered
+    // lookup whose kernel assumes n = v = r; up to +46 % (+74 % on the rim)
+    // under a low sun. "lobe": the lobe with the sun left in the maps, up
+    // to +14 % under a low sun.
+    enum class Smooth { Lobe, SplitSum, LobeSun };
+    Smooth smooth = Smooth::LobeSun;
     // Reused deliot2023 grid parameters (000; see Deliot2023Params): R for the
     // angular grid of point / directional / sphere lights, the minimum glint
     // size in pixels, and the per-cell log-density jitter.

@@ -138,6 +138,10 @@ Kneiphof2025Environment::Kneiphof2025Environment(const EnvironmentMap& env,
         fail("kneiphof2025: samples must be in [1, 65536], got {}", o.samples);
     rotation_rad_ = glm::radians(env.rotation_deg());
     const int C = channels();
+    // Internally one more channel: the sun's luminance (Kneiphof2025Sun),
+    // filtered with the others and split off into sun_mips_ at the end. The
+    // channels are independent, so the first C are what they were without it.
+    const int C1 = C + 1;
     const int W = o.base_width, H = o.base_width / 2;
 
     // Level 0: the radiance resampled to W x H (s x s bilinear samples per
@@ -145,7 +149,7 @@ Kneiphof2025Environment::Kneiphof2025Environment(const EnvironmentMap& env,
     Kneiphof2025Level base;
     base.width = W;
     base.height = H;
-    base.data.assign(size_t(W) * H * C, 0.0f);
+    base.data.assign(size_t(W) * H * C1, 0.0f);
     const int ss = std::max(1, (env.image().width + W - 1) / W);
     std::vector<float> lum(size_t(W) * H);
     parallel_rows(H, [&](int y) {
@@ -155,7 +159,7 @@ Kneiphof2025Environment::Kneiphof2025Environment(const EnvironmentMap& env,
                 for (int i = 0; i < ss; ++i)
                     c += source_sample(env, {(x + (i + 0.5f) / ss) / W, (y + (j + 0.5f) / ss) / H});
             c /= static_cast<float>(ss * ss);
-            float* t = &base.data[(size_t(y) * W + x) * C];
+            float* t = &base.data[(size_t(y) * W + x) * C1];
             t[0] = c.x;
             t[1] = c.y;
             t[2] = c.z;
@@ -169,7 +173,8 @@ Kneiphof2025Environment::Kneiphof2025Environment(const EnvironmentMap& env,
     max_luminance_ = *std::max_element(lum.begin(), lum.end());
     radiance_levels_ =
         kneiphof2025_radiance_levels(min_luminance_, max_luminance_, levels_, o.black_level);
-    for (size_t i = 0; i < lum.size(); ++i) partition(lum[i], &base.data[i * C + 3]);
+    for (size_t i = 0; i < lum.size(); ++i) partition(lum[i], &base.data[i * C1 + 3]);
+    find_sun(lum, W, H, base.data, C1);
 
     // Source pyramid for filtered importance sampling: 2 x 2 box reductions.
     std::vector<Kneiphof2025Level> pyramid{base};
@@ -178,16 +183,16 @@ Kneiphof2025Environment::Kneiphof2025Environment(const EnvironmentMap& env,
         Kneiphof2025Level d;
         d.width = s.width / 2;
         d.height = std::max(1, s.height / 2);
-        d.data.assign(size_t(d.width) * d.height * C, 0.0f);
+        d.data.assign(size_t(d.width) * d.height * C1, 0.0f);
         const int sy = s.height > 1 ? 2 : 1;
         for (int y = 0; y < d.height; ++y)
             for (int x = 0; x < d.width; ++x)
-                for (int c = 0; c < C; ++c) {
+                for (int c = 0; c < C1; ++c) {
                     float sum = 0.0f;
                     for (int j = 0; j < sy; ++j)
                         for (int i = 0; i < 2; ++i)
-                            sum += s.data[(size_t(y * sy + j) * s.width + x * 2 + i) * C + c];
-                    d.data[(size_t(y) * d.width + x) * C + c] = sum / static_cast<float>(2 * sy);
+                            sum += s.data[(size_t(y * sy + j) * s.width + x * 2 + i) * C1 + c];
+                    d.data[(size_t(y) * d.width + x) * C1 + c] = sum / static_cast<float>(2 * sy);
                 }
         pyramid.push_back(std::move(d));
     }
@@ -196,10 +201,10 @@ Kneiphof2025Environment::Kneiphof2025Environment(const EnvironmentMap& env,
         const int l0 = static_cast<int>(std::floor(l));
         const int l1 = std::min(l0 + 1, static_cast<int>(pyramid.size()) - 1);
         const float t = l - static_cast<float>(l0);
-        bilinear(pyramid[l0], C, uv, out, C);
+        bilinear(pyramid[l0], C1, uv, out, C1);
         if (t > 0.0f && l1 != l0) {
-            bilinear(pyramid[l1], C, uv, tmp, C);
-            for (int c = 0; c < C; ++c) out[c] += t * (tmp[c] - out[c]);
+            bilinear(pyramid[l1], C1, uv, tmp, C1);
+            for (int c = 0; c < C1; ++c) out[c] += t * (tmp[c] - out[c]);
         }
     };
 
@@ -216,11 +221,11 @@ Kneiphof2025Environment::Kneiphof2025Environment(const EnvironmentMap& env,
         Kneiphof2025Level lvl;
         lvl.width = W;
         lvl.height = H;
-        lvl.data.assign(size_t(lvl.width) * lvl.height * C, 0.0f);
+        lvl.data.assign(size_t(lvl.width) * lvl.height * C1, 0.0f);
         const std::vector<Kneiphof2025KernelSample> kernel =
             kneiphof2025_prefilter_kernel(r, o.samples, W, H);
         parallel_rows(lvl.height, [&](int y) {
-            std::vector<float> acc(C), val(C), tmp(C);
+            std::vector<float> acc(C1), val(C1), tmp(C1);
             for (int x = 0; x < lvl.width; ++x) {
                 const glm::vec3 n =
                     map_direction({(x + 0.5f) / lvl.width, (y + 0.5f) / lvl.height});
@@ -235,15 +240,89 @@ Kneiphof2025Environment::Kneiphof2025Environment(const EnvironmentMap& env,
                 for (const Kneiphof2025KernelSample& k : kernel) {
                     const glm::vec3 d = k.l.x * t + k.l.y * bt + k.l.z * n;
                     pyramid_fetch(map_uv(d, 0.0f), k.lod, val.data(), tmp.data());
-                    for (int c = 0; c < C; ++c) acc[c] += k.weight * val[c];
+                    for (int c = 0; c < C1; ++c) acc[c] += k.weight * val[c];
                     wsum += k.weight;
                 }
-                float* out = &lvl.data[(size_t(y) * lvl.width + x) * C];
-                for (int c = 0; c < C; ++c) out[c] = wsum > 0.0f ? acc[c] / wsum : 0.0f;
+                float* out = &lvl.data[(size_t(y) * lvl.width + x) * C1];
+                for (int c = 0; c < C1; ++c) out[c] = wsum > 0.0f ? acc[c] / wsum : 0.0f;
             }
         });
         mips_.push_back(std::move(lvl));
     }
+    // Split the sun channel off: mips_ keep the layout of 3 + K channels.
+    for (Kneiphof2025Level& l : mips_) {
+        const size_t n = size_t(l.width) * size_t(l.height);
+        Kneiphof2025Level sun_level;
+        sun_level.width = l.width;
+        sun_level.height = l.height;
+        sun_level.data.resize(n);
+        std::vector<float> packed(n * size_t(C));
+        for (size_t i = 0; i < n; ++i) {
+            std::copy_n(&l.data[i * C1], C, &packed[i * C]);
+            sun_level.data[i] = l.data[i * C1 + C];
+        }
+        l.data = std::move(packed);
+        sun_mips_.push_back(std::move(sun_level));
+    }
+}
+
+void Kneiphof2025Environment::find_sun(const std::vector<float>& lum, int W, int H,
+                                       std::vector<float>& base, int stride) {
+    // Solid-angle weighted mean luminance and the brightest texel.
+    const float texel = (2.0f * kPi / static_cast<float>(W)) * (kPi / static_cast<float>(H));
+    double mean = 0.0, area = 0.0;
+    size_t peak = 0;
+    for (int y = 0; y < H; ++y) {
+        const double sa = texel * std::sin((y + 0.5) * kPi / H);
+        for (int x = 0; x < W; ++x) {
+            const size_t i = size_t(y) * W + x;
+            mean += sa * lum[i];
+            area += sa;
+            if (lum[i] > lum[peak]) peak = i;
+        }
+    }
+    mean /= area;
+    const float l_max = lum[peak];
+    if (!(l_max > Kneiphof2025Sun::kSunContrast * mean)) return;
+    const float threshold = std::max(Kneiphof2025Sun::kSunFraction * l_max,
+                                     Kneiphof2025Sun::kSunContrast * static_cast<float>(mean));
+    auto direction = [&](size_t i) {
+        return map_direction(
+            {(static_cast<float>(i % W) + 0.5f) / W, (static_cast<float>(i / W) + 0.5f) / H});
+    };
+    const glm::vec3 centre = direction(peak);
+    const float cos_cone = std::cos(glm::radians(Kneiphof2025Sun::kSunConeDeg));
+    glm::dvec3 power(0.0), dir(0.0);
+    std::vector<size_t> texels;
+    for (int y = 0; y < H; ++y) {
+        const double sa = texel * std::sin((y + 0.5) * kPi / H);
+        for (int x = 0; x < W; ++x) {
+            const size_t i = size_t(y) * W + x;
+            if (lum[i] < threshold) continue;
+            const glm::vec3 d = direction(i);
+            if (glm::dot(d, centre) < cos_cone) continue;
+            const float* t = &base[i * size_t(stride)];
+            power += sa * glm::dvec3(t[0], t[1], t[2]);
+            dir += (sa * lum[i]) * glm::dvec3(d);
+            base[i * size_t(stride) + size_t(stride) - 1] = lum[i];  // the sun channel
+            texels.push_back(i);
+        }
+    }
+    const glm::vec3 axis = glm::vec3(glm::normalize(dir));
+    float radius = 0.0f;
+    for (const size_t i : texels)
+        radius = std::max(radius, std::acos(std::clamp(glm::dot(direction(i), axis), -1.0f, 1.0f)));
+    const float l_power = luminance(glm::vec3(power));
+    if (!(l_power > 0.0f)) return;
+    sun_.found = true;
+    sun_.map_direction = axis;
+    // The map's rotation about +y (map_uv: world phi = map phi + rotation).
+    const float c = std::cos(rotation_rad_), s = std::sin(rotation_rad_);
+    sun_.direction =
+        glm::normalize(glm::vec3(axis.x * c - axis.z * s, axis.y, axis.z * c + axis.x * s));
+    sun_.power = glm::vec3(power);
+    sun_.radius = radius + 0.5f * kPi / static_cast<float>(H);
+    sun_.color = sun_.power / l_power;
 }
 
 void Kneiphof2025Environment::partition(float L, float* w) const {
@@ -296,6 +375,26 @@ void Kneiphof2025Environment::fetch_level(int level, glm::vec2 uv, float* out, i
 
 void Kneiphof2025Environment::fetch(glm::vec3 dir, float roughness, float* out) const {
     fetch_channels(dir, roughness, out, channels());
+}
+
+glm::vec4 Kneiphof2025Environment::fetch_radiance_sun(glm::vec3 dir, float roughness) const {
+    const glm::vec3 rgb = fetch_radiance(dir, roughness);
+    if (!sun_.found) return glm::vec4(rgb, 0.0f);
+    // The same bilinear and level blend as fetch_channels, on the sun channel.
+    const glm::vec2 uv = map_uv(dir, rotation_rad_);
+    const int last = static_cast<int>(sun_mips_.size()) - 1;
+    const float l = std::clamp(roughness, 0.0f, 1.0f) * static_cast<float>(last);
+    const int l0 = std::min(static_cast<int>(std::floor(l)), last);
+    const int l1 = std::min(l0 + 1, last);
+    const float t = l - static_cast<float>(l0);
+    float a = 0.0f;
+    bilinear(sun_mips_[l0], 1, uv, &a, 1);
+    if (t > 0.0f && l1 != l0) {
+        float b = 0.0f;
+        bilinear(sun_mips_[l1], 1, uv, &b, 1);
+        a += t * (b - a);
+    }
+    return glm::vec4(rgb, a);
 }
 
 glm::vec3 Kneiphof2025Environment::fetch_radiance(glm::vec3 dir, float roughness) const {

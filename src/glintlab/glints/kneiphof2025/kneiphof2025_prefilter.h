@@ -44,6 +44,24 @@ struct Kneiphof2025PrefilterOptions {
     int samples = 64;   // kernel samples per filtered texel
 };
 
+// The environment's sun: its brightest compact source, taken out of the
+// prefiltered radiance for the "lobe_sun" smooth term (docs/MODELS.md
+// "kneiphof2025", smooth term). Found on the 256 x 128 base level: the texel
+// of maximum luminance L_max, if L_max > kSunContrast times the map's mean
+// luminance; the sun is then every texel within kSunConeDeg of it whose
+// luminance is at least max(kSunFraction L_max, kSunContrast mean).
+struct Kneiphof2025Sun {
+    static constexpr float kSunContrast = 50.0f;
+    static constexpr float kSunFraction = 0.05f;
+    static constexpr float kSunConeDeg = 4.0f;
+    bool found = false;
+    glm::vec3 direction{0.0f, 1.0f, 0.0f};      // world (the map's rotation applied), unit
+    glm::vec3 map_direction{0.0f, 1.0f, 0.0f};  // in the map's own frame (rotation 0)
+    glm::vec3 power{0.0f};                      // RGB: sum of radiance x texel solid angle
+    float radius = 0.0f;    // angular radius (rad): the farthest texel + 1/2 texel
+    glm::vec3 color{0.0f};  // power / luminance(power)
+};
+
 // One lat-long level: channels per texel = 3 (RGB radiance) + K (weights).
 struct Kneiphof2025Level {
     int width = 0, height = 0;
@@ -70,6 +88,12 @@ class Kneiphof2025Environment {
     void fetch(glm::vec3 dir, float roughness, float* out) const;
     // The RGB radiance alone (out[0..2] of fetch).
     glm::vec3 fetch_radiance(glm::vec3 dir, float roughness) const;
+    // The RGB radiance and, in w, the sun's luminance in it (the sun's
+    // texels alone prefiltered by the same kernel; 0 without a sun).
+    glm::vec4 fetch_radiance_sun(glm::vec3 dir, float roughness) const;
+    const Kneiphof2025Sun& sun() const { return sun_; }
+    // The sun channel of each level (one float per texel, same layout).
+    const std::vector<Kneiphof2025Level>& sun_mips() const { return sun_mips_; }
 
     // Fuzzy indicator weights of Eq. 19 for a luminance (linear space),
     // into w[0 .. K).
@@ -77,6 +101,10 @@ class Kneiphof2025Environment {
 
   private:
     void fetch_channels(glm::vec3 dir, float roughness, float* out, int count) const;
+    // Sets sun_ from the base level's luminance and writes the sun's texels'
+    // luminance into the last of `stride` channels of `base`.
+    void find_sun(const std::vector<float>& lum, int W, int H, std::vector<float>& base,
+                  int stride);
     void fetch_level(int level, glm::vec2 uv, float* out, int count) const;
 
     float rotation_rad_ = 0.0f;
@@ -84,8 +112,9 @@ class Kneiphof2025Environment {
     std::array<float, 8> radiance_levels_{};
     float min_luminance_ = 0.0f, max_luminance_ = 0.0f;
     std::vector<Kneiphof2025Level> mips_;
+    Kneiphof2025Sun sun_;
+    std::vector<Kneiphof2025Level> sun_mips_;
 };
-
 
 // Eq. 18: the K radiance levels (L^(1) = 0, then log-spaced from
 // max(min luminance, black level) to the max luminance), entries >= K zero.

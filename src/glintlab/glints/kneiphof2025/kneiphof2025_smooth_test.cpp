@@ -6,8 +6,10 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <memory>
+#include <string>
 #include <vector>
 
 #include "glintlab/core/glsl.h"
@@ -15,6 +17,7 @@
 #include "glintlab/core/rng.h"
 #include "glintlab/glints/kneiphof2025/kneiphof2025.h"
 #include "glintlab/glints/kneiphof2025/kneiphof2025_prefilter.h"
+#include "glintlab/glints/registry.h"
 #include "glintlab/microfacet/microfacet.h"
 #include "glintlab/scene/environment.h"
 #include "glintlab/scene/scene.h"
@@ -25,6 +28,13 @@ GLINTLAB_SHADER_FUNCTIONS_BEGIN
 vec3 kneiphof2025_radiance_fetch(vec3, float) { return vec3(0.0f); }
 vec4 kneiphof2025_weights_fetch(vec3, float, int) { return vec4(0.0f); }
 vec3 kneiphof2025_dfg_fetch(float, float) { return vec3(0.0f); }
+vec4 kneiphof2025_radiance_sun_fetch(vec3, float) { return vec4(0.0f); }
+void kneiphof2025_sun(vec3& d, vec3& p, float& r, vec3& c) {
+    d = vec3(0.0f, 1.0f, 0.0f);
+    p = vec3(0.0f);
+    r = 0.0f;
+    c = vec3(0.0f);
+}
 vec2 kneiphof2025_cone_jitter() { return vec2(0.5f); }
 #include "glintlab/glints/kneiphof2025/kneiphof2025.glsl"
 GLINTLAB_SHADER_FUNCTIONS_END
@@ -226,6 +236,115 @@ TEST(Kneiphof2025Smooth, LobeEstimateMatchesTheExactIntegral) {
         }
         std::printf("sqrt(alpha) %.1f: lobe mean %+.4f ring %+.4f; split mean %+.4f ring %+.4f\n",
                     sa, lobe_mean, lobe_ring, s_sum[0] / exact[0] - 1.0, split_ring);
+    }
+}
+
+}  // namespace
+}  // namespace glintlab
+
+namespace glintlab {
+namespace {
+
+// Image-mean luminance of a smooth term and of the exact integral over a
+// sphere seen in perspective (the scenes/kneiphof2025_sphere.json camera:
+// eye at distance 3.2, 45 deg field of view), whole sphere and rim
+// (cos_o < 0.4, where the split sum's n = v = r kernel and the missing
+// horizon clipping fail).
+struct SphereMeans {
+    double exact[2] = {}, smooth[2] = {};
+    double rel(int region) const { return smooth[region] / exact[region] - 1.0; }
+};
+SphereMeans perspective_sphere(const EnvironmentMap& env, const Kneiphof2025Environment& pre,
+                               const GlintDesc& desc, int res, int strata) {
+    SphereMeans m;
+    Pcg32 rng(5u, 21u);
+    const glm::vec3 eye(0.0f, 0.0f, 3.2f);
+    const float th = std::tan(glm::radians(22.5f));
+    const float alpha = desc.alpha_x;
+    for (int y = 0; y < res; ++y)
+        for (int x = 0; x < res; ++x) {
+            const glm::vec3 d = glm::normalize(glm::vec3((2.0f * (x + 0.5f) / res - 1.0f) * th,
+                                                         (1.0f - 2.0f * (y + 0.5f) / res) * th, -1.0f));
+            const float bq = glm::dot(eye, d), disc = bq * bq - (glm::dot(eye, eye) - 1.0f);
+            if (disc <= 0.0f) continue;
+            const glm::vec3 n = glm::normalize(eye + (-bq - std::sqrt(disc)) * d);
+            const float cos_o = -glm::dot(n, d);
+            if (cos_o <= 1e-3f) continue;
+            glm::vec3 t, b;
+            shader::tangent_frame(n, t, b);
+            const glm::vec3 wo(-glm::dot(d, t), -glm::dot(d, b), cos_o);
+            const glm::vec3 wr = glm::reflect(d, n);
+            const double e = exact_smooth_luminance(env, n, t, b, wo, alpha, rng, strata);
+            const double s = luminance(kneiphof2025_environment_smooth(pre, n, wr, cos_o, desc));
+            for (int region = 0; region < 2; ++region) {
+                if (region == 1 && cos_o >= 0.4f) continue;
+                m.exact[region] += e;
+                m.smooth[region] += s;
+            }
+        }
+    return m;
+}
+
+const char* const kWorld = "/usr/share/blender/datafiles/studiolights/world/";
+
+// The default smooth term ("lobe_sun") against the exact integral on three
+// blender-data maps: sunrise (half its energy in a sun of 4 texels 8 deg
+// above the horizon, reflected at the rim: the split sum's worst case),
+// city (a high sun) and courtyard (no sun: the lobe alone), at GGX alpha
+// 0.25 and 0.5 (sqrt(alpha) 0.5, 0.71). Measured on the 64 x 64 sphere of
+// docs/VALIDATION.md over all 8 maps: |error| <= 4.2 % on the image, <= 3.7 %
+// on the rim. Here 48 x 48 (32 x 32 under the sanitizers): both estimates
+// are deterministic; the exact means' Monte Carlo error (36 + 36 MIS samples
+// per pixel, >= 600 sphere pixels, the sun importance-sampled) is < 0.5 %;
+// the coarser pixel sets sample the sun's small rim reflection differently
+// (measured worst: 3.8 % image / 3.6 % rim at 48, 5.0 % / 4.3 % at 32).
+// Limit 6 %. "as_published" (and its alias "split_sum") must stay 003's
+// split sum: its measured sunrise errors, +42-46 % image and +58-77 % rim
+// at 48 (+46-57 %, +79-99 % at 32; +45-48 %, +65-83 % at 64), pinned to
+// [+35 %, +60 %] image and > +45 % rim.
+TEST(Kneiphof2025Smooth, LobeSunDefaultMatchesTheExactIntegralOnSunMaps) {
+#if defined(__SANITIZE_ADDRESS__)
+    const int res = 32;
+#else
+    const int res = 48;
+#endif
+    EXPECT_EQ(Kneiphof2025Params{}.smooth, Kneiphof2025Params::Smooth::LobeSun);
+    // The scene key: "as_published" and the old name "split_sum" select the split sum.
+    for (const GlintParam& p : glint_model(GlintModelId::Kneiphof2025).params) {
+        if (p.key != "smooth") continue;
+        for (const char* name : {"as_published", "split_sum"}) {
+            GlintModelParams v = Kneiphof2025Params{};
+            p.set(v, GlintParamValue(std::string(name)));
+            EXPECT_EQ(std::get<Kneiphof2025Params>(v).smooth, Kneiphof2025Params::Smooth::SplitSum);
+            EXPECT_EQ(std::get<std::string>(p.get(v)), "as_published");
+        }
+    }
+    for (const char* name : {"sunrise", "city", "courtyard"}) {
+        const std::string path = std::string(kWorld) + name + ".exr";
+        ASSERT_TRUE(std::filesystem::exists(path))
+            << path << " is missing: install Debian's blender-data (scripts/install-deps.sh)";
+        const auto env = std::make_shared<const EnvironmentMap>(read_image(path), 1.0f, 0.0f);
+        const auto pre = kneiphof2025_environment_for(env, 8, 1e-2f);
+        // Sunrise and city have a sun by the rule of Kneiphof2025Sun; courtyard
+        // (max luminance 53, no compact source) has none.
+        EXPECT_EQ(pre->sun().found, std::string(name) != "courtyard") << name;
+        for (const float alpha : {0.25f, 0.5f}) {
+            const SphereMeans m =
+                perspective_sphere(*env, *pre, ggx_desc(alpha, Kneiphof2025Params::Smooth::LobeSun), res, 6);
+            EXPECT_LT(std::abs(m.rel(0)), 0.06) << name << " alpha " << alpha;
+            EXPECT_LT(std::abs(m.rel(1)), 0.06) << name << " alpha " << alpha << " (rim)";
+            std::printf("%-9s alpha %.2f: lobe_sun image %+.4f rim %+.4f\n", name, alpha, m.rel(0),
+                        m.rel(1));
+            if (std::string(name) == "sunrise") {
+                const SphereMeans s = perspective_sphere(
+                    *env, *pre, ggx_desc(alpha, Kneiphof2025Params::Smooth::SplitSum), res, 6);
+                EXPECT_GT(s.rel(0), 0.35) << "alpha " << alpha;
+                EXPECT_LT(s.rel(0), 0.60) << "alpha " << alpha;
+                EXPECT_GT(s.rel(1), 0.45) << "alpha " << alpha;
+                std::printf("sunrise   alpha %.2f: as_published image %+.4f rim %+.4f\n", alpha,
+                            s.rel(0), s.rel(1));
+            }
+        }
     }
 }
 

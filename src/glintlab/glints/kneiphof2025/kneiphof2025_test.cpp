@@ -298,7 +298,11 @@ TEST(Kneiphof2025, ReadsParametersWithRangeChecks) {
     expect_error(R"({})", R"({"variant": "wang"})", "variant");
     expect_error(R"({})", R"({"smooth": "exact"})", "/materials/0/kneiphof2025/smooth");
     EXPECT_EQ(read(R"({})", R"({"smooth": "lobe"})").smooth, Kneiphof2025Params::Smooth::Lobe);
-    EXPECT_EQ(p.smooth, Kneiphof2025Params::Smooth::SplitSum);
+    EXPECT_EQ(p.smooth, Kneiphof2025Params::Smooth::LobeSun);  // the default
+    EXPECT_EQ(read(R"({})", R"({"smooth": "as_published"})").smooth,
+              Kneiphof2025Params::Smooth::SplitSum);
+    EXPECT_EQ(read(R"({})", R"({"smooth": "split_sum"})").smooth,
+              Kneiphof2025Params::Smooth::SplitSum);
     expect_error(R"({})", R"({"bogus": 1})", "bogus");
     expect_error(R"({"ndf": "beckmann"})", R"({})", "isotropic GGX");
     expect_error(R"({"ax": 0.2, "ay": 0.3})", R"({})", "isotropic GGX");
