@@ -1,13 +1,14 @@
 // The GPU host side of a glint model, as the OpenGL renderer
-// (realtime/gpu_renderer.h) sees it: one GpuModelHooks per model, in one
-// table (gpu_model_hooks(), glints/gpu_model_table_gpu.cpp), implemented
-// beside each model (glints/<model>/<model>_gpu*.cpp). The renderer never
-// names a model: it asks the table for the model's GLSL glue file, makes the
-// model's per-renderer state and calls it before each frame and before each
-// draw of one of the model's materials.
+// (realtime/gpu_renderer.h) sees it: one GpuModelHooks per model, implemented
+// beside the model (glints/<model>/<model>_gpu*.cpp) and named by its
+// descriptor (GlintModelDescriptor::gpu_hooks); gpu_model_hooks() gathers
+// them (glints/gpu_model_hooks_gpu.cpp). The renderer never names a model: it
+// asks for the model's GLSL glue file, makes the model's per-renderer state
+// and calls it before each frame and before each draw of one of the model's
+// materials.
 //
 // This header needs no OpenGL; the hooks' implementations (*_gpu*.cpp) are
-// built with GLINTLAB_WITH_GL only, and so is the table.
+// built with GLINTLAB_WITH_GL only, and so is gpu_model_hooks().
 #pragma once
 
 #include <memory>
