@@ -93,4 +93,15 @@ std::span<const GpuModelHooks> gpu_model_hooks();
 // Null when the GPU renderer does not implement `model`.
 const GpuModelHooks* find_gpu_model_hooks(GlintModelId model);
 
+// A GPU option of a model, by name: "OPTION" or "MODEL.OPTION".
+struct GpuModelOptionName {
+    std::string_view model;   // the model's registry name
+    std::string_view option;  // GpuModelOption::name
+};
+// The option `name` of a model that a glint material of `scene` uses
+// (`glintlab view --gpu-option`); a bare OPTION must belong to one such
+// model only. Throws glintlab::Error naming the options the scene's models
+// have otherwise.
+GpuModelOptionName find_scene_gpu_option(const Scene& scene, std::string_view name);
+
 }  // namespace glintlab

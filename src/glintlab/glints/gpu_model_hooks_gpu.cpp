@@ -1,11 +1,15 @@
 // The GPU models (gpu_model_hooks.h), gathered from the model descriptors:
 // each names its own hooks (GlintModelDescriptor::gpu_hooks), so this file
 // names no model. Built with the OpenGL renderer only (GLINTLAB_WITH_GL).
+#include <set>
 #include <vector>
+
+#include <fmt/format.h>
 
 #include "glintlab/core/error.h"
 #include "glintlab/glints/gpu_model_hooks.h"
 #include "glintlab/glints/registry.h"
+#include "glintlab/scene/scene.h"
 
 namespace glintlab {
 
@@ -47,6 +51,31 @@ const GpuModelHooks* find_gpu_model_hooks(GlintModelId model) {
     for (const GpuModelHooks& h : gpu_model_hooks())
         if (h.model == model) return &h;
     return nullptr;
+}
+
+GpuModelOptionName find_scene_gpu_option(const Scene& scene, std::string_view name) {
+    const size_t dot = name.find('.');
+    const std::string_view model = dot == std::string_view::npos ? "" : name.substr(0, dot);
+    const std::string_view option = dot == std::string_view::npos ? name : name.substr(dot + 1);
+    std::set<GlintModelId> used;  // the scene's GPU models, in registry order
+    for (const MaterialDesc& m : scene.materials)
+        if (m.type == MaterialDesc::Type::Glint && find_gpu_model_hooks(m.glint.model_id))
+            used.insert(m.glint.model_id);
+    std::vector<GpuModelOptionName> matches;
+    std::string known;
+    for (GlintModelId id : used) {
+        const std::string_view model_name = glint_model(id).name;
+        for (const GpuModelOption& o : find_gpu_model_hooks(id)->options) {
+            known += fmt::format("{}{}.{}", known.empty() ? "" : ", ", model_name, o.name);
+            if (o.name == option && (model.empty() || model == model_name))
+                matches.push_back({model_name, o.name});
+        }
+    }
+    if (matches.size() == 1) return matches.front();
+    fail("GPU option \"{}\": {} (the GPU options of this scene's glint models: {})", name,
+         matches.empty() ? "no glint model of this scene has it"
+                         : "several of this scene's models have it; name one as MODEL.OPTION",
+         known.empty() ? "none" : known);
 }
 
 }  // namespace glintlab

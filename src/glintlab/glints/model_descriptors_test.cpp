@@ -165,6 +165,28 @@ TEST(ModelDescriptors, GpuBackEndMatchesTheGpuRenderer) {
         }
     }
 }
+
+// `glintlab view --gpu-option`: a bare OPTION resolves among the GPU models
+// of the scene's glint materials, MODEL.OPTION names the model; an option of
+// no model of the scene is an error.
+TEST(ModelDescriptors, GpuOptionsResolveAgainstTheScenesModels) {
+    Scene scene;
+    for (GlintModelId id : {GlintModelId::Deliot2023, GlintModelId::Kneiphof2025}) {
+        MaterialDesc m;
+        m.type = MaterialDesc::Type::Glint;
+        m.glint.model_id = id;
+        scene.materials.push_back(m);
+    }
+    const GpuModelOptionName bare = find_scene_gpu_option(scene, "dynamic_environment");
+    EXPECT_EQ(bare.model, "kneiphof2025");
+    EXPECT_EQ(bare.option, "dynamic_environment");
+    const GpuModelOptionName named = find_scene_gpu_option(scene, "deliot2023.noise_texture");
+    EXPECT_EQ(named.model, "deliot2023");
+    EXPECT_EQ(named.option, "noise_texture");
+    EXPECT_THROW(find_scene_gpu_option(scene, "split_sum_environment"), Error);  // smooth's
+    EXPECT_THROW(find_scene_gpu_option(scene, "kneiphof2025.noise_texture"), Error);
+    EXPECT_THROW(find_scene_gpu_option(scene, "no_such_option"), Error);
+}
 #endif
 
 TEST(ModelDescriptors, EveryParameterReadsBackAndIsRangeChecked) {
