@@ -1,5 +1,7 @@
 #include <charconv>
 #include <optional>
+#include <string>
+#include <vector>
 
 #include "commands.h"
 #include "glintlab/core/error.h"
@@ -18,6 +20,7 @@ void add_view_command(CLI::App& app, int* status) {
         std::string res;
         std::optional<float> exposure;
         bool no_ui = false;
+        std::vector<std::string> gpu_options;
         bool dynamic_ibl = false;
     };
     auto a = std::make_shared<Args>();
@@ -41,9 +44,13 @@ void add_view_command(CLI::App& app, int* status) {
     sub->add_option("--exposure", a->exposure, "Exposure in stops (overrides the scene)")
         ->check(CLI::Range(-20.0f, 20.0f));
     sub->add_flag("--no-ui", a->no_ui, "Hide the Dear ImGui panel");
+    sub->add_option("--gpu-option", a->gpu_options,
+                    "Turn on a GPU option of the scene's glint models at start: OPTION or "
+                    "MODEL.OPTION (repeatable; the panel's checkboxes toggle them)")
+        ->allow_extra_args(false);
     sub->add_flag("--dynamic-ibl", a->dynamic_ibl,
-                  "kneiphof2025: prefilter the environment on the GPU every frame (003 5; the "
-                  "panel's checkbox)");
+                  "Same as --gpu-option dynamic_environment: prefilter the environment on the "
+                  "GPU every frame (kneiphof2025, 003 Sec. 5)");
     sub->callback([a, status] {
         Scene scene = load_scene(a->scene);
         if (!a->res.empty()) {
@@ -69,7 +76,8 @@ void add_view_command(CLI::App& app, int* status) {
         o.window_screenshot = a->window_screenshot;
         o.panel_report = a->panel_report;
         o.show_ui = !a->no_ui;
-        o.dynamic_ibl = a->dynamic_ibl;
+        o.gpu_options = a->gpu_options;
+        if (a->dynamic_ibl) o.gpu_options.push_back("dynamic_environment");
         run_viewer(std::move(scene), o);
         *status = 0;
     });

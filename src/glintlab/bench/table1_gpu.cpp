@@ -3,10 +3,10 @@
 #include <algorithm>
 #include <chrono>
 
+#include "glintlab/gl/gl_context.h"
+#include "glintlab/gl/gpu_timer.h"
 #include "glintlab/glints/wang2020/wang2020_gpu_passes.h"
-#include "glintlab/realtime/gl_context.h"
 #include "glintlab/realtime/gpu_renderer.h"
-#include "glintlab/realtime/gpu_timer.h"
 #include "glintlab/scene/scene_loader.h"
 
 namespace glintlab {

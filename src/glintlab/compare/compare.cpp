@@ -16,7 +16,7 @@
 #include "glintlab/render/renderer.h"
 #include "glintlab/scene/scene_edits.h"
 #if GLINTLAB_WITH_GL
-#include "glintlab/realtime/gl_context.h"
+#include "glintlab/gl/gl_context.h"
 #include "glintlab/realtime/glint_programs.h"
 #include "glintlab/realtime/gpu_renderer.h"
 #endif

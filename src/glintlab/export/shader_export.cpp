@@ -372,22 +372,6 @@ struct Manifest {
     nlohmann::json passes = nlohmann::json::array();
 };
 
-const char* material_type_name(MaterialDesc::Type t) {
-    switch (t) {
-        case MaterialDesc::Type::Diffuse:
-            return "diffuse";
-        case MaterialDesc::Type::Conductor:
-            return "conductor";
-        case MaterialDesc::Type::Dielectric:
-            return "dielectric";
-        case MaterialDesc::Type::Plastic:
-            return "plastic";
-        case MaterialDesc::Type::Glint:
-            return "glint";
-    }
-    return "?";
-}
-
 // The glint material of `scene` named `name` (empty: the first glint
 // material of `model`); errors name the file, the material and the problem.
 const MaterialDesc& select_material(const Scene& scene, const std::string& name,

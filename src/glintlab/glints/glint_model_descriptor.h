@@ -24,6 +24,7 @@ namespace glintlab {
 
 class JsonObject;
 struct GlintLightingContext;
+struct GpuModelHooks;
 struct Scene;
 
 // The paper a model implements (or, for `smooth` and `explicit`, the papers
@@ -93,9 +94,10 @@ struct GlintExtraKey {
 };
 
 // A model's validation suite: `glintlab validate NAME`. Only the name: the
-// suites are research code (the glintlab_research library), and
-// validation_suites.cpp there maps each name to its function, so the runtime
-// library does not depend on them.
+// suites are research code (the glintlab_research library). The model's
+// folder defines its runner there (`<model>_validation_suite()`, beside
+// validate_<model>.cpp; validation_suites.h), so the runtime library does not
+// depend on them.
 struct GlintValidationSuite {
     std::string name;
 };
@@ -108,6 +110,11 @@ struct GlintModelDescriptor {
     std::vector<GlintLightType> lights;  // light types the model can shade
     bool cpu = true;                     // back ends
     bool gpu = false;
+    // The GPU back end's hooks (gpu_model_hooks.h), defined beside the model
+    // (<model>/<model>_gpu*.cpp) and set with set_gpu_hooks(); null for a
+    // CPU-only model and in a build without OpenGL, where `gpu` still says
+    // that the model has a GPU back end.
+    const GpuModelHooks& (*gpu_hooks)() = nullptr;
     GlintModelParams (*default_params)() = nullptr;
     std::vector<GlintParam> params;
     std::vector<GlintExtraKey> extra_keys;
@@ -128,6 +135,12 @@ struct GlintModelDescriptor {
     glm::vec3 (*light_radiance)(const GlintLightingContext& ctx, int light) = nullptr;
     GlintValidationSuite validation;  // name empty: no suite
 
+    // A model with a GPU back end: set_gpu_hooks(GLINTLAB_GPU_HOOKS(foo_gpu_hooks)).
+    void set_gpu_hooks(const GpuModelHooks& (*hooks)()) {
+        gpu = true;
+        gpu_hooks = hooks;
+    }
+
     bool shades(GlintLightType type) const;
     const GlintParam* find_param(std::string_view key) const;
     GlintParamValue default_value(const GlintParam& param) const {
@@ -137,6 +150,30 @@ struct GlintModelDescriptor {
 
 // Compatibility name used by code that predates descriptors.
 using GlintModelInfo = GlintModelDescriptor;
+
+// The head of every descriptor: its id, name, one-line description, the
+// light types it can shade and default_params (a default-constructed P).
+template <class P>
+GlintModelDescriptor make_glint_model_descriptor(GlintModelId id, std::string_view name,
+                                                 std::string description,
+                                                 std::vector<GlintLightType> lights) {
+    GlintModelDescriptor d;
+    d.id = id;
+    d.name = name;
+    d.description = std::move(description);
+    d.lights = std::move(lights);
+    d.default_params = [] { return GlintModelParams(P{}); };
+    return d;
+}
+
+// The argument of set_gpu_hooks: the model's hooks function where the OpenGL
+// renderer is built (GLINTLAB_WITH_GL), null elsewhere (the hooks' sources
+// are not compiled there).
+#if GLINTLAB_WITH_GL
+#define GLINTLAB_GPU_HOOKS(hooks_function) (&(hooks_function))
+#else
+#define GLINTLAB_GPU_HOOKS(hooks_function) nullptr
+#endif
 
 // Table rows from a member of the model's params struct P.
 namespace glint_param {

@@ -1,13 +1,14 @@
 // The GPU host side of a glint model, as the OpenGL renderer
-// (realtime/gpu_renderer.h) sees it: one GpuModelHooks per model, in one
-// table (gpu_model_hooks(), glints/gpu_model_table_gpu.cpp), implemented
-// beside each model (glints/<model>/<model>_gpu*.cpp). The renderer never
-// names a model: it asks the table for the model's GLSL glue file, makes the
-// model's per-renderer state and calls it before each frame and before each
-// draw of one of the model's materials.
+// (realtime/gpu_renderer.h) sees it: one GpuModelHooks per model, implemented
+// beside the model (glints/<model>/<model>_gpu*.cpp) and named by its
+// descriptor (GlintModelDescriptor::gpu_hooks); gpu_model_hooks() gathers
+// them (glints/gpu_model_hooks_gpu.cpp). The renderer never names a model: it
+// asks for the model's GLSL glue file, makes the model's per-renderer state
+// and calls it before each frame and before each draw of one of the model's
+// materials.
 //
 // This header needs no OpenGL; the hooks' implementations (*_gpu*.cpp) are
-// built with GLINTLAB_WITH_GL only, and so is the table.
+// built with GLINTLAB_WITH_GL only, and so is gpu_model_hooks().
 #pragma once
 
 #include <memory>
@@ -91,5 +92,16 @@ struct GpuModelHooks {
 std::span<const GpuModelHooks> gpu_model_hooks();
 // Null when the GPU renderer does not implement `model`.
 const GpuModelHooks* find_gpu_model_hooks(GlintModelId model);
+
+// A GPU option of a model, by name: "OPTION" or "MODEL.OPTION".
+struct GpuModelOptionName {
+    std::string_view model;   // the model's registry name
+    std::string_view option;  // GpuModelOption::name
+};
+// The option `name` of a model that a glint material of `scene` uses
+// (`glintlab view --gpu-option`); a bare OPTION must belong to one such
+// model only. Throws glintlab::Error naming the options the scene's models
+// have otherwise.
+GpuModelOptionName find_scene_gpu_option(const Scene& scene, std::string_view name);
 
 }  // namespace glintlab

@@ -20,6 +20,7 @@
 #include "glintlab/glints/validation_suites.h"
 #include "glintlab/scene/scene_loader.h"
 #if GLINTLAB_WITH_GL
+#include "glintlab/glints/gpu_model_hooks.h"
 #include "glintlab/realtime/glint_programs.h"
 #endif
 
@@ -128,8 +129,9 @@ TEST(ModelDescriptors, ListIsCompleteAndConsistent) {
     }
 }
 
-// A descriptor names its suite; the research library's table
-// (validation_suites.cpp) runs it. Every named suite has a runner there, and
+// A descriptor names its suite; the model's folder defines its runner in the
+// research library (`<model>_validation_suite()`, model_list.h), which
+// validation_suites() files under that name. Every named suite has a runner there, and
 // every runner but the model-less `counting`, `robustness` and `compare`
 // (all models) belongs to a model, so `glintlab validate` lists exactly the
 // descriptors' suites plus those three.
@@ -152,10 +154,38 @@ TEST(ModelDescriptors, EveryValidationSuiteNameHasARunner) {
 }
 
 #if GLINTLAB_WITH_GL
-// A descriptor's "gpu" back end is the GPU renderer's (realtime/) support.
+// A descriptor's "gpu" back end is the GPU renderer's (realtime/) support,
+// through the hooks the descriptor names.
 TEST(ModelDescriptors, GpuBackEndMatchesTheGpuRenderer) {
-    for (const GlintModelDescriptor& m : glint_models())
+    for (const GlintModelDescriptor& m : glint_models()) {
         EXPECT_EQ(m.gpu, gl::gpu_supports_model(m.id)) << m.name;
+        EXPECT_EQ(m.gpu, m.gpu_hooks != nullptr) << m.name;
+        if (m.gpu_hooks != nullptr) {
+            EXPECT_EQ(m.gpu_hooks().model, m.id) << m.name;
+        }
+    }
+}
+
+// `glintlab view --gpu-option`: a bare OPTION resolves among the GPU models
+// of the scene's glint materials, MODEL.OPTION names the model; an option of
+// no model of the scene is an error.
+TEST(ModelDescriptors, GpuOptionsResolveAgainstTheScenesModels) {
+    Scene scene;
+    for (GlintModelId id : {GlintModelId::Deliot2023, GlintModelId::Kneiphof2025}) {
+        MaterialDesc m;
+        m.type = MaterialDesc::Type::Glint;
+        m.glint.model_id = id;
+        scene.materials.push_back(m);
+    }
+    const GpuModelOptionName bare = find_scene_gpu_option(scene, "dynamic_environment");
+    EXPECT_EQ(bare.model, "kneiphof2025");
+    EXPECT_EQ(bare.option, "dynamic_environment");
+    const GpuModelOptionName named = find_scene_gpu_option(scene, "deliot2023.noise_texture");
+    EXPECT_EQ(named.model, "deliot2023");
+    EXPECT_EQ(named.option, "noise_texture");
+    EXPECT_THROW(find_scene_gpu_option(scene, "split_sum_environment"), Error);  // smooth's
+    EXPECT_THROW(find_scene_gpu_option(scene, "kneiphof2025.noise_texture"), Error);
+    EXPECT_THROW(find_scene_gpu_option(scene, "no_such_option"), Error);
 }
 #endif
 
@@ -333,9 +363,9 @@ TEST(ModelDescriptors, SwitchedMaterialsAreAcceptedByTheTargetModel) {
                             {"fresnel", {{"type", "dielectric"}, {"eta", 1.5}}},
                             {"base_albedo", g.base_albedo.x}};
                         const std::string error = error_of(scene_json(mat, m.lights.front()));
-                        EXPECT_EQ(error, "") << "ndf " << static_cast<int>(ndf) << " alpha "
-                                             << alpha << " ln density " << log_density
-                                             << " base " << base;
+                        EXPECT_EQ(error, "")
+                            << "ndf " << static_cast<int>(ndf) << " alpha " << alpha
+                            << " ln density " << log_density << " base " << base;
                     }
     }
 }

@@ -1,6 +1,8 @@
-// The list of glint models: the only place that names every model's
-// descriptor (each defined in its own folder, <model>/<model>_descriptor.cpp).
-// Order = GlintModelId order. Adding a model: docs/ADDING_A_MODEL.md.
+// The model descriptors of the list of models (model_list.h), each defined in
+// its own folder (<model>/<model>_descriptor.cpp), checked against the
+// GlintModelId order. Adding a model: docs/ADDING_A_MODEL.md.
+#include "glintlab/glints/model_list.h"
+
 #include <vector>
 
 #include "glintlab/core/error.h"
@@ -8,22 +10,15 @@
 
 namespace glintlab {
 
-GlintModelDescriptor smooth_descriptor();
-GlintModelDescriptor deliot2023_descriptor();
-GlintModelDescriptor zirr2016_descriptor();
-GlintModelDescriptor chermain2020_descriptor();
-GlintModelDescriptor explicit_descriptor();
-GlintModelDescriptor jakob2014_descriptor();
-GlintModelDescriptor kneiphof2025_descriptor();
-GlintModelDescriptor wang2020_descriptor();
+#define GLINTLAB_DECLARE_DESCRIPTOR(model) GlintModelDescriptor model##_descriptor();
+GLINTLAB_GLINT_MODELS(GLINTLAB_DECLARE_DESCRIPTOR)
+#undef GLINTLAB_DECLARE_DESCRIPTOR
 
 const std::vector<GlintModelDescriptor>& glint_model_list() {
     static const std::vector<GlintModelDescriptor> list = [] {
-        std::vector<GlintModelDescriptor> l = {
-            smooth_descriptor(),       deliot2023_descriptor(), zirr2016_descriptor(),
-            chermain2020_descriptor(), explicit_descriptor(),   jakob2014_descriptor(),
-            kneiphof2025_descriptor(), wang2020_descriptor(),
-        };
+#define GLINTLAB_DESCRIPTOR(model) model##_descriptor(),
+        std::vector<GlintModelDescriptor> l = {GLINTLAB_GLINT_MODELS(GLINTLAB_DESCRIPTOR)};
+#undef GLINTLAB_DESCRIPTOR
         for (size_t i = 0; i < l.size(); ++i)
             if (static_cast<size_t>(l[i].id) != i)
                 fail("internal error: glint model \"{}\" is listed out of GlintModelId order",

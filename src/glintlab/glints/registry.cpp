@@ -11,7 +11,7 @@
 
 namespace glintlab {
 
-// Defined by glints/model_list.cpp, the one place naming every model.
+// Defined by glints/model_list.cpp, from the list of models (model_list.h).
 const std::vector<GlintModelDescriptor>& glint_model_list();
 
 const char* glint_light_type_name(GlintLightType type) {

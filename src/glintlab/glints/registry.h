@@ -1,4 +1,4 @@
-// The model list (glints/model_list.cpp) and lookups over it. Front ends loop
+// The model list (glints/model_list.h, .cpp) and lookups over it. Front ends loop
 // over glint_models() and name no model.
 #pragma once
 

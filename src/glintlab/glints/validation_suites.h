@@ -1,5 +1,6 @@
-// Every `glintlab validate` suite by name: each model's suite from its
-// descriptor plus the suites that belong to no model. One table for the CLI
+// Every `glintlab validate` suite by name: each model's suite, named by its
+// descriptor and run by its folder's `<model>_validation_suite()`, plus the
+// suites that belong to no model. One table for the CLI
 // and the Python module, so their suite lists cannot drift apart.
 #pragma once
 
@@ -13,6 +14,17 @@
 namespace glintlab {
 
 using ValidationSuiteRunner = std::function<ValidationReport(uint64_t seed)>;
+
+// A suite run with its default options and the given seed: what each model's
+// `<model>_validation_suite()` returns (model_list.h), beside its suite.
+template <typename Options, ValidationReport (*Run)(const Options&)>
+ValidationSuiteRunner seeded_validation_suite() {
+    return [](uint64_t seed) {
+        Options o;
+        o.seed = seed;
+        return Run(o);
+    };
+}
 
 const std::map<std::string, ValidationSuiteRunner>& validation_suites();
 

@@ -9,8 +9,8 @@
 
 #include "glintlab/core/error.h"
 #include "glintlab/core/shader_assembly.h"
-#include "glintlab/realtime/gl_handles.h"
-#include "glintlab/realtime/gl_program.h"
+#include "glintlab/gl/gl_handles.h"
+#include "glintlab/gl/gl_program.h"
 
 namespace glintlab::gl {
 namespace {

@@ -9,7 +9,7 @@
 
 #include "glintlab/core/bloom.h"
 #include "glintlab/core/rng.h"
-#include "glintlab/realtime/gl_handles.h"
+#include "glintlab/gl/gl_handles.h"
 #include "glintlab/realtime/gpu_bloom.h"
 #include "glintlab/realtime/gpu_test_util.h"
 

@@ -16,7 +16,7 @@
 #include "glintlab/core/error.h"
 #include "glintlab/core/image.h"
 #include "glintlab/core/image_test_util.h"
-#include "glintlab/realtime/gl_context.h"
+#include "glintlab/gl/gl_context.h"
 #include "glintlab/realtime/gpu_test_util.h"
 #include "glintlab/realtime/image_compare.h"
 #include "glintlab/realtime/viewer.h"

@@ -13,16 +13,16 @@
 #include <glm/gtc/type_ptr.hpp>
 
 #include "glintlab/core/error.h"
+#include "glintlab/gl/gl_context.h"
+#include "glintlab/gl/gl_handles.h"
+#include "glintlab/gl/gl_program.h"
+#include "glintlab/gl/gpu_timer.h"
+#include "glintlab/gl/uniform_cache.h"
 #include "glintlab/glints/glint_bxdf.h"
 #include "glintlab/glints/gpu_model_hooks.h"
 #include "glintlab/realtime/forward_shaders.h"
-#include "glintlab/realtime/gl_context.h"
-#include "glintlab/realtime/gl_handles.h"
-#include "glintlab/realtime/gl_program.h"
 #include "glintlab/realtime/glint_programs.h"
 #include "glintlab/realtime/gpu_geometry.h"
-#include "glintlab/realtime/gpu_timer.h"
-#include "glintlab/realtime/uniform_cache.h"
 
 namespace glintlab {
 namespace {

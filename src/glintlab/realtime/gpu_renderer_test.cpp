@@ -12,9 +12,9 @@
 #include <glm/gtc/constants.hpp>
 
 #include "glintlab/core/error.h"
+#include "glintlab/gl/gl_program.h"
 #include "glintlab/glints/deliot2023/deliot2023_gpu.h"
 #include "glintlab/realtime/forward_shaders.h"
-#include "glintlab/realtime/gl_program.h"
 #include "glintlab/realtime/glint_programs.h"
 #include "glintlab/realtime/gpu_geometry.h"
 #include "glintlab/realtime/gpu_renderer.h"

@@ -7,7 +7,7 @@
 #include <string>
 
 #include "glintlab/core/error.h"
-#include "glintlab/realtime/gl_context.h"
+#include "glintlab/gl/gl_context.h"
 
 namespace glintlab::testing {
 

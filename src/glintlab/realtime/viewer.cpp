@@ -19,16 +19,17 @@
 #include "glintlab/core/bloom.h"
 #include "glintlab/core/error.h"
 #include "glintlab/core/image.h"
+#include "glintlab/gl/gl_context.h"
+#include "glintlab/gl/gl_handles.h"
+#include "glintlab/gl/gl_program.h"
+#include "glintlab/gl/gpu_timer.h"
 #include "glintlab/glints/glint_panel_model.h"
+#include "glintlab/glints/gpu_model_hooks.h"
 #include "glintlab/glints/registry.h"
 #include "glintlab/realtime/forward_shaders.h"
-#include "glintlab/realtime/gl_context.h"
-#include "glintlab/realtime/gl_handles.h"
-#include "glintlab/realtime/gl_program.h"
 #include "glintlab/realtime/glint_programs.h"
 #include "glintlab/realtime/gpu_bloom.h"
 #include "glintlab/realtime/gpu_renderer.h"
-#include "glintlab/realtime/gpu_timer.h"
 #include "glintlab/realtime/orbit_camera.h"
 
 namespace glintlab {
@@ -381,6 +382,8 @@ ViewerPanelLayout viewer_panel_layout(int fb_w, int fb_h) {
 }
 
 void run_viewer(Scene scene, const ViewerOptions& options) {
+    for (const std::string& name : options.gpu_options)
+        find_scene_gpu_option(scene, name);  // before any window: throws on an unknown name
     Glfw glfw;
     glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 4);
     glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 5);
@@ -429,7 +432,10 @@ void run_viewer(Scene scene, const ViewerOptions& options) {
                                                 : options.screenshot;
     PassHistory shadow_ms, background_ms, forward_ms, blur_ms, bloom_ms, display_ms;
     bool shadows = true;
-    renderer.set_model_option("kneiphof2025", "dynamic_environment", options.dynamic_ibl);
+    for (const std::string& name : options.gpu_options) {
+        const GpuModelOptionName o = find_scene_gpu_option(scene, name);
+        renderer.set_model_option(o.model, o.option, true);
+    }
     std::string status;
     int selected_material = 0;
     bool p_was_down = false;

@@ -25,10 +25,10 @@ struct ViewerOptions {
     std::filesystem::path
         window_screenshot;  // the window as shown (panel included), after the last frame
     bool show_ui = true;
-    // kneiphof2025's environment prefiltered by compute passes every frame
-    // (003 §5, GpuRenderer::set_model_option "kneiphof2025" "dynamic_environment"); the
-    // panel's "dynamic IBL" checkbox toggles it.
-    bool dynamic_ibl = false;
+    // GPU options of the scene's models turned on at start ("OPTION" or
+    // "MODEL.OPTION", find_scene_gpu_option; GpuRenderer::set_model_option);
+    // the panel's checkboxes toggle them.
+    std::vector<std::string> gpu_options;
     // After the last of `frames`: the panel's rectangle and every text item
     // and widget it drew, as JSON (ViewerPanelReport), for tests of its layout.
     std::filesystem::path panel_report;

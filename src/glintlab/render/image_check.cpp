@@ -15,22 +15,6 @@ bool finite(glm::vec3 v) {
     return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
 }
 
-const char* material_type_name(MaterialDesc::Type t) {
-    switch (t) {
-        case MaterialDesc::Type::Diffuse:
-            return "diffuse";
-        case MaterialDesc::Type::Conductor:
-            return "conductor";
-        case MaterialDesc::Type::Dielectric:
-            return "dielectric";
-        case MaterialDesc::Type::Plastic:
-            return "plastic";
-        case MaterialDesc::Type::Glint:
-            return "glint";
-    }
-    return "unknown";
-}
-
 }  // namespace
 
 std::optional<BadPixel> find_non_finite_pixel(const Image& image) {

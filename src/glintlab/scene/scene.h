@@ -33,6 +33,9 @@ struct MaterialDesc {
     bool needs_uv() const { return type == Type::Glint; }
 };
 
+// The scene format's name of a material type ("diffuse", "glint", ...).
+const char* material_type_name(MaterialDesc::Type type);
+
 struct SphereGeometry {
     glm::vec3 center{0.0f};
     float radius = 1.0f;

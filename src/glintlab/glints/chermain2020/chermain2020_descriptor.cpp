@@ -38,19 +38,19 @@ void fit_chermain2020(GlintDesc& desc) {
 
 }  // namespace
 
+const GpuModelHooks& chermain2020_gpu_hooks();  // chermain2020/chermain2020_gpu*.cpp
+
 GlintModelDescriptor chermain2020_descriptor() {
     namespace gp = glint_param;
     using P = Chermain2020Params;
-    GlintModelDescriptor d;
-    d.id = GlintModelId::Chermain2020;
-    d.name = "chermain2020";
-    d.description = "multiscale SDF dictionary over a MIP hierarchy (Chermain et al. 2020)";
+    GlintModelDescriptor d = make_glint_model_descriptor<P>(
+        GlintModelId::Chermain2020, "chermain2020",
+        "multiscale SDF dictionary over a MIP hierarchy (Chermain et al. 2020)",
+        {GlintLightType::Point, GlintLightType::Directional});
     d.citations = {{"004", "Chermain, Sauvage, Dischler, Dachsbacher", 2020,
                     "Computer Graphics Forum 39(7) (Pacific Graphics 2020)",
                     "Procedural Physically based BRDF for Real-Time Rendering of Glints"}};
-    d.lights = {GlintLightType::Point, GlintLightType::Directional};
-    d.gpu = true;
-    d.default_params = [] { return GlintModelParams(P{}); };
+    d.set_gpu_hooks(GLINTLAB_GPU_HOOKS(chermain2020_gpu_hooks));
     d.params = {
         gp::number("relative_area", &P::relative_area, 0.0, 1.0, "",
                    "beta (004 §7.1): fraction of cells that carry facets"),

@@ -5,9 +5,9 @@
 #include <epoxy/gl.h>
 
 #include "glintlab/core/error.h"
+#include "glintlab/gl/uniform_cache.h"
 #include "glintlab/glints/chermain2020/dictionary.h"
 #include "glintlab/glints/gpu_model_hooks.h"
-#include "glintlab/realtime/uniform_cache.h"
 #include "glintlab/scene/scene.h"
 
 namespace glintlab {

@@ -6,6 +6,7 @@
 #include <fmt/format.h>
 
 #include "glintlab/glints/chermain2020/chermain2020_experiments.h"
+#include "glintlab/glints/validation_suites.h"
 
 namespace glintlab {
 
@@ -79,6 +80,11 @@ ValidationReport validate_chermain2020(const Chermain2020ValidationOptions& o) {
     report.details["seconds"] =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     return report;
+}
+
+// `glintlab validate chermain2020` (model_list.h).
+ValidationSuiteRunner chermain2020_validation_suite() {
+    return seeded_validation_suite<Chermain2020ValidationOptions, validate_chermain2020>();
 }
 
 }  // namespace glintlab

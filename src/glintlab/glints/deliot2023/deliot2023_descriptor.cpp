@@ -4,19 +4,19 @@
 
 namespace glintlab {
 
+const GpuModelHooks& deliot2023_gpu_hooks();  // deliot2023/deliot2023_gpu*.cpp
+
 GlintModelDescriptor deliot2023_descriptor() {
     namespace gp = glint_param;
     using P = Deliot2023Params;
-    GlintModelDescriptor d;
-    d.id = GlintModelId::Deliot2023;
-    d.name = "deliot2023";
-    d.description = "distributed binomial laws on anisotropic grids (Deliot & Belcour 2023)";
+    GlintModelDescriptor d = make_glint_model_descriptor<P>(
+        GlintModelId::Deliot2023, "deliot2023",
+        "distributed binomial laws on anisotropic grids (Deliot & Belcour 2023)",
+        {GlintLightType::Point, GlintLightType::Directional});
     d.citations = {{"000", "Deliot, Belcour", 2023, "HPG 2023 (PACMCGIT 6(3))",
                     "Real-Time Rendering of Glinty Appearances using Distributed Binomial Laws "
                     "on Anisotropic Grids"}};
-    d.lights = {GlintLightType::Point, GlintLightType::Directional};
-    d.gpu = true;
-    d.default_params = [] { return GlintModelParams(P{}); };
+    d.set_gpu_hooks(GLINTLAB_GPU_HOOKS(deliot2023_gpu_hooks));
     d.params = {
         gp::microfacet_roughness(
             &P::microfacet_roughness,

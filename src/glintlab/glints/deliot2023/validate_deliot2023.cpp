@@ -6,6 +6,7 @@
 #include <fmt/format.h>
 
 #include "glintlab/glints/deliot2023/deliot2023_experiments.h"
+#include "glintlab/glints/validation_suites.h"
 
 namespace glintlab {
 
@@ -92,6 +93,11 @@ ValidationReport validate_deliot2023(const Deliot2023ValidationOptions& o) {
     report.details["seconds"] =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     return report;
+}
+
+// `glintlab validate deliot2023` (model_list.h).
+ValidationSuiteRunner deliot2023_validation_suite() {
+    return seeded_validation_suite<Deliot2023ValidationOptions, validate_deliot2023>();
 }
 
 }  // namespace glintlab

@@ -36,11 +36,11 @@ void fit_explicit(GlintDesc& desc) {
 GlintModelDescriptor explicit_descriptor() {
     namespace gp = glint_param;
     using P = ExplicitParams;
-    GlintModelDescriptor d;
-    d.id = GlintModelId::Explicit;
-    d.name = "explicit";
-    d.description =
-        "ground truth: explicitly enumerated mirror microfacets (002 Sec. 3.1, 003 Sec. 3.2)";
+    GlintModelDescriptor d = make_glint_model_descriptor<P>(
+        GlintModelId::Explicit, "explicit",
+        "ground truth: explicitly enumerated mirror microfacets (002 Sec. 3.1, 003 Sec. 3.2)",
+        {GlintLightType::Point, GlintLightType::Directional, GlintLightType::Sphere,
+         GlintLightType::Environment});
     d.citations = {
         {"002", "Jakob, Hašan, Yan, Lawrence, Ramamoorthi, Marschner", 2014,
          "ACM Transactions on Graphics 33(4) (SIGGRAPH 2014)",
@@ -48,10 +48,6 @@ GlintModelDescriptor explicit_descriptor() {
         {"003", "Kneiphof, Klein", 2025, "Computer Graphics Forum 44(4) (EGSR 2025)",
          "Real-Time Image-Based Lighting of Glints"},
     };
-    d.lights = {GlintLightType::Point, GlintLightType::Directional, GlintLightType::Sphere,
-                GlintLightType::Environment};
-    d.gpu = false;
-    d.default_params = [] { return GlintModelParams(P{}); };
     d.params = {
         // 002 §3.1: "a constant γ between 0.5 and 6 degrees in our scenes".
         gp::number("gamma_deg", &P::gamma_deg, 0.5, 6.0, "deg",

@@ -9,6 +9,7 @@
 #include "glintlab/core/rng.h"
 #include "glintlab/glints/explicit/count_chi2.h"
 #include "glintlab/glints/explicit/explicit.h"
+#include "glintlab/glints/validation_suites.h"
 #include "glintlab/microfacet/microfacet.h"
 
 namespace glintlab {
@@ -196,6 +197,11 @@ ValidationReport validate_explicit(const ExplicitValidationOptions& o) {
         fmt::format("count chi-square: min p = {:.3g} over {} tests (Bonferroni-adjusted {:.3g})\n",
                     p_min, tests, p_adj);
     return report;
+}
+
+// `glintlab validate explicit` (model_list.h).
+ValidationSuiteRunner explicit_validation_suite() {
+    return seeded_validation_suite<ExplicitValidationOptions, validate_explicit>();
 }
 
 }  // namespace glintlab

@@ -41,17 +41,14 @@ void fit_jakob2014(GlintDesc& desc) {
 GlintModelDescriptor jakob2014_descriptor() {
     namespace gp = glint_param;
     using P = Jakob2014Params;
-    GlintModelDescriptor d;
-    d.id = GlintModelId::Jakob2014;
-    d.name = "jakob2014";
-    d.description = "discrete stochastic microfacets, 4-D hierarchy counting (Jakob et al. 2014)";
+    GlintModelDescriptor d = make_glint_model_descriptor<P>(
+        GlintModelId::Jakob2014, "jakob2014",
+        "discrete stochastic microfacets, 4-D hierarchy counting (Jakob et al. 2014)",
+        {GlintLightType::Point, GlintLightType::Directional, GlintLightType::Sphere,
+         GlintLightType::Environment});
     d.citations = {{"002", "Jakob, Hašan, Yan, Lawrence, Ramamoorthi, Marschner", 2014,
                     "ACM Transactions on Graphics 33(4) (SIGGRAPH 2014)",
                     "Discrete Stochastic Microfacet Models"}};
-    d.lights = {GlintLightType::Point, GlintLightType::Directional, GlintLightType::Sphere,
-                GlintLightType::Environment};
-    d.gpu = false;
-    d.default_params = [] { return GlintModelParams(P{}); };
     d.params = {
         // 002 §3.1: "a constant γ between 0.5 and 6 degrees in our scenes".
         gp::number("gamma_deg", &P::gamma_deg, 0.5, 6.0, "deg",

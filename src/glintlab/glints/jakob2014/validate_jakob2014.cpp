@@ -10,6 +10,7 @@
 #include "glintlab/glints/jakob2014/jakob2014.h"
 #include "glintlab/glints/jakob2014/jakob2014_experiments.h"
 #include "glintlab/glints/registry.h"
+#include "glintlab/glints/validation_suites.h"
 #include "glintlab/microfacet/microfacet.h"
 #include "glintlab/scene/scene.h"
 
@@ -316,6 +317,11 @@ ValidationReport validate_jakob2014(const Jakob2014ValidationOptions& o) {
     report.check("nodes_per_query", nodes_avg, ">=", 0.0);
     report.check("particles_per_query", parts_avg, ">=", 0.0);
     return report;
+}
+
+// `glintlab validate jakob2014` (model_list.h).
+ValidationSuiteRunner jakob2014_validation_suite() {
+    return seeded_validation_suite<Jakob2014ValidationOptions, validate_jakob2014>();
 }
 
 }  // namespace glintlab

@@ -29,21 +29,20 @@ void fit_kneiphof2025(GlintDesc& desc) {
 
 }  // namespace
 
+const GpuModelHooks& kneiphof2025_gpu_hooks();  // kneiphof2025/kneiphof2025_gpu*.cpp
+
 GlintModelDescriptor kneiphof2025_descriptor() {
     namespace gp = glint_param;
     using P = Kneiphof2025Params;
-    GlintModelDescriptor d;
-    d.id = GlintModelId::Kneiphof2025;
-    d.name = "kneiphof2025";
-    d.description =
+    GlintModelDescriptor d = make_glint_model_descriptor<P>(
+        GlintModelId::Kneiphof2025, "kneiphof2025",
         "image-based lighting of glints, multinomial over K radiance levels (Kneiphof & Klein "
-        "2025)";
+        "2025)",
+        {GlintLightType::Point, GlintLightType::Directional, GlintLightType::Sphere,
+         GlintLightType::Environment});
     d.citations = {{"003", "Kneiphof, Klein", 2025, "Computer Graphics Forum 44(4) (EGSR 2025)",
                     "Real-Time Image-Based Lighting of Glints"}};
-    d.lights = {GlintLightType::Point, GlintLightType::Directional, GlintLightType::Sphere,
-                GlintLightType::Environment};
-    d.gpu = true;
-    d.default_params = [] { return GlintModelParams(P{}); };
+    d.set_gpu_hooks(GLINTLAB_GPU_HOOKS(kneiphof2025_gpu_hooks));
     d.params = {
         gp::integer("levels", &P::levels, 4, 8, "",
                     "K radiance levels of the environment partition (003 §4-5)", {4, 8}),

@@ -10,10 +10,10 @@
 #include <glm/gtc/type_ptr.hpp>
 
 #include "glintlab/core/error.h"
+#include "glintlab/gl/uniform_cache.h"
 #include "glintlab/glints/kneiphof2025/kneiphof2025.h"
 #include "glintlab/glints/kneiphof2025/kneiphof2025_prefilter.h"
 #include "glintlab/glints/kneiphof2025/kneiphof2025_prefilter_gpu.h"
-#include "glintlab/realtime/uniform_cache.h"
 #include "glintlab/scene/environment.h"
 #include "glintlab/scene/scene.h"
 

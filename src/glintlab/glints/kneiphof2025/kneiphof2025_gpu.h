@@ -11,7 +11,7 @@
 #include <tuple>
 #include <utility>
 
-#include "glintlab/realtime/gl_handles.h"
+#include "glintlab/gl/gl_handles.h"
 
 namespace glintlab {
 

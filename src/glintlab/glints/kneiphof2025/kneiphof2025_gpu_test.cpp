@@ -10,9 +10,9 @@
 
 #include <epoxy/gl.h>
 
+#include "glintlab/gl/gl_handles.h"
 #include "glintlab/glints/kneiphof2025/kneiphof2025_prefilter.h"
 #include "glintlab/glints/kneiphof2025/kneiphof2025_prefilter_gpu.h"
-#include "glintlab/realtime/gl_handles.h"
 #include "glintlab/realtime/gpu_renderer.h"
 #include "glintlab/realtime/gpu_test_util.h"
 #include "glintlab/realtime/image_compare.h"

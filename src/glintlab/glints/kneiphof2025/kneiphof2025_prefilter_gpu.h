@@ -21,8 +21,8 @@
 #include <array>
 #include <vector>
 
+#include "glintlab/gl/gl_handles.h"
 #include "glintlab/glints/kneiphof2025/kneiphof2025_prefilter.h"
-#include "glintlab/realtime/gl_handles.h"
 
 namespace glintlab::gl {
 

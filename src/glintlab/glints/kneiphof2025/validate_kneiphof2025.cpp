@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 
 #include "glintlab/glints/kneiphof2025/kneiphof2025_experiments.h"
+#include "glintlab/glints/validation_suites.h"
 
 namespace glintlab {
 namespace {
@@ -67,8 +68,8 @@ ValidationReport validate_kneiphof2025(const Kneiphof2025ValidationOptions& o) {
             "{:>9.4f} {:>10.4f} {:>9.3f} {:>11.5g} {:>9.3f}\n",
             c.environment, c.sqrt_alpha, c.log_rho, c.levels, c.conditional ? "cond" : "alg1",
             c.facets_per_pixel, c.realizations, c.mean_ours, c.mean_ours_se, c.mean_gt,
-            c.mean_gt_realized, c.mean_rel_err, c.smooth_rel_err, c.variance_ratio,
-            c.mean_explicit, c.variance_ratio_explicit);
+            c.mean_gt_realized, c.mean_rel_err, c.smooth_rel_err, c.variance_ratio, c.mean_explicit,
+            c.variance_ratio_explicit);
         rows.push_back({{"environment", c.environment},
                         {"sqrt_alpha", c.sqrt_alpha},
                         {"log_rho", c.log_rho},
@@ -174,6 +175,11 @@ ValidationReport validate_kneiphof2025(const Kneiphof2025ValidationOptions& o) {
     report.details["seconds"] =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     return report;
+}
+
+// `glintlab validate kneiphof2025` (model_list.h).
+ValidationSuiteRunner kneiphof2025_validation_suite() {
+    return seeded_validation_suite<Kneiphof2025ValidationOptions, validate_kneiphof2025>();
 }
 
 }  // namespace glintlab

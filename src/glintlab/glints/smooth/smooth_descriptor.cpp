@@ -4,23 +4,22 @@
 
 namespace glintlab {
 
+const GpuModelHooks& smooth_gpu_hooks();  // smooth/smooth_gpu*.cpp
+
 GlintModelDescriptor smooth_descriptor() {
-    GlintModelDescriptor d;
-    d.id = GlintModelId::Smooth;
-    d.name = "smooth";
-    d.description =
+    GlintModelDescriptor d = make_glint_model_descriptor<SmoothParams>(
+        GlintModelId::Smooth, "smooth",
         "smooth microfacet BRDF (Cook-Torrance / Walter et al. 2007), the limit of every glint "
-        "model";
+        "model",
+        {GlintLightType::Point, GlintLightType::Directional, GlintLightType::Sphere,
+         GlintLightType::Environment});
     d.citations = {
         {"", "Walter, Marschner, Li, Torrance", 2007, "EGSR",
          "Microfacet Models for Refraction through Rough Surfaces"},
         {"", "Heitz", 2014, "JCGT 3(2)",
          "Understanding the Masking-Shadowing Function in Microfacet-Based BRDFs"},
     };
-    d.lights = {GlintLightType::Point, GlintLightType::Directional, GlintLightType::Sphere,
-                GlintLightType::Environment};
-    d.gpu = true;
-    d.default_params = [] { return GlintModelParams(SmoothParams{}); };
+    d.set_gpu_hooks(GLINTLAB_GPU_HOOKS(smooth_gpu_hooks));
     return d;
 }
 

@@ -8,6 +8,7 @@
 #include "glintlab/core/error.h"
 #include "glintlab/core/image.h"
 #include "glintlab/glints/explicit/explicit.h"
+#include "glintlab/glints/validation_suites.h"
 #include "glintlab/glints/wang2020/wang2020_beckmann.h"
 #include "glintlab/glints/wang2020/wang2020_shading.h"
 #include "glintlab/scene/environment.h"
@@ -271,6 +272,11 @@ ValidationReport validate_wang2020(const Wang2020ValidationOptions& opt) {
     report.check("nan_count", static_cast<double>(nan_count), "==", 0.0);
     report.check("memory_mb", tree_mb, "<=", 64.0);
     return report;
+}
+
+// `glintlab validate wang2020` (model_list.h).
+ValidationSuiteRunner wang2020_validation_suite() {
+    return seeded_validation_suite<Wang2020ValidationOptions, validate_wang2020>();
 }
 
 }  // namespace glintlab

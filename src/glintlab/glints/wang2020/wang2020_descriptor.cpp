@@ -34,19 +34,19 @@ void fit_wang2020(GlintDesc& desc) {
 
 }  // namespace
 
+const GpuModelHooks& wang2020_gpu_hooks();  // wang2020/wang2020_gpu*.cpp
+
 GlintModelDescriptor wang2020_descriptor() {
     namespace gp = glint_param;
     using P = Wang2020Params;
-    GlintModelDescriptor d;
-    d.id = GlintModelId::Wang2020;
-    d.name = "wang2020";
-    d.description = "prefiltered discrete stochastic microfacets, three-scale (Wang et al. 2020)";
+    GlintModelDescriptor d = make_glint_model_descriptor<P>(
+        GlintModelId::Wang2020, "wang2020",
+        "prefiltered discrete stochastic microfacets, three-scale (Wang et al. 2020)",
+        {GlintLightType::Point, GlintLightType::Directional, GlintLightType::Environment});
     d.citations = {{"001", "Wang, Deng, Holzschuch", 2020, "Computer Graphics Forum 39(6)",
                     "Real-Time Glints Rendering with Pre-Filtered Discrete Stochastic "
                     "Microfacets"}};
-    d.lights = {GlintLightType::Point, GlintLightType::Directional, GlintLightType::Environment};
-    d.gpu = true;
-    d.default_params = [] { return GlintModelParams(P{}); };
+    d.set_gpu_hooks(GLINTLAB_GPU_HOOKS(wang2020_gpu_hooks));
     d.params = {
         gp::number("gamma_deg", &P::gamma_deg, 1.0, 30.0, "deg",
                    "search cone half-angle gamma (001 §3.1)"),

@@ -8,9 +8,9 @@
 #include <glm/gtc/type_ptr.hpp>
 
 #include "glintlab/core/error.h"
+#include "glintlab/gl/uniform_cache.h"
 #include "glintlab/glints/wang2020/wang2020_model.h"
 #include "glintlab/glints/wang2020/wang2020_shading.h"
-#include "glintlab/realtime/uniform_cache.h"
 #include "glintlab/scene/scene.h"
 
 namespace glintlab::gl {

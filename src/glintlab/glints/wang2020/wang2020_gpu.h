@@ -17,7 +17,7 @@
 #include <memory>
 #include <string>
 
-#include "glintlab/realtime/gl_handles.h"
+#include "glintlab/gl/gl_handles.h"
 
 namespace glintlab {
 

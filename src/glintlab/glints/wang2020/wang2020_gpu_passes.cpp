@@ -7,11 +7,11 @@
 #include <epoxy/gl.h>
 
 #include "glintlab/core/error.h"
+#include "glintlab/gl/gl_handles.h"
+#include "glintlab/gl/gpu_timer.h"
 #include "glintlab/glints/wang2020/wang2020_gpu_blur.h"
 #include "glintlab/glints/wang2020/wang2020_model.h"
 #include "glintlab/glints/wang2020/wang2020_shading.h"
-#include "glintlab/realtime/gl_handles.h"
-#include "glintlab/realtime/gpu_timer.h"
 #include "glintlab/scene/scene.h"
 
 namespace glintlab::gl {

@@ -5,6 +5,7 @@
 
 #include <fmt/format.h>
 
+#include "glintlab/glints/validation_suites.h"
 #include "glintlab/glints/zirr2016/zirr2016_experiments.h"
 
 namespace glintlab {
@@ -84,6 +85,11 @@ ValidationReport validate_zirr2016(const Zirr2016ValidationOptions& o) {
     report.details["seconds"] =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     return report;
+}
+
+// `glintlab validate zirr2016` (model_list.h).
+ValidationSuiteRunner zirr2016_validation_suite() {
+    return seeded_validation_suite<Zirr2016ValidationOptions, validate_zirr2016>();
 }
 
 }  // namespace glintlab

@@ -4,18 +4,18 @@
 
 namespace glintlab {
 
+const GpuModelHooks& zirr2016_gpu_hooks();  // zirr2016/zirr2016_gpu*.cpp
+
 GlintModelDescriptor zirr2016_descriptor() {
     namespace gp = glint_param;
     using P = Zirr2016Params;
-    GlintModelDescriptor d;
-    d.id = GlintModelId::Zirr2016;
-    d.name = "zirr2016";
-    d.description = "MIP-grid binomial counting with output blending (Zirr & Kaplanyan 2016)";
+    GlintModelDescriptor d = make_glint_model_descriptor<P>(
+        GlintModelId::Zirr2016, "zirr2016",
+        "MIP-grid binomial counting with output blending (Zirr & Kaplanyan 2016)",
+        {GlintLightType::Point, GlintLightType::Directional});
     d.citations = {{"", "Zirr, Kaplanyan", 2016, "I3D 2016",
                     "Real-time Rendering of Procedural Multiscale Materials"}};
-    d.lights = {GlintLightType::Point, GlintLightType::Directional};
-    d.gpu = true;
-    d.default_params = [] { return GlintModelParams(P{}); };
+    d.set_gpu_hooks(GLINTLAB_GPU_HOOKS(zirr2016_gpu_hooks));
     d.params = {
         gp::microfacet_roughness(
             &P::microfacet_roughness,

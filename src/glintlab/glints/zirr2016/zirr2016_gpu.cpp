@@ -4,8 +4,8 @@
 
 #include <epoxy/gl.h>
 
+#include "glintlab/gl/uniform_cache.h"
 #include "glintlab/glints/gpu_model_hooks.h"
-#include "glintlab/realtime/uniform_cache.h"
 #include "glintlab/scene/scene.h"
 
 namespace glintlab {

@@ -1,9 +1,9 @@
-#include "glintlab/realtime/gl_program.h"
+#include "glintlab/gl/gl_program.h"
 
 #include <vector>
 
 #include "glintlab/core/error.h"
-#include "glintlab/realtime/gl_handles.h"
+#include "glintlab/gl/gl_handles.h"
 
 namespace glintlab::gl {
 namespace {

@@ -1,4 +1,4 @@
-#include "glintlab/realtime/gl_context.h"
+#include "glintlab/gl/gl_context.h"
 
 #include <dlfcn.h>
 #include <link.h>

@@ -1,4 +1,4 @@
-#include "glintlab/realtime/uniform_cache.h"
+#include "glintlab/gl/uniform_cache.h"
 
 #include <epoxy/gl.h>
 

@@ -1,4 +1,4 @@
-#include "glintlab/realtime/gpu_timer.h"
+#include "glintlab/gl/gpu_timer.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,4 +1,4 @@
-// Move-only owners of OpenGL object names (internal to realtime/: includes
+// Move-only owners of OpenGL object names (for the OpenGL code only: includes
 // libepoxy). Each deletes its object with the matching glDelete* call.
 #pragma once
 
