@@ -12,6 +12,7 @@
 #include <map>
 #include <set>
 #include <sstream>
+#include <utility>
 
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
@@ -236,6 +237,19 @@ TEST(Export, BadRequestsAreClearErrors) {
     }
 }
 
+// Exports kneiphof2025 (GLSL ES) with the maps of `env` into `out_dir`;
+// returns the options used and the manifest.
+std::pair<ExportOptions, nlohmann::json> export_kneiphof2025_with_env(const fs::path& out_dir,
+                                                                      const fs::path& env) {
+    ExportOptions o;
+    o.model = "kneiphof2025";
+    o.language = ExportLanguage::GlslEs;
+    o.out_dir = out_dir;
+    o.environment = env;
+    export_model(o);
+    return {o, nlohmann::json::parse(slurp(o.out_dir / "kneiphof2025.glsles.manifest.json"))};
+}
+
 // --env: kneiphof2025's prefiltered maps for a given environment, for hosts
 // without compute shaders. A constant environment of radiance c: the
 // prefiltered radiance is c at every texel and layer (the kernel's weights
@@ -244,14 +258,7 @@ TEST(Export, Kneiphof2025EnvironmentMapsOfAConstantEnvironment) {
     testing::ScratchDir dir;
     const fs::path env = dir / "env.exr";
     write_image(Image(32, 16, glm::vec3(0.5f, 1.0f, 2.0f)), env);
-    ExportOptions o;
-    o.model = "kneiphof2025";
-    o.language = ExportLanguage::GlslEs;
-    o.out_dir = dir / "out";
-    o.environment = env;
-    export_model(o);
-    const nlohmann::json j =
-        nlohmann::json::parse(slurp(o.out_dir / "kneiphof2025.glsles.manifest.json"));
+    const auto [o, j] = export_kneiphof2025_with_env(dir / "out", env);
     std::set<std::string> uniforms;
     for (const auto& r : j.at("resources")) uniforms.insert(r.at("uniform").get<std::string>());
     for (const char* u : {"kneiphof2025_dfg_lut", "kneiphof2025_radiance_layers",
@@ -289,14 +296,7 @@ TEST(Export, Kneiphof2025EnvironmentMapsCarryTheSun) {
     for (int y = 15; y <= 16; ++y)
         for (int x = 95; x <= 96; ++x) sky.at(x, y) = glm::vec3(5000.0f, 4000.0f, 3000.0f);
     write_image(sky, env);
-    ExportOptions o;
-    o.model = "kneiphof2025";
-    o.language = ExportLanguage::GlslEs;
-    o.out_dir = dir / "out";
-    o.environment = env;
-    export_model(o);
-    const nlohmann::json j =
-        nlohmann::json::parse(slurp(o.out_dir / "kneiphof2025.glsles.manifest.json"));
+    const auto [o, j] = export_kneiphof2025_with_env(dir / "out", env);
     std::map<std::string, nlohmann::json> derived;
     for (const auto& u : j.at("derived_uniforms")) derived[u.at("uniform")] = u.at("value");
     EXPECT_EQ(derived.at("u_kneiphof2025_smooth"), 2);  // KNEIPHOF2025_SMOOTH_LOBE_SUN
