@@ -1,8 +1,10 @@
 #include <fmt/format.h>
 
 #include "commands.h"
+#include "glintlab/core/error.h"
 #include "glintlab/glints/validation_suites.h"
 #include "glintlab/validate/report.h"
+#include "glintlab/validate/robustness_suite.h"
 
 namespace glintlab::cmd {
 namespace {
@@ -11,6 +13,7 @@ struct ValidateArgs {
     std::string suite;
     bool json = false;
     int64_t seed = 1;
+    std::vector<std::string> models;  // robustness only: a subset of its models
 };
 
 }  // namespace
@@ -25,9 +28,21 @@ void add_validate_command(CLI::App& app, int* status) {
     sub->add_flag("--json", args->json, "Print one JSON object (docs/VALIDATION.md)");
     sub->add_option("--seed", args->seed, "Random seed")
         ->check(CLI::Range(int64_t{0}, int64_t{1} << 40));
+    sub->add_option("--models", args->models,
+                    "robustness: only these models, each with its full-suite share of the "
+                    "10^7 evaluations (per-model runs add up to the full suite)");
     sub->callback([args, status] {
-        const ValidationReport report =
-            run_validation_suite(args->suite, static_cast<uint64_t>(args->seed));
+        if (!args->models.empty() && args->suite != "robustness")
+            fail("validate {}: --models applies to the robustness suite only", args->suite);
+        ValidationReport report;
+        if (args->models.empty()) {
+            report = run_validation_suite(args->suite, static_cast<uint64_t>(args->seed));
+        } else {
+            RobustnessSuiteOptions o;
+            o.seed = static_cast<uint64_t>(args->seed);
+            o.models = args->models;
+            report = validate_robustness(o);
+        }
         if (args->json)
             fmt::print("{}\n", report.to_json().dump(2));
         else

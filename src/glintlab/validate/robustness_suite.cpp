@@ -7,6 +7,7 @@
 #include <mutex>
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 #include <tbb/parallel_for.h>
 #include <nlohmann/json.hpp>
 
@@ -363,7 +364,15 @@ RobustnessModelResult sweep_model(const ModelSweep& m, int64_t evaluations, uint
 std::vector<RobustnessModelResult> run_robustness(const RobustnessSuiteOptions& options) {
     std::vector<ModelSweep> all = sweeps();
     double total_weight = 0.0;
-    for (const ModelSweep& m : all) total_weight += m.weight;
+    std::vector<std::string> known;
+    for (const ModelSweep& m : all) {
+        total_weight += m.weight;
+        known.push_back(m.model);
+    }
+    for (const std::string& name : options.models)
+        if (std::find(known.begin(), known.end(), name) == known.end())
+            fail("validate robustness: unknown model \"{}\" (models: {})", name,
+                 fmt::format("{}", fmt::join(known, ", ")));
     std::vector<RobustnessModelResult> results;
     for (const ModelSweep& m : all) {
         if (!options.models.empty() && std::find(options.models.begin(), options.models.end(),

@@ -22,7 +22,11 @@ struct RobustnessSuiteOptions {
     // Total evaluations over all models (shared out by each model's weight,
     // docs/VALIDATION.md); the test suite runs ~1e5.
     int64_t evaluations = 10'000'000;
-    std::vector<std::string> models;  // empty: every model
+    // Empty: every model. Each model gets the evaluations it gets in the full
+    // suite (its share of `evaluations` by weight, whatever else is chosen),
+    // with the same draws, so per-model runs add up to the full one.
+    // An unknown name is an error listing the models.
+    std::vector<std::string> models;
     // The test suite's version: models that build tables per material
     // (wang2020) sweep only their material whose tables build in seconds
     // (roughness 1, log density 0; roughness 0.02 takes ~1.5 min).

@@ -2,6 +2,11 @@
 
 #include <gtest/gtest.h>
 
+#include <string>
+#include <vector>
+
+#include "glintlab/core/error.h"
+
 namespace glintlab {
 namespace {
 
@@ -50,6 +55,37 @@ TEST(RobustnessSuite, ReportHasOneCheckPerModel) {
     const nlohmann::json j = r.to_json();
     ASSERT_EQ(j.at("models").size(), 2u);
     EXPECT_GE(j.at("models")[0].at("evaluations").get<int64_t>(), 64);
+}
+
+// `validate robustness --models`: a model run alone gets the evaluations and
+// draws it gets among others (its share by weight of the whole suite, the
+// same seed), so per-model runs add up to the full suite; an unknown name is
+// an error listing the models.
+TEST(RobustnessSuite, AModelAloneGetsItsShareOfTheWholeSuite) {
+    RobustnessSuiteOptions both;
+    both.evaluations = 20'000;
+    both.seed = 3;
+    both.models = {"smooth", "zirr2016"};
+    const std::vector<RobustnessModelResult> together = run_robustness(both);
+    ASSERT_EQ(together.size(), 2u);
+    RobustnessSuiteOptions alone = both;
+    alone.models = {"zirr2016"};
+    const std::vector<RobustnessModelResult> single = run_robustness(alone);
+    ASSERT_EQ(single.size(), 1u);
+    EXPECT_EQ(single[0].model, "zirr2016");
+    EXPECT_EQ(single[0].evaluations, together[1].evaluations);
+    EXPECT_EQ(single[0].bad_values, together[1].bad_values);
+    EXPECT_EQ(single[0].refused, together[1].refused);
+
+    alone.models = {"zirr2017"};
+    try {
+        run_robustness(alone);
+        FAIL() << "expected an error";
+    } catch (const Error& e) {
+        const std::string m = e.what();
+        EXPECT_NE(m.find("\"zirr2017\""), std::string::npos) << m;
+        EXPECT_NE(m.find("zirr2016"), std::string::npos) << m;
+    }
 }
 
 }  // namespace
