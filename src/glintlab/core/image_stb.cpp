@@ -20,6 +20,7 @@
 #include <limits>
 #include <memory>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "glintlab/core/error.h"
@@ -177,8 +178,26 @@ Image read_radiance_hdr(const std::filesystem::path& path) {
     return image;
 }
 
+// stb guesses the format from the content and would parse any it knows
+// (PNM, BMP, GIF, PSD, TGA, PIC besides PNG and JPEG) whatever the file is
+// called. Those header readers are not hardened (the PNM one overflowed an
+// int on a long width: fuzz/regressions/image/pnm_width_int_overflow.png),
+// so only the documented PNG and JPEG reach stb.
+static void require_png_or_jpeg_signature(const std::string& bytes,
+                                          const std::filesystem::path& path) {
+    static constexpr std::string_view kPng("\x89PNG\r\n\x1a\n", 8);
+    static constexpr std::string_view kJpeg("\xff\xd8\xff", 3);
+    if (!bytes.starts_with(kPng) && !bytes.starts_with(kJpeg))
+        fail(
+            "{}: cannot read PNG/JPEG file: it has neither the PNG signature nor the JPEG "
+            "start-of-image marker (stb's other formats are not read)",
+            path.string());
+}
+
 Image read_srgb_8bit_or_16bit(const std::filesystem::path& path) {
     const std::string name = path.string();
+    const std::string bytes = read_file_bytes(path);
+    require_png_or_jpeg_signature(bytes, path);
     int w = 0, h = 0, channels_in_file = 0;
     // stbi_loadf would linearise with a pure 2.2 gamma; load the integer codes instead and
     // apply the exact sRGB curve. Grey and grey+alpha files are expanded to RGB by stb.
@@ -186,7 +205,7 @@ Image read_srgb_8bit_or_16bit(const std::filesystem::path& path) {
     // counted as as much again).
     if (stbi_info(name.c_str(), &w, &h, &channels_in_file))
         require_image_memory(path, "PNG/JPEG image", w, h, 12);
-    check_png_chunk_lengths(read_file_bytes(path), path);
+    check_png_chunk_lengths(bytes, path);
     Image image;
     if (stbi_is_16_bit(name.c_str())) {
         std::unique_ptr<stbi_us, StbFree> data(

@@ -162,6 +162,16 @@ TEST(ImageErrors, MissingUnknownEmptyAndCorruptFilesNameTheFile) {
         std::ofstream(dir / name) << "this is not an image file at all, just some text\n";
         expect_error([&] { read_image(dir / name); }, {name, "cannot read"});
     }
+    // stb reads ten formats by content; only PNG and JPEG reach it. A PNM
+    // header whose width overflows an int (undefined behaviour in stb's
+    // reader, found by the image fuzzer) under a .png name, and a BMP: both
+    // refused before stb parses them.
+    std::ofstream(dir / "pnm.png", std::ios::binary) << "P5\n"
+                                                     << std::string(40, '1') << " 1\n255\n";
+    expect_error([&] { read_image(dir / "pnm.png"); },
+                 {"pnm.png: cannot read PNG/JPEG file: it has neither the PNG signature"});
+    std::ofstream(dir / "bmp.jpg", std::ios::binary) << "BM" << std::string(60, '\0');
+    expect_error([&] { read_image(dir / "bmp.jpg"); }, {"bmp.jpg", "cannot read PNG/JPEG"});
     // A valid PNG under a .hdr name is not silently reinterpreted.
     write_png(Image(2, 2, glm::vec3(0.5f)), dir / "real.png");
     std::filesystem::copy_file(dir / "real.png", dir / "fake.hdr");
