@@ -42,31 +42,57 @@ struct StbFree {
 
 namespace {
 
+// Advances `pos` over one header line as stb_image's Radiance reader
+// (stbi__hdr_gettoken) reads it, and returns the line's first character
+// ('\0' for an empty line). stb ends the header at the first line whose
+// first character is '\0' — an empty line, but also a line starting with
+// a NUL byte or the end of the file — and a line longer than 1023 bytes is
+// cut there and skipped to its newline. The pixel walk below must start
+// where stb's decoder starts: a walker that looked for the first empty line
+// instead let a header with a NUL-led line hide a truncated RLE scanline
+// from the check, and stb then read zero run counts past the end of the
+// file forever (libFuzzer's timeout; fuzz/regressions/image/
+// hdr_nul_header_line_hang.hdr).
+char stb_header_line(const std::string& bytes, size_t& pos) {
+    const size_t n = bytes.size();
+    auto get8 = [&]() -> char { return pos < n ? bytes[pos++] : '\0'; };
+    std::string line;
+    char c = get8();
+    // stb tests for the end after reading: the file's last byte is dropped
+    // from a line that has no newline.
+    while (pos < n && c != '\n') {
+        line.push_back(c);
+        if (line.size() == 1023) {
+            while (pos < n && get8() != '\n') {
+            }
+            break;
+        }
+        c = get8();
+    }
+    return line.empty() ? '\0' : line[0];
+}
+
 // stb_image's Radiance decoder loops forever on a run count of 0 in an RLE
 // scanline, and 0 is what it reads past the end of the file (stbi__get8),
 // so a truncated .hdr hung the reader (found by the image fuzzer); a flat
 // (not run-length encoded) file that ends early decoded its missing pixels
 // as black without a word. So the pixel data is walked first as stb decodes
-// it: after the header (lines up to an empty one) and the resolution line,
-// widths in [8, 32768) are RLE scanlines "2 2 hi lo" (lo + 256 hi = width),
-// then per channel runs: a count above 128 repeats the next byte count − 128
-// times, a count up to 128 is followed by that many bytes; other widths, or a
-// scanline not starting with 2 2, are flat from there (4 bytes a pixel for
-// the whole image, as stb restarts). A zero count or data ending before the
-// last pixel is an error naming the file and the scanline; what stb itself
-// rejects (wrong scanline length, runs past the width) is left to it.
+// it: the header is read line by line exactly as stb tokenizes it (see
+// stb_header_line), then widths in [8, 32768) are RLE scanlines "2 2 hi lo"
+// (lo + 256 hi = width), then per channel runs: a count above 128 repeats
+// the next byte count − 128 times, a count up to 128 is followed by that
+// many bytes; other widths, or a scanline not starting with 2 2, are flat
+// from there (4 bytes a pixel for the whole image, as stb restarts). A zero
+// count or data ending before the last pixel is an error naming the file
+// and the scanline; what stb itself rejects (wrong scanline length, runs
+// past the width) is left to it.
 void check_radiance_pixel_data(const std::string& bytes, int width, int height,
                                const std::filesystem::path& path) {
     size_t pos = 0;
-    for (bool empty = false; !empty;) {  // header lines up to an empty one
-        const size_t end = bytes.find('\n', pos);
-        if (end == std::string::npos) return;
-        empty = end == pos;
-        pos = end + 1;
+    stb_header_line(bytes, pos);                   // "#?RADIANCE"
+    while (stb_header_line(bytes, pos) != '\0') {  // header lines
     }
-    const size_t resolution_end = bytes.find('\n', pos);
-    if (resolution_end == std::string::npos) return;
-    pos = resolution_end + 1;
+    stb_header_line(bytes, pos);  // "-Y height +X width"
     const size_t n = bytes.size();
     auto truncated = [&](int scanline) {
         fail(
@@ -124,19 +150,30 @@ std::string read_file_bytes(const std::filesystem::path& path) {
     return bytes;
 }
 
-// stb_image's PNG reader grows its compressed-data buffer to the length an
-// IDAT chunk declares before reading the chunk, so a 175-byte PNG declaring
-// a 1 GB IDAT allocated 1 GB (found by the image fuzzer). The chunks
-// (big-endian length, type, data, CRC; PNG specification §5.3) are walked
-// first: a declared length beyond the end of the file is an error naming
-// the file and the chunk. Not a PNG: nothing to check here.
-void check_png_chunk_lengths(const std::string& bytes, const std::filesystem::path& path) {
-    if (bytes.size() < 8 || bytes.compare(0, 8, "\x89PNG\r\n\x1a\n") != 0) return;
+// The bytes of a PNG file as stb_image may read them, after two checks of
+// its chunks (big-endian length, type, data, CRC; PNG specification §5.3):
+// - stb grows its compressed-data buffer to the length an IDAT chunk
+//   declares before reading the chunk, so a 175-byte PNG declaring a 1 GB
+//   IDAT allocated 1 GB (found by the image fuzzer): a declared length beyond
+//   the end of the file is an error naming the file and the chunk.
+// - stb copies an IDAT chunk's data to the end of its buffer with memcpy,
+//   and before the first non-empty IDAT that buffer is a null pointer, so a
+//   zero-length first IDAT was a memcpy to null (UB; found by the image
+//   fuzzer, fuzz/regressions/image/png_empty_first_idat.png). An empty IDAT
+//   adds nothing to the compressed stream (the stream is the concatenation
+//   of the IDAT contents, §10.1), so empty IDAT chunks are dropped from the
+//   bytes handed to stb: the decoded image is the same.
+// Not a PNG: returned unchanged.
+std::string png_bytes_for_stb(const std::string& bytes, const std::filesystem::path& path) {
+    if (bytes.size() < 8 || bytes.compare(0, 8, "\x89PNG\r\n\x1a\n") != 0) return bytes;
+    std::string kept = bytes.substr(0, 8);
     size_t pos = 8;
     while (bytes.size() - pos >= 8) {
+        const size_t chunk_start = pos;
         uint32_t length = 0;
         for (int b = 0; b < 4; ++b) length = length << 8 | uint8_t(bytes[pos + b]);
-        std::string type = bytes.substr(pos + 4, 4);
+        const std::string raw_type = bytes.substr(pos + 4, 4);
+        std::string type = raw_type;
         for (char& c : type)
             if (!std::isalpha(static_cast<unsigned char>(c))) c = '?';
         pos += 8;
@@ -145,9 +182,76 @@ void check_png_chunk_lengths(const std::string& bytes, const std::filesystem::pa
                 "{}: cannot read PNG file: chunk '{}' declares {} bytes but only {} bytes of the "
                 "file follow it",
                 path.string(), type, length, bytes.size() - pos);
-        if (type == "IEND") return;
         pos += length;
         pos += std::min<size_t>(4, bytes.size() - pos);  // CRC
+        if (raw_type != "IDAT" || length != 0) kept.append(bytes, chunk_start, pos - chunk_start);
+        if (raw_type == "IEND") return kept;
+    }
+    kept.append(bytes, pos, std::string::npos);  // a trailing fragment: stb reports it
+    return kept;
+}
+
+// stb_image's JPEG reader sums the 16 code-length counts of a Huffman table
+// (DHT segment, ITU-T T.81 §B.2.4.2) and writes that many entries into
+// 257-entry arrays without checking the sum, which a corrupt table puts at up
+// to 16 × 255 (found by the image fuzzer: a write past the array, UBSan's
+// index 257 out of bounds; fuzz/regressions/image/jpeg_dht_counts_over_256.jpg).
+// A valid table has at most 256 codes. So every DHT segment stb may read is
+// checked first: the file is walked as stb walks it — bytes other than 0xFF
+// between segments skipped one by one, fill bytes 0xFF skipped, a segment's
+// big-endian length counting itself; after a start-of-scan segment, the
+// entropy-coded data runs to the first 0xFF followed (after fill bytes) by a
+// byte that is neither 0 (stuffing) nor a restart marker RST0–7. Where stb's
+// own walk would stop earlier (an error, or its decoder ending a scan before
+// its data does), this walk goes on, so it checks every table stb reads and
+// possibly more; a table with more than 256 codes is an error naming the file.
+void check_jpeg_huffman_tables(const std::string& bytes, const std::filesystem::path& path) {
+    if (bytes.size() < 2 || uint8_t(bytes[0]) != 0xFF || uint8_t(bytes[1]) != 0xD8) return;
+    const size_t n = bytes.size();
+    auto at = [&](size_t i) -> unsigned {
+        return i < n ? uint8_t(bytes[i]) : 0u;
+    };  // stb: 0 at EOF
+    size_t pos = 2;
+    while (pos < n) {
+        if (at(pos) != 0xFF) {
+            ++pos;
+            continue;
+        }
+        while (pos < n && at(pos) == 0xFF) ++pos;
+        if (pos >= n) return;
+        const unsigned marker = at(pos++);
+        if (marker == 0xD9) return;                                                 // EOI
+        if (marker == 0x00 || marker == 0xD8 || (marker & 0xF8) == 0xD0) continue;  // no length
+        const unsigned length = at(pos) << 8 | at(pos + 1);
+        if (marker == 0xC4) {
+            size_t q = pos + 2;
+            long left = long(length) - 2;
+            while (left > 0) {
+                unsigned codes = 0;
+                for (size_t i = 0; i < 16; ++i) codes += at(q + 1 + i);
+                if ((at(q) >> 4) > 1 || (at(q) & 15) > 3) return;  // stb stops: bad DHT header
+                if (codes > 256)
+                    fail(
+                        "{}: cannot read JPEG file: a Huffman table (DHT segment at byte {}) "
+                        "declares {} codes, more than the 256 a table can hold (corrupt file)",
+                        path.string(), pos - 2, codes);
+                q += 17 + codes;
+                left -= long(17 + codes);
+            }
+            if (left != 0) return;  // stb stops: the tables overrun their segment
+        }
+        pos += length;
+        if (marker != 0xDA) continue;  // SOS: then the entropy-coded data
+        while (pos < n) {
+            if (at(pos) != 0xFF) {
+                ++pos;
+                continue;
+            }
+            size_t next = pos + 1;
+            while (next < n && at(next) == 0xFF) ++next;
+            if (next < n && at(next) != 0x00 && (at(next) & 0xF8) != 0xD0) break;
+            pos = next + 1;
+        }
     }
 }
 
@@ -157,20 +261,24 @@ Image read_radiance_hdr(const std::filesystem::path& path) {
     const std::string bytes = read_file_bytes(path);
     const auto* p = reinterpret_cast<const stbi_uc*>(bytes.data());
     const int size = static_cast<int>(bytes.size());
+    // Checked before anything is decoded: given a file without the RGBE
+    // header, stbi_loadf would run its other readers on it (those not
+    // hardened: see require_png_or_jpeg_signature) and convert their output.
+    if (!stbi_is_hdr_from_memory(p, size))
+        fail(
+            "{}: cannot read Radiance .hdr file: no RGBE header (the file does not start with "
+            "#?RADIANCE or #?RGBE and a newline)",
+            path.string());
     int w = 0, h = 0, channels_in_file = 0;
-    if (stbi_is_hdr_from_memory(p, size) &&
-        stbi_info_from_memory(p, size, &w, &h, &channels_in_file)) {
-        // stb decodes into 3 floats a pixel (12 bytes) before the copy.
-        require_image_memory(path, "Radiance .hdr image", w, h, 12);
-        check_radiance_pixel_data(bytes, w, h, path);
-    }
+    if (!stbi_info_from_memory(p, size, &w, &h, &channels_in_file))
+        fail_decode(path, "Radiance .hdr");
+    // stb decodes into 3 floats a pixel (12 bytes) before the copy.
+    require_image_memory(path, "Radiance .hdr image", w, h, 12);
+    check_radiance_pixel_data(bytes, w, h, path);
     // Radiance RGBE is linear already; stbi_loadf applies no transfer curve to .hdr input.
     std::unique_ptr<float, StbFree> data(
         stbi_loadf_from_memory(p, size, &w, &h, &channels_in_file, 3));
     if (!data) fail_decode(path, "Radiance .hdr");
-    // stb would silently accept an 8-bit image here and invent a gamma for it.
-    if (!stbi_is_hdr_from_memory(p, size))
-        fail("{}: not a Radiance .hdr file (no RGBE header)", path.string());
     Image image(w, h);
     for (size_t i = 0; i < image.pixels.size(); ++i)
         image.pixels[i] =
@@ -195,28 +303,30 @@ static void require_png_or_jpeg_signature(const std::string& bytes,
 }
 
 Image read_srgb_8bit_or_16bit(const std::filesystem::path& path) {
-    const std::string name = path.string();
-    const std::string bytes = read_file_bytes(path);
-    require_png_or_jpeg_signature(bytes, path);
+    const std::string file_bytes = read_file_bytes(path);
+    require_png_or_jpeg_signature(file_bytes, path);
+    const std::string bytes = png_bytes_for_stb(file_bytes, path);
+    check_jpeg_huffman_tables(bytes, path);
+    const auto* p = reinterpret_cast<const stbi_uc*>(bytes.data());
+    const int size = static_cast<int>(bytes.size());
     int w = 0, h = 0, channels_in_file = 0;
     // stbi_loadf would linearise with a pure 2.2 gamma; load the integer codes instead and
     // apply the exact sRGB curve. Grey and grey+alpha files are expanded to RGB by stb.
     // stb decodes into up to 3 x 16 bits a pixel (plus its own row buffers,
     // counted as as much again).
-    if (stbi_info(name.c_str(), &w, &h, &channels_in_file))
+    if (stbi_info_from_memory(p, size, &w, &h, &channels_in_file))
         require_image_memory(path, "PNG/JPEG image", w, h, 12);
-    check_png_chunk_lengths(bytes, path);
     Image image;
-    if (stbi_is_16_bit(name.c_str())) {
+    if (stbi_is_16_bit_from_memory(p, size)) {
         std::unique_ptr<stbi_us, StbFree> data(
-            stbi_load_16(name.c_str(), &w, &h, &channels_in_file, 3));
+            stbi_load_16_from_memory(p, size, &w, &h, &channels_in_file, 3));
         if (!data) fail_decode(path, "16-bit PNG");
         image = Image(w, h);
         for (size_t i = 0; i < 3 * image.pixels.size(); ++i)
             image.pixels[i / 3][int(i % 3)] = srgb_decode(float(data.get()[i]) / 65535.0f);
     } else {
         std::unique_ptr<stbi_uc, StbFree> data(
-            stbi_load(name.c_str(), &w, &h, &channels_in_file, 3));
+            stbi_load_from_memory(p, size, &w, &h, &channels_in_file, 3));
         if (!data) fail_decode(path, "PNG/JPEG");
         image = Image(w, h);
         float table[256];  // 256 codes: decode each once

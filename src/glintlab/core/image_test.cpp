@@ -1,8 +1,15 @@
 #include "glintlab/core/image.h"
 
+// A JPEG writer for the tests only (static: no clash with image_stb.cpp's).
+#define STB_IMAGE_WRITE_IMPLEMENTATION
+#define STB_IMAGE_WRITE_STATIC
+#include <stb/stb_image_write.h>
+
 #include <cmath>
 #include <fstream>
+#include <iterator>
 #include <string>
+#include <vector>
 
 #include <OpenEXR/ImfChannelList.h>
 #include <OpenEXR/ImfFrameBuffer.h>
@@ -284,6 +291,89 @@ TEST(ImageErrors, TruncatedOrCorruptHdrIsAnErrorNotAHang) {
     flat += std::string(4 * 4 * 2, '\x40');
     std::ofstream(dir / "flat.hdr", std::ios::binary) << flat;
     expect_error([&] { read_image(dir / "flat.hdr"); }, {"flat.hdr", "scanline 2 of 3"});
+}
+
+std::string read_bytes(const std::filesystem::path& path) {
+    std::ifstream in(path, std::ios::binary);
+    return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+}
+
+void expect_same_pixels(const Image& a, const Image& b) {
+    ASSERT_EQ(a.width, b.width);
+    ASSERT_EQ(a.height, b.height);
+    for (size_t i = 0; i < a.pixels.size(); ++i) ASSERT_EQ(a.pixels[i], b.pixels[i]) << i;
+}
+
+// The image fuzzer's timeout: stb ends a .hdr header at a line starting with
+// a NUL byte, not only at an empty line, and the pre-decode walk must start
+// the pixel data where stb does.
+TEST(ImageErrors, HdrHeaderEndsWhereStbEndsIt) {
+    ScratchDir dir;
+    write_hdr(ramp_image(16, 6), dir / "plain.hdr");
+    std::string bytes = read_bytes(dir / "plain.hdr");
+    const size_t blank = bytes.find("\n\n");
+    ASSERT_NE(blank, std::string::npos);
+    bytes.replace(blank, 2, std::string("\n\0 NUL-led line\n", 16));
+    std::ofstream(dir / "nul.hdr", std::ios::binary) << bytes;
+    expect_same_pixels(read_image(dir / "nul.hdr"), read_image(dir / "plain.hdr"));
+    bytes.resize(bytes.size() - 20);
+    std::ofstream(dir / "nul_cut.hdr", std::ios::binary) << bytes;
+    expect_error([&] { read_image(dir / "nul_cut.hdr"); },
+                 {"nul_cut.hdr", "the pixel data ends in scanline", "(truncated file)"});
+}
+
+// The image fuzzer's UB: stb memcpy'd a zero-length first IDAT to a null
+// buffer. Empty IDAT chunks add nothing to the compressed stream: a file
+// with them decodes as the file without.
+TEST(ImagePng, EmptyIdatChunksDecodeAsTheFileWithout) {
+    ScratchDir dir;
+    write_png(ramp_image(9, 5), dir / "plain.png");
+    std::string bytes = read_bytes(dir / "plain.png");
+    const size_t idat = bytes.find("IDAT");
+    ASSERT_NE(idat, std::string::npos);
+    const std::string empty_idat("\0\0\0\0IDAT\x35\xaf\x06\x1e", 12);  // length 0, CRC
+    bytes.insert(idat - 4, empty_idat);                                // before the first IDAT
+    bytes.insert(bytes.find("IEND") - 4, empty_idat);                  // and after the last
+    std::ofstream(dir / "empty_idat.png", std::ios::binary) << bytes;
+    expect_same_pixels(read_image(dir / "empty_idat.png"), read_image(dir / "plain.png"));
+    // Only empty IDATs: no image data, an error naming the file.
+    const size_t first = bytes.find("IDAT", bytes.find("IDAT") + 4) - 4;
+    size_t length = 0;
+    for (int b = 0; b < 4; ++b) length = length << 8 | uint8_t(bytes[first + size_t(b)]);
+    bytes.erase(first, 12 + length);
+    std::ofstream(dir / "no_idat.png", std::ios::binary) << bytes;
+    expect_error([&] { read_image(dir / "no_idat.png"); }, {"no_idat.png", "cannot read"});
+}
+
+// The image fuzzer's out-of-bounds write: stb fills 257-entry arrays with as
+// many Huffman codes as a DHT segment declares. A table declaring more than
+// 256 is an error; bytes that only look like a DHT inside another segment
+// (here an APP15 payload) are skipped with their segment, as stb skips them.
+TEST(ImageErrors, JpegHuffmanTableWithMoreThan256CodesIsAnError) {
+    ScratchDir dir;
+    std::vector<uint8_t> rgb(3 * 16 * 8);
+    for (size_t i = 0; i < rgb.size(); ++i) rgb[i] = uint8_t(i * 7);
+    const std::string plain = (dir / "plain.jpg").string();
+    ASSERT_TRUE(stbi_write_jpg(plain.c_str(), 16, 8, 3, rgb.data(), 90));
+    const Image reference = read_image(plain);
+    EXPECT_EQ(reference.width, 16);
+    std::string bytes = read_bytes(plain);
+    // An APP15 segment whose payload reads like a DHT with 16 x 255 codes.
+    std::string app("\xff\xef\x00\x18\xff\xc4\x00\x13\x00", 9);
+    app += std::string(16, '\xff');
+    app.resize(2 + 0x18);
+    std::string with_app = bytes;
+    with_app.insert(2, app);
+    std::ofstream(dir / "app.jpg", std::ios::binary) << with_app;
+    expect_same_pixels(read_image(dir / "app.jpg"), reference);
+    // The first real DHT's first count raised to 255: 255 + the others > 256.
+    const size_t dht = bytes.find("\xff\xc4");
+    ASSERT_NE(dht, std::string::npos);
+    bytes[dht + 5] = '\xff';
+    bytes[dht + 6] = '\xff';
+    std::ofstream(dir / "dht.jpg", std::ios::binary) << bytes;
+    expect_error([&] { read_image(dir / "dht.jpg"); },
+                 {"dht.jpg", "Huffman table", "more than the 256"});
 }
 
 TEST(ImageErrors, RejectsNonFinitePixelsOnReadWithCoordinates) {

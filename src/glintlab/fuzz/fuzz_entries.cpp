@@ -13,6 +13,12 @@
 #include <system_error>
 #include <vector>
 
+// The JPEG seed's writer (glintlab reads JPEG but writes none; static: no
+// clash with core/image_stb.cpp's copy).
+#define STB_IMAGE_WRITE_IMPLEMENTATION
+#define STB_IMAGE_WRITE_STATIC
+#include <stb/stb_image_write.h>
+
 #include <draco/compression/encode.h>
 #include <draco/mesh/mesh.h>
 #include <fmt/format.h>
@@ -302,6 +308,14 @@ Image height_image() {
     return image;
 }
 
+// A baseline JPEG of a 16 x 8 gradient (4:2:0, as stb writes below quality 90).
+void write_jpeg_seed(const fs::path& path) {
+    std::vector<unsigned char> rgb(3 * 16 * 8);
+    for (size_t i = 0; i < rgb.size(); ++i) rgb[i] = static_cast<unsigned char>((i * 37) % 251);
+    if (!stbi_write_jpg(path.string().c_str(), 16, 8, 3, rgb.data(), 80))
+        fail("{}: cannot write fuzzing seed", path.string());
+}
+
 void write_assets(const fs::path& dir) {
     write_file(dir / "mesh.obj", obj_quad());
     write_file(dir / "mesh.gltf", gltf_quad_json());
@@ -310,6 +324,7 @@ void write_assets(const fs::path& dir) {
     write_exr(environment_image(), dir / "env.exr");
     write_hdr(environment_image(), dir / "env.hdr");
     write_png(height_image(), dir / "height.png");
+    write_jpeg_seed(dir / "photo.jpg");
 }
 
 fs::path g_scratch;
@@ -510,6 +525,7 @@ size_t write_seeds(Target target, const fs::path& dir, const fs::path& source_di
             copy_asset("env.exr");
             copy_asset("env.hdr");
             copy_asset("height.png");
+            copy_asset("photo.jpg");
             break;
     }
     return count;
