@@ -88,6 +88,7 @@ class Kneiphof2025PrefilterCache : public ::testing::Test {
         std::filesystem::remove_all(dir_);
         ::setenv("GLINTLAB_CACHE_DIR", dir_.c_str(), 1);
         ::unsetenv("GLINTLAB_NO_CACHE");
+        set_disk_cache_enabled(true);
     }
     void TearDown() override {
         std::filesystem::remove_all(dir_);
