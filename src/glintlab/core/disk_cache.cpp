@@ -125,6 +125,14 @@ std::optional<std::vector<unsigned char>> disk_cache_load(std::string_view name,
     return std::nullopt;
 }
 
+void disk_cache_reject(std::string_view name, uint64_t key, std::string_view why) {
+    const std::filesystem::path file = disk_cache_file(name, key);
+    warn(fmt::format("table cache file {} is rejected ({}); it is removed and the table rebuilt",
+                     file.string(), why));
+    std::error_code ec;
+    std::filesystem::remove(file, ec);
+}
+
 bool disk_cache_store(std::string_view name, uint64_t key,
                       const std::vector<unsigned char>& payload) {
     if (!disk_cache_enabled()) return false;

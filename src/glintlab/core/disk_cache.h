@@ -54,6 +54,10 @@ std::filesystem::path disk_cache_file(std::string_view name, uint64_t key);
 // The payload stored under (name, key), or nullopt (absent, disabled, or
 // corrupt: then a warning names the file and it is removed).
 std::optional<std::vector<unsigned char>> disk_cache_load(std::string_view name, uint64_t key);
+// For a payload that disk_cache_load returned but that does not parse as the
+// table expects (a layout version or sizes that do not match its
+// parameters): warns, naming the file and `why`, and removes the file.
+void disk_cache_reject(std::string_view name, uint64_t key, std::string_view why);
 // Stores the payload atomically; returns false (after a warning) on failure.
 bool disk_cache_store(std::string_view name, uint64_t key,
                       const std::vector<unsigned char>& payload);

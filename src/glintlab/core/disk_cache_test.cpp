@@ -49,6 +49,19 @@ TEST_F(DiskCacheTest, StoreThenLoadReturnsTheSameBytes) {
     EXPECT_EQ(files, 1);
 }
 
+// A payload the table's parser refuses: disk_cache_reject warns, naming the
+// file and the reason, and removes it.
+TEST_F(DiskCacheTest, RejectWarnsAndRemoves) {
+    ASSERT_TRUE(disk_cache_store("t", 9, payload()));
+    ::testing::internal::CaptureStderr();
+    disk_cache_reject("t", 9, "sizes do not match");
+    const std::string err = ::testing::internal::GetCapturedStderr();
+    EXPECT_NE(err.find(disk_cache_file("t", 9).string()), std::string::npos);
+    EXPECT_NE(err.find("sizes do not match"), std::string::npos);
+    EXPECT_FALSE(std::filesystem::exists(disk_cache_file("t", 9)));
+    EXPECT_FALSE(disk_cache_load("t", 9).has_value());
+}
+
 // A flipped payload byte (checksum), a truncated file (size) and a foreign
 // header are never trusted: load returns nothing and removes the file.
 TEST_F(DiskCacheTest, CorruptOrTruncatedFilesAreRejectedAndRemoved) {

@@ -644,7 +644,8 @@ std::vector<ExportedFile> export_model(const ExportOptions& o) {
             Kneiphof2025PrefilterOptions po;
             po.levels = kp.levels;
             po.black_level = kp.black_level;
-            const Kneiphof2025Environment pre(*env, po);
+            const auto cached = Kneiphof2025Environment::load_or_build(*env, po);
+            const Kneiphof2025Environment& pre = *cached;
             const int layers = static_cast<int>(pre.mips().size());
             const int w = pre.mips()[0].width, h = pre.mips()[0].height;
             const int channels = pre.channels();

@@ -121,11 +121,7 @@ void parallel_rows(int rows, F&& f) {
     });
 }
 
-}  // namespace
-
-Kneiphof2025Environment::Kneiphof2025Environment(const EnvironmentMap& env,
-                                                 const Kneiphof2025PrefilterOptions& o)
-    : levels_(o.levels) {
+void check_options(const Kneiphof2025PrefilterOptions& o) {
     if (o.levels != 4 && o.levels != 8)
         fail("kneiphof2025: levels must be 4 or 8 (003 §4), got {}", o.levels);
     if (!(o.black_level >= 1e-8f && o.black_level <= 1.0f))
@@ -136,6 +132,22 @@ Kneiphof2025Environment::Kneiphof2025Environment(const EnvironmentMap& env,
         fail("kneiphof2025: mip_count must be in [2, 33], got {}", o.mip_count);
     if (o.samples < 1 || o.samples > 65536)
         fail("kneiphof2025: samples must be in [1, 65536], got {}", o.samples);
+}
+
+// The world direction of a direction in the map's own frame: the map's
+// rotation about +y (map_uv: world phi = map phi + rotation).
+glm::vec3 rotate_to_world(glm::vec3 d, float rotation_rad) {
+    const float c = std::cos(rotation_rad), s = std::sin(rotation_rad);
+    return glm::normalize(glm::vec3(d.x * c - d.z * s, d.y, d.z * c + d.x * s));
+}
+
+}  // namespace
+
+Kneiphof2025Environment::Kneiphof2025Environment(const EnvironmentMap& env,
+                                                 const Kneiphof2025PrefilterOptions& o,
+                                                 ProgressReporter* progress)
+    : levels_(o.levels) {
+    check_options(o);
     rotation_rad_ = glm::radians(env.rotation_deg());
     const int C = channels();
     // Internally one more channel: the sun's luminance (Kneiphof2025Sun),
@@ -165,6 +177,7 @@ Kneiphof2025Environment::Kneiphof2025Environment(const EnvironmentMap& env,
             t[2] = c.z;
             lum[size_t(y) * W + x] = std::max(luminance(c), 0.0f);
         }
+        if (progress) progress->update();
     });
 
     // Eq. 18: L^(1) = 0, L^(k) = exp(lerp(log lo, log hi, (k-1)/(K-1))) for
@@ -246,6 +259,7 @@ Kneiphof2025Environment::Kneiphof2025Environment(const EnvironmentMap& env,
                 float* out = &lvl.data[(size_t(y) * lvl.width + x) * C1];
                 for (int c = 0; c < C1; ++c) out[c] = wsum > 0.0f ? acc[c] / wsum : 0.0f;
             }
+            if (progress) progress->update();
         });
         mips_.push_back(std::move(lvl));
     }
@@ -316,10 +330,7 @@ void Kneiphof2025Environment::find_sun(const std::vector<float>& lum, int W, int
     if (!(l_power > 0.0f)) return;
     sun_.found = true;
     sun_.map_direction = axis;
-    // The map's rotation about +y (map_uv: world phi = map phi + rotation).
-    const float c = std::cos(rotation_rad_), s = std::sin(rotation_rad_);
-    sun_.direction =
-        glm::normalize(glm::vec3(axis.x * c - axis.z * s, axis.y, axis.z * c + axis.x * s));
+    sun_.direction = rotate_to_world(axis, rotation_rad_);
     sun_.power = glm::vec3(power);
     sun_.radius = radius + 0.5f * kPi / static_cast<float>(H);
     sun_.color = sun_.power / l_power;
@@ -509,7 +520,114 @@ glm::vec3 Kneiphof2025DfgLut::lookup(float cos_o, float roughness) const {
            (1 - tx) * ty * at(x0, y0 + 1) + tx * ty * at(x0 + 1, y0 + 1);
 }
 
-// --- cache -------------------------------------------------------------------
+// --- on-disk cache of the prefiltered maps ------------------------------------
+
+namespace {
+// Bumped whenever the constructor (or find_sun, partition, the kernel, the
+// radiance levels) changes what it computes, or write() / read() their layout.
+constexpr uint32_t kPrefilterTableVersion = 1;
+// The payload's own layout version, its first field (read() rejects others).
+constexpr uint32_t kPrefilterLayoutVersion = 1;
+static_assert(sizeof(glm::vec3) == 3 * sizeof(float));
+}  // namespace
+
+uint64_t Kneiphof2025Environment::cache_key(const EnvironmentMap& env,
+                                            const Kneiphof2025PrefilterOptions& o) {
+    CacheKey key(kCacheName, kPrefilterTableVersion);
+    const Image& img = env.image();
+    key.add(img.width).add(img.height);
+    key.add_bytes(img.pixels.data(), img.pixels.size() * sizeof(glm::vec3));
+    key.add(env.scale());
+    key.add(o.levels).add(o.black_level).add(o.base_width).add(o.mip_count).add(o.samples);
+    key.add(Kneiphof2025Sun::kSunContrast)
+        .add(Kneiphof2025Sun::kSunFraction)
+        .add(Kneiphof2025Sun::kSunConeDeg);
+    return key.value();
+}
+
+// Layout (native endianness, as every table cache): u32 layout version;
+// i32 K, width, height, level count; f32 radiance levels[8], min and max
+// luminance; the sun (u32 found, f32 map_direction[3], power[3], radius,
+// color[3]; its world direction is not stored: the rotation is not in the
+// key); then each level's data and each sun level's data as u64 count +
+// f32 values.
+void Kneiphof2025Environment::write(ByteWriter& out) const {
+    out.put(kPrefilterLayoutVersion);
+    out.put(int32_t(levels_));
+    out.put(int32_t(mips_.front().width));
+    out.put(int32_t(mips_.front().height));
+    out.put(int32_t(mips_.size()));
+    out.put(radiance_levels_);
+    out.put(min_luminance_);
+    out.put(max_luminance_);
+    out.put(uint32_t(sun_.found));
+    out.put(sun_.map_direction);
+    out.put(sun_.power);
+    out.put(sun_.radius);
+    out.put(sun_.color);
+    for (const Kneiphof2025Level& l : mips_) out.put_vector(l.data);
+    for (const Kneiphof2025Level& l : sun_mips_) out.put_vector(l.data);
+}
+
+bool Kneiphof2025Environment::read(ByteReader& in, const Kneiphof2025PrefilterOptions& o,
+                                   float rotation_deg) {
+    uint32_t version = 0, found = 0;
+    int32_t k = 0, w = 0, h = 0, count = 0;
+    if (!(in.get(version) && version == kPrefilterLayoutVersion && in.get(k) && in.get(w) &&
+          in.get(h) && in.get(count)))
+        return false;
+    if (k != o.levels || w != o.base_width || h != o.base_width / 2 || count != o.mip_count)
+        return false;
+    levels_ = k;
+    rotation_rad_ = glm::radians(rotation_deg);
+    if (!(in.get(radiance_levels_) && in.get(min_luminance_) && in.get(max_luminance_) &&
+          in.get(found) && found <= 1 && in.get(sun_.map_direction) && in.get(sun_.power) &&
+          in.get(sun_.radius) && in.get(sun_.color)))
+        return false;
+    sun_.found = found == 1;
+    if (sun_.found) sun_.direction = rotate_to_world(sun_.map_direction, rotation_rad_);
+    const size_t texels = size_t(w) * size_t(h);
+    auto read_levels = [&](std::vector<Kneiphof2025Level>& levels, size_t channels) {
+        levels.resize(size_t(count));
+        for (Kneiphof2025Level& l : levels) {
+            l.width = w;
+            l.height = h;
+            if (!in.get_vector(l.data) || l.data.size() != texels * channels) return false;
+        }
+        return true;
+    };
+    return read_levels(mips_, size_t(channels())) && read_levels(sun_mips_, 1) && in.at_end();
+}
+
+std::shared_ptr<const Kneiphof2025Environment> Kneiphof2025Environment::load_or_build(
+    const EnvironmentMap& env, const Kneiphof2025PrefilterOptions& o, bool* from_cache) {
+    check_options(o);
+    const uint64_t key = cache_key(env, o);
+    if (from_cache) *from_cache = false;
+    if (const auto bytes = disk_cache_load(kCacheName, key)) {
+        ByteReader in(*bytes);
+        std::shared_ptr<Kneiphof2025Environment> e(new Kneiphof2025Environment());
+        if (e->read(in, o, env.rotation_deg())) {
+            if (from_cache) *from_cache = true;
+            return e;
+        }
+        disk_cache_reject(kCacheName, key, "its maps do not have the sizes the options imply");
+    }
+    const int rows = o.base_width / 2;
+    ProgressReporter progress(int64_t(o.mip_count) * rows,
+                              fmt::format("kneiphof2025 prefiltered maps, K = {}, {} levels of "
+                                          "{}x{}, {} samples a texel (cached afterwards)",
+                                          o.levels, o.mip_count, o.base_width, rows, o.samples),
+                              false);
+    auto e = std::make_shared<const Kneiphof2025Environment>(env, o, &progress);
+    progress.done();
+    ByteWriter out;
+    e->write(out);
+    disk_cache_store(kCacheName, key, out.bytes);
+    return e;
+}
+
+// --- in-memory cache ---------------------------------------------------------
 
 std::shared_ptr<const Kneiphof2025Environment> kneiphof2025_environment_for(
     const std::shared_ptr<const EnvironmentMap>& env, int levels, float black_level) {
@@ -526,7 +644,7 @@ std::shared_ptr<const Kneiphof2025Environment> kneiphof2025_environment_for(
         Kneiphof2025PrefilterOptions o;
         o.levels = levels;
         o.black_level = black_level;
-        e.value = std::make_shared<const Kneiphof2025Environment>(*env, o);
+        e.value = Kneiphof2025Environment::load_or_build(*env, o);
         e.owner = env;
     }
     return e.value;

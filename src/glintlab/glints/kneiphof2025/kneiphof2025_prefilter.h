@@ -33,6 +33,8 @@
 
 namespace glintlab {
 
+class ByteReader;
+class ByteWriter;
 class EnvironmentMap;
 class ProgressReporter;
 
@@ -71,8 +73,27 @@ struct Kneiphof2025Level {
 class Kneiphof2025Environment {
   public:
     // Partitions and prefilters `env` (radiance = image x scale). Throws
-    // glintlab::Error for out-of-range options.
-    Kneiphof2025Environment(const EnvironmentMap& env, const Kneiphof2025PrefilterOptions& options);
+    // glintlab::Error for out-of-range options. With a progress reporter,
+    // one update per row of each level (mip_count x base_width / 2 in all).
+    Kneiphof2025Environment(const EnvironmentMap& env, const Kneiphof2025PrefilterOptions& options,
+                            ProgressReporter* progress = nullptr);
+
+    // The constructor through the on-disk table cache (core/disk_cache.h,
+    // file kCacheName-<key>.bin): a hit is the constructed environment bit
+    // for bit; otherwise it is built with a progress bar (on a terminal) and
+    // stored. *from_cache (if given) tells which. kneiphof2025_environment_for
+    // builds its maps this way.
+    static constexpr const char* kCacheName = "kneiphof2025_prefilter";
+    static std::shared_ptr<const Kneiphof2025Environment> load_or_build(
+        const EnvironmentMap& env, const Kneiphof2025PrefilterOptions& options,
+        bool* from_cache = nullptr);
+    // The key of every input the maps depend on: the image's size and
+    // pixels, the map's scale (applied before the prefilter), every
+    // Kneiphof2025PrefilterOptions field, the sun constants and a table
+    // version. Not the rotation: the maps are in the map's own frame, the
+    // rotation enters at lookup (and in sun().direction, set on load).
+    static uint64_t cache_key(const EnvironmentMap& env,
+                              const Kneiphof2025PrefilterOptions& options);
 
     int levels() const { return levels_; }
     int channels() const { return 3 + levels_; }
@@ -100,6 +121,12 @@ class Kneiphof2025Environment {
     void partition(float luminance, float* w) const;
 
   private:
+    Kneiphof2025Environment() = default;  // load_or_build's, filled by read()
+    // The payload of the cache file (a versioned layout, kneiphof2025_prefilter.cpp).
+    void write(ByteWriter& out) const;
+    // False (and *this unusable) for a payload whose layout, version or
+    // sizes do not match what `options` imply.
+    bool read(ByteReader& in, const Kneiphof2025PrefilterOptions& options, float rotation_deg);
     void fetch_channels(glm::vec3 dir, float roughness, float* out, int count) const;
     // Sets sun_ from the base level's luminance and writes the sun's texels'
     // luminance into the last of `stride` channels of `base`.
@@ -108,7 +135,7 @@ class Kneiphof2025Environment {
     void fetch_level(int level, glm::vec2 uv, float* out, int count) const;
 
     float rotation_rad_ = 0.0f;
-    int levels_;
+    int levels_ = 0;
     std::array<float, 8> radiance_levels_{};
     float min_luminance_ = 0.0f, max_luminance_ = 0.0f;
     std::vector<Kneiphof2025Level> mips_;
@@ -164,7 +191,8 @@ class Kneiphof2025DfgLut {
 float kneiphof2025_total_facet_area(float alpha);
 
 // The prefiltered environment of `env` for (K, black level), built on first
-// use and cached per EnvironmentMap (thread-safe; an entry whose map has been
+// use (through the on-disk cache, Kneiphof2025Environment::load_or_build) and
+// kept per EnvironmentMap (thread-safe; an entry whose map has been
 // destroyed is rebuilt for a new map at the same address).
 std::shared_ptr<const Kneiphof2025Environment> kneiphof2025_environment_for(
     const std::shared_ptr<const EnvironmentMap>& env, int levels, float black_level);
