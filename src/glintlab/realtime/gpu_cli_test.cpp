@@ -10,6 +10,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <map>
 
 #include <nlohmann/json.hpp>
 
@@ -377,6 +378,66 @@ TEST(GpuViewer, PanelFitsTheWindowUnderXvfb) {
         EXPECT_GT(mean_frame / (65.0 * 65.0), 0.005);
         EXPECT_NEAR(mean_window / mean_frame, 1.0, 0.05);
     }
+}
+
+// `glintlab compare --gpu` (issue 15): every real-time model of a point +
+// directional light scene renders on the GPU (backend "gpu"), the truth on
+// the CPU, and each GPU row's masked mean equals the same model's CPU row:
+// at 1 spp both shade the pixel centres, so they differ by the GPU ports'
+// arithmetic (measured within 0.6 % at 48x48; the limit is GpuVsCpu's 3 %
+// image-mean tolerance, docs/VALIDATION.md "CPU vs GPU"). At 4 spp the CPU
+// jitters its samples over the pixel and the GPU does not; the mask holds
+// only pixels the material covers entirely, so smooth (no sparkle noise)
+// still agrees within 1 % (measured 0.0 %; with silhouette pixels in the
+// mask it was +3.3 % at 64x64).
+TEST(GpuCompare, RealTimeModelsRunOnTheGpuAndMatchTheirCpuRows) {
+    GLINTLAB_REQUIRE_GL();
+    testing::ScratchDir dir;
+    const std::string scene = (std::filesystem::path(GLINTLAB_SOURCE_DIR) / "scenes" / "compare" /
+                               "lights_point_directional.json")
+                                  .string();
+    auto compare = [&](const std::string& models, int spp, bool gpu) {
+        const RunResult r =
+            run(cli() + " compare " + scene + " --models " + models +
+                " --res 48x48 --realizations 2 --frames 2 --spp " + std::to_string(spp) +
+                (gpu ? " --gpu" : "") + " --no-cache -q --json -o " + (dir / "out").string());
+        EXPECT_EQ(r.status, 0) << r.output;
+        std::map<std::string, nlohmann::json> rows;
+        try {
+            const nlohmann::json doc = nlohmann::json::parse(r.output);
+            for (const nlohmann::json& row : doc.at("models"))
+                if (!row.at("reference").get<bool>()) rows[row.at("model")] = row;
+        } catch (const nlohmann::json::exception& e) {
+            ADD_FAILURE() << e.what() << "\n" << r.output;
+        }
+        return rows;
+    };
+    // Under the sanitizers (~5x slower CPU renders) three of the six.
+    const bool sanitized = std::getenv("GLINTLAB_SANITIZED") != nullptr;
+    const std::string models =
+        sanitized ? "smooth,chermain2020,kneiphof2025"
+                  : "smooth,deliot2023,zirr2016,chermain2020,kneiphof2025,wang2020";
+    const auto cpu = compare(models, 1, false);
+    const auto gpu = compare(models, 1, true);
+    ASSERT_EQ(gpu.size(), sanitized ? 3u : 6u);
+    for (const auto& [model, row] : gpu) {
+        SCOPED_TRACE(model);
+        ASSERT_TRUE(row.at("compared").get<bool>()) << row.dump();
+        EXPECT_EQ(row.at("backend"), "gpu");
+        EXPECT_EQ(cpu.at(model).at("backend"), "cpu");
+        for (const char* count : {"nan_count", "inf_count", "negative_count"})
+            EXPECT_EQ(row.at(count).get<int64_t>(), 0) << count;
+        const double g = row.at("mean_luminance"), c = cpu.at(model).at("mean_luminance");
+        EXPECT_GT(c, 0.01);
+        EXPECT_NEAR(g / c, 1.0, 0.03);
+    }
+    const auto cpu4 = compare("smooth", 4, false);
+    const auto gpu4 = compare("smooth", 4, true);
+    ASSERT_EQ(gpu4.count("smooth"), 1u);
+    ASSERT_EQ(cpu4.count("smooth"), 1u);
+    EXPECT_NEAR(gpu4.at("smooth").at("mean_luminance").get<double>() /
+                    cpu4.at("smooth").at("mean_luminance").get<double>(),
+                1.0, 0.01);
 }
 
 }  // namespace
