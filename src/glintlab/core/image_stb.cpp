@@ -191,26 +191,39 @@ std::string png_bytes_for_stb(const std::string& bytes, const std::filesystem::p
     return kept;
 }
 
-// stb_image's JPEG reader sums the 16 code-length counts of a Huffman table
-// (DHT segment, ITU-T T.81 §B.2.4.2) and writes that many entries into
-// 257-entry arrays without checking the sum, which a corrupt table puts at up
-// to 16 × 255 (found by the image fuzzer: a write past the array, UBSan's
-// index 257 out of bounds; fuzz/regressions/image/jpeg_dht_counts_over_256.jpg).
-// A valid table has at most 256 codes. So every DHT segment stb may read is
-// checked first: the file is walked as stb walks it — bytes other than 0xFF
-// between segments skipped one by one, fill bytes 0xFF skipped, a segment's
-// big-endian length counting itself; after a start-of-scan segment, the
-// entropy-coded data runs to the first 0xFF followed (after fill bytes) by a
-// byte that is neither 0 (stuffing) nor a restart marker RST0–7. Where stb's
-// own walk would stop earlier (an error, or its decoder ending a scan before
-// its data does), this walk goes on, so it checks every table stb reads and
-// possibly more; a table with more than 256 codes is an error naming the file.
+// Two defects of stb_image's JPEG reader are checked before it runs, both
+// found by the image fuzzer:
+// - A Huffman table (DHT segment, ITU-T T.81 §B.2.4.2): stb sums its 16
+//   code-length counts and writes that many entries into 257-entry arrays
+//   without checking the sum, which a corrupt table puts at up to 16 × 255
+//   (UBSan: index 257 out of bounds; fuzz/regressions/image/
+//   jpeg_dht_counts_over_256.jpg). A valid table has at most 256 codes.
+// - A scan (SOS segment) names, per component, a DC and an AC table; stb
+//   decodes with whatever the named slot holds, and its decoder state is
+//   malloc'd, not cleared, so a slot no DHT segment filled is uninitialised
+//   memory: a symbol index computed from it reads past the table (stb's
+//   own assertion in stbi__jpeg_huff_decode; fuzz/regressions/image/
+//   jpeg_scan_uses_undefined_huffman_table.jpg). A valid file defines a table
+//   before a scan uses it (T.81 §B.2.4.2; Motion-JPEG frames that rely on
+//   default tables are not read). The tables a scan decodes with, as stb
+//   uses them: baseline, DC and AC; progressive, DC in a first DC scan
+//   (Ss = 0, Ah = 0), none in a DC refinement, AC in every AC scan (Ss > 0).
+// The file is walked as stb walks it: bytes other than 0xFF between segments
+// skipped one by one, fill bytes 0xFF skipped, a segment's big-endian length
+// counting itself; after a start-of-scan segment, the entropy-coded data
+// runs to the first 0xFF followed (after fill bytes) by a byte that is
+// neither 0 (stuffing) nor a restart marker RST0–7. Where stb's own walk
+// would stop earlier (an error, or its decoder ending a scan before its data
+// does) it stops reading, and so does this walk where it can tell; either
+// is an error naming the file.
 void check_jpeg_huffman_tables(const std::string& bytes, const std::filesystem::path& path) {
     if (bytes.size() < 2 || uint8_t(bytes[0]) != 0xFF || uint8_t(bytes[1]) != 0xD8) return;
     const size_t n = bytes.size();
     auto at = [&](size_t i) -> unsigned {
         return i < n ? uint8_t(bytes[i]) : 0u;
-    };  // stb: 0 at EOF
+    };                        // stb: 0 at EOF
+    bool defined[2][4] = {};  // [DC, AC][table slot]
+    bool progressive = false;
     size_t pos = 2;
     while (pos < n) {
         if (at(pos) != 0xFF) {
@@ -223,22 +236,47 @@ void check_jpeg_huffman_tables(const std::string& bytes, const std::filesystem::
         if (marker == 0xD9) return;                                                 // EOI
         if (marker == 0x00 || marker == 0xD8 || (marker & 0xF8) == 0xD0) continue;  // no length
         const unsigned length = at(pos) << 8 | at(pos + 1);
+        if (marker == 0xC2) progressive = true;  // SOF2; stb reads SOF0-2 only
         if (marker == 0xC4) {
             size_t q = pos + 2;
             long left = long(length) - 2;
             while (left > 0) {
                 unsigned codes = 0;
                 for (size_t i = 0; i < 16; ++i) codes += at(q + 1 + i);
-                if ((at(q) >> 4) > 1 || (at(q) & 15) > 3) return;  // stb stops: bad DHT header
+                const unsigned tc = at(q) >> 4, th = at(q) & 15;
+                if (tc > 1 || th > 3) return;  // stb stops: bad DHT header
                 if (codes > 256)
                     fail(
                         "{}: cannot read JPEG file: a Huffman table (DHT segment at byte {}) "
                         "declares {} codes, more than the 256 a table can hold (corrupt file)",
                         path.string(), pos - 2, codes);
+                defined[tc][th] = true;
                 q += 17 + codes;
                 left -= long(17 + codes);
             }
             if (left != 0) return;  // stb stops: the tables overrun their segment
+        }
+        if (marker == 0xDA) {
+            const unsigned components = at(pos + 2);
+            const size_t spectral = pos + 3 + 2 * size_t(components);
+            const bool dc_first = at(spectral) == 0 && (at(spectral + 2) >> 4) == 0;
+            const bool uses_dc = progressive ? dc_first : true;
+            const bool uses_ac = progressive ? at(spectral) > 0 : true;
+            for (unsigned c = 0; c < components && c < 4; ++c) {
+                const unsigned selectors = at(pos + 4 + 2 * size_t(c));
+                const unsigned dc = selectors >> 4, ac = selectors & 15;
+                if (dc > 3 || ac > 3) return;  // stb stops: bad table selector
+                const char* kind = nullptr;
+                unsigned slot = 0;
+                if (uses_dc && !defined[0][dc]) kind = "DC", slot = dc;
+                if (uses_ac && !defined[1][ac]) kind = "AC", slot = ac;
+                if (kind)
+                    fail(
+                        "{}: cannot read JPEG file: the scan at byte {} decodes with {} Huffman "
+                        "table {}, which no DHT segment before it defines (corrupt file, or a "
+                        "Motion-JPEG frame relying on default tables: not supported)",
+                        path.string(), pos - 2, kind, slot);
+            }
         }
         pos += length;
         if (marker != 0xDA) continue;  // SOS: then the entropy-coded data

@@ -349,7 +349,8 @@ TEST(ImagePng, EmptyIdatChunksDecodeAsTheFileWithout) {
 // many Huffman codes as a DHT segment declares. A table declaring more than
 // 256 is an error; bytes that only look like a DHT inside another segment
 // (here an APP15 payload) are skipped with their segment, as stb skips them.
-TEST(ImageErrors, JpegHuffmanTableWithMoreThan256CodesIsAnError) {
+// And its uninitialised read: a scan decoding with a table no DHT defined.
+TEST(ImageErrors, JpegHuffmanTablesOver256CodesOrUndefinedAreErrors) {
     ScratchDir dir;
     std::vector<uint8_t> rgb(3 * 16 * 8);
     for (size_t i = 0; i < rgb.size(); ++i) rgb[i] = uint8_t(i * 7);
@@ -366,9 +367,27 @@ TEST(ImageErrors, JpegHuffmanTableWithMoreThan256CodesIsAnError) {
     with_app.insert(2, app);
     std::ofstream(dir / "app.jpg", std::ios::binary) << with_app;
     expect_same_pixels(read_image(dir / "app.jpg"), reference);
-    // The first real DHT's first count raised to 255: 255 + the others > 256.
     const size_t dht = bytes.find("\xff\xc4");
     ASSERT_NE(dht, std::string::npos);
+    // The AC table of slot 0 moved to slot 2: the scan decodes with AC table
+    // 0, which nothing defines (stb would read uninitialised memory).
+    {
+        std::string moved = bytes;
+        const size_t end =
+            dht + 2 + (size_t(uint8_t(moved[dht + 2])) << 8 | uint8_t(moved[dht + 3]));
+        bool found = false;
+        for (size_t q = dht + 4; q + 17 <= end;) {
+            size_t codes = 0;
+            for (size_t i = 1; i <= 16; ++i) codes += uint8_t(moved[q + i]);
+            if (moved[q] == '\x10') moved[q] = '\x12', found = true;
+            q += 17 + codes;
+        }
+        ASSERT_TRUE(found) << "stb's writer puts AC table 0 in its first DHT segment";
+        std::ofstream(dir / "no_ac0.jpg", std::ios::binary) << moved;
+        expect_error([&] { read_image(dir / "no_ac0.jpg"); },
+                     {"no_ac0.jpg", "AC Huffman table 0", "no DHT segment before it defines"});
+    }
+    // The first real DHT's first count raised to 255: 255 + the others > 256.
     bytes[dht + 5] = '\xff';
     bytes[dht + 6] = '\xff';
     std::ofstream(dir / "dht.jpg", std::ios::binary) << bytes;
