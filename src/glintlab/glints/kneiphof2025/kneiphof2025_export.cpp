@@ -20,17 +20,7 @@ void kneiphof2025_export_material(GlintExportContext& ctx) {
     Kneiphof2025Sun kneiphof2025_sun;
     if (ctx.resources) {
         constexpr int n = Kneiphof2025DfgLut::kSize;
-        std::vector<float> rgba(static_cast<size_t>(n) * n * 4, 0.0f);
-        const Kneiphof2025DfgLut& lut = Kneiphof2025DfgLut::get();
-        for (int j = 0; j < n; ++j)
-            for (int i = 0; i < n; ++i) {
-                const glm::vec3 v = lut.lookup((static_cast<float>(i) + 0.5f) / n,
-                                               (static_cast<float>(j) + 0.5f) / n);
-                float* t = &rgba[(static_cast<size_t>(j) * n + i) * 4];
-                t[0] = v.x;
-                t[1] = v.y;
-                t[2] = v.z;
-            }
+        const std::vector<float> rgba = Kneiphof2025DfgLut::get().rgba_texture();
         ctx.resource(
             "dfg", rgba,
             {{"uniform", "kneiphof2025_dfg_lut"},
