@@ -28,15 +28,10 @@
 #include "glintlab/core/image.h"
 #include "glintlab/core/shader_assembly.h"
 #include "glintlab/core/shader_sources.h"
-#include "glintlab/glints/chermain2020/dictionary.h"
-#include "glintlab/glints/deliot2023/deliot2023.h"
+#include "glintlab/export/model_export.h"
+#include "glintlab/glints/glint_bxdf.h"
 #include "glintlab/glints/glint_model_descriptor.h"
-#include "glintlab/glints/kneiphof2025/kneiphof2025.h"
-#include "glintlab/glints/kneiphof2025/kneiphof2025_params.h"
-#include "glintlab/glints/kneiphof2025/kneiphof2025_prefilter.h"
 #include "glintlab/glints/registry.h"
-#include "glintlab/glints/wang2020/wang2020_model.h"
-#include "glintlab/glints/wang2020/wang2020_shading.h"
 #include "glintlab/scene/environment.h"
 #include "glintlab/scene/scene.h"
 #include "glintlab/scene/scene_loader.h"
@@ -55,61 +50,11 @@ namespace fs = std::filesystem;
 
 constexpr std::string_view kEntry = "glintlab/export/glint_export.frag.glsl";
 
-// The models with a GPU back end (glints/gpu_model_hooks.h lists them for
-// the renderer; this table adds, per model, the glue variants and passes
-// exported). `glue` is the renderer's own glue file; `variant_glue` the
-// renderer's option variant (deliot2023's noise texture, 000 §6.3).
-struct ExportModel {
-    GlintModelId id;
-    const char* glue;
-    const char* variant;  // nullptr: no variant
-    const char* variant_glue;
-    std::vector<const char*> compute;  // per-environment passes (embedded paths)
-};
-
-const std::vector<ExportModel>& export_table() {
-    static const std::vector<ExportModel> table = {
-        {GlintModelId::Smooth, "glintlab/glints/smooth_gpu.glsl", nullptr, nullptr, {}},
-        {GlintModelId::Deliot2023,
-         "glintlab/glints/deliot2023/deliot2023_gpu.glsl",
-         "noise_texture",
-         "glintlab/glints/deliot2023/deliot2023_noise_texture_gpu.glsl",
-         {}},
-        {GlintModelId::Zirr2016,
-         "glintlab/glints/zirr2016/zirr2016_gpu.glsl",
-         nullptr,
-         nullptr,
-         {}},
-        {GlintModelId::Chermain2020,
-         "glintlab/glints/chermain2020/chermain2020_gpu.glsl",
-         nullptr,
-         nullptr,
-         {}},
-        {GlintModelId::Kneiphof2025,
-         "glintlab/glints/kneiphof2025/kneiphof2025_gpu.glsl",
-         nullptr,
-         nullptr,
-         {"glintlab/glints/kneiphof2025/kneiphof2025_prefilter_base.comp.glsl",
-          "glintlab/glints/kneiphof2025/kneiphof2025_prefilter_partition.comp.glsl",
-          "glintlab/glints/kneiphof2025/kneiphof2025_prefilter_reduce.comp.glsl",
-          "glintlab/glints/kneiphof2025/kneiphof2025_prefilter_filter.comp.glsl"}},
-        // The renderer's glue reads the tables from SSBOs (wang2020_gpu.glsl);
-        // the export reads them from textures in every language (GLSL ES 3.00
-        // has no storage buffers), the rest of the glue is shared
-        // (wang2020_glue_common.glsl).
-        {GlintModelId::Wang2020,
-         "glintlab/glints/wang2020/wang2020_export_textures.glsl",
-         nullptr,
-         nullptr,
-         {}},
-    };
-    return table;
-}
-
-const ExportModel* find_export_model(GlintModelId id) {
-    for (const ExportModel& m : export_table())
-        if (m.id == id) return &m;
-    return nullptr;
+// The model's export (its descriptor's GlintModelExport); null if the model
+// has none.
+const GlintModelExport* find_export_model(GlintModelId id) {
+    const GlintModelDescriptor& d = glint_model(id);
+    return d.shader_export ? &*d.shader_export : nullptr;
 }
 
 // ---- Flattening ------------------------------------------------------------
@@ -246,6 +191,29 @@ std::string parameter_rows(const GlintModelDescriptor& d, const std::string& sha
     return out;
 }
 
+// The names of the exportable models that satisfy `pred`, in list order.
+template <class Pred>
+std::vector<std::string> model_names(Pred pred) {
+    std::vector<std::string> out;
+    for (const GlintModelDescriptor& m : glint_models())
+        if (m.shader_export && pred(m)) out.emplace_back(m.name);
+    return out;
+}
+
+// A row of the header's uniform list, wrapped at 84 columns with its
+// continuation lines in the descriptions' column (28).
+std::string wrap_row(std::string text) {
+    constexpr size_t kWidth = 84, kIndent = 28;
+    std::string out;
+    while (text.size() > kWidth) {
+        const size_t cut = text.rfind(' ', kWidth);
+        if (cut == std::string::npos || cut <= kIndent) break;
+        out += text.substr(0, cut) + "\n";
+        text = std::string(kIndent, ' ') + text.substr(cut + 1);
+    }
+    return out + text + "\n";
+}
+
 std::string header(const GlintModelDescriptor& d, ExportLanguage lang, const std::string& glue,
                    const std::string& shader) {
     std::string h = fmt::format(
@@ -283,14 +251,22 @@ std::string header(const GlintModelDescriptor& d, ExportLanguage lang, const std
         "  u_glint_color             vec3 tint, u_glint_base_albedo vec3 diffuse base (0: none)\n"
         "  u_fresnel_mode            int 0 none, 1 Schlick (u_fresnel_f0), 2 conductor\n"
         "                            (u_fresnel_eta, u_fresnel_k), 3 dielectric (u_fresnel_eta.x)\n"
-        "  u_glint_g2                int masking: 0 Smith height-correlated, 1 V-cavity\n"
-        "                            (chermain2020 uses 1, every other model 0)\n"
-        "  u_directional_count       int <= GLINT_MAX_LIGHTS; u_directional_direction[i]\n"
-        "                            (towards the light, unit), u_directional_irradiance[i]\n"
-        "  u_point_count             int <= GLINT_MAX_LIGHTS; u_point_position[i],\n"
-        "                            u_point_intensity[i] (W/sr per channel)\n";
-    h += "  u_environment_on          bool the model's own environment lighting (kneiphof2025,\n"
-         "                            wang2020; ignored by the other models)\n";
+        "  u_glint_g2                int masking: 0 Smith height-correlated, 1 V-cavity\n";
+    const std::vector<std::string> v_cavity =
+        model_names([](const GlintModelDescriptor& m) { return glint_g2_mode(m.id) == 1; });
+    h += fmt::format("                            ({} use{} 1, every other model 0)\n",
+                     fmt::join(v_cavity, ", "), v_cavity.size() == 1 ? "s" : "");
+    h += "  u_directional_count       int <= GLINT_MAX_LIGHTS; u_directional_direction[i]\n"
+         "                            (towards the light, unit), u_directional_irradiance[i]\n"
+         "  u_point_count             int <= GLINT_MAX_LIGHTS; u_point_position[i],\n"
+         "                            u_point_intensity[i] (W/sr per channel)\n";
+    h += wrap_row(fmt::format(
+        "  u_environment_on          bool the model's own environment lighting ({}; ignored by "
+        "the other models)",
+        fmt::join(model_names([](const GlintModelDescriptor& m) {
+                      return m.shades_light != nullptr && m.shades(GlintLightType::Environment);
+                  }),
+                  ", ")));
     h += fmt::format(
         "Parameters of {} (uniform, type, range, default: meaning; a name in\n"
         "parentheses is host-side, see docs/INTEGRATION.md):\n{}",
@@ -372,6 +348,57 @@ struct Manifest {
     nlohmann::json passes = nlohmann::json::array();
 };
 
+// Writes `bytes` as out_dir/name and lists it among the exported files.
+void add_file(const fs::path& out_dir, std::vector<ExportedFile>& files, const std::string& name,
+              const std::string& kind, std::string_view bytes) {
+    write_file(out_dir / name, bytes);
+    files.push_back({name, kind, bytes.size()});
+}
+
+// The export hooks' view of one export (export/model_export.h): resource
+// files "<model>.<key>.f32|u32" and their manifest entries.
+class ExportContext final : public GlintExportContext {
+  public:
+    ExportContext(const GlintDesc& material, const std::string& model, const fs::path& out_dir,
+                  std::vector<ExportedFile>& files, nlohmann::json& manifest_resources)
+        : GlintExportContext(material),
+          model_(model),
+          out_dir_(out_dir),
+          files_(files),
+          manifest_resources_(manifest_resources) {}
+
+    nlohmann::json& resource(const std::string& key, const std::vector<float>& values,
+                             nlohmann::json info) override {
+        return add(key, values, std::move(info));
+    }
+    nlohmann::json& resource(const std::string& key, const std::vector<uint32_t>& values,
+                             nlohmann::json info) override {
+        return add(key, values, std::move(info));
+    }
+
+  private:
+    template <class T>
+    nlohmann::json& add(const std::string& key, const std::vector<T>& values, nlohmann::json info) {
+        constexpr bool uint = std::is_same_v<T, uint32_t>;
+        const std::string name = fmt::format("{}.{}.{}", model_, key, uint ? "u32" : "f32");
+        const std::string bytes = raw_bytes(values);
+        add_file(out_dir_, files_, name, "texture", bytes);
+        info["file"] = name;
+        info["bytes"] = bytes.size();
+        info["encoding"] = fmt::format(
+            "raw little-endian {}, row-major, first row at texture coordinate t = 0 (upload "
+            "as is), channels interleaved",
+            uint ? "uint32" : "float32");
+        manifest_resources_.push_back(info);
+        return manifest_resources_.back();
+    }
+
+    const std::string& model_;
+    const fs::path& out_dir_;
+    std::vector<ExportedFile>& files_;
+    nlohmann::json& manifest_resources_;
+};
+
 // The glint material of `scene` named `name` (empty: the first glint
 // material of `model`); errors name the file, the material and the problem.
 const MaterialDesc& select_material(const Scene& scene, const std::string& name,
@@ -439,9 +466,10 @@ std::vector<std::string> exportable_models() {
 
 std::string export_fragment_glsl(GlintModelId model, unsigned program_options,
                                  ExportLanguage language) {
-    const ExportModel* m = find_export_model(model);
+    const GlintModelExport* m = find_export_model(model);
     if (!m) fail("export: model \"{}\" has no exportable GPU back end", glint_model(model).name);
-    const std::string glue = (program_options & 1u) && m->variant_glue ? m->variant_glue : m->glue;
+    const std::string glue =
+        (program_options & 1u) && !m->variant_glue.empty() ? m->variant_glue : m->glue;
     const std::string root =
         fmt::format("#include \"{}\"\n#include \"{}\"\n", glue, std::string(kEntry));
     const AssembledShader a = assemble_shader(root, true, "\n");
@@ -466,7 +494,7 @@ std::vector<ExportedFile> export_model(const ExportOptions& o) {
     if (!d)
         fail("export: unknown model \"{}\" (models with a GPU back end: {})", o.model,
              fmt::join(exportable_models(), ", "));
-    const ExportModel* m = find_export_model(d->id);
+    const GlintModelExport* m = find_export_model(d->id);
     if (!m)
         fail("export: model \"{}\" has no exportable GPU back end (exportable: {})", o.model,
              fmt::join(exportable_models(), ", "));
@@ -509,13 +537,12 @@ std::vector<ExportedFile> export_model(const ExportOptions& o) {
     std::vector<ExportedFile> files;
     Manifest man;
     auto add = [&](const std::string& name, const std::string& kind, std::string_view bytes) {
-        write_file(o.out_dir / name, bytes);
-        files.push_back({name, kind, bytes.size()});
+        add_file(o.out_dir, files, name, kind, bytes);
     };
 
     // Fragment stages: the default program, and the option variant.
-    for (unsigned variant = 0; variant < (m->variant ? 2u : 1u); ++variant) {
-        const std::string suffix = variant ? std::string("_") + m->variant : "";
+    for (unsigned variant = 0; variant < (m->variant.empty() ? 1u : 2u); ++variant) {
+        const std::string suffix = variant ? "_" + m->variant : "";
         const std::string name =
             fmt::format("{}{}.{}.frag.{}", model, suffix, lang, lang_ext(o.language));
         const ExportLanguage glsl_lang =
@@ -532,12 +559,12 @@ std::vector<ExportedFile> export_model(const ExportOptions& o) {
         man.shaders.push_back({{"file", name},
                                {"stage", "fragment"},
                                {"entry", "main"},
-                               {"variant", variant ? m->variant : "default"}});
+                               {"variant", variant ? m->variant : std::string("default")}});
     }
 
     // Compute passes (per environment): not in GLSL ES 3.00.
     if (!m->compute.empty() && o.language != ExportLanguage::GlslEs) {
-        for (const char* path : m->compute) {
+        for (const std::string& path : m->compute) {
             std::string stem = fs::path(path).filename().string();
             stem = stem.substr(0, stem.find(".comp.glsl"));
             const std::string name = fmt::format("{}.{}.comp.{}", stem, lang, lang_ext(o.language));
@@ -557,303 +584,17 @@ std::vector<ExportedFile> export_model(const ExportOptions& o) {
         }
     }
 
-    // Resources.
-    auto resource = [&]<class T>(const std::string& key, const std::vector<T>& values,
-                                 nlohmann::json info) {
-        constexpr bool uint = std::is_same_v<T, uint32_t>;
-        const std::string name = fmt::format("{}.{}.{}", model, key, uint ? "u32" : "f32");
-        const std::string bytes = raw_bytes(values);
-        add(name, "texture", bytes);
-        info["file"] = name;
-        info["bytes"] = bytes.size();
-        info["encoding"] = fmt::format(
-            "raw little-endian {}, row-major, first row at texture coordinate t = 0 (upload "
-            "as is), channels interleaved",
-            uint ? "uint32" : "float32");
-        man.resources.push_back(info);
-    };
-    if (o.resources && d->id == GlintModelId::Deliot2023) {
-        std::vector<float> pairs;
-        for (const glm::vec2& v : deliot2023_noise_table()) {
-            pairs.push_back(v.x);
-            pairs.push_back(v.y);
-        }
-        resource("noise", pairs,
-                 {{"uniform", "u_deliot2023_noise"},
-                  {"binding", 5},
-                  {"used_by", "noise_texture variant"},
-                  {"format", "RG32F"},
-                  {"width", 64},
-                  {"height", 64},
-                  {"filter", "nearest"},
-                  {"wrap", "repeat"},
-                  {"mipmaps", false},
-                  {"meaning",
-                   "the two uniforms of each gated-Gaussian evaluation (000 6.3), indexed by "
-                   "cell hash % 4096 (texelFetch)"}});
-    }
-    if (o.resources && d->id == GlintModelId::Chermain2020) {
-        const Dictionary& dict = default_dictionary();
-        resource("dictionary", dict.values,
-                 {{"uniform", "chermain2020_dictionary"},
-                  {"format", "R32F"},
-                  {"width", dict.params.table_size},
-                  {"height", dict.params.n_dists * dict.params.n_levels},
-                  {"filter", "nearest"},
-                  {"wrap", "clamp_to_edge"},
-                  {"mipmaps", false},
-                  {"meaning",
-                   "004 4.4-4.5 dictionary of 1D marginal distributions: row dist * n_levels + "
-                   "level, one texel per table sample (texelFetch)"},
-                  {"uniforms",
-                   {{"u_chermain2020_dict_shape",
-                     {dict.params.n_levels, dict.params.n_dists, dict.params.table_size}},
-                    {"u_chermain2020_dict_range", {dict.params.alpha_dict, dict.slope_max}}}}});
-    }
-    // kneiphof2025's sun (the "lobe_sun" smooth term): found by the prefilter
-    // of the exported environment; none without one (power 0).
-    Kneiphof2025Sun kneiphof2025_sun;
-    if (o.resources && d->id == GlintModelId::Kneiphof2025) {
-        constexpr int n = Kneiphof2025DfgLut::kSize;
-        std::vector<float> rgba(static_cast<size_t>(n) * n * 4, 0.0f);
-        const Kneiphof2025DfgLut& lut = Kneiphof2025DfgLut::get();
-        for (int j = 0; j < n; ++j)
-            for (int i = 0; i < n; ++i) {
-                const glm::vec3 v = lut.lookup((static_cast<float>(i) + 0.5f) / n,
-                                               (static_cast<float>(j) + 0.5f) / n);
-                float* t = &rgba[(static_cast<size_t>(j) * n + i) * 4];
-                t[0] = v.x;
-                t[1] = v.y;
-                t[2] = v.z;
-            }
-        resource("dfg", rgba,
-                 {{"uniform", "kneiphof2025_dfg_lut"},
-                  {"format", "RGBA32F"},
-                  {"width", n},
-                  {"height", n},
-                  {"filter", "linear"},
-                  {"wrap", "clamp_to_edge"},
-                  {"mipmaps", false},
-                  {"meaning",
-                   "(A, B, E_D / D_H, 0) of isotropic GGX at (cos_o, sqrt(alpha)) texel centres "
-                   "(003 Eq. 11, 21)"}});
-        if (env) {
-            // The renderer's prefilter options with the material's K and
-            // black level (kneiphof2025_gpu.cpp does the same).
-            const auto& kp = std::get<Kneiphof2025Params>(g.params);
-            Kneiphof2025PrefilterOptions po;
-            po.levels = kp.levels;
-            po.black_level = kp.black_level;
-            const auto cached = Kneiphof2025Environment::load_or_build(*env, po);
-            const Kneiphof2025Environment& pre = *cached;
-            const int layers = static_cast<int>(pre.mips().size());
-            const int w = pre.mips()[0].width, h = pre.mips()[0].height;
-            const int channels = pre.channels();
-            kneiphof2025_sun = pre.sun();
-            std::vector<float> rad, wa, wb;
-            for (size_t i = 0; i < pre.mips().size(); ++i) {
-                const Kneiphof2025Level& l = pre.mips()[i];
-                const Kneiphof2025Level& sun = pre.sun_mips()[i];
-                // The data's rows run from v = 0 (zenith) down; a texture's
-                // row 0 is t = 0, the same v: no flip. The radiance's alpha
-                // is the sun channel (kneiphof2025_gpu.cpp does the same).
-                for (int p = 0; p < l.width * l.height; ++p) {
-                    const float* src = &l.data[static_cast<size_t>(p) * channels];
-                    for (int c = 0; c < 4; ++c) {
-                        rad.push_back(c < 3 ? src[c] : sun.data[static_cast<size_t>(p)]);
-                        wa.push_back(3 + c < channels ? src[3 + c] : 0.0f);
-                        wb.push_back(7 + c < channels ? src[7 + c] : 0.0f);
-                    }
-                }
-            }
-            const nlohmann::json common = {{"format", "RGBA32F"},
-                                           {"target", "2D_ARRAY"},
-                                           {"width", w},
-                                           {"height", h},
-                                           {"layers", layers},
-                                           {"filter", "linear"},
-                                           {"wrap", "repeat_s_clamp_t"},
-                                           {"mipmaps", false},
-                                           {"environment", env_source}};
-            nlohmann::json r = common;
-            r["uniform"] = "kneiphof2025_radiance_layers";
-            r["meaning"] =
-                "prefiltered radiance (003 Eq. 11) in rgb and, in alpha, the luminance of the "
-                "environment's sun alone prefiltered by the same kernel (0 without a sun; the "
-                "lobe_sun smooth term, kneiphof2025_sun_* uniforms), layer i: sqrt(alpha) = i / "
-                "(layers - 1), lat-long, v = 0 at the zenith";
-            resource("env_radiance", rad, r);
-            r = common;
-            r["uniform"] = "kneiphof2025_weights_layers_a";
-            r["meaning"] = "prefiltered fuzzy indicators w^(1..4) (003 Eq. 19-21)";
-            resource("env_weights_a", wa, r);
-            r = common;
-            r["uniform"] = "kneiphof2025_weights_layers_b";
-            r["meaning"] = "prefiltered fuzzy indicators w^(5..8) (003 Eq. 19-21)";
-            resource("env_weights_b", wb, r);
-            const auto& L = pre.radiance_levels();
-            man.resources.back()["uniforms"] = {
-                {"u_kneiphof2025_levels_a", {L[0], L[1], L[2], L[3]}},
-                {"u_kneiphof2025_levels_b", {L[4], L[5], L[6], L[7]}},
-                {"kneiphof2025_last_layer", static_cast<float>(layers - 1)},
-                {"u_kneiphof2025_radiance_scale", 1.0f},
-                {"levels_K", pre.levels()}};
-        }
-    }
-
-    if (o.resources && d->id == GlintModelId::Wang2020) {
-        // The tables of the exported material (the default wang2020
-        // material, or --scene's --material), under the environment if any
-        // (--env, else the scene's): the arrays the renderer uploads as SSBOs,
-        // laid out in textures WANG2020_TABLE_WIDTH (4096) texels wide.
-        const auto model_tables = wang2020_model_for(g, env);
-        constexpr size_t kWidth = 4096;  // WANG2020_TABLE_WIDTH
-        auto table = [&]<class T>(const std::string& key, std::vector<T> values, int channels,
-                                  const std::string& format, const std::string& uniform,
-                                  const std::string& meaning) {
-            const size_t elements = values.size() / static_cast<size_t>(channels);
-            const size_t rows = std::max<size_t>(1, (elements + kWidth - 1) / kWidth);
-            values.resize(rows * kWidth * static_cast<size_t>(channels), T(0));
-            resource(
-                key, values,
-                {{"uniform", uniform},
-                 {"format", format},
-                 {"width", kWidth},
-                 {"height", rows},
-                 {"elements", elements},
-                 {"filter", "nearest"},
-                 {"wrap", "clamp_to_edge"},
-                 {"mipmaps", false},
-                 {"meaning", meaning + "; element i at texel (i % 4096, i / 4096), texelFetch"}});
-        };
-        auto vec4s = [](const std::vector<glm::vec4>& v) {
-            std::vector<float> out;
-            for (const glm::vec4& e : v) out.insert(out.end(), {e.x, e.y, e.z, e.w});
-            return out;
-        };
-        table("dpf", model_tables->dpf().values(), 1, "R32F", "u_wang2020_dpf_texture",
-              "extracted DPF table P(i, o, gamma) (001 Eq. 6, 4.4)");
-        table("prefilter",
-              model_tables->prefiltered() ? vec4s(model_tables->prefiltered()->data())
-                                          : std::vector<float>(4, 0.0f),
-              4, "RGBA32F", "u_wang2020_prefilter_texture",
-              "prefiltered environment tables (001 Eqs. 16-17; one zero texel without --env)");
-        if (model_tables->prefiltered()) man.resources.back()["environment"] = env_source;
-        {
-            // Quadtree nodes {first_child, count_mask} as uint32 pairs (RG32UI).
-            std::vector<uint32_t> pairs;
-            for (const wang2020::QuadtreeNode& n : model_tables->quadtree().nodes()) {
-                pairs.push_back(n.first_child);
-                pairs.push_back(n.count_mask);
-            }
-            table("nodes", pairs, 2, "RG32UI", "u_wang2020_nodes_texture",
-                  "particle quadtree nodes {first_child, count_mask} (001 4.4)");
-        }
-        table("cone",
-              model_tables->cone_average() ? vec4s(model_tables->cone_average()->data())
-                                           : std::vector<float>(4, 0.0f),
-              4, "RGBA32F", "u_wang2020_cone_texture",
-              "cone-averaged environment L_gamma (micro per_particle mode; one zero texel "
-              "otherwise)");
-        const wang2020::DpfResolution& dr = model_tables->dpf().resolution();
-        std::array<int, 4> pres{1, 1, 1, 1};
-        if (model_tables->prefiltered()) {
-            const wang2020::PrefilterResolution& pr = model_tables->prefiltered()->resolution();
-            pres = {pr.theta_n, pr.phi_n, pr.theta_o, pr.phi_o};
-        }
-        const std::array<int, 2> cres =
-            model_tables->cone_average()
-                ? std::array<int, 2>{model_tables->cone_average()->width(),
-                                     model_tables->cone_average()->height()}
-                : std::array<int, 2>{1, 1};
-        man.resources.back()["uniforms"] = {
-            {"u_wang2020_dpf_res", {dr.theta_i, dr.theta_o, dr.phi}},
-            {"u_wang2020_prefilter_res", pres},
-            {"u_wang2020_depth", model_tables->quadtree().depth()},
-            {"u_wang2020_seed", model_tables->material().seed},
-            {"u_wang2020_particles", static_cast<double>(model_tables->quadtree().particles())},
-            {"u_wang2020_sigma", static_cast<double>(model_tables->sigma_o())},
-            {"u_wang2020_micro",
-             model_tables->material().micro == wang2020::MicroMode::PerParticle ? 1 : 0},
-            {"u_wang2020_cone_res", cres},
-            {"u_wang2020_cos_gamma",
-             std::cos(model_tables->material().gamma_deg * 3.14159265358979323846 / 180.0)},
-            {"u_glint_alpha", {g.alpha_x, g.alpha_y}},
-            {"u_glint_log_density", g.log_density},
-            {"u_glint_seed", g.seed}};
-        man.resources.back()["note"] = fmt::format(
-            "the tables are those of {} (uniforms above): a material with another alpha, "
-            "density, seed or parameters needs its own tables (glintlab export --scene FILE "
-            "--material NAME)",
-            material_name.empty() ? std::string("the default wang2020 material")
-                                  : fmt::format("material \"{}\"", material_name));
-    }
-
-    // Uniforms the host derives from parameters (the renderer's GPU hooks
-    // compute them in C++), at the defaults, with how to compute them.
+    // The model's resources and derived uniforms (its descriptor's export hook).
+    ExportContext ctx(g, model, o.out_dir, files, man.resources);
+    ctx.material_name = material_name;
+    ctx.environment = env;
+    ctx.environment_source = env_source;
+    ctx.resources = o.resources;
+    if (m->material) m->material(ctx);
     auto v3 = [](const glm::vec3& v) { return nlohmann::json{v.x, v.y, v.z}; };
-    nlohmann::json derived = nlohmann::json::array();
-    if (d->id == GlintModelId::Kneiphof2025) {
-        const Kneiphof2025Params& k = std::get<Kneiphof2025Params>(g.params);
-        const glm::vec3 f0 = kneiphof2025_f0(g);
-        derived = {{{"uniform", "u_kneiphof2025_wang2020_style"},
-                    {"value", k.variant == Kneiphof2025Params::Variant::Wang2020Style},
-                    {"from", "variant == \"wang2020_style\""}},
-                   {{"uniform", "u_kneiphof2025_conditional"},
-                    {"value", k.conditional_gaussian},
-                    {"from", "gaussian == \"conditional\""}},
-                   {{"uniform", "u_kneiphof2025_gamma_solid_angle"},
-                    {"value", 2.0 * 3.14159265358979323846 *
-                                  (1.0 - std::cos(k.gamma_deg * 3.14159265358979323846 / 180.0))},
-                    {"from", "2 pi (1 - cos(gamma_deg))"}},
-                   {{"uniform", "u_kneiphof2025_smooth"},
-                    {"value", kneiphof2025_smooth_mode(k)},
-                    {"from",
-                     "smooth: \"as_published\" or \"split_sum\" -> 0, \"lobe\" -> 1, "
-                     "\"lobe_sun\" -> 2 (KNEIPHOF2025_SMOOTH_*)"}},
-                   {{"uniform", "u_kneiphof2025_f0"},
-                    {"value", {f0.x, f0.y, f0.z}},
-                    {"from",
-                     "Schlick F0 of the material's Fresnel: none -> 1, schlick -> f0, conductor / "
-                     "dielectric -> their Fresnel at normal incidence"}},
-                   {{"uniform", "u_kneiphof2025_radiance_scale"},
-                    {"value", 1.0},
-                    {"from", "current environment scale / the scale the maps were prefiltered at"}},
-                   {{"uniform", "kneiphof2025_env_rotation"},
-                    {"value", 0.0},
-                    {"from", "environment rotation about +y, radians"}},
-                   // The sun the prefilter took out of the exported maps
-                   // (Kneiphof2025Sun; read by "lobe_sun", with the radiance
-                   // array's alpha): power 0 without one (no --env, or a
-                   // map without a sun), and for maps prefiltered by the
-                   // compute passes, which have no sun channel.
-                   {{"uniform", "kneiphof2025_sun_direction"},
-                    {"value", v3(kneiphof2025_sun.map_direction)},
-                    {"from",
-                     "the sun's direction in the map's frame (value: rotation 0) turned about +y "
-                     "by the environment rotation r: (x cos r - z sin r, y, z cos r + x sin r)"}},
-                   {{"uniform", "kneiphof2025_sun_power"},
-                    {"value", v3(kneiphof2025_sun.power)},
-                    {"from",
-                     "the sun's RGB power (radiance x solid angle) at the scale the maps were "
-                     "prefiltered at; 0 without a sun"}},
-                   {{"uniform", "kneiphof2025_sun_radius"},
-                    {"value", kneiphof2025_sun.radius},
-                    {"from", "the sun's angular radius, radians"}},
-                   {{"uniform", "kneiphof2025_sun_color"},
-                    {"value", v3(kneiphof2025_sun.color)},
-                    {"from",
-                     "power / luminance(power): the sun channel (radiance alpha) times it is "
-                     "the sun's RGB"}},
-                   {{"uniform", "black_level"},
-                    {"value", k.black_level},
-                    {"from",
-                     "not a uniform: the prefilter's black level (the --env maps use the "
-                     "default)"}}};
-    }
 
     nlohmann::json j;
-    j["derived_uniforms"] = derived;
+    j["derived_uniforms"] = ctx.derived_uniforms;
     j["glintlab_version"] = GLINTLAB_VERSION;
     j["glintlab_commit"] = GLINTLAB_GIT_COMMIT;
     j["model"] = model;

@@ -1,11 +1,6 @@
 #include "glintlab/glints/glint_bxdf.h"
 
-#include "glintlab/glints/chermain2020/chermain2020.h"
-#include "glintlab/glints/deliot2023/deliot2023.h"
-#include "glintlab/glints/explicit/explicit_model.h"
-#include "glintlab/glints/jakob2014/jakob2014.h"
-#include "glintlab/glints/kneiphof2025/kneiphof2025.h"
-#include "glintlab/glints/zirr2016/zirr2016.h"
+#include "glintlab/glints/model_list.h"
 #include "glintlab/microfacet/microfacet.h"
 #include "glintlab/scene/scene.h"
 
@@ -14,8 +9,38 @@ GLINTLAB_SHADER_FUNCTIONS_BEGIN
 #include "glintlab/glints/material.glsl"
 GLINTLAB_SHADER_FUNCTIONS_END
 
+// Every model's GlintBxdf hooks (glints/m/m_kernel.h, struct MKernel).
+#define GLINTLAB_MODEL_HEADER_KIND kernel
+#include "glintlab/glints/model_headers.h"
+#undef GLINTLAB_MODEL_HEADER_KIND
+
 namespace glintlab {
 namespace {
+
+// Calls f(MKernel{}) for the kernel of `model`: the dispatch, expanded from
+// the list of models (static, no strings in the hot path). An id outside the
+// list gets the smooth model's kernel (the smooth limit).
+template <class F>
+decltype(auto) with_kernel(GlintModelId model, F&& f) {
+    switch (model) {
+#define GLINTLAB_KERNEL_CASE(m, M) \
+    case GlintModelId::M:          \
+        return f(M##Kernel{});
+        GLINTLAB_GLINT_MODELS(GLINTLAB_KERNEL_CASE)
+#undef GLINTLAB_KERNEL_CASE
+    }
+    return f(SmoothKernel{});
+}
+
+// Whether the model samples its glint lobe itself (K::sample_wi, K::lobe_pdf).
+bool samples_own_lobe(GlintModelId model) {
+    return with_kernel(model, []<class K>(K) {
+        return requires(const GlintDesc& d, glm::vec3 w, glm::vec2 u) {
+            K::sample_wi(d, w, 0.0f, u);
+            K::lobe_pdf(d, w, w);
+        };
+    });
+}
 
 static_assert(static_cast<int>(FresnelDesc::Mode::None) == shader::GLINT_FRESNEL_NONE &&
               static_cast<int>(FresnelDesc::Mode::Schlick) == shader::GLINT_FRESNEL_SCHLICK &&
@@ -46,45 +71,32 @@ shader::GlintMaterial material(const GlintDesc& desc) {
 }  // namespace
 
 int glint_g2_mode(GlintModelId model) {
-    return model == GlintModelId::Chermain2020 ? shader::GLINT_G2_VCAVITY
-                                               : shader::GLINT_G2_SMITH_CORRELATED;
+    return with_kernel(model, []<class K>(K) {
+        if constexpr (requires { K::v_cavity_masking; })
+            if (K::v_cavity_masking) return shader::GLINT_G2_VCAVITY;
+        return shader::GLINT_G2_SMITH_CORRELATED;
+    });
 }
 
 float GlintBxdf::footprint_ndf(glm::vec3 wo, glm::vec3 wi, glm::vec3 h) const {
-    // A closed set of models (ARCHITECTURE.md §5): each case calls the
-    // model's own evaluation of its footprint NDF. Models whose query depends
+    // Each model's own evaluation of its footprint NDF (K::footprint_ndf),
+    // else (smooth, wang2020) the smooth limit D. Models whose query depends
     // on both directions (jakob2014's spherical conic, 002 Eq. 7) use wo, wi.
-    (void)wo;
-    (void)wi;
-    switch (desc->model_id) {
-        case GlintModelId::Smooth:
-            break;
-        // Models still being built render their smooth limit until their
-        // registry row exists (the scene loader cannot select them before).
-        case GlintModelId::Explicit:
-            return explicit_footprint_ndf(wo, wi, footprint, *desc);
-        case GlintModelId::Wang2020:
-            break;
-        case GlintModelId::Kneiphof2025:
-            return kneiphof2025_footprint_ndf(h, footprint, *desc);
-        case GlintModelId::Deliot2023:
-            return deliot2023_footprint_ndf(h, footprint, *desc);
-        case GlintModelId::Chermain2020:
-            return chermain2020_footprint_ndf(h, footprint, *desc);
-        case GlintModelId::Zirr2016:
-            return zirr2016_footprint_ndf(h, footprint, *desc);
-        case GlintModelId::Jakob2014:
-            return jakob2014_footprint_ndf(wo, wi, h, footprint, *desc);
-    }
-    return shader::D_Microfacet(ndf_id(desc->ndf), h, desc->alpha_x, desc->alpha_y);
+    return with_kernel(desc->model_id, [&]<class K>(K) -> float {
+        if constexpr (requires { K::footprint_ndf(wo, wi, h, footprint, *desc); })
+            return K::footprint_ndf(wo, wi, h, footprint, *desc);
+        else
+            return shader::D_Microfacet(ndf_id(desc->ndf), h, desc->alpha_x, desc->alpha_y);
+    });
 }
 
 glm::vec3 GlintBxdf::footprint_ndf_rgb(glm::vec3 wo, glm::vec3 wi, glm::vec3 h) const {
-    if (desc->model_id == GlintModelId::Chermain2020)
-        return chermain2020_footprint_ndf_rgb(h, footprint, *desc);
-    if (desc->model_id == GlintModelId::Jakob2014)
-        return jakob2014_footprint_ndf_rgb(wo, wi, h, footprint, *desc);
-    return glm::vec3(footprint_ndf(wo, wi, h));
+    return with_kernel(desc->model_id, [&]<class K>(K) -> glm::vec3 {
+        if constexpr (requires { K::footprint_ndf_rgb(wo, wi, h, footprint, *desc); })
+            return K::footprint_ndf_rgb(wo, wi, h, footprint, *desc);
+        else
+            return glm::vec3(footprint_ndf(wo, wi, h));
+    });
 }
 
 glm::vec3 GlintBxdf::fresnel(float cos_oh) const {
@@ -118,10 +130,16 @@ float GlintBxdf::pdf(glm::vec3 wo, glm::vec3 wi) const {
 }
 
 float GlintBxdf::glint_lobe_pdf(glm::vec3 wo, glm::vec3 wi) const {
-    // jakob2014 samples its discrete model by 002 §4 (2α lobe ⊛ γ cone); its
-    // later bounces (no footprint) use the smooth model.
-    if (desc->model_id == GlintModelId::Jakob2014 && has_footprint)
-        return jakob2014_pdf(*desc, wo, wi);
+    // A model that samples its own lobe (jakob2014: its discrete model by 002
+    // §4, 2α lobe ⊛ γ cone) has its density; its later bounces (no
+    // footprint) use the smooth model.
+    if (has_footprint && samples_own_lobe(desc->model_id))
+        return with_kernel(desc->model_id, [&]<class K>(K) -> float {
+            if constexpr (requires { K::lobe_pdf(*desc, wo, wi); })
+                return K::lobe_pdf(*desc, wo, wi);
+            else
+                return 0.0f;  // not reached: samples_own_lobe
+        });
     glm::vec3 h = wo + wi;
     if (glm::dot(h, h) == 0.0f) return 0.0f;
     h = glm::normalize(h);
@@ -138,9 +156,15 @@ std::optional<BsdfSample> GlintBxdf::sample(glm::vec3 wo, float uc, glm::vec2 u)
         // The diffuse base: cosine-weighted hemisphere (Malley).
         const float r = std::sqrt(u.x), phi = 2.0f * shader::PI * u.y;
         wi = glm::vec3(r * std::cos(phi), r * std::sin(phi), std::sqrt(std::max(0.0f, 1.0f - u.x)));
-    } else if (desc->model_id == GlintModelId::Jakob2014 && has_footprint) {
+    } else if (has_footprint && samples_own_lobe(desc->model_id)) {
         uc = std::min(uc / pg, 0x1.fffffep-1f);  // reuse the lobe choice's uniform
-        const std::optional<glm::vec3> w = jakob2014_sample_wi(*desc, wo, uc, u);
+        const std::optional<glm::vec3> w =
+            with_kernel(desc->model_id, [&]<class K>(K) -> std::optional<glm::vec3> {
+                if constexpr (requires { K::sample_wi(*desc, wo, uc, u); })
+                    return K::sample_wi(*desc, wo, uc, u);
+                else
+                    return std::nullopt;  // not reached: samples_own_lobe
+            });
         if (!w) return std::nullopt;
         wi = *w;
     } else {

@@ -13,6 +13,9 @@
 // F the coating's dielectric Fresnel, and sampling picks the glint lobe with
 // PlasticBxdf's probability F(cos_o) / (F(cos_o) + (1 − F(cos_o)) max(base)),
 // else the cosine lobe.
+//
+// The model dispatch is expanded from the list of models (model_list.h):
+// each model's `MKernel` (glints/glint_kernel.h lists its optional hooks).
 #pragma once
 
 #include <optional>

@@ -9,23 +9,23 @@
 
 #include <glm/glm.hpp>
 
+#include "glintlab/glints/model_list.h"
 #include "glintlab/glints/model_params.h"
 #include "glintlab/microfacet/bxdfs.h"
 
 namespace glintlab {
 
-// Models in the order of the model list (glints/model_list.cpp); GlintBxdf
-// dispatches on it (static, no strings in the hot path).
+// The models, expanded from the list of models (model_list.h) in its order,
+// from Smooth = 0 (a new model is appended: the existing values stay).
+// GlintBxdf dispatches on it (static, no strings in the hot path).
 enum class GlintModelId : int {
-    Smooth = 0,
-    Deliot2023,
-    Zirr2016,
-    Chermain2020,
-    Explicit,
-    Jakob2014,
-    Kneiphof2025,
-    Wang2020,
+#define GLINTLAB_MODEL_ID(m, M) M,
+    GLINTLAB_GLINT_MODELS(GLINTLAB_MODEL_ID)
+#undef GLINTLAB_MODEL_ID
 };
+// The number of models: of GlintModelId values, GlintModelParams
+// alternatives and descriptors.
+inline constexpr int kGlintModelCount = GLINTLAB_GLINT_MODEL_COUNT;
 
 // The light types of the scene format; a model's descriptor lists those it
 // can shade and the scene loader rejects the others.

@@ -9,6 +9,7 @@
 #include <cstdint>
 #include <functional>
 #include <limits>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <type_traits>
@@ -23,6 +24,7 @@
 namespace glintlab {
 
 class JsonObject;
+struct GlintExportContext;
 struct GlintLightingContext;
 struct GpuModelHooks;
 struct Scene;
@@ -102,6 +104,25 @@ struct GlintValidationSuite {
     std::string name;
 };
 
+// `glintlab export` of a model with a GPU back end (export/shader_export.h,
+// docs/INTEGRATION.md): the sources the exporter flattens and the model's
+// own part of the manifest, stated in the model's descriptor.
+struct GlintModelExport {
+    // The export's glue (an embedded .glsl path): the renderer's glue, or one
+    // written for the export (wang2020 reads its tables from textures).
+    std::string glue;
+    // An option variant exported beside the default program ("": none): its
+    // name (the file suffix) and glue (deliot2023's noise texture, 000 §6.3).
+    std::string variant;
+    std::string variant_glue;
+    std::vector<std::string> compute;  // per-environment compute passes (embedded paths)
+    // Optional (export/model_export.h), defined beside the model
+    // (<model>/<model>_export.cpp) and named with GLINTLAB_EXPORT_HOOK: the
+    // exported material's resources (textures and the uniforms that go with
+    // them) and the uniforms the host derives from its parameters.
+    void (*material)(GlintExportContext& ctx) = nullptr;
+};
+
 struct GlintModelDescriptor {
     GlintModelId id = GlintModelId::Smooth;
     std::string_view name;
@@ -134,11 +155,23 @@ struct GlintModelDescriptor {
     bool (*shades_light)(const GlintDesc& desc, const Scene& scene, int light) = nullptr;
     glm::vec3 (*light_radiance)(const GlintLightingContext& ctx, int light) = nullptr;
     GlintValidationSuite validation;  // name empty: no suite
+    // Set (set_export): `glintlab export` writes the model (its GPU back end).
+    std::optional<GlintModelExport> shader_export;
 
     // A model with a GPU back end: set_gpu_hooks(GLINTLAB_GPU_HOOKS(foo_gpu_hooks)).
     void set_gpu_hooks(const GpuModelHooks& (*hooks)()) {
         gpu = true;
         gpu_hooks = hooks;
+    }
+    // A model `glintlab export` writes: set_export(glue,
+    // GLINTLAB_EXPORT_HOOK(foo_export_material)); returns the export for its
+    // other fields (variant, compute passes).
+    GlintModelExport& set_export(std::string glue,
+                                 void (*material)(GlintExportContext& ctx) = nullptr) {
+        shader_export = GlintModelExport{};
+        shader_export->glue = std::move(glue);
+        shader_export->material = material;
+        return *shader_export;
     }
 
     bool shades(GlintLightType type) const;
@@ -173,6 +206,15 @@ GlintModelDescriptor make_glint_model_descriptor(GlintModelId id, std::string_vi
 #define GLINTLAB_GPU_HOOKS(hooks_function) (&(hooks_function))
 #else
 #define GLINTLAB_GPU_HOOKS(hooks_function) nullptr
+#endif
+
+// The hook of GlintModelExport::material: the model's function, null in the
+// lean fuzzing build (GLINTLAB_NO_MODEL_EXPORT), which compiles the
+// descriptors without the export code.
+#ifndef GLINTLAB_NO_MODEL_EXPORT
+#define GLINTLAB_EXPORT_HOOK(hook_function) (&(hook_function))
+#else
+#define GLINTLAB_EXPORT_HOOK(hook_function) nullptr
 #endif
 
 // Table rows from a member of the model's params struct P.

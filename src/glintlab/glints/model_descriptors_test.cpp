@@ -9,13 +9,20 @@
 #include <fstream>
 #include <set>
 #include <sstream>
+#include <string_view>
+#include <type_traits>
+#include <utility>
+#include <variant>
+#include <vector>
 
 #include <fmt/format.h>
 
 #include "glintlab/core/error.h"
 #include "glintlab/core/json_reader.h"
+#include "glintlab/export/shader_export.h"
 #include "glintlab/glints/glint_panel_model.h"
 #include "glintlab/glints/model_docs.h"
+#include "glintlab/glints/model_list.h"
 #include "glintlab/glints/registry.h"
 #include "glintlab/glints/validation_suites.h"
 #include "glintlab/scene/scene_loader.h"
@@ -127,6 +134,63 @@ TEST(ModelDescriptors, ListIsCompleteAndConsistent) {
             EXPECT_FALSE(p.doc.empty()) << m.name << "/" << p.key;
         }
     }
+}
+
+// The list of models (model_list.h) drives the GlintModelId enum, the
+// GlintModelParams variant and the descriptors: as many of each as list
+// entries, entry i being id i, its params struct the variant's alternative i
+// and its descriptor the i-th, with the entry's name.
+#define GLINTLAB_CHECK_PARAMS(m, M)                                                             \
+    static_assert(                                                                              \
+        std::is_same_v<                                                                         \
+            std::variant_alternative_t<static_cast<size_t>(GlintModelId::M), GlintModelParams>, \
+            M##Params>);
+GLINTLAB_GLINT_MODELS(GLINTLAB_CHECK_PARAMS)
+#undef GLINTLAB_CHECK_PARAMS
+static_assert(std::variant_size_v<GlintModelParams> == kGlintModelCount);
+// The ids keep their values (a new model is appended to the list).
+static_assert(static_cast<int>(GlintModelId::Smooth) == 0 &&
+              static_cast<int>(GlintModelId::Deliot2023) == 1 &&
+              static_cast<int>(GlintModelId::Zirr2016) == 2 &&
+              static_cast<int>(GlintModelId::Chermain2020) == 3 &&
+              static_cast<int>(GlintModelId::Explicit) == 4 &&
+              static_cast<int>(GlintModelId::Jakob2014) == 5 &&
+              static_cast<int>(GlintModelId::Kneiphof2025) == 6 &&
+              static_cast<int>(GlintModelId::Wang2020) == 7);
+
+TEST(ModelList, DrivesTheIdsTheParamsAndTheDescriptors) {
+#define GLINTLAB_LIST_ENTRY(m, M) {#m, GlintModelId::M},
+    const std::pair<std::string_view, GlintModelId> list[] = {
+        GLINTLAB_GLINT_MODELS(GLINTLAB_LIST_ENTRY)};
+#undef GLINTLAB_LIST_ENTRY
+    ASSERT_EQ(std::size(list), static_cast<size_t>(kGlintModelCount));
+    ASSERT_EQ(glint_models().size(), std::size(list));
+    for (size_t i = 0; i < std::size(list); ++i) {
+        const GlintModelDescriptor& m = glint_models()[i];
+        EXPECT_EQ(m.name, list[i].first);
+        EXPECT_EQ(m.id, list[i].second) << m.name;
+        EXPECT_EQ(static_cast<size_t>(m.id), i) << m.name;
+        // default_params is the alternative of the model's params struct.
+        EXPECT_EQ(m.default_params().index(), i) << m.name;
+        GlintDesc desc;
+        switch_glint_model(desc, m.id);
+        EXPECT_EQ(desc.params.index(), i) << m.name;
+    }
+}
+
+// `glintlab export` writes the models whose descriptors state an export, and
+// only models with a GPU back end: the exporter names no model.
+TEST(ModelList, ExportableModelsAreTheDescriptorsWithAnExport) {
+    std::vector<std::string> with_export;
+    for (const GlintModelDescriptor& m : glint_models()) {
+        if (!m.shader_export) continue;
+        with_export.emplace_back(m.name);
+        EXPECT_TRUE(m.gpu) << m.name;
+        EXPECT_FALSE(m.shader_export->glue.empty()) << m.name;
+        EXPECT_EQ(m.shader_export->variant.empty(), m.shader_export->variant_glue.empty())
+            << m.name;
+    }
+    EXPECT_EQ(exportable_models(), with_export);
 }
 
 // A descriptor names its suite; the model's folder defines its runner in the

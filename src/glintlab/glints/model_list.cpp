@@ -10,13 +10,13 @@
 
 namespace glintlab {
 
-#define GLINTLAB_DECLARE_DESCRIPTOR(model) GlintModelDescriptor model##_descriptor();
+#define GLINTLAB_DECLARE_DESCRIPTOR(model, Model) GlintModelDescriptor model##_descriptor();
 GLINTLAB_GLINT_MODELS(GLINTLAB_DECLARE_DESCRIPTOR)
 #undef GLINTLAB_DECLARE_DESCRIPTOR
 
 const std::vector<GlintModelDescriptor>& glint_model_list() {
     static const std::vector<GlintModelDescriptor> list = [] {
-#define GLINTLAB_DESCRIPTOR(model) model##_descriptor(),
+#define GLINTLAB_DESCRIPTOR(model, Model) model##_descriptor(),
         std::vector<GlintModelDescriptor> l = {GLINTLAB_GLINT_MODELS(GLINTLAB_DESCRIPTOR)};
 #undef GLINTLAB_DESCRIPTOR
         for (size_t i = 0; i < l.size(); ++i)

@@ -1,24 +1,32 @@
 // Each glint model's own parameters, read from its block of the glint
 // material (ARCHITECTURE.md §4) by the model's read_params (registry.cpp).
-// A closed set: add the model's parameter struct to the variant.
+// The variant is expanded from the list of models (model_list.h): its
+// alternatives are the models' MParams structs (glints/m/m_params.h), in
+// GlintModelId order, so alternative i is the parameters of model id i.
 #pragma once
 
 #include <variant>
 
-#include "glintlab/glints/chermain2020/chermain2020_params.h"
-#include "glintlab/glints/deliot2023/deliot2023_params.h"
-#include "glintlab/glints/explicit/explicit_params.h"
-#include "glintlab/glints/jakob2014/jakob2014_params.h"
-#include "glintlab/glints/kneiphof2025/kneiphof2025_params.h"
-#include "glintlab/glints/wang2020/wang2020_params.h"
-#include "glintlab/glints/zirr2016/zirr2016_params.h"
+#include "glintlab/glints/model_list.h"
+
+#define GLINTLAB_MODEL_HEADER_KIND params
+#include "glintlab/glints/model_headers.h"
+#undef GLINTLAB_MODEL_HEADER_KIND
 
 namespace glintlab {
 
-struct SmoothParams {};  // `smooth` has no parameters of its own
+namespace detail {
+// std::variant<P...> of a list written `void, P0, P1, ...` (the X-macro's
+// expansion has a leading comma per entry).
+template <class Void, class... P>
+struct GlintParamsVariant {
+    using type = std::variant<P...>;
+};
+}  // namespace detail
 
+#define GLINTLAB_MODEL_PARAMS_TYPE(m, M) , M##Params
 using GlintModelParams =
-    std::variant<SmoothParams, Deliot2023Params, Zirr2016Params, Chermain2020Params,
-                 Jakob2014Params, Kneiphof2025Params, ExplicitParams, Wang2020Params>;
+    detail::GlintParamsVariant<void GLINTLAB_GLINT_MODELS(GLINTLAB_MODEL_PARAMS_TYPE)>::type;
+#undef GLINTLAB_MODEL_PARAMS_TYPE
 
 }  // namespace glintlab

@@ -11,7 +11,7 @@
 
 namespace glintlab {
 
-#define GLINTLAB_DECLARE_SUITE(model) ValidationSuiteRunner model##_validation_suite();
+#define GLINTLAB_DECLARE_SUITE(model, Model) ValidationSuiteRunner model##_validation_suite();
 GLINTLAB_GLINT_MODELS(GLINTLAB_DECLARE_SUITE)
 #undef GLINTLAB_DECLARE_SUITE
 
@@ -26,7 +26,7 @@ const std::map<std::string, ValidationSuiteRunner>& validation_suites() {
         // library holds the names, the research library the code. A runner
         // without a name, or a name without a runner, is a programming error:
         // `glintlab validate` would list a suite it cannot run.
-#define GLINTLAB_SUITE(model) model##_validation_suite(),
+#define GLINTLAB_SUITE(model, Model) model##_validation_suite(),
         const ValidationSuiteRunner runners[] = {GLINTLAB_GLINT_MODELS(GLINTLAB_SUITE)};
 #undef GLINTLAB_SUITE
         const auto models = glint_models();

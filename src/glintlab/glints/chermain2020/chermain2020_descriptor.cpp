@@ -38,7 +38,8 @@ void fit_chermain2020(GlintDesc& desc) {
 
 }  // namespace
 
-const GpuModelHooks& chermain2020_gpu_hooks();  // chermain2020/chermain2020_gpu*.cpp
+const GpuModelHooks& chermain2020_gpu_hooks();               // chermain2020/chermain2020_gpu*.cpp
+void chermain2020_export_material(GlintExportContext& ctx);  // chermain2020/chermain2020_export.cpp
 
 GlintModelDescriptor chermain2020_descriptor() {
     namespace gp = glint_param;
@@ -51,6 +52,8 @@ GlintModelDescriptor chermain2020_descriptor() {
                     "Computer Graphics Forum 39(7) (Pacific Graphics 2020)",
                     "Procedural Physically based BRDF for Real-Time Rendering of Glints"}};
     d.set_gpu_hooks(GLINTLAB_GPU_HOOKS(chermain2020_gpu_hooks));
+    d.set_export("glintlab/glints/chermain2020/chermain2020_gpu.glsl",
+                 GLINTLAB_EXPORT_HOOK(chermain2020_export_material));
     d.params = {
         gp::number("relative_area", &P::relative_area, 0.0, 1.0, "",
                    "beta (004 §7.1): fraction of cells that carry facets"),

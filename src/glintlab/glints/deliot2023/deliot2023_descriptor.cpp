@@ -4,7 +4,8 @@
 
 namespace glintlab {
 
-const GpuModelHooks& deliot2023_gpu_hooks();  // deliot2023/deliot2023_gpu*.cpp
+const GpuModelHooks& deliot2023_gpu_hooks();               // deliot2023/deliot2023_gpu*.cpp
+void deliot2023_export_material(GlintExportContext& ctx);  // deliot2023/deliot2023_export.cpp
 
 GlintModelDescriptor deliot2023_descriptor() {
     namespace gp = glint_param;
@@ -17,6 +18,10 @@ GlintModelDescriptor deliot2023_descriptor() {
                     "Real-Time Rendering of Glinty Appearances using Distributed Binomial Laws "
                     "on Anisotropic Grids"}};
     d.set_gpu_hooks(GLINTLAB_GPU_HOOKS(deliot2023_gpu_hooks));
+    GlintModelExport& e = d.set_export("glintlab/glints/deliot2023/deliot2023_gpu.glsl",
+                                       GLINTLAB_EXPORT_HOOK(deliot2023_export_material));
+    e.variant = "noise_texture";
+    e.variant_glue = "glintlab/glints/deliot2023/deliot2023_noise_texture_gpu.glsl";
     d.params = {
         gp::microfacet_roughness(
             &P::microfacet_roughness,

@@ -29,7 +29,8 @@ void fit_kneiphof2025(GlintDesc& desc) {
 
 }  // namespace
 
-const GpuModelHooks& kneiphof2025_gpu_hooks();  // kneiphof2025/kneiphof2025_gpu*.cpp
+const GpuModelHooks& kneiphof2025_gpu_hooks();               // kneiphof2025/kneiphof2025_gpu*.cpp
+void kneiphof2025_export_material(GlintExportContext& ctx);  // kneiphof2025/kneiphof2025_export.cpp
 
 GlintModelDescriptor kneiphof2025_descriptor() {
     namespace gp = glint_param;
@@ -43,6 +44,12 @@ GlintModelDescriptor kneiphof2025_descriptor() {
     d.citations = {{"003", "Kneiphof, Klein", 2025, "Computer Graphics Forum 44(4) (EGSR 2025)",
                     "Real-Time Image-Based Lighting of Glints"}};
     d.set_gpu_hooks(GLINTLAB_GPU_HOOKS(kneiphof2025_gpu_hooks));
+    GlintModelExport& e = d.set_export("glintlab/glints/kneiphof2025/kneiphof2025_gpu.glsl",
+                                       GLINTLAB_EXPORT_HOOK(kneiphof2025_export_material));
+    e.compute = {"glintlab/glints/kneiphof2025/kneiphof2025_prefilter_base.comp.glsl",
+                 "glintlab/glints/kneiphof2025/kneiphof2025_prefilter_partition.comp.glsl",
+                 "glintlab/glints/kneiphof2025/kneiphof2025_prefilter_reduce.comp.glsl",
+                 "glintlab/glints/kneiphof2025/kneiphof2025_prefilter_filter.comp.glsl"};
     d.params = {
         gp::integer("levels", &P::levels, 4, 8, "",
                     "K radiance levels of the environment partition (003 §4-5)", {4, 8}),

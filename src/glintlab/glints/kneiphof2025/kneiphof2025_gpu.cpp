@@ -106,17 +106,7 @@ void Kneiphof2025Resources::prepare(unsigned program, UniformCache& u, const Sce
         // table itself (lookup at a texel centre returns the entry exactly),
         // bilinear with clamped borders like Kneiphof2025DfgLut::lookup.
         constexpr int n = Kneiphof2025DfgLut::kSize;
-        std::vector<float> rgba(static_cast<size_t>(n) * n * 4, 0.0f);
-        const Kneiphof2025DfgLut& lut = Kneiphof2025DfgLut::get();
-        for (int j = 0; j < n; ++j)
-            for (int i = 0; i < n; ++i) {
-                const glm::vec3 v = lut.lookup((static_cast<float>(i) + 0.5f) / n,
-                                               (static_cast<float>(j) + 0.5f) / n);
-                float* t = &rgba[(static_cast<size_t>(j) * n + i) * 4];
-                t[0] = v.x;
-                t[1] = v.y;
-                t[2] = v.z;
-            }
+        const std::vector<float> rgba = Kneiphof2025DfgLut::get().rgba_texture();
         dfg_ = make_texture(GL_TEXTURE_2D);
         glTextureStorage2D(dfg_.get(), 1, GL_RGBA32F, n, n);
         glPixelStorei(GL_UNPACK_ALIGNMENT, 4);

@@ -520,6 +520,21 @@ glm::vec3 Kneiphof2025DfgLut::lookup(float cos_o, float roughness) const {
            (1 - tx) * ty * at(x0, y0 + 1) + tx * ty * at(x0 + 1, y0 + 1);
 }
 
+std::vector<float> Kneiphof2025DfgLut::rgba_texture() const {
+    constexpr int n = kSize;
+    std::vector<float> rgba(static_cast<size_t>(n) * n * 4, 0.0f);
+    for (int j = 0; j < n; ++j)
+        for (int i = 0; i < n; ++i) {
+            const glm::vec3 v =
+                lookup((static_cast<float>(i) + 0.5f) / n, (static_cast<float>(j) + 0.5f) / n);
+            float* t = &rgba[(static_cast<size_t>(j) * n + i) * 4];
+            t[0] = v.x;
+            t[1] = v.y;
+            t[2] = v.z;
+        }
+    return rgba;
+}
+
 // --- on-disk cache of the prefiltered maps ------------------------------------
 
 namespace {

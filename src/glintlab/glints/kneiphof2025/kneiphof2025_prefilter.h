@@ -169,6 +169,10 @@ class Kneiphof2025DfgLut {
     static const Kneiphof2025DfgLut& get();
     // (A, B, E_D / D_H), bilinear over texel centres, clamped at the borders.
     glm::vec3 lookup(float cos_o, float roughness) const;
+    // The table as a kSize x kSize RGBA float texture, (A, B, E_D / D_H, 0)
+    // looked up at the texel centres (x: cos_o, y: sqrt(alpha)): the GPU
+    // renderer's texture and the export's resource.
+    std::vector<float> rgba_texture() const;
     // One entry computed directly (the table's integrand), for tests.
     static glm::vec3 integrate(float cos_o, float roughness, int samples);
     // The whole table (row-major over (roughness, cos_o)), computed; with a

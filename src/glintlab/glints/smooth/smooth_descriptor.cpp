@@ -20,6 +20,7 @@ GlintModelDescriptor smooth_descriptor() {
          "Understanding the Masking-Shadowing Function in Microfacet-Based BRDFs"},
     };
     d.set_gpu_hooks(GLINTLAB_GPU_HOOKS(smooth_gpu_hooks));
+    d.set_export("glintlab/glints/smooth_gpu.glsl");
     return d;
 }
 

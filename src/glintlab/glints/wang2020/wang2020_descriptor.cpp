@@ -34,7 +34,8 @@ void fit_wang2020(GlintDesc& desc) {
 
 }  // namespace
 
-const GpuModelHooks& wang2020_gpu_hooks();  // wang2020/wang2020_gpu*.cpp
+const GpuModelHooks& wang2020_gpu_hooks();               // wang2020/wang2020_gpu*.cpp
+void wang2020_export_material(GlintExportContext& ctx);  // wang2020/wang2020_export.cpp
 
 GlintModelDescriptor wang2020_descriptor() {
     namespace gp = glint_param;
@@ -47,6 +48,12 @@ GlintModelDescriptor wang2020_descriptor() {
                     "Real-Time Glints Rendering with Pre-Filtered Discrete Stochastic "
                     "Microfacets"}};
     d.set_gpu_hooks(GLINTLAB_GPU_HOOKS(wang2020_gpu_hooks));
+    // The renderer's glue reads the tables from SSBOs (wang2020_gpu.glsl);
+    // the export reads them from textures in every language (GLSL ES 3.00
+    // has no storage buffers), the rest of the glue is shared
+    // (wang2020_glue_common.glsl).
+    d.set_export("glintlab/glints/wang2020/wang2020_export_textures.glsl",
+                 GLINTLAB_EXPORT_HOOK(wang2020_export_material));
     d.params = {
         gp::number("gamma_deg", &P::gamma_deg, 1.0, 30.0, "deg",
                    "search cone half-angle gamma (001 §3.1)"),

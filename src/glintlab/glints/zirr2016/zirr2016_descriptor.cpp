@@ -16,6 +16,7 @@ GlintModelDescriptor zirr2016_descriptor() {
     d.citations = {{"", "Zirr, Kaplanyan", 2016, "I3D 2016",
                     "Real-time Rendering of Procedural Multiscale Materials"}};
     d.set_gpu_hooks(GLINTLAB_GPU_HOOKS(zirr2016_gpu_hooks));
+    d.set_export("glintlab/glints/zirr2016/zirr2016_gpu.glsl");
     d.params = {
         gp::microfacet_roughness(
             &P::microfacet_roughness,
