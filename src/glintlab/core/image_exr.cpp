@@ -16,6 +16,7 @@
 
 #include "glintlab/core/error.h"
 #include "glintlab/core/image_formats.h"
+#include "glintlab/core/memory_limit.h"
 
 namespace glintlab::image_formats {
 namespace {
@@ -125,6 +126,26 @@ int fixed_attribute_size(const std::string& type) {
     return 0;
 }
 
+// Scanlines in one chunk of each compression (OpenEXR file layout,
+// "Scan Lines"): OpenEXR's scanline reader allocates a buffer of that many
+// uncompressed lines of the data window when it opens the file.
+int64_t exr_lines_per_chunk(int compression) {
+    switch (compression) {
+        case 3:
+        case 5:
+            return 16;  // ZIP, PXR24
+        case 4:
+        case 6:
+        case 7:
+        case 8:
+            return 32;  // PIZ, B44, B44A, DWAA
+        case 9:
+            return 256;  // DWAB
+        default:
+            return 1;  // none, RLE, ZIPS (and unknown: OpenEXR rejects)
+    }
+}
+
 // OpenEXR's header reader allocates each attribute's value at the size the
 // file declares before reading it (OpaqueAttribute::readValueFrom for types
 // it does not know, PreviewImage for "preview"), so a 250-byte file declaring
@@ -138,6 +159,13 @@ int fixed_attribute_size(const std::string& type) {
 // width x height x 4 bytes; any other value is its declared size, allocated
 // first. Every allocation must fit in what is left of the file. A structure
 // this walk cannot follow is left to OpenEXR to report.
+// The walk also checks each part's data window against the memory limit
+// before OpenEXR sees it: opening a file allocates line buffers of the
+// window's width (a chunk of lines, every channel), so a 405-byte file
+// claiming a 33-million-pixel-wide window allocated a gigabyte before
+// read_exr's own size check ran (found by the image fuzzer as a 35 s
+// timeout under ASan, which fills freed blocks; fuzz/regressions/image/
+// exr_data_window_33M_wide.exr).
 void check_exr_attribute_sizes(const std::filesystem::path& path) {
     std::error_code ec;
     const uint64_t file_size = std::filesystem::file_size(path, ec);
@@ -168,18 +196,36 @@ void check_exr_attribute_sizes(const std::filesystem::path& path) {
     std::string name, type, channel;
     for (bool any = true; any;) {
         any = false;
+        int64_t window_w = 0, window_h = 0, pixel_bytes = 0, lines = 1, tile_w = 0, tile_h = 0;
         while (read_string(name) && !name.empty()) {
             any = true;
-            char word[8];
+            char word[16];
             if (!read_string(type) || !in.read(word, 4)) return;
             const auto size = static_cast<int32_t>(little_endian_32(word));
             if (size < 0) return;  // OpenEXR rejects it
-            if (const int fixed = fixed_attribute_size(type); fixed > 0) {
+            if (name == "dataWindow" && type == "box2i") {
+                if (!in.read(word, 16)) return;
+                auto side = [&](int lo, int hi) {
+                    return int64_t(int32_t(little_endian_32(word + 4 * hi))) -
+                           int64_t(int32_t(little_endian_32(word + 4 * lo))) + 1;
+                };
+                window_w = side(0, 2), window_h = side(1, 3);
+            } else if (name == "tiles" && type == "tiledesc") {
+                // A tiled file's buffers hold whole tiles instead of lines.
+                if (!in.read(word, 9)) return;
+                tile_w = little_endian_32(word), tile_h = little_endian_32(word + 4);
+            } else if (name == "compression" && type == "compression") {
+                if (!in.read(word, 1)) return;
+                lines = exr_lines_per_chunk(uint8_t(word[0]));
+            } else if (const int fixed = fixed_attribute_size(type); fixed > 0) {
                 in.seekg(fixed, std::ios::cur);
             } else if (type == "chlist") {
                 // Entries: name\0, then 16 bytes (type, pLinear, reserved, sampling).
-                while (read_string(channel) && !channel.empty())
-                    if (!in.seekg(16, std::ios::cur)) return;
+                pixel_bytes = 0;
+                while (read_string(channel) && !channel.empty()) {
+                    if (!in.read(word, 16)) return;
+                    pixel_bytes += little_endian_32(word) == 1 ? 2 : 4;  // HALF, else 32 bits
+                }
                 if (!in) return;
             } else if (type == "preview") {
                 if (size < 8 || !in.read(word, 8)) return;
@@ -190,6 +236,17 @@ void check_exr_attribute_sizes(const std::filesystem::path& path) {
                 require_fits(name, type, uint64_t(size));
                 in.seekg(size, std::ios::cur);
             }
+        }
+        if (window_w > 0 && window_h > 0) {
+            // As read_exr requires once the file is open (12 + 20 bytes a
+            // pixel), and OpenEXR's line buffers.
+            require_image_memory(path, "OpenEXR data window", window_w, window_h, 20);
+            const bool tiled = tile_w > 0 && tile_h > 0;
+            const int64_t buffer_w = tiled ? tile_w : window_w, buffer_h = tiled ? tile_h : lines;
+            require_memory({{fmt::format("OpenEXR {} buffer ({}x{} pixels, {} bytes a pixel)",
+                                         tiled ? "tile" : "line", buffer_w, buffer_h, pixel_bytes),
+                             uint64_t(buffer_w) * uint64_t(buffer_h) * uint64_t(pixel_bytes)}},
+                           fmt::format("{}: opening the OpenEXR file", path.string()));
         }
         if (!in || !multipart) return;
     }

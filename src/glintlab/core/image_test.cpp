@@ -261,6 +261,26 @@ TEST(ImageErrors, HeaderSizesAreCheckedAgainstTheMemoryLimitBeforeAllocating) {
     expect_error([&] { read_image(dir / "idat.png"); },
                  {"idat.png: cannot read PNG file: chunk 'IDAT' declares 1073741824 bytes but "
                   "only 10 bytes of the file follow it"});
+    // EXR: a DWAB file 100000 pixels wide and one line high (0.4 MB of
+    // pixels): opening it allocates a line buffer of a 256-line chunk,
+    // 100000 x 256 x 4 bytes = 98 MiB, before any size check in read_exr ran
+    // (the fuzzer's 33-million-pixel-wide window allocated a gigabyte).
+    {
+        const Imath::Box2i window(Imath::V2i(0, 0), Imath::V2i(99999, 0));
+        Imf::Header header(window, window);
+        header.compression() = Imf::DWAB_COMPRESSION;
+        header.channels().insert("R", Imf::Channel(Imf::FLOAT));
+        std::vector<float> row(100000, 0.5f);
+        Imf::FrameBuffer frame;
+        frame.insert("R",
+                     Imf::Slice(Imf::FLOAT, reinterpret_cast<char*>(row.data()), sizeof(float), 0));
+        Imf::OutputFile file((dir / "wide.exr").c_str(), header);
+        file.setFrameBuffer(frame);
+        file.writePixels(1);
+    }
+    expect_error([&] { read_image(dir / "wide.exr"); },
+                 {"wide.exr: opening the OpenEXR file needs about",
+                  "OpenEXR line buffer (100000x256 pixels, 4 bytes a pixel)"});
     // A small image still reads under the small limit.
     write_png(Image(4, 4, glm::vec3(0.25f)), dir / "small.png");
     EXPECT_EQ(read_image(dir / "small.png").width, 4);
