@@ -1,14 +1,14 @@
 // The lean fuzzing build compiles the glint model descriptors (their
-// parameter tables, which the scene reader uses) but not the models. Three
-// descriptors point at their model's lighting functions, which only the
-// renderers call; loading a scene never does. These definitions satisfy the
-// linker and abort loudly should a loader ever reach one.
+// parameter tables, which the scene reader uses) but not the models. A model
+// that shades some lights itself names its lighting functions in its
+// descriptor through GLINTLAB_SHADES_LIGHT_HOOK / GLINTLAB_LIGHT_RADIANCE_HOOK
+// (glint_model_descriptor.h), which in this build (GLINTLAB_NO_MODEL_LIGHTING)
+// point every such model at these two. Only the renderers call them; loading
+// a scene never does. They abort loudly should a loader ever reach one.
 #include <cstdio>
 #include <cstdlib>
 
-#include "glintlab/glints/explicit/explicit_model.h"
-#include "glintlab/glints/kneiphof2025/kneiphof2025.h"
-#include "glintlab/glints/wang2020/wang2020_model.h"
+#include "glintlab/glints/glint_model_descriptor.h"
 
 namespace glintlab {
 
@@ -19,22 +19,10 @@ namespace {
 }
 }  // namespace
 
-bool explicit_shades_light(const GlintDesc&, const Scene&, int) {
+bool shades_light_outside_this_build(const GlintDesc&, const Scene&, int) {
     not_in_fuzz_build(__func__);
 }
-glm::vec3 explicit_light_radiance(const GlintLightingContext&, int) {
-    not_in_fuzz_build(__func__);
-}
-bool kneiphof2025_shades_light(const GlintDesc&, const Scene&, int) {
-    not_in_fuzz_build(__func__);
-}
-glm::vec3 kneiphof2025_light_radiance(const GlintLightingContext&, int) {
-    not_in_fuzz_build(__func__);
-}
-bool wang2020_shades_light(const GlintDesc&, const Scene&, int) {
-    not_in_fuzz_build(__func__);
-}
-glm::vec3 wang2020_light_radiance(const GlintLightingContext&, int) {
+glm::vec3 light_radiance_outside_this_build(const GlintLightingContext&, int) {
     not_in_fuzz_build(__func__);
 }
 

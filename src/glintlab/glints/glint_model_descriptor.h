@@ -217,6 +217,22 @@ GlintModelDescriptor make_glint_model_descriptor(GlintModelId id, std::string_vi
 #define GLINTLAB_EXPORT_HOOK(hook_function) nullptr
 #endif
 
+// The lighting hooks of a model that shades some lights itself
+// (glint_lighting.h): its functions, except in the lean fuzzing build
+// (GLINTLAB_NO_MODEL_LIGHTING), which compiles the descriptors without the
+// models. There they are one shared pair that aborts (fuzz/
+// no_model_lighting.cpp): loading a scene never shades, but the scene reader
+// asks whether a model has the hooks, so they must not be null.
+#ifndef GLINTLAB_NO_MODEL_LIGHTING
+#define GLINTLAB_SHADES_LIGHT_HOOK(hook_function) (&(hook_function))
+#define GLINTLAB_LIGHT_RADIANCE_HOOK(hook_function) (&(hook_function))
+#else
+bool shades_light_outside_this_build(const GlintDesc& desc, const Scene& scene, int light);
+glm::vec3 light_radiance_outside_this_build(const GlintLightingContext& ctx, int light);
+#define GLINTLAB_SHADES_LIGHT_HOOK(hook_function) (&shades_light_outside_this_build)
+#define GLINTLAB_LIGHT_RADIANCE_HOOK(hook_function) (&light_radiance_outside_this_build)
+#endif
+
 // Table rows from a member of the model's params struct P.
 namespace glint_param {
 

@@ -59,8 +59,8 @@ GlintModelDescriptor explicit_descriptor() {
     };
     d.check = check_explicit;
     d.fit_material = fit_explicit;
-    d.shades_light = explicit_shades_light;
-    d.light_radiance = explicit_light_radiance;
+    d.shades_light = GLINTLAB_SHADES_LIGHT_HOOK(explicit_shades_light);
+    d.light_radiance = GLINTLAB_LIGHT_RADIANCE_HOOK(explicit_light_radiance);
     d.validation = {"explicit"};  // run by the research library (validation_suites.h)
     return d;
 }

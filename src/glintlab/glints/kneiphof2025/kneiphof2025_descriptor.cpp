@@ -87,8 +87,8 @@ GlintModelDescriptor kneiphof2025_descriptor() {
     };
     d.check = check_kneiphof2025;
     d.fit_material = fit_kneiphof2025;
-    d.shades_light = kneiphof2025_shades_light;
-    d.light_radiance = kneiphof2025_light_radiance;
+    d.shades_light = GLINTLAB_SHADES_LIGHT_HOOK(kneiphof2025_shades_light);
+    d.light_radiance = GLINTLAB_LIGHT_RADIANCE_HOOK(kneiphof2025_light_radiance);
     d.validation = {"kneiphof2025"};  // run by the research library (validation_suites.h)
     return d;
 }

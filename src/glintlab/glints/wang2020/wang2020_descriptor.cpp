@@ -78,8 +78,8 @@ GlintModelDescriptor wang2020_descriptor() {
     };
     d.check = check_wang2020;
     d.fit_material = fit_wang2020;
-    d.shades_light = wang2020_shades_light;
-    d.light_radiance = wang2020_light_radiance;
+    d.shades_light = GLINTLAB_SHADES_LIGHT_HOOK(wang2020_shades_light);
+    d.light_radiance = GLINTLAB_LIGHT_RADIANCE_HOOK(wang2020_light_radiance);
     d.validation = {"wang2020"};  // run by the research library (validation_suites.h)
     return d;
 }
