@@ -1,4 +1,5 @@
 #include "glintlab/core/disk_cache.h"
+#include "glintlab/core/disk_cache_test_util.h"
 
 #include <gtest/gtest.h>
 
@@ -12,23 +13,7 @@ namespace {
 
 // Each test gets its own cache directory (pid + test name), so that parallel
 // ctest processes never share files, and the cache enabled in it.
-class DiskCacheTest : public ::testing::Test {
-  protected:
-    void SetUp() override {
-        dir_ = std::filesystem::temp_directory_path() /
-               ("glintlab_cache_" + std::to_string(::getpid()) + "_" +
-                ::testing::UnitTest::GetInstance()->current_test_info()->name());
-        std::filesystem::remove_all(dir_);
-        ::setenv("GLINTLAB_CACHE_DIR", dir_.c_str(), 1);
-        ::unsetenv("GLINTLAB_NO_CACHE");
-        set_disk_cache_enabled(true);
-    }
-    void TearDown() override {
-        std::filesystem::remove_all(dir_);
-        ::unsetenv("GLINTLAB_CACHE_DIR");
-    }
-    std::filesystem::path dir_;
-};
+class DiskCacheTest : public testing::TempDiskCacheTest {};
 
 std::vector<unsigned char> payload() {
     std::vector<unsigned char> p(10000);

@@ -12,6 +12,7 @@
 #include <set>
 
 #include "glintlab/core/disk_cache.h"
+#include "glintlab/core/disk_cache_test_util.h"
 #include "glintlab/glints/kneiphof2025/kneiphof2025_prefilter.h"
 #include "glintlab/scene/environment.h"
 
@@ -80,23 +81,7 @@ std::vector<std::filesystem::path> files_in(const std::filesystem::path& dir) {
     return files;
 }
 
-class Kneiphof2025PrefilterCache : public ::testing::Test {
-  protected:
-    void SetUp() override {
-        dir_ = std::filesystem::temp_directory_path() /
-               ("glintlab_kneiphof2025_prefilter_cache_" + std::to_string(::getpid()));
-        std::filesystem::remove_all(dir_);
-        ::setenv("GLINTLAB_CACHE_DIR", dir_.c_str(), 1);
-        ::unsetenv("GLINTLAB_NO_CACHE");
-        set_disk_cache_enabled(true);
-    }
-    void TearDown() override {
-        std::filesystem::remove_all(dir_);
-        ::unsetenv("GLINTLAB_CACHE_DIR");
-        ::setenv("GLINTLAB_NO_CACHE", "1", 1);
-    }
-    std::filesystem::path dir_;
-};
+class Kneiphof2025PrefilterCache : public testing::TempDiskCacheTest {};
 
 TEST_F(Kneiphof2025PrefilterCache, HitEqualsBuiltAndBadFilesAreRebuilt) {
     const EnvironmentMap env(sky(), 1.5f, 30.0f);
