@@ -15,7 +15,7 @@
 #                                     one after the other, keeping the corpus
 #                                     in BUILD_FUZZ/corpus/TARGET between runs
 #
-# Targets: scene gltf obj image (default: all; ci: all but image). Every run is under
+# Targets: scene gltf obj image (default: all). Every run is under
 # AddressSanitizer + UndefinedBehaviorSanitizer; a crash, leak, UB report,
 # out-of-memory (> 2 GiB) or an input slower than 30 s stops the target and
 # leaves the input in BUILD_FUZZ/artifacts/TARGET/ (add it to
@@ -26,13 +26,7 @@ cd "$(dirname "$0")/.."
 mode=${1:?usage: scripts/fuzz.sh ci|long [TARGET...]}
 shift
 targets=("$@")
-# CI leaves the image target out: stb's JPEG entropy decoder has latent
-# undefined behaviour (fuzz/open/image/, docs/VALIDATION.md "Fuzzing" item
-# 12), and a seeded run meets it or not depending on how many inputs the
-# machine gets through in 60 s. Name the target to run it.
-if [ ${#targets[@]} -eq 0 ]; then
-    if [ "$mode" = ci ]; then targets=(scene gltf obj); else targets=(scene gltf obj image); fi
-fi
+if [ ${#targets[@]} -eq 0 ]; then targets=(scene gltf obj image); fi
 build=${BUILD_FUZZ:-build/fuzz}
 bin=$build/fuzz
 case $mode in

@@ -8,7 +8,7 @@ packages=(
     build-essential cmake ninja-build pkg-config git
     libembree-dev libtbb-dev libglm-dev libopenexr-dev libstb-dev
     nlohmann-json3-dev libcli11-dev libfmt-dev libboost-math-dev
-    libtinygltf-dev libtinyobjloader-dev libdraco-dev
+    libtinygltf-dev libtinyobjloader-dev libdraco-dev libjpeg-dev
     libgtest-dev libgmock-dev libbenchmark-dev
     glslang-tools spirv-cross
     clang libclang-rt-14-dev

@@ -3,6 +3,9 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <fstream>
+#include <iterator>
+#include <limits>
 #include <string>
 
 #include "glintlab/core/error.h"
@@ -137,6 +140,15 @@ void require_image_memory(const std::filesystem::path& path, const char* what, i
     require_memory({{fmt::format("image {}x{}", width, height), pixels * sizeof(glm::vec3)},
                     {"decoder buffers", pixels * decode_bytes_per_pixel}},
                    fmt::format("{}: reading the {}", path.string(), what));
+}
+
+std::string read_file_bytes(const std::filesystem::path& path) {
+    std::ifstream in(path, std::ios::binary);
+    if (!in) fail("{}: cannot open image file", path.string());
+    std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    if (bytes.size() > size_t(std::numeric_limits<int>::max()))
+        fail("{}: image file too large (over 2 GiB)", path.string());
+    return bytes;
 }
 
 }  // namespace image_formats

@@ -5,6 +5,7 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <string>
 
 #include "glintlab/core/image.h"
 
@@ -23,10 +24,17 @@ void require_image_memory(const std::filesystem::path& path, const char* what, i
 Image read_exr(const std::filesystem::path& path);
 void write_exr_zip_float(const Image& image, const std::filesystem::path& path);
 
+// The whole file (read_image has checked it exists and is not empty).
+std::string read_file_bytes(const std::filesystem::path& path);
+
 // stb_image / stb_image_write (image_stb.cpp).
 Image read_radiance_hdr(const std::filesystem::path& path);
-Image read_srgb_8bit_or_16bit(const std::filesystem::path& path);  // PNG, JPEG
+// PNG through stb, JPEG through read_jpeg, told apart by their signatures.
+Image read_srgb_8bit_or_16bit(const std::filesystem::path& path);
 void write_png_8bit(const Image& image, const std::filesystem::path& path, float exposure_stops);
 void write_radiance_hdr(const Image& image, const std::filesystem::path& path);
+
+// JPEG through libjpeg-turbo (image_jpeg.cpp): `bytes` is the file at `path`.
+Image read_jpeg(const std::string& bytes, const std::filesystem::path& path);
 
 }  // namespace glintlab::image_formats

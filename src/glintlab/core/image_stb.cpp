@@ -1,4 +1,4 @@
-// Radiance .hdr and PNG/JPEG through stb_image / stb_image_write.
+// Radiance .hdr and PNG through stb_image / stb_image_write (JPEG: image_jpeg.cpp).
 //
 // Debian's libstb-dev also ships a compiled libstb.so, but the build links
 // only what CMakeLists.txt names, so this file compiles the header-only
@@ -141,15 +141,6 @@ void check_radiance_pixel_data(const std::string& bytes, int width, int height,
     }
 }
 
-std::string read_file_bytes(const std::filesystem::path& path) {
-    std::ifstream in(path, std::ios::binary);
-    if (!in) fail("{}: cannot open image file", path.string());
-    std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-    if (bytes.size() > size_t(std::numeric_limits<int>::max()))
-        fail("{}: image file too large (over 2 GiB)", path.string());
-    return bytes;
-}
-
 // The bytes of a PNG file as stb_image may read them, after two checks of
 // its chunks (big-endian length, type, data, CRC; PNG specification §5.3):
 // - stb grows its compressed-data buffer to the length an IDAT chunk
@@ -191,108 +182,6 @@ std::string png_bytes_for_stb(const std::string& bytes, const std::filesystem::p
     return kept;
 }
 
-// Two defects of stb_image's JPEG reader are checked before it runs, both
-// found by the image fuzzer:
-// - A Huffman table (DHT segment, ITU-T T.81 §B.2.4.2): stb sums its 16
-//   code-length counts and writes that many entries into 257-entry arrays
-//   without checking the sum, which a corrupt table puts at up to 16 × 255
-//   (UBSan: index 257 out of bounds; fuzz/regressions/image/
-//   jpeg_dht_counts_over_256.jpg). A valid table has at most 256 codes.
-// - A scan (SOS segment) names, per component, a DC and an AC table; stb
-//   decodes with whatever the named slot holds, and its decoder state is
-//   malloc'd, not cleared, so a slot no DHT segment filled is uninitialised
-//   memory: a symbol index computed from it reads past the table (stb's
-//   own assertion in stbi__jpeg_huff_decode; fuzz/regressions/image/
-//   jpeg_scan_uses_undefined_huffman_table.jpg). A valid file defines a table
-//   before a scan uses it (T.81 §B.2.4.2; Motion-JPEG frames that rely on
-//   default tables are not read). The tables a scan decodes with, as stb
-//   uses them: baseline, DC and AC; progressive, DC in a first DC scan
-//   (Ss = 0, Ah = 0), none in a DC refinement, AC in every AC scan (Ss > 0).
-// The file is walked as stb walks it: bytes other than 0xFF between segments
-// skipped one by one, fill bytes 0xFF skipped, a segment's big-endian length
-// counting itself; after a start-of-scan segment, the entropy-coded data
-// runs to the first 0xFF followed (after fill bytes) by a byte that is
-// neither 0 (stuffing) nor a restart marker RST0–7. Where stb's own walk
-// would stop earlier (an error, or its decoder ending a scan before its data
-// does) it stops reading, and so does this walk where it can tell; either
-// is an error naming the file.
-void check_jpeg_huffman_tables(const std::string& bytes, const std::filesystem::path& path) {
-    if (bytes.size() < 2 || uint8_t(bytes[0]) != 0xFF || uint8_t(bytes[1]) != 0xD8) return;
-    const size_t n = bytes.size();
-    auto at = [&](size_t i) -> unsigned {
-        return i < n ? uint8_t(bytes[i]) : 0u;
-    };                        // stb: 0 at EOF
-    bool defined[2][4] = {};  // [DC, AC][table slot]
-    bool progressive = false;
-    size_t pos = 2;
-    while (pos < n) {
-        if (at(pos) != 0xFF) {
-            ++pos;
-            continue;
-        }
-        while (pos < n && at(pos) == 0xFF) ++pos;
-        if (pos >= n) return;
-        const unsigned marker = at(pos++);
-        if (marker == 0xD9) return;                                                 // EOI
-        if (marker == 0x00 || marker == 0xD8 || (marker & 0xF8) == 0xD0) continue;  // no length
-        const unsigned length = at(pos) << 8 | at(pos + 1);
-        if (marker == 0xC2) progressive = true;  // SOF2; stb reads SOF0-2 only
-        if (marker == 0xC4) {
-            size_t q = pos + 2;
-            long left = long(length) - 2;
-            while (left > 0) {
-                unsigned codes = 0;
-                for (size_t i = 0; i < 16; ++i) codes += at(q + 1 + i);
-                const unsigned tc = at(q) >> 4, th = at(q) & 15;
-                if (tc > 1 || th > 3) return;  // stb stops: bad DHT header
-                if (codes > 256)
-                    fail(
-                        "{}: cannot read JPEG file: a Huffman table (DHT segment at byte {}) "
-                        "declares {} codes, more than the 256 a table can hold (corrupt file)",
-                        path.string(), pos - 2, codes);
-                defined[tc][th] = true;
-                q += 17 + codes;
-                left -= long(17 + codes);
-            }
-            if (left != 0) return;  // stb stops: the tables overrun their segment
-        }
-        if (marker == 0xDA) {
-            const unsigned components = at(pos + 2);
-            const size_t spectral = pos + 3 + 2 * size_t(components);
-            const bool dc_first = at(spectral) == 0 && (at(spectral + 2) >> 4) == 0;
-            const bool uses_dc = progressive ? dc_first : true;
-            const bool uses_ac = progressive ? at(spectral) > 0 : true;
-            for (unsigned c = 0; c < components && c < 4; ++c) {
-                const unsigned selectors = at(pos + 4 + 2 * size_t(c));
-                const unsigned dc = selectors >> 4, ac = selectors & 15;
-                if (dc > 3 || ac > 3) return;  // stb stops: bad table selector
-                const char* kind = nullptr;
-                unsigned slot = 0;
-                if (uses_dc && !defined[0][dc]) kind = "DC", slot = dc;
-                if (uses_ac && !defined[1][ac]) kind = "AC", slot = ac;
-                if (kind)
-                    fail(
-                        "{}: cannot read JPEG file: the scan at byte {} decodes with {} Huffman "
-                        "table {}, which no DHT segment before it defines (corrupt file, or a "
-                        "Motion-JPEG frame relying on default tables: not supported)",
-                        path.string(), pos - 2, kind, slot);
-            }
-        }
-        pos += length;
-        if (marker != 0xDA) continue;  // SOS: then the entropy-coded data
-        while (pos < n) {
-            if (at(pos) != 0xFF) {
-                ++pos;
-                continue;
-            }
-            size_t next = pos + 1;
-            while (next < n && at(next) == 0xFF) ++next;
-            if (next < n && at(next) != 0x00 && (at(next) & 0xF8) != 0xD0) break;
-            pos = next + 1;
-        }
-    }
-}
-
 }  // namespace
 
 Image read_radiance_hdr(const std::filesystem::path& path) {
@@ -328,23 +217,19 @@ Image read_radiance_hdr(const std::filesystem::path& path) {
 // (PNM, BMP, GIF, PSD, TGA, PIC besides PNG and JPEG) whatever the file is
 // called. Those header readers are not hardened (the PNM one overflowed an
 // int on a long width: fuzz/regressions/image/pnm_width_int_overflow.png),
-// so only the documented PNG and JPEG reach stb.
-static void require_png_or_jpeg_signature(const std::string& bytes,
-                                          const std::filesystem::path& path) {
+// so only PNG reaches stb, and JPEG goes to libjpeg-turbo (image_jpeg.cpp),
+// each told by its signature whatever the file's extension.
+Image read_srgb_8bit_or_16bit(const std::filesystem::path& path) {
     static constexpr std::string_view kPng("\x89PNG\r\n\x1a\n", 8);
     static constexpr std::string_view kJpeg("\xff\xd8\xff", 3);
-    if (!bytes.starts_with(kPng) && !bytes.starts_with(kJpeg))
+    const std::string file_bytes = read_file_bytes(path);
+    if (file_bytes.starts_with(kJpeg)) return read_jpeg(file_bytes, path);
+    if (!file_bytes.starts_with(kPng))
         fail(
             "{}: cannot read PNG/JPEG file: it has neither the PNG signature nor the JPEG "
             "start-of-image marker (stb's other formats are not read)",
             path.string());
-}
-
-Image read_srgb_8bit_or_16bit(const std::filesystem::path& path) {
-    const std::string file_bytes = read_file_bytes(path);
-    require_png_or_jpeg_signature(file_bytes, path);
     const std::string bytes = png_bytes_for_stb(file_bytes, path);
-    check_jpeg_huffman_tables(bytes, path);
     const auto* p = reinterpret_cast<const stbi_uc*>(bytes.data());
     const int size = static_cast<int>(bytes.size());
     int w = 0, h = 0, channels_in_file = 0;
@@ -353,7 +238,7 @@ Image read_srgb_8bit_or_16bit(const std::filesystem::path& path) {
     // stb decodes into up to 3 x 16 bits a pixel (plus its own row buffers,
     // counted as as much again).
     if (stbi_info_from_memory(p, size, &w, &h, &channels_in_file))
-        require_image_memory(path, "PNG/JPEG image", w, h, 12);
+        require_image_memory(path, "PNG image", w, h, 12);
     Image image;
     if (stbi_is_16_bit_from_memory(p, size)) {
         std::unique_ptr<stbi_us, StbFree> data(
@@ -365,7 +250,7 @@ Image read_srgb_8bit_or_16bit(const std::filesystem::path& path) {
     } else {
         std::unique_ptr<stbi_uc, StbFree> data(
             stbi_load_from_memory(p, size, &w, &h, &channels_in_file, 3));
-        if (!data) fail_decode(path, "PNG/JPEG");
+        if (!data) fail_decode(path, "PNG");
         image = Image(w, h);
         float table[256];  // 256 codes: decode each once
         for (int v = 0; v < 256; ++v) table[v] = srgb_decode(float(v) / 255.0f);
