@@ -4,6 +4,7 @@
 #include <atomic>
 #include <chrono>
 #include <cmath>
+#include <cstdint>
 #include <mutex>
 
 #include <fmt/format.h>
@@ -16,6 +17,7 @@
 #include "glintlab/glints/glint_bxdf.h"
 #include "glintlab/glints/glint_lighting.h"
 #include "glintlab/glints/registry.h"
+#include "glintlab/glints/wang2020/wang2020_quadtree.h"
 #include "glintlab/scene/scene.h"
 #include "glintlab/scene/scene_loader.h"
 #include "glintlab/validate/random_queries.h"
@@ -121,12 +123,24 @@ std::vector<ModelSweep> sweeps() {
     }
     {
         // Tables per (roughness, log density, parameters): materials at the
-        // range ends, with small tables so that they build in seconds.
+        // range ends, with small tables so that they build in seconds. The
+        // quadtree depth is within the range allowed at the material's
+        // density (wang2020_quadtree.h: at most 4096 particles per leaf, at
+        // most 1.25e8 nodes): the shallowest for roughness 0.02 (1 at ln N 0,
+        // 8 at 19.4: the most particles per leaf); for roughness 1 the
+        // deepest, 16, at ln N 0 and the paper's 11 at 19.4 (the deepest
+        // allowed there, 13, is a tree of 8.9e7 nodes: tens of seconds and
+        // 3 GB to build).
         ModelSweep w = sweep("wang2020", {}, {"beckmann"});
         for (double a : {0.02, 1.0})
             for (double ld : {0.0, 19.4}) {
+                const auto n =
+                    static_cast<uint64_t>(std::llround(std::exp(double(static_cast<float>(ld)))));
+                const int depth =
+                    a < 0.5 ? wang2020::min_quadtree_depth(n)
+                            : std::min(wang2020::max_quadtree_depth(n), ld > 0.0 ? 11 : 16);
                 nlohmann::json params = {{"gamma_deg", a < 0.5 ? 1.0 : 30.0},
-                                         {"depth", a < 0.5 ? 1 : 16},
+                                         {"depth", depth},
                                          {"dpf_theta", 8},
                                          {"dpf_phi", 16},
                                          {"prefilter_samples", 1}};

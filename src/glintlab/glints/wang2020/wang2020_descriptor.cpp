@@ -2,16 +2,58 @@
 // point and directional lights (Eq. 21) by its own three-scale evaluation;
 // no sphere lights (001 has none).
 #include <algorithm>
+#include <cstdint>
+#include <string>
+#include <variant>
+
+#include <fmt/format.h>
 
 #include "glintlab/core/json_reader.h"
 #include "glintlab/glints/glint_model_descriptor.h"
 #include "glintlab/glints/wang2020/wang2020_model.h"
+#include "glintlab/glints/wang2020/wang2020_quadtree.h"
 
 namespace glintlab {
 namespace {
 
+// `depth` against the material's N (wang2020_quadtree.h): at most
+// kMaxParticlesPerLeaf particles per leaf (the micro and meso scales
+// enumerate the particles of every leaf the footprint cuts) and at most
+// kMaxQuadtreeNodes nodes. Depths 8..13 pass both at every log_density in
+// [0, 19.4]; the default 11 (§6) always does.
+void check_wang2020_depth(JsonObject& block, const GlintDesc& desc) {
+    namespace w = wang2020;
+    const int depth = std::get<Wang2020Params>(desc.params).depth;
+    const uint64_t n = wang2020_particles(desc);
+    const int lo = w::min_quadtree_depth(n), hi = w::max_quadtree_depth(n);
+    const double per_leaf = w::particles_per_leaf(n, depth);
+    const double nodes = w::quadtree_node_bound(n, depth);
+    if (per_leaf <= w::kMaxParticlesPerLeaf && nodes <= w::kMaxQuadtreeNodes) return;
+    const std::string allowed =
+        lo <= hi ? fmt::format("allowed at this density: depth {}..{}", lo, hi)
+                 : fmt::format(
+                       "but no depth in [1, 16] satisfies both the leaf bound (depth >= "
+                       "{}) and the quadtree's memory bound ({:.0f} nodes, {:.0f} MB: "
+                       "depth <= {}) at this density; lower log_density",
+                       lo, w::kMaxQuadtreeNodes, w::kMaxQuadtreeNodes * 8.0 / 1e6, hi);
+    if (per_leaf > w::kMaxParticlesPerLeaf)
+        block.error("depth",
+                    fmt::format("wang2020 depth {} at log_density {} leaves {:.0f} particles per "
+                                "quadtree leaf (N = {} per uv tile / 4^{}), more than {:.0f} (the "
+                                "micro and meso scales enumerate the particles of every leaf the "
+                                "footprint cuts); use depth {} or more ({})",
+                                depth, desc.log_density, per_leaf, n, depth,
+                                w::kMaxParticlesPerLeaf, lo, allowed));
+    block.error("depth",
+                fmt::format("wang2020 depth {} at log_density {} needs up to {:.0f} quadtree nodes "
+                            "({:.0f} MB) for N = {} particles per uv tile, more than {:.0f} "
+                            "({:.0f} MB); use depth {} or less ({})",
+                            depth, desc.log_density, nodes, nodes * 8.0 / 1e6, n,
+                            w::kMaxQuadtreeNodes, w::kMaxQuadtreeNodes * 8.0 / 1e6, hi, allowed));
+}
+
 // 001 §4.4: DPF tables for isotropic Beckmann alpha 0.02..1; the quadtree
-// stores 28-bit counts.
+// stores 28-bit counts; `depth` within the quadtree's bounds.
 void check_wang2020(JsonObject& block, GlintDesc& desc) {
     if (desc.ndf != NdfType::Beckmann || desc.alpha_x != desc.alpha_y || desc.alpha_x < 0.02f ||
         desc.alpha_x > 1.0f)
@@ -22,14 +64,21 @@ void check_wang2020(JsonObject& block, GlintDesc& desc) {
         block.error("",
                     "wang2020 needs log_density in [0, 19.4] (at most 2^28 particles per uv "
                     "tile: the quadtree stores 28-bit counts)");
+    check_wang2020_depth(block, desc);
 }
 
 // What check_wang2020 requires: isotropic Beckmann, alpha in [0.02, 1] (the
-// DPF roughness set, 001 §4.4), ln N <= 19.4.
+// DPF roughness set, 001 §4.4), ln N <= 19.4, `depth` within the quadtree's
+// bounds at that N (never empty in that range: 8..13 always pass).
 void fit_wang2020(GlintDesc& desc) {
     desc.ndf = NdfType::Beckmann;
     desc.alpha_x = desc.alpha_y = std::clamp(desc.alpha_x, 0.02f, 1.0f);
     desc.log_density = std::clamp(desc.log_density, 0.0f, 19.4f);
+    if (auto* p = std::get_if<Wang2020Params>(&desc.params)) {
+        const uint64_t n = wang2020_particles(desc);
+        p->depth =
+            std::clamp(p->depth, wang2020::min_quadtree_depth(n), wang2020::max_quadtree_depth(n));
+    }
 }
 
 }  // namespace

@@ -10,6 +10,7 @@
 // image; see docs/MODELS.md.
 #pragma once
 
+#include <cstdint>
 #include <memory>
 
 #include <glm/glm.hpp>
@@ -23,6 +24,11 @@ class EnvironmentMap;
 struct GlintDesc;
 struct GlintLightingContext;
 struct Scene;
+
+// N of a material: round(e^log_density) particles per uv tile (the explicit
+// ground truth's convention); the quadtree holds N, the scene reader checks
+// `depth` against it (check_wang2020, wang2020_quadtree.h's bounds).
+uint64_t wang2020_particles(const GlintDesc& desc);
 
 bool wang2020_shades_light(const GlintDesc& desc, const Scene& scene, int light);
 glm::vec3 wang2020_light_radiance(const GlintLightingContext& ctx, int light);

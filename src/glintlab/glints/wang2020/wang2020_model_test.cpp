@@ -9,6 +9,7 @@
 #include "glintlab/core/error.h"
 #include "glintlab/glints/model_params.h"
 #include "glintlab/glints/registry.h"
+#include "glintlab/glints/wang2020/wang2020_quadtree.h"
 #include "glintlab/render/renderer.h"
 #include "glintlab/scene/scene_loader.h"
 
@@ -71,6 +72,55 @@ TEST(Wang2020Model, ReadsItsBlockAndRejectsBadInput) {
     nlohmann::json dense = glint_material(nlohmann::json::object());
     dense["log_density"] = 25;
     EXPECT_NE(error_of(scene_with(dense)).find("log_density"), std::string::npos);
+}
+
+// Regression: `glintlab validate robustness --models wang2020` never finished:
+// its roughness-0.02 material had depth 1 at log_density 19.4, and the micro
+// and meso scales enumerate the particles of each quadtree leaf the
+// footprint cuts (N / 4^depth = 6.7e7 there). The scene reader bounds the
+// particles per leaf (4096) and the quadtree's nodes (1.25e8), naming `depth`,
+// the density and the allowed depths.
+TEST(Wang2020Model, DepthIsBoundedByParticlesPerLeafAndNodes) {
+    nlohmann::json mat = glint_material({{"depth", 7}});
+    mat["log_density"] = 19.4;
+    const std::string shallow = error_of(scene_with(mat));
+    EXPECT_NE(shallow.find("/materials/0/wang2020/depth"), std::string::npos) << shallow;
+    EXPECT_NE(shallow.find("depth 7 at log_density 19.4"), std::string::npos) << shallow;
+    EXPECT_NE(shallow.find("particles per quadtree leaf"), std::string::npos) << shallow;
+    EXPECT_NE(shallow.find("use depth 8 or more"), std::string::npos) << shallow;
+    EXPECT_NE(shallow.find("depth 8..13"), std::string::npos) << shallow;
+    mat["wang2020"]["depth"] = 8;  // the smallest allowed: N / 4^8 <= 4096
+    EXPECT_EQ(error_of(scene_with(mat)), "");
+    mat["wang2020"]["depth"] = 13;  // the largest within the node bound
+    EXPECT_EQ(error_of(scene_with(mat)), "");
+    mat["wang2020"]["depth"] = 14;
+    const std::string deep = error_of(scene_with(mat));
+    EXPECT_NE(deep.find("/materials/0/wang2020/depth"), std::string::npos) << deep;
+    EXPECT_NE(deep.find("use depth 13 or less"), std::string::npos) << deep;
+    // The default depth (11, §6) passes at every density of the range.
+    for (double ld : {0.0, 10.0, 19.4}) {
+        nlohmann::json d = glint_material(nlohmann::json::object());
+        d["log_density"] = ld;
+        EXPECT_EQ(error_of(scene_with(d)), "") << ld;
+    }
+    // At low density every depth passes (depth 1 at ln N 9: 8103 / 4 particles).
+    mat["log_density"] = 9;
+    mat["wang2020"]["depth"] = 1;
+    EXPECT_EQ(error_of(scene_with(mat)), "");
+    // The bounds themselves, and the constructor's own check (tables built
+    // outside the scene reader).
+    EXPECT_EQ(wang2020::min_quadtree_depth(1), 1);
+    EXPECT_EQ(wang2020::max_quadtree_depth(1), 16);
+    EXPECT_EQ(wang2020::min_quadtree_depth(0x0FFFFFFFu), 8);
+    EXPECT_EQ(wang2020::max_quadtree_depth(0x0FFFFFFFu), 13);
+    EXPECT_THROW(wang2020::ParticleQuadtree(0x0FFFFFFFu, 7, 1), Error);
+    // The viewer's model switch fits the depth into the allowed range.
+    GlintDesc g;
+    g.log_density = 19.4f;
+    switch_glint_model(g, GlintModelId::Wang2020);
+    std::get<Wang2020Params>(g.params).depth = 2;
+    glint_model(GlintModelId::Wang2020).fit_material(g);
+    EXPECT_EQ(std::get<Wang2020Params>(g.params).depth, 8);
 }
 
 // The §4.4 blurs in renders: with directional occlusion off (visibility 1,

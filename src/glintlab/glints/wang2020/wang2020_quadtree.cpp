@@ -39,20 +39,46 @@ struct Pending {
 
 }  // namespace
 
+double particles_per_leaf(uint64_t particles, int depth) {
+    return std::ldexp(static_cast<double>(particles), -2 * depth);
+}
+
+double quadtree_node_bound(uint64_t particles, int depth) {
+    double bound = 0.0;
+    for (int d = 0; d <= depth; ++d)
+        bound += std::min(std::ldexp(1.0, 2 * d), static_cast<double>(particles));
+    return bound;
+}
+
+int min_quadtree_depth(uint64_t particles) {
+    int depth = 1;
+    while (depth <= 16 && particles_per_leaf(particles, depth) > kMaxParticlesPerLeaf) ++depth;
+    return depth;
+}
+
+int max_quadtree_depth(uint64_t particles) {
+    int depth = 16;
+    while (depth >= 1 && quadtree_node_bound(particles, depth) > kMaxQuadtreeNodes) --depth;
+    return depth;
+}
+
 ParticleQuadtree::ParticleQuadtree(uint64_t particles, int depth, uint32_t seed)
     : particles_(particles), depth_(depth), seed_(seed) {
     if (particles < 1 || particles > 0x0FFFFFFFu)
         fail("wang2020: particle count {} outside [1, 268435455]", particles);
     if (depth < 1 || depth > 16) fail("wang2020: quadtree depth {} outside [1, 16]", depth);
-    // Upper bound of the stored nodes: Σ_d min(4^d, N) (8 bytes each).
-    double bound = 0.0;
-    for (int d = 0; d <= depth; ++d)
-        bound += std::min(std::ldexp(1.0, 2 * d), static_cast<double>(particles));
-    if (bound > 1.25e8)
+    const double bound = quadtree_node_bound(particles, depth);
+    if (bound > kMaxQuadtreeNodes)
         fail(
             "wang2020: quadtree of {} particles at depth {} may need {:.0f} MB (> 1000 MB); "
             "lower `depth` or the material's log_density",
             particles, depth, bound * 8.0 / 1e6);
+    if (particles_per_leaf(particles, depth) > kMaxParticlesPerLeaf)
+        fail(
+            "wang2020: quadtree of {} particles at depth {} has {:.0f} particles per leaf "
+            "(> {:.0f}: a footprint that cuts a leaf enumerates them); use `depth` >= {}",
+            particles, depth, particles_per_leaf(particles, depth), kMaxParticlesPerLeaf,
+            min_quadtree_depth(particles));
     const auto t0 = std::chrono::steady_clock::now();
     nodes_.push_back({0u, static_cast<uint32_t>(particles)});
     std::vector<Pending> level{{0u, 0u, 0u}}, next;
