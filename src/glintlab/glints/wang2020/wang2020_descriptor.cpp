@@ -24,7 +24,7 @@ namespace {
 void check_wang2020_depth(JsonObject& block, const GlintDesc& desc) {
     namespace w = wang2020;
     const int depth = std::get<Wang2020Params>(desc.params).depth;
-    const uint64_t n = wang2020_particles(desc);
+    const uint64_t n = wang2020_particles(desc.log_density);
     const int lo = w::min_quadtree_depth(n), hi = w::max_quadtree_depth(n);
     const double per_leaf = w::particles_per_leaf(n, depth);
     const double nodes = w::quadtree_node_bound(n, depth);
@@ -75,7 +75,7 @@ void fit_wang2020(GlintDesc& desc) {
     desc.alpha_x = desc.alpha_y = std::clamp(desc.alpha_x, 0.02f, 1.0f);
     desc.log_density = std::clamp(desc.log_density, 0.0f, 19.4f);
     if (auto* p = std::get_if<Wang2020Params>(&desc.params)) {
-        const uint64_t n = wang2020_particles(desc);
+        const uint64_t n = wang2020_particles(desc.log_density);
         p->depth =
             std::clamp(p->depth, wang2020::min_quadtree_depth(n), wang2020::max_quadtree_depth(n));
     }

@@ -27,7 +27,7 @@ const Wang2020Params& params_of(const GlintDesc& desc) {
 }
 
 uint64_t particles_of(const GlintDesc& desc) {
-    return wang2020_particles(desc);
+    return wang2020_particles(desc.log_density);
 }
 
 // One model per (material, environment map); the map pointer identifies the
@@ -100,10 +100,6 @@ UvBox box_of(const Footprint& fp) {
 }
 
 }  // namespace
-
-uint64_t wang2020_particles(const GlintDesc& desc) {
-    return static_cast<uint64_t>(std::llround(std::exp(static_cast<double>(desc.log_density))));
-}
 
 std::shared_ptr<const wang2020::Wang2020Model> wang2020_model_for(
     const GlintDesc& desc, const std::shared_ptr<const EnvironmentMap>& env) {

@@ -10,6 +10,7 @@
 // image; see docs/MODELS.md.
 #pragma once
 
+#include <cmath>
 #include <cstdint>
 #include <memory>
 
@@ -25,10 +26,13 @@ struct GlintDesc;
 struct GlintLightingContext;
 struct Scene;
 
-// N of a material: round(e^log_density) particles per uv tile (the explicit
-// ground truth's convention); the quadtree holds N, the scene reader checks
-// `depth` against it (check_wang2020, wang2020_quadtree.h's bounds).
-uint64_t wang2020_particles(const GlintDesc& desc);
+// N of a material (its GlintDesc::log_density): round(e^log_density) particles per uv tile (the
+// explicit ground truth's convention); the quadtree holds N, the scene reader checks `depth`
+// against it (check_wang2020, wang2020_quadtree.h's bounds). Inline: the scene reader's check needs
+// it in the fuzzing build's loaders.
+inline uint64_t wang2020_particles(float log_density) {
+    return static_cast<uint64_t>(std::llround(std::exp(static_cast<double>(log_density))));
+}
 
 bool wang2020_shades_light(const GlintDesc& desc, const Scene& scene, int light);
 glm::vec3 wang2020_light_radiance(const GlintLightingContext& ctx, int light);

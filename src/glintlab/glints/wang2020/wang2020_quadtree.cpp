@@ -39,29 +39,6 @@ struct Pending {
 
 }  // namespace
 
-double particles_per_leaf(uint64_t particles, int depth) {
-    return std::ldexp(static_cast<double>(particles), -2 * depth);
-}
-
-double quadtree_node_bound(uint64_t particles, int depth) {
-    double bound = 0.0;
-    for (int d = 0; d <= depth; ++d)
-        bound += std::min(std::ldexp(1.0, 2 * d), static_cast<double>(particles));
-    return bound;
-}
-
-int min_quadtree_depth(uint64_t particles) {
-    int depth = 1;
-    while (depth <= 16 && particles_per_leaf(particles, depth) > kMaxParticlesPerLeaf) ++depth;
-    return depth;
-}
-
-int max_quadtree_depth(uint64_t particles) {
-    int depth = 16;
-    while (depth >= 1 && quadtree_node_bound(particles, depth) > kMaxQuadtreeNodes) --depth;
-    return depth;
-}
-
 ParticleQuadtree::ParticleQuadtree(uint64_t particles, int depth, uint32_t seed)
     : particles_(particles), depth_(depth), seed_(seed) {
     if (particles < 1 || particles > 0x0FFFFFFFu)

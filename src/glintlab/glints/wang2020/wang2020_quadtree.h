@@ -12,6 +12,8 @@
 // are the two numbers that draw its normal (per_particle micro mode).
 #pragma once
 
+#include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <functional>
 #include <vector>
@@ -53,15 +55,35 @@ struct Particle {
 inline constexpr double kMaxParticlesPerLeaf = 4096.0;
 inline constexpr double kMaxQuadtreeNodes = 1.25e8;
 
-// Expected particles per leaf, N / 4^depth.
-double particles_per_leaf(uint64_t particles, int depth);
-// Upper bound of the stored nodes, Σ_{d <= depth} min(4^d, N).
-double quadtree_node_bound(uint64_t particles, int depth);
-// The smallest depth in [1, 16] within kMaxParticlesPerLeaf and the largest
-// within kMaxQuadtreeNodes (either may be outside [1, 16] when none is: 17
-// and 0); the allowed depths are [min, max].
-int min_quadtree_depth(uint64_t particles);
-int max_quadtree_depth(uint64_t particles);
+// Inline (header-only) so that the scene reader's check, compiled alone in
+// the fuzzing build's loaders, needs no quadtree code.
+// particles_per_leaf: expected particles per leaf, N / 4^depth.
+// quadtree_node_bound: upper bound of the stored nodes, Σ_{d <= depth} min(4^d, N).
+// min/max_quadtree_depth: the smallest depth in [1, 16] within
+// kMaxParticlesPerLeaf and the largest within kMaxQuadtreeNodes (either may
+// be outside [1, 16] when none is: 17 and 0); the allowed depths are [min, max].
+inline double particles_per_leaf(uint64_t particles, int depth) {
+    return std::ldexp(static_cast<double>(particles), -2 * depth);
+}
+
+inline double quadtree_node_bound(uint64_t particles, int depth) {
+    double bound = 0.0;
+    for (int d = 0; d <= depth; ++d)
+        bound += std::min(std::ldexp(1.0, 2 * d), static_cast<double>(particles));
+    return bound;
+}
+
+inline int min_quadtree_depth(uint64_t particles) {
+    int depth = 1;
+    while (depth <= 16 && particles_per_leaf(particles, depth) > kMaxParticlesPerLeaf) ++depth;
+    return depth;
+}
+
+inline int max_quadtree_depth(uint64_t particles) {
+    int depth = 16;
+    while (depth >= 1 && quadtree_node_bound(particles, depth) > kMaxQuadtreeNodes) --depth;
+    return depth;
+}
 
 class ParticleQuadtree {
   public:
