@@ -17,7 +17,9 @@
 #
 # Targets: scene gltf obj image (default: all). Every run is under
 # AddressSanitizer + UndefinedBehaviorSanitizer; a crash, leak, UB report,
-# out-of-memory (> 2 GiB) or an input slower than 30 s stops the target and
+# out-of-memory (> 2 GiB) or an input slower than FUZZ_TIMEOUT seconds
+# (default 30; wall-clock, so raise it for long runs on a loaded machine,
+# where a niced worker can wait that long for a core) stops the target and
 # leaves the input in BUILD_FUZZ/artifacts/TARGET/ (add it to
 # fuzz/regressions/TARGET/ once fixed). The exit status is non-zero if any
 # target failed. Per-target logs: BUILD_FUZZ/logs/TARGET.log.
@@ -45,7 +47,7 @@ run_target() {
     [ "$mode" = ci ] && rm -rf "$corpus"
     mkdir -p "$corpus" "$logs" "$build/artifacts/$t"
     "$bin/glintlab_fuzz_seeds" "$t" "$seeds" "$root" > /dev/null
-    local args=(-max_total_time="$seconds" -timeout=30 -rss_limit_mb=2048 -print_final_stats=1
+    local args=(-max_total_time="$seconds" -timeout="${FUZZ_TIMEOUT:-30}" -rss_limit_mb=2048 -print_final_stats=1
                 -artifact_prefix="$root/$build/artifacts/$t/")
     [ "$t" = scene ] && args+=(-dict="$root/fuzz/scene.dict")
     [ "$mode" = ci ] && args+=(-seed="${FUZZ_SEED:-1}")
@@ -71,8 +73,11 @@ for t in "${targets[@]}"; do
 done
 for t in "${targets[@]}"; do
     if wait "${pid[$t]}"; then status=ok; else status=FAILED; failed=1; fi
-    execs=$( (grep -ho 'stat::number_of_executed_units: *[0-9]*' "$build"/logs/"$t".log \
-                  "$build"/logs/"$t"/fuzz-*.log 2>/dev/null || true) | awk '{s += $2} END {print s + 0}')
+    # A long run's workers write their stats to fuzz-N.log, which libFuzzer's
+    # parent process also copies into TARGET.log: count them once.
+    if [ "$mode" = long ]; then stats=("$build"/logs/"$t"/fuzz-*.log); else stats=("$build"/logs/"$t".log); fi
+    execs=$( (grep -ho 'stat::number_of_executed_units: *[0-9]*' "${stats[@]}" 2>/dev/null || true) |
+                awk '{s += $2} END {print s + 0}')
     echo "fuzz $t: $status, $execs executions in ${seconds} s (log $build/logs/$t.log)"
     if [ $status = FAILED ]; then
         grep -h -A12 'ERROR:\|terminate called\|runtime error' "$build"/logs/"$t".log \

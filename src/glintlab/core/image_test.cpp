@@ -382,7 +382,8 @@ TEST(ImageJpeg, HuffmanTablesOver256CodesAreErrorsAndMissingOnesAreTheStandardOn
     // A smooth ramp: red along x, green along y, blue constant.
     std::vector<uint8_t> rgb(3 * 16 * 8);
     for (size_t i = 0; i < rgb.size() / 3; ++i)
-        rgb[3 * i] = uint8_t(i % 16 * 16), rgb[3 * i + 1] = uint8_t(i / 16 * 32), rgb[3 * i + 2] = 128;
+        rgb[3 * i] = uint8_t(i % 16 * 16), rgb[3 * i + 1] = uint8_t(i / 16 * 32),
+                rgb[3 * i + 2] = 128;
     const std::string plain = (dir / "plain.jpg").string();
     ASSERT_TRUE(stbi_write_jpg(plain.c_str(), 16, 8, 3, rgb.data(), 95));
     const Image reference = read_image(plain);
@@ -435,8 +436,12 @@ TEST(ImageJpeg, HuffmanTablesOver256CodesAreErrorsAndMissingOnesAreTheStandardOn
                  {"dht.jpg: cannot read JPEG file", "Huffman table", "libjpeg-turbo"});
 }
 
-// An 8 x 8 CMYK JPEG, written with libjpeg (stb writes RGB and grey only).
-std::string cmyk_jpeg(int width, int height) {
+// A JPEG written with libjpeg itself (stb writes baseline RGB and grey
+// only): `components` 3 (RGB) or 4 (CMYK) of `pixels`, row-major;
+// `progressive` with libjpeg's default progression (10 scans for colour).
+std::string libjpeg_encode(int width, int height, int components,
+                           const std::vector<unsigned char>& pixels, bool progressive,
+                           const std::vector<jpeg_scan_info>& scans = {}) {
     jpeg_compress_struct cinfo;
     jpeg_error_mgr errors;
     cinfo.err = jpeg_std_error(&errors);
@@ -446,13 +451,17 @@ std::string cmyk_jpeg(int width, int height) {
     jpeg_mem_dest(&cinfo, &out, &size);
     cinfo.image_width = JDIMENSION(width);
     cinfo.image_height = JDIMENSION(height);
-    cinfo.input_components = 4;
-    cinfo.in_color_space = JCS_CMYK;
+    cinfo.input_components = components;
+    cinfo.in_color_space = components == 4 ? JCS_CMYK : JCS_RGB;
     jpeg_set_defaults(&cinfo);
+    jpeg_set_quality(&cinfo, 90, TRUE);
+    if (progressive) jpeg_simple_progression(&cinfo);
+    if (!scans.empty()) cinfo.scan_info = scans.data(), cinfo.num_scans = int(scans.size());
     jpeg_start_compress(&cinfo, TRUE);
-    std::vector<unsigned char> row(size_t(width) * 4, 100);
+    const size_t stride = size_t(width) * size_t(components);
     while (cinfo.next_scanline < cinfo.image_height) {
-        JSAMPROW rows[1] = {row.data()};
+        JSAMPROW rows[1] = {const_cast<unsigned char*>(pixels.data()) +
+                            stride * cinfo.next_scanline};
         jpeg_write_scanlines(&cinfo, rows, 1);
     }
     jpeg_finish_compress(&cinfo);
@@ -460,6 +469,40 @@ std::string cmyk_jpeg(int width, int height) {
     std::string bytes(reinterpret_cast<const char*>(out), size);
     std::free(out);
     return bytes;
+}
+
+// Progressive coding reorders the same quantised coefficients (T.81 Annex
+// G), so a progressive file decodes to exactly the pixels of the baseline
+// file of the same quality; a file cut after its first scans is an error
+// (libjpeg would show the coarse scans' image), not a blurry image. A valid
+// progressive file of 568 scans (every AC coefficient of every component in
+// its own band, sent in three bit-planes) is refused: above the 500-scan cap.
+TEST(ImageJpeg, ProgressiveDecodesAsBaselineAndATruncatedOneIsAnError) {
+    ScratchDir dir;
+    const int w = 40, h = 24;
+    std::vector<unsigned char> rgb(size_t(w * h * 3));
+    for (size_t i = 0; i < rgb.size(); ++i) rgb[i] = uint8_t((i * 37 / 3) % 251);
+    std::ofstream(dir / "baseline.jpg", std::ios::binary) << libjpeg_encode(w, h, 3, rgb, false);
+    const std::string progressive = libjpeg_encode(w, h, 3, rgb, true);
+    std::ofstream(dir / "progressive.jpg", std::ios::binary) << progressive;
+    const Image baseline = read_image(dir / "baseline.jpg");
+    ASSERT_EQ(baseline.width, w);
+    ASSERT_EQ(baseline.height, h);
+    expect_same_pixels(read_image(dir / "progressive.jpg"), baseline);
+    std::ofstream(dir / "cut.jpg", std::ios::binary)
+        << progressive.substr(0, progressive.size() / 2);
+    expect_error([&] { read_image(dir / "cut.jpg"); }, {"cut.jpg: cannot read JPEG file"});
+    std::vector<jpeg_scan_info> scans;
+    scans.push_back({3, {0, 1, 2, 0}, 0, 0, 0, 0});  // DC of the 3 components
+    for (int al : {2, 1, 0})  // first pass at bit 2, refinements at bits 1, 0
+        for (int c = 0; c < 3; ++c)
+            for (int k = 1; k < 64; ++k)
+                scans.push_back({1, {c, 0, 0, 0}, k, k, al == 2 ? 0 : al + 1, al});
+    ASSERT_EQ(scans.size(), 568u);
+    std::ofstream(dir / "scans.jpg", std::ios::binary)
+        << libjpeg_encode(w, h, 3, rgb, false, scans);
+    expect_error([&] { read_image(dir / "scans.jpg"); },
+                 {"scans.jpg: cannot read JPEG file: more than 500 scans"});
 }
 
 // Corrupt data that libjpeg would decode with grey rows (a warning) is an
@@ -495,7 +538,8 @@ TEST(ImageJpeg, TruncatedCmykOversizedAreErrorsAndGreyIsRead) {
                  {"huge.jpg: reading the JPEG image needs about", "image 60000x60000"});
     set_memory_limit(std::nullopt);
     // A CMYK file (written by libjpeg itself) is refused by name.
-    std::ofstream(dir / "cmyk.jpg", std::ios::binary) << cmyk_jpeg(8, 8);
+    std::ofstream(dir / "cmyk.jpg", std::ios::binary)
+        << libjpeg_encode(8, 8, 4, std::vector<unsigned char>(8 * 8 * 4, 100), false);
     expect_error([&] { read_image(dir / "cmyk.jpg"); },
                  {"cmyk.jpg: cannot read JPEG file: it is a CMYK image"});
 }
