@@ -27,6 +27,7 @@
 #include <nlohmann/json.hpp>
 
 #include "glintlab/core/error.h"
+#include "glintlab/scene/draco_header.h"
 #include "glintlab/scene/transform.h"
 
 namespace glintlab {
@@ -262,9 +263,11 @@ class GltfReader {
         const tinygltf::Value& attributes = ext.Get("attributes");
         if (!attributes.IsObject()) fail("{}: \"attributes\" must be an object", where);
 
+        const char* encoded = reinterpret_cast<const char*>(buffer.data.data() + bv.byteOffset);
+        if (const auto sizes = read_draco_mesh_sizes(encoded, bv.byteLength))
+            require_draco_memory(*sizes, fmt::format("{} bufferView {}", where, bv_index));
         draco::DecoderBuffer input;
-        input.Init(reinterpret_cast<const char*>(buffer.data.data() + bv.byteOffset),
-                   bv.byteLength);
+        input.Init(encoded, bv.byteLength);
         draco::Decoder decoder;
         auto decoded = decoder.DecodeMeshFromBuffer(&input);
         if (!decoded.ok())

@@ -5,11 +5,13 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <memory>
 #include <string>
 #include <vector>
 
 #include <draco/compression/encode.h>
 #include <draco/mesh/mesh.h>
+#include <draco/metadata/geometry_metadata.h>
 #include <gtest/gtest.h>
 #include <unistd.h>
 #include <glm/gtc/constants.hpp>
@@ -18,7 +20,9 @@
 #include <nlohmann/json.hpp>
 
 #include "glintlab/core/error.h"
+#include "glintlab/core/memory_limit.h"
 #include "glintlab/render/renderer.h"
+#include "glintlab/scene/draco_header.h"
 #include "glintlab/scene/scene_loader.h"
 
 namespace glintlab {
@@ -327,8 +331,11 @@ SourceMesh wavy_grid() {
 constexpr int kPositionBits = 14, kUvBits = 12, kNormalBits = 10;
 
 // Encodes `m` with Draco's encoder (edgebreaker, which reorders points and
-// faces) and returns the bytes and the unique ids of position/normal/uv.
-std::vector<uint8_t> draco_encode(const SourceMesh& m, int ids[3]) {
+// faces, unless `sequential`) and returns the bytes and the unique ids of
+// position/normal/uv; `metadata` adds geometry and attribute metadata with
+// a nested sub-metadata (the stream's metadata section).
+std::vector<uint8_t> draco_encode(const SourceMesh& m, int ids[3], bool sequential = false,
+                                  bool metadata = false) {
     draco::Mesh dm;
     const auto n = static_cast<uint32_t>(m.positions.size());
     dm.set_num_points(n);
@@ -346,7 +353,23 @@ std::vector<uint8_t> draco_encode(const SourceMesh& m, int ids[3]) {
     ids[2] = add(draco::GeometryAttribute::TEX_COORD, 2, &m.uvs[0].x);
     for (glm::uvec3 t : m.triangles)
         dm.AddFace({draco::PointIndex(t.x), draco::PointIndex(t.y), draco::PointIndex(t.z)});
+    if (metadata) {
+        auto geometry = std::make_unique<draco::GeometryMetadata>();
+        geometry->AddEntryString("name", "wavy grid");
+        auto sub = std::make_unique<draco::Metadata>();
+        sub->AddEntryInt("level", 2);
+        auto subsub = std::make_unique<draco::Metadata>();
+        subsub->AddEntryString("note", std::string(300, 'x'));  // a 2-byte varint length
+        sub->AddSubMetadata("deeper", std::move(subsub));
+        geometry->AddSubMetadata("group", std::move(sub));
+        dm.AddMetadata(std::move(geometry));
+        auto uv = std::make_unique<draco::AttributeMetadata>();
+        uv->AddEntryString("channel", "uv0");
+        dm.AddAttributeMetadata(dm.GetNamedAttributeId(draco::GeometryAttribute::TEX_COORD),
+                                std::move(uv));
+    }
     draco::Encoder encoder;
+    if (sequential) encoder.SetEncodingMethod(draco::MESH_SEQUENTIAL_ENCODING);
     encoder.SetAttributeQuantization(draco::GeometryAttribute::POSITION, kPositionBits);
     encoder.SetAttributeQuantization(draco::GeometryAttribute::TEX_COORD, kUvBits);
     encoder.SetAttributeQuantization(draco::GeometryAttribute::NORMAL, kNormalBits);
@@ -448,6 +471,43 @@ TEST_F(MeshGltf, DracoCompressedPrimitiveDecodes) {
         SCOPED_TRACE("glb");
         expect_matches_source(load_gltf(write_glb("draco.glb", a)), src);
     }
+}
+
+// The sizes read from a Draco stream's header before decoding are the
+// mesh's, for both encodings and with a metadata section to walk; a stream
+// declaring 2.4e8 faces in 856 bytes (the glTF fuzzer's input, which made
+// Draco allocate 2.9 GB) is refused by the memory limit before Draco runs.
+TEST_F(MeshGltf, DracoDeclaredSizesAreReadAndBoundedBeforeDecoding) {
+    const SourceMesh src = wavy_grid();
+    for (bool sequential : {false, true})
+        for (bool metadata : {false, true}) {
+            SCOPED_TRACE(::testing::Message()
+                         << "sequential " << sequential << " metadata " << metadata);
+            int ids[3];
+            const std::vector<uint8_t> bytes = draco_encode(src, ids, sequential, metadata);
+            ASSERT_EQ(bytes[10] & 0x80, metadata ? 0x80 : 0)
+                << "the metadata flag (bit 15 of the flags)";
+            const auto sizes =
+                read_draco_mesh_sizes(reinterpret_cast<const char*>(bytes.data()), bytes.size());
+            ASSERT_TRUE(sizes.has_value());
+            EXPECT_EQ(sizes->edgebreaker, !sequential);
+            EXPECT_EQ(sizes->faces, src.triangles.size());
+            EXPECT_EQ(sizes->vertices, src.positions.size());
+        }
+    const std::filesystem::path input = std::filesystem::path(GLINTLAB_SOURCE_DIR) /
+                                        "fuzz/regressions/gltf/draco_edgebreaker_faces_2e8.glb";
+    set_memory_limit(uint64_t(1) << 30);
+    try {
+        load_gltf(input);
+        ADD_FAILURE() << "the declared 2.4e8 faces were decoded";
+    } catch (const Error& e) {
+        const std::string message = e.what();
+        for (const char* needle : {"draco_edgebreaker_faces_2e8.glb", "KHR_draco_mesh_compression",
+                                   "decoding the Draco mesh (Edgebreaker encoding) needs about",
+                                   "Draco mesh of 242974574 faces"})
+            EXPECT_NE(message.find(needle), std::string::npos) << message;
+    }
+    set_memory_limit(std::nullopt);
 }
 
 // The same grid uncompressed, for the render comparison.
