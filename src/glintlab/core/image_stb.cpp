@@ -15,9 +15,6 @@
 #include <cctype>
 #include <cmath>
 #include <cstdint>
-#include <fstream>
-#include <iterator>
-#include <limits>
 #include <memory>
 #include <string>
 #include <string_view>
