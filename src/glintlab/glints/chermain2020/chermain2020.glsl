@@ -18,10 +18,36 @@
 #include "glintlab/counting/normal_quantile.glsl"
 
 #ifndef GLINTLAB_CPP
+#ifdef GLINTLAB_CHERMAIN2020_DICT_PAIRS
+// RG32F texture, width table_size, height n_dists * n_levels: texel `bin`
+// holds the samples bin and bin + 1 of its row (0 past the row's end), so
+// the linear interpolation of chermain2020_marginal reads one texel instead
+// of two (issue 17: the fetches were a third of the cost per cell on
+// llvmpipe); the same values, so the same results. Set by the forward
+// pass's glue (chermain2020_gpu.glsl).
+uniform sampler2D chermain2020_dictionary;
+float chermain2020_dict_fetch(int row, int bin) {
+    return texelFetch(chermain2020_dictionary, ivec2(bin, row), 0).r;
+}
+vec2 chermain2020_dict_fetch_pair(int row, int bin, int table_size) {
+    return texelFetch(chermain2020_dictionary, ivec2(bin, row), 0).rg;
+}
+#else
 // R32F texture, width table_size, height n_dists * n_levels.
 uniform sampler2D chermain2020_dictionary;
 float chermain2020_dict_fetch(int row, int bin) {
     return texelFetch(chermain2020_dictionary, ivec2(bin, row), 0).r;
+}
+#endif
+#endif
+
+#ifndef GLINTLAB_CHERMAIN2020_DICT_PAIRS
+// The samples bin and bin + 1 of a row, 0 past the row's end (the C++ back
+// end and single-sample textures).
+vec2 chermain2020_dict_fetch_pair(int row, int bin, int table_size) {
+    float a = chermain2020_dict_fetch(row, bin);
+    float b = bin + 1 < table_size ? chermain2020_dict_fetch(row, bin + 1) : 0.0f;
+    return vec2(a, b);
 }
 #endif
 
@@ -85,10 +111,8 @@ float chermain2020_marginal(Chermain2020Dict d, int dist, int level, float x) {
     float t = abs(x) / d.slope_max * float(d.table_size);
     if (t >= float(d.table_size)) return 0.0f;
     int k = int(t);
-    int row = dist * d.n_levels + level;
-    float a = chermain2020_dict_fetch(row, k);
-    float b = k + 1 < d.table_size ? chermain2020_dict_fetch(row, k + 1) : 0.0f;
-    return mix(a, b, t - float(k));
+    vec2 ab = chermain2020_dict_fetch_pair(dist * d.n_levels + level, k, d.table_size);
+    return mix(ab.x, ab.y, t - float(k));
 }
 
 // The anisotropic Beckmann SDF the hierarchy converges to (004 §4.3).
@@ -140,10 +164,67 @@ vec3 chermain2020_footprint_ellipse(vec2 duvdx, vec2 duvdy, float max_anisotropy
 }
 
 // Colour C of cell c (Alg. 3 lines 11-12).
-vec3 chermain2020_cell_colour(Chermain2020Cell c, Chermain2020Colours colours) {
+vec3 chermain2020_colour(float colour_u, Chermain2020Colours colours) {
     if (colours.count <= 0) return vec3(1.0f);
-    int k = min(int(float(colours.count) * c.colour_u), colours.count - 1);
+    int k = min(int(float(colours.count) * colour_u), colours.count - 1);
     return colours.table[k];
+}
+vec3 chermain2020_cell_colour(Chermain2020Cell c, Chermain2020Colours colours) {
+    return chermain2020_colour(c.colour_u, colours);
+}
+
+// What every cell of one lookup shares (hoisted out of the cell loop of
+// chermain2020_level_p22 with the expressions of chermain2020_cell_p22 and
+// chermain2020_dict_slope, so the values are the same).
+struct Chermain2020Lookup {
+    vec2 q;            // S^-1 slope in the dictionary's scale, before the cell's rotation
+    float jac;         // Jacobian of S_alpha
+    float target_p22;  // the analytic target of cells past the last level (Alg. 3 line 10)
+    // The rotation R^-1 keeps |q|; a cell's SDF is non-zero only where both
+    // rotated coordinates lie within slope_max, i.e. |q|^2 < 2 slope_max^2 at
+    // least. Outside (with 0.1 % margin against rounding of the rotation)
+    // every dictionary cell's SDF is 0 and its rotation and fetches are skipped.
+    bool in_support;
+};
+Chermain2020Lookup chermain2020_lookup(vec2 slope, Chermain2020Dict d, float alpha_x, float alpha_y) {
+    Chermain2020Lookup k;
+    k.q = vec2(slope.x * d.alpha_dict / alpha_x, slope.y * d.alpha_dict / alpha_y);
+    k.jac = d.alpha_dict * d.alpha_dict / (alpha_x * alpha_y);
+    k.target_p22 = chermain2020_target_p22(slope, alpha_x, alpha_y);
+    k.in_support = dot(k.q, k.q) < 2.002f * d.slope_max * d.slope_max;
+    return k;
+}
+
+// One cell's (P^22, U_c) in the cell loop: chermain2020_cell followed by
+// chermain2020_cell_p22, drawing the same stream in the same order, but
+// evaluated lazily (issue 17): a discarded cell stops after its first
+// number, a cell outside the dictionary's support before its rotation, and
+// the second marginal is not fetched where the first is 0. The same
+// operations on the same values, so the sums are those of the eager form
+// bit for bit; only the work on cells that contribute 0 is skipped.
+vec2 chermain2020_cell_sdf(ivec2 cell, int level, Chermain2020Dict d, float log_density,
+                           float relative_area, float density_randomization, uint seed,
+                           Chermain2020Lookup k) {
+    uint sx = uint(cell.x) << uint(level);  // Eq. 8
+    uint sy = uint(cell.y) << uint(level);
+    uint state = hash_combine(hash_combine(seed, sx), sy);
+    if (!(hash_random(state) < relative_area)) return vec2(0.0f);  // line 3-4
+    float l_dist = 0.5f * (log_density * 1.44269504f + 2.0f * float(level) - 2.0f * float(d.n_levels - 1));
+    float u_zeta = hash_random(state);
+    if (density_randomization != 0.0f) l_dist += density_randomization * normal_quantile(u_zeta);
+    int dist_level = int(clamp(floor(l_dist + 0.5f), 0.0f, float(d.n_levels)));
+    float colour_u = hash_random(state);
+    if (dist_level >= d.n_levels) return vec2(k.target_p22, colour_u);
+    if (!k.in_support) return vec2(0.0f);
+    float theta = TWO_PI * hash_random(state);
+    int dist_x = min(int(float(d.n_dists) * hash_random(state)), d.n_dists - 1);
+    float cs = cos(theta);
+    float sn = sin(theta);
+    float mx = chermain2020_marginal(d, dist_x, dist_level, cs * k.q.x + sn * k.q.y);
+    if (mx == 0.0f) return vec2(0.0f);
+    int dist_y = min(int(float(d.n_dists) * hash_random(state)), d.n_dists - 1);
+    float my = chermain2020_marginal(d, dist_y, dist_level, -sn * k.q.x + cs * k.q.y);
+    return vec2(mx * my * k.jac, colour_u);
 }
 
 // Algorithm 2: sum over the cells of level `level` whose centres fall in the
@@ -180,6 +261,7 @@ vec3 chermain2020_level_p22(vec2 slope, vec2 uv, vec3 ellipse, int level, Cherma
     float q2 = ca * ca * im2 + sa * sa * in2;
     float q1 = 2.0f * ca * sa * (im2 - in2);
     float q0 = sa * sa * im2 + ca * ca * in2;
+    Chermain2020Lookup lookup = chermain2020_lookup(slope, d, alpha_x, alpha_y);
     vec3 sum_p = vec3(0.0f);
     float sum_w = 0.0f;
     for (int y = y0; y <= y1; ++y) {
@@ -198,10 +280,9 @@ vec3 chermain2020_level_p22(vec2 slope, vec2 uv, vec3 ellipse, int level, Cherma
             float r2 = a * a + b * b;
             if (r2 >= 1.0f) continue;
             float w = exp(-2.0f * r2) - 0.13533528f;  // exp(-2)
-            Chermain2020Cell c = chermain2020_cell(ivec2(x, y), level, d, log_density, relative_area,
-                                                   density_randomization, seed);
-            float p22 = chermain2020_cell_p22(c, slope, d, alpha_x, alpha_y);
-            if (p22 > 0.0f) sum_p += (w * p22) * chermain2020_cell_colour(c, colours);
+            vec2 sdf = chermain2020_cell_sdf(ivec2(x, y), level, d, log_density, relative_area,
+                                             density_randomization, seed, lookup);
+            if (sdf.x > 0.0f) sum_p += (w * sdf.x) * chermain2020_colour(sdf.y, colours);
             sum_w += w;
         }
     }

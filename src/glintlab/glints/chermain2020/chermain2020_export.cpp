@@ -8,9 +8,9 @@ namespace glintlab {
 void chermain2020_export_material(GlintExportContext& ctx) {
     if (!ctx.resources) return;
     const Dictionary& dict = default_dictionary();
-    ctx.resource("dictionary", dict.values,
+    ctx.resource("dictionary", chermain2020_dictionary_pairs(dict),
                  {{"uniform", "chermain2020_dictionary"},
-                  {"format", "R32F"},
+                  {"format", "RG32F"},
                   {"width", dict.params.table_size},
                   {"height", dict.params.n_dists * dict.params.n_levels},
                   {"filter", "nearest"},
@@ -18,7 +18,8 @@ void chermain2020_export_material(GlintExportContext& ctx) {
                   {"mipmaps", false},
                   {"meaning",
                    "004 4.4-4.5 dictionary of 1D marginal distributions: row dist * n_levels + "
-                   "level, one texel per table sample (texelFetch)"},
+                   "level; texel k holds table samples k and k + 1 (0 past the row's end), "
+                   "the two values of one linear interpolation (texelFetch)"},
                   {"uniforms",
                    {{"u_chermain2020_dict_shape",
                      {dict.params.n_levels, dict.params.n_dists, dict.params.table_size}},

@@ -1,6 +1,7 @@
 // chermain2020 (004) on the GPU: the hooks of glints/gpu_model_hooks.h (glue
 // chermain2020_gpu.glsl, the model's uniforms and the dictionary texture).
 #include <variant>
+#include <vector>
 
 #include <epoxy/gl.h>
 
@@ -49,6 +50,9 @@ class State final : public GpuModelState {
   private:
     // 004 §4.4-4.5: one row per (marginal, level), one texel per table
     // sample; read with texelFetch (the shared code interpolates itself).
+    // RG32F: texel k holds samples k and k + 1 (0 past the row's end), the
+    // two values one linear interpolation reads (chermain2020.glsl,
+    // GLINTLAB_CHERMAIN2020_DICT_PAIRS).
     void upload(const Dictionary& d) {
         const int width = d.params.table_size;
         const int height = d.params.n_dists * d.params.n_levels;
@@ -60,14 +64,15 @@ class State final : public GpuModelState {
                 "GL_MAX_TEXTURE_SIZE = {}",
                 width, height, max_size);
         glCreateTextures(GL_TEXTURE_2D, 1, &dictionary_);
-        glTextureStorage2D(dictionary_, 1, GL_R32F, width, height);
+        const std::vector<float> pairs = chermain2020_dictionary_pairs(d);
+        glTextureStorage2D(dictionary_, 1, GL_RG32F, width, height);
         glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
-        glTextureSubImage2D(dictionary_, 0, 0, 0, width, height, GL_RED, GL_FLOAT, d.values.data());
+        glTextureSubImage2D(dictionary_, 0, 0, 0, width, height, GL_RG, GL_FLOAT, pairs.data());
         glTextureParameteri(dictionary_, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
         glTextureParameteri(dictionary_, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
     }
 
-    GLuint dictionary_ = 0;  // R32F, uploaded on first use
+    GLuint dictionary_ = 0;  // RG32F pairs, uploaded on first use
 };
 
 }  // namespace

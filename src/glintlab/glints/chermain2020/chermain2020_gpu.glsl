@@ -8,6 +8,9 @@
 #ifndef GLINTLAB_GLINTS_CHERMAIN2020_CHERMAIN2020_GPU_GLSL
 #define GLINTLAB_GLINTS_CHERMAIN2020_CHERMAIN2020_GPU_GLSL
 
+// The dictionary as pairs of neighbouring samples (chermain2020.glsl;
+// uploaded so by chermain2020_gpu.cpp).
+#define GLINTLAB_CHERMAIN2020_DICT_PAIRS 1
 #include "glintlab/glints/glint_uniforms.glsl"
 #include "glintlab/microfacet/ndf.glsl"
 #include "glintlab/glints/chermain2020/chermain2020.glsl"

@@ -147,6 +147,16 @@ const Dictionary& default_dictionary() {
     return dict;
 }
 
+std::vector<float> chermain2020_dictionary_pairs(const Dictionary& dict) {
+    const size_t width = static_cast<size_t>(dict.params.table_size);
+    std::vector<float> pairs(dict.values.size() * 2);
+    for (size_t i = 0; i < dict.values.size(); ++i) {
+        pairs[2 * i] = dict.values[i];
+        pairs[2 * i + 1] = (i % width) + 1 < width ? dict.values[i + 1] : 0.0f;
+    }
+    return pairs;
+}
+
 void write_dictionary(const Dictionary& dict, const std::filesystem::path& path) {
     static_assert(std::endian::native == std::endian::little, "the file format is little-endian");
     std::ofstream out(path, std::ios::binary);

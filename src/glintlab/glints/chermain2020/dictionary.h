@@ -56,6 +56,12 @@ uint64_t dictionary_cache_key(const DictionaryParams& params);
 // shared by all evaluations.
 const Dictionary& default_dictionary();
 
+// The values as pairs for a two-channel texture (the GPU forward pass and
+// `glintlab export`): element 2 i holds values[i], element 2 i + 1 the next
+// sample of the same row, 0 after the row's last sample; one fetch then
+// gives both values of chermain2020.glsl's linear interpolation.
+std::vector<float> chermain2020_dictionary_pairs(const Dictionary& dict);
+
 // Binary file: "GLDICT01", int32 n_levels, n_dists, table_size, float32
 // alpha_dict, lobe_sigma, slope_max, uint64 seed, then the float32 values
 // (little-endian, the layout of Dictionary::values).
