@@ -20,12 +20,11 @@
 // The arrays are what kneiphof2025.glsl's GLSL fetch functions read.
 //
 // Resolution of pass 5. Full: every layer filtered at W x H, the CPU's
-// values (up to fp32 rounding). Reduced (the renderer's dynamic mode): layer
-// m is filtered on the 2^-s_m coarser grid, s_m = floor of the smallest LOD
-// of its kernel's samples (at most 2, and so that the grid keeps >= 4
-// rows), and
-// upsampled bilinearly (u wraps, v clamps at texel centres: the sampling
-// the forward shader itself does within a layer). Every sample of layer m
+// values (up to fp32 rounding). Reduced (the renderer's dynamic default,
+// issue 17): layer m is filtered on the 2^-s_m coarser grid, s_m = floor of
+// the smallest LOD of its kernel's samples (at most 2, and so that the grid
+// keeps >= 4 rows), and upsampled bilinearly (u wraps, v clamps at texel
+// centres: the sampling the forward shader itself does within a layer). Every sample of layer m
 // reads pyramid levels >= s_m, i.e. data that is already box-filtered to
 // 2^s_m base texels and interpolated bilinearly between them, so the
 // filtered layer carries no detail finer than that grid and a bilinear
@@ -40,8 +39,8 @@
 // does not reproduce. Measured on the 8 Blender studio lights
 // (docs/BENCHMARKS.md, issue 17): mean difference to the CPU layers <= 0.6 %
 // of a channel's range, single texels next to small bright sources up to
-// 15-32 %; against the kernel integral itself (Eq. 11, 21, summed over every
-// base texel) the reduced layers are as close as the full-resolution ones.
+// 32 %; against the kernel integral itself (Kneiphof et al. 2025, Eq. 11,
+// 21, summed over every base texel) the reduced layers are as close as the full-resolution ones.
 // With K = 4 the lookups of weights 5-8 (all zero) are skipped in both
 // modes.
 #pragma once
