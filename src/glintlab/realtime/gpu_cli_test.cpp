@@ -260,7 +260,13 @@ TEST(GpuViewer, ScreenshotUnderXvfbMatchesTheHeadlessRender) {
 // expect_same_frame's limits; the window screenshot (panel included) is
 // written at the window's size. "smooth": "lobe": the dynamic maps carry no
 // sun channel, so the default "lobe_sun" reads the lobe with the sun in the
-// maps there (docs/MODELS.md kneiphof2025, smooth term).
+// maps there (docs/MODELS.md kneiphof2025, smooth term). With the option
+// dynamic_full_resolution: the default dynamic prefilter filters the rough
+// layers on coarser grids (issue 17; kneiphof2025_prefilter_gpu.h), which
+// moved 1.4 % of these pixels by more than 2/255 (measured) — past
+// expect_same_frame's 8-bit limit, which is about the viewer reproducing
+// the render, not about the prefilter; that mode's own image limits are
+// GpuKneiphof2025Prefilter.DynamicEnvironmentRendersTheStaticImage's.
 TEST(GpuViewer, Kneiphof2025DynamicIblMatchesTheHeadlessRender) {
     GLINTLAB_REQUIRE_GL();
     const std::string forest = "/usr/share/blender/datafiles/studiolights/world/forest.exr";
@@ -273,7 +279,8 @@ TEST(GpuViewer, Kneiphof2025DynamicIblMatchesTheHeadlessRender) {
     scene["lights"] = {{{"type", "environment"}, {"file", forest}, {"rotation_deg", 90}}};
     testing::ScratchDir dir;
     RunResult viewer{-1, ""};
-    const std::string why = render_then_view(scene, dir, "--dynamic-ibl", &viewer);
+    const std::string why = render_then_view(
+        scene, dir, "--dynamic-ibl --gpu-option kneiphof2025.dynamic_full_resolution", &viewer);
     if (::testing::Test::HasFailure()) return;
     if (!why.empty()) GTEST_SKIP() << why;
     ASSERT_EQ(viewer.status, 0) << viewer.output;

@@ -144,7 +144,7 @@ void Kneiphof2025Resources::prepare(unsigned program, UniformCache& u, const Sce
     if (!light.map) fail("kneiphof2025: environment light without a map");
     glProgramUniform1f(program, loc("kneiphof2025_env_rotation"), environment_rotation_rad);
     if (dynamic_) {
-        const auto it = gpu_prefilters_.find({k.levels, k.black_level});
+        const auto it = gpu_prefilters_.find({k.levels, k.black_level, full_resolution_});
         if (it == gpu_prefilters_.end())
             fail("kneiphof2025: dynamic environment without begin_frame() for this material");
         const Kneiphof2025GpuPrefilter& g = *it->second;
@@ -187,13 +187,15 @@ void Kneiphof2025Resources::begin_frame(const Scene& scene, unsigned environment
             continue;
         const auto& k = std::get<Kneiphof2025Params>(m.glint.params);
         if (!done.insert({k.levels, k.black_level}).second) continue;
-        auto& g = gpu_prefilters_[{k.levels, k.black_level}];
+        auto& g = gpu_prefilters_[{k.levels, k.black_level, full_resolution_}];
         if (!g) {
             // The CPU prefilter's defaults (resolution, layers, kernel samples).
             Kneiphof2025PrefilterOptions o;
             o.levels = k.levels;
             o.black_level = k.black_level;
-            g = std::make_unique<Kneiphof2025GpuPrefilter>(o);
+            g = std::make_unique<Kneiphof2025GpuPrefilter>(
+                o, full_resolution_ ? Kneiphof2025GpuPrefilter::Resolution::Full
+                                    : Kneiphof2025GpuPrefilter::Resolution::Reduced);
         }
         g->run(environment, width, height, scale);
     }

@@ -52,8 +52,13 @@ class Kneiphof2025Resources {
 
     // Dynamic IBL (003 §5, Table 1 "Dynamic IBL"): the maps are prefiltered
     // on the GPU (kneiphof2025_prefilter_gpu.h) in every frame instead of
-    // once on the CPU. Off by default.
-    void set_dynamic(bool on) { dynamic_ = on; }
+    // once on the CPU. Off by default. full_resolution: every layer filtered
+    // at full resolution (Kneiphof2025GpuPrefilter::Resolution::Full) rather
+    // than the default Reduced grids.
+    void set_dynamic(bool on, bool full_resolution = false) {
+        dynamic_ = on;
+        full_resolution_ = full_resolution;
+    }
     bool dynamic() const { return dynamic_; }
     // Dynamic mode: runs the GPU prefilter of `environment` (the renderer's
     // lat-long texture, width x height texels, radiance = texel x scale) for
@@ -71,8 +76,10 @@ class Kneiphof2025Resources {
                          float black_level);
     std::map<std::tuple<const EnvironmentMap*, int, float>, Maps> maps_;
     Texture dfg_;
-    bool dynamic_ = false;
-    std::map<std::pair<int, float>, std::unique_ptr<Kneiphof2025GpuPrefilter>> gpu_prefilters_;
+    bool dynamic_ = false, full_resolution_ = false;
+    // Per (K, black level, full resolution).
+    std::map<std::tuple<int, float, bool>, std::unique_ptr<Kneiphof2025GpuPrefilter>>
+        gpu_prefilters_;
 };
 
 }  // namespace gl

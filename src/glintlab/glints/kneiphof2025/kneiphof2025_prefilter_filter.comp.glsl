@@ -2,7 +2,9 @@
 // (Eq. 11, 21): every channel filtered by the same kernel around n = map
 // direction of the texel (Kneiphof2025Environment's loop: Duff et al. basis,
 // map_uv without rotation, trilinear pyramid lookups, weighted mean).
-// Layer 0 (u_count = 0) copies the base level.
+// Layer 0 (u_count = 0) copies the base level. The output images are the
+// layer's grid: W x H, or a coarser mip level in Resolution::Reduced (the
+// texel centres of that grid; kneiphof2025_prefilter_gpu.h).
 #include "glintlab/core/constants.glsl"
 layout(local_size_x = 8, local_size_y = 8) in;
 layout(binding = 0) uniform sampler2D u_pyramid0;
@@ -15,7 +17,8 @@ layout(rgba32f, binding = 2) uniform writeonly image2DArray u_out2;
 layout(std430, binding = 0) readonly buffer Kernels { vec4 u_kernels[]; };
 uniform int u_layer;
 uniform int u_first;  // first sample of this layer's kernel
-uniform int u_count;  // kernel samples (0: copy level 0)
+uniform int u_count;       // kernel samples (0: copy level 0)
+uniform bool u_weights_b;  // K = 8: weights 5-8 are read (all zero for K = 4)
 void main() {
     ivec2 p = ivec2(gl_GlobalInvocationID.xy);
     ivec3 size = imageSize(u_out0);
@@ -48,7 +51,7 @@ void main() {
             float lod = u_kernels[2 * (u_first + k) + 1].x;
             a0 += s.w * textureLod(u_pyramid0, uv, lod);
             a1 += s.w * textureLod(u_pyramid1, uv, lod);
-            a2 += s.w * textureLod(u_pyramid2, uv, lod);
+            if (u_weights_b) a2 += s.w * textureLod(u_pyramid2, uv, lod);
             wsum += s.w;
         }
         if (wsum > 0.0f) {

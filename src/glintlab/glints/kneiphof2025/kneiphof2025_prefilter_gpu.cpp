@@ -1,6 +1,7 @@
 #include "glintlab/glints/kneiphof2025/kneiphof2025_prefilter_gpu.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstring>
 #include <vector>
 
@@ -15,6 +16,15 @@ namespace glintlab::gl {
 namespace {
 
 constexpr int kGroup = 8;  // 8 x 8 invocations per work group
+
+// Resolution::Reduced: the largest shift s_m (a grid 4 x 4 times coarser
+// than the base, 64 x 32 at the default 256 x 128). Measured on the 8
+// Blender studio lights (docs/BENCHMARKS.md, issue 17): with s_m = 3, 4
+// (32 x 16, 16 x 8) for sqrt(alpha) >= 1/2 the mean difference to the CPU
+// layers reached 2.7 % of a channel's range (layer 6); capped at 2 it stays
+// <= 0.6 %, for a cost (layers 4-6 at 1/16 of a full layer each) within the
+// timing noise.
+constexpr int kMaxReducedShift = 2;
 
 GLuint compile(const char* pass, const char* what) {
     return link_compute_program(
@@ -39,8 +49,14 @@ Texture make_latlong_array(int width, int height, int layers) {
     return t;
 }
 
-Kneiphof2025GpuPrefilter::Kneiphof2025GpuPrefilter(const Kneiphof2025PrefilterOptions& o)
-    : options_(o), width_(o.base_width), height_(o.base_width / 2), pyramid_levels_(0) {
+Kneiphof2025GpuPrefilter::Kneiphof2025GpuPrefilter(const Kneiphof2025PrefilterOptions& o,
+                                                   Resolution resolution)
+    : options_(o),
+      resolution_(resolution),
+      width_(o.base_width),
+      height_(o.base_width / 2),
+      pyramid_levels_(0),
+      coarse_levels_(1) {
     // The CPU's ranges (kneiphof2025_prefilter.cpp), and the kernel array size.
     if (o.levels != 4 && o.levels != 8)
         fail("kneiphof2025 (GPU prefilter): levels must be 4 or 8 (003 §4), got {}", o.levels);
@@ -59,6 +75,8 @@ Kneiphof2025GpuPrefilter::Kneiphof2025GpuPrefilter(const Kneiphof2025PrefilterOp
     partition_ = Program(compile("partition", "kneiphof2025 prefilter: partition"));
     reduce_ = Program(compile("reduce", "kneiphof2025 prefilter: pyramid"));
     filter_ = Program(compile("filter", "kneiphof2025 prefilter: GGX filter"));
+    if (resolution_ == Resolution::Reduced)
+        upsample_ = Program(compile("upsample", "kneiphof2025 prefilter: upsampling"));
     range_ = make_buffer();
     glNamedBufferStorage(range_.get(), 2 * sizeof(GLuint), nullptr,
                          GL_DYNAMIC_STORAGE_BIT | GL_MAP_READ_BIT);
@@ -77,13 +95,25 @@ Kneiphof2025GpuPrefilter::Kneiphof2025GpuPrefilter(const Kneiphof2025PrefilterOp
     std::vector<float> kernels;
     kernel_first_.assign(static_cast<size_t>(o.mip_count), 0);
     kernel_count_.assign(static_cast<size_t>(o.mip_count), 0);
+    shift_.assign(static_cast<size_t>(o.mip_count), 0);
+    // Reduced: s_m = floor(smallest LOD of the kernel), at most
+    // kMaxReducedShift and at most the shift that leaves 4 rows.
+    int max_shift = 0;
+    while (max_shift < kMaxReducedShift && (height_ >> (max_shift + 1)) >= 4) ++max_shift;
     for (int m = 1; m < o.mip_count; ++m) {
         const float r = static_cast<float>(m) / static_cast<float>(o.mip_count - 1);
         kernel_first_[static_cast<size_t>(m)] = static_cast<int>(kernels.size() / 8);
+        float min_lod = 1e30f;
         for (const Kneiphof2025KernelSample& k :
              kneiphof2025_prefilter_kernel(r, o.samples, width_, height_)) {
             kernels.insert(kernels.end(), {k.l.x, k.l.y, k.l.z, k.weight, k.lod, 0.0f, 0.0f, 0.0f});
             ++kernel_count_[static_cast<size_t>(m)];
+            min_lod = std::min(min_lod, k.lod);
+        }
+        if (resolution_ == Resolution::Reduced && kernel_count_[static_cast<size_t>(m)] > 0) {
+            const int s = std::clamp(static_cast<int>(std::floor(min_lod)), 0, max_shift);
+            shift_[static_cast<size_t>(m)] = s;
+            coarse_levels_ = std::max(coarse_levels_, s + 1);
         }
     }
     kernels_ = make_buffer();
@@ -93,6 +123,18 @@ Kneiphof2025GpuPrefilter::Kneiphof2025GpuPrefilter(const Kneiphof2025PrefilterOp
     radiance_ = make_latlong_array(width_, height_, o.mip_count);
     weights_a_ = make_latlong_array(width_, height_, o.mip_count);
     weights_b_ = make_latlong_array(width_, height_, o.mip_count);
+    if (coarse_levels_ > 1)
+        for (Texture& t : coarse_) {
+            // make_latlong_array's sampling (bilinear, u wraps, v clamps) at
+            // an explicit level: level s of layer m holds the coarse layer.
+            t = make_texture(GL_TEXTURE_2D_ARRAY);
+            glTextureStorage3D(t.get(), coarse_levels_, GL_RGBA32F, width_, height_, o.mip_count);
+            glTextureParameteri(t.get(), GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_NEAREST);
+            glTextureParameteri(t.get(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+            glTextureParameteri(t.get(), GL_TEXTURE_WRAP_S, GL_REPEAT);
+            glTextureParameteri(t.get(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+            glTextureParameteri(t.get(), GL_TEXTURE_MAX_LEVEL, coarse_levels_ - 1);
+        }
 }
 
 Kneiphof2025GpuPrefilter::~Kneiphof2025GpuPrefilter() = default;
@@ -149,21 +191,51 @@ void Kneiphof2025GpuPrefilter::run(unsigned source, int source_width, int source
     }
     glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
 
-    // Pass 5: the prefiltered layers.
+    // Pass 5: the prefiltered layers, layer m on its (W >> s_m) x (H >> s_m)
+    // grid (the output array itself at s_m = 0, else level s_m of coarse_).
+    // With K = 4 the third channel group (weights 5-8) is zero everywhere:
+    // its lookups are skipped (u_weights_b), the output stays zero.
     const GLuint pf = filter_.get();
+    const GLuint outputs[3] = {radiance_.get(), weights_a_.get(), weights_b_.get()};
     for (int c = 0; c < 3; ++c) glBindTextureUnit(static_cast<GLuint>(c), pyramid_[c].get());
-    glBindImageTexture(0, radiance_.get(), 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_RGBA32F);
-    glBindImageTexture(1, weights_a_.get(), 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_RGBA32F);
-    glBindImageTexture(2, weights_b_.get(), 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_RGBA32F);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, kernels_.get());
+    glProgramUniform1i(pf, glGetUniformLocation(pf, "u_weights_b"), options_.levels > 4 ? 1 : 0);
     glUseProgram(pf);
+    int bound_shift = -1;
     for (int m = 0; m < options_.mip_count; ++m) {
+        const int s = shift_[static_cast<size_t>(m)];
+        if (s != bound_shift) {
+            for (int c = 0; c < 3; ++c)
+                glBindImageTexture(static_cast<GLuint>(c), s == 0 ? outputs[c] : coarse_[c].get(),
+                                   s, GL_TRUE, 0, GL_WRITE_ONLY, GL_RGBA32F);
+            bound_shift = s;
+        }
         glProgramUniform1i(pf, glGetUniformLocation(pf, "u_layer"), m);
         glProgramUniform1i(pf, glGetUniformLocation(pf, "u_first"),
                            kernel_first_[static_cast<size_t>(m)]);
         glProgramUniform1i(pf, glGetUniformLocation(pf, "u_count"),
                            kernel_count_[static_cast<size_t>(m)]);
-        glDispatchCompute(groups(W), groups(H), 1);
+        glDispatchCompute(groups(std::max(1, W >> s)), groups(std::max(1, H >> s)), 1);
+    }
+    // Pass 6 (Reduced): bilinear upsampling of the coarse layers to W x H.
+    if (coarse_levels_ > 1) {
+        glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
+        const GLuint pu = upsample_.get();
+        for (int c = 0; c < 3; ++c) {
+            glBindTextureUnit(static_cast<GLuint>(c), coarse_[c].get());
+            glBindImageTexture(static_cast<GLuint>(c), outputs[c], 0, GL_TRUE, 0, GL_WRITE_ONLY,
+                               GL_RGBA32F);
+        }
+        glProgramUniform1i(pu, glGetUniformLocation(pu, "u_weights_b"),
+                           options_.levels > 4 ? 1 : 0);
+        glUseProgram(pu);
+        for (int m = 1; m < options_.mip_count; ++m) {
+            const int s = shift_[static_cast<size_t>(m)];
+            if (s == 0) continue;
+            glProgramUniform1i(pu, glGetUniformLocation(pu, "u_layer"), m);
+            glProgramUniform1f(pu, glGetUniformLocation(pu, "u_lod"), static_cast<float>(s));
+            glDispatchCompute(groups(W), groups(H), 1);
+        }
     }
     glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT |
                     GL_TEXTURE_UPDATE_BARRIER_BIT);
