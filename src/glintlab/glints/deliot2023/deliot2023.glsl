@@ -46,10 +46,25 @@ const float DELIOT2023_LN2 = 0.69314718f;
 
 // The 4 grids of one lookup: id = (LOD, ratio level k, orientation bin j), and
 // each grid's share of the footprint's trials (barycentric, sums to 1).
+// Vectors, not arrays: the loops over the 4 grids are too large to be
+// unrolled, and Mesa's compiler keeps a local array read at a non-constant
+// index in scratch memory (a gather per read), where a vector read so becomes
+// selects (issue 17: ~10-15 % of deliot2023's cost on llvmpipe). Grid i is
+// id (lod[i], ratio_level[i], bin[i]) (deliot2023_grid_id).
 struct Deliot2023Grids {
-    ivec3 id[4];
-    float weight[4];
+    ivec4 lod;
+    ivec4 ratio_level;
+    ivec4 bin;
+    vec4 weight;
 };
+ivec3 deliot2023_grid_id(Deliot2023Grids g, int i) {
+    return ivec3(g.lod[i], g.ratio_level[i], g.bin[i]);
+}
+void deliot2023_set_grid(INOUT(Deliot2023Grids) g, int i, int lod, ivec2 ratio_bin) {
+    g.lod[i] = lod;
+    g.ratio_level[i] = ratio_bin.x;
+    g.bin[i] = ratio_bin.y;
+}
 
 // §5.1: axes of the footprint ellipse. The pixel's uv Jacobian J = (dx dy)
 // maps the unit disk to an ellipse with matrix M = J J^T = [a b; b c]; its
@@ -170,28 +185,28 @@ Deliot2023Grids deliot2023_select_grids(float lod, float ratio, float angle, boo
     // Prism (triangle x [l0, l0 + 1]) split into 3 tetrahedra.
     Deliot2023Grids g;
     if (t_lod <= la) {
-        g.id[0] = ivec3(l0, va.x, va.y);
-        g.id[1] = ivec3(l0, vb.x, vb.y);
-        g.id[2] = ivec3(l0, vc.x, vc.y);
-        g.id[3] = ivec3(l0 + 1, va.x, va.y);
+        deliot2023_set_grid(g, 0, l0, va);
+        deliot2023_set_grid(g, 1, l0, vb);
+        deliot2023_set_grid(g, 2, l0, vc);
+        deliot2023_set_grid(g, 3, l0 + 1, va);
         g.weight[0] = la - t_lod;
         g.weight[1] = lb;
         g.weight[2] = lc;
         g.weight[3] = t_lod;
     } else if (t_lod <= la + lb) {
-        g.id[0] = ivec3(l0, vb.x, vb.y);
-        g.id[1] = ivec3(l0, vc.x, vc.y);
-        g.id[2] = ivec3(l0 + 1, va.x, va.y);
-        g.id[3] = ivec3(l0 + 1, vb.x, vb.y);
+        deliot2023_set_grid(g, 0, l0, vb);
+        deliot2023_set_grid(g, 1, l0, vc);
+        deliot2023_set_grid(g, 2, l0 + 1, va);
+        deliot2023_set_grid(g, 3, l0 + 1, vb);
         g.weight[0] = la + lb - t_lod;
         g.weight[1] = lc;
         g.weight[2] = la;
         g.weight[3] = t_lod - la;
     } else {
-        g.id[0] = ivec3(l0, vc.x, vc.y);
-        g.id[1] = ivec3(l0 + 1, va.x, va.y);
-        g.id[2] = ivec3(l0 + 1, vb.x, vb.y);
-        g.id[3] = ivec3(l0 + 1, vc.x, vc.y);
+        deliot2023_set_grid(g, 0, l0, vc);
+        deliot2023_set_grid(g, 1, l0 + 1, va);
+        deliot2023_set_grid(g, 2, l0 + 1, vb);
+        deliot2023_set_grid(g, 3, l0 + 1, vc);
         g.weight[0] = 1.0f - t_lod;
         g.weight[1] = la;
         g.weight[2] = lb;
@@ -228,8 +243,8 @@ float deliot2023_original_law(float N, float p, float xi0, float xi1) {
 // barycentric weights, and ln of the trials a vertex holds before the
 // per-cell density jitter.
 struct Deliot2023Simplex {
-    uint vertex_seed[3];
-    float beta[3];
+    uvec3 vertex_seed;
+    vec3 beta;
     float log_trials;
 };
 
@@ -374,7 +389,7 @@ bool deliot2023_expectation_exit(Deliot2023Grids grids, float p, float log_densi
     for (int i = 0; i < 4; ++i) {
         if (grids.weight[i] <= 0.0f) continue;
         float lt = log_density + log(grids.weight[i]) +
-                   float(2 * grids.id[i].x + grids.id[i].y) * DELIOT2023_LN2;
+                   float(2 * deliot2023_grid_id(grids, i).x + deliot2023_grid_id(grids, i).y) * DELIOT2023_LN2;
         most += 3.0f * exp(clamp(lt + jitter, -DELIOT2023_MAX_LOG_TRIALS, DELIOT2023_MAX_LOG_TRIALS));
         least = min(least, exp(clamp(lt - jitter, -DELIOT2023_MAX_LOG_TRIALS,
                                      DELIOT2023_MAX_LOG_TRIALS)));
@@ -405,7 +420,7 @@ float deliot2023_ndf(vec3 h, Footprint fp, int ndf, float alpha_x, float alpha_y
     vec2 acc = vec2(0.0f);
     for (int i = 0; i < 4; ++i) {
         if (grids.weight[i] <= 0.0f) continue;
-        acc += deliot2023_grid_counts(grids.id[i], grids.weight[i], fp.uv, slope, p, log_density, seed,
+        acc += deliot2023_grid_counts(deliot2023_grid_id(grids, i), grids.weight[i], fp.uv, slope, p, log_density, seed,
                                       density_randomization, original_defects);
     }
     // Eq. 4 with the footprint's trial count: D(n)/R x count/N, E = D(h) (Eq. 5-6).
@@ -439,14 +454,14 @@ float deliot2023_ndf_stochastic(vec3 h, Footprint fp, int ndf, float alpha_x, fl
 #endif
     // Inverse CDF over the weights; rounding that leaves u above their sum
     // picks the last grid of positive weight.
-    ivec3 id = grids.id[0];
+    ivec3 id = deliot2023_grid_id(grids, 0);
     float weight = grids.weight[0];
     float below = 0.0f;
     bool found = false;
     for (int i = 0; i < 4; ++i) {
         if (grids.weight[i] <= 0.0f) continue;
         if (!found) {
-            id = grids.id[i];
+            id = deliot2023_grid_id(grids, i);
             weight = grids.weight[i];
         }
         below += grids.weight[i];

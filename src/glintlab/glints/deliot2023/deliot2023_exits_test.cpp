@@ -30,8 +30,9 @@ float full_ndf(glm::vec3 h, const Footprint& fp, float alpha, float log_density,
     glm::vec2 acc(0.0f);
     for (int i = 0; i < 4; ++i) {
         if (g.weight[i] <= 0.0f) continue;
-        acc += deliot2023_grid_counts(g.id[i], g.weight[i], fp.uv, glm::vec2(h.x, h.y) / R, p,
-                                      log_density, seed, randomization, false);
+        acc += deliot2023_grid_counts(deliot2023_grid_id(g, i), g.weight[i], fp.uv,
+                                      glm::vec2(h.x, h.y) / R, p, log_density, seed, randomization,
+                                      false);
     }
     return acc.y > 0.0f ? d_n / R * (acc.x / acc.y) : d_h;
 }
@@ -84,11 +85,12 @@ TEST(Deliot2023Exits, ExpectationExitsAgreeWithTheFullEvaluation) {
         float most = 0.0f;
         for (int i = 0; i < 4; ++i)
             if (g.weight[i] > 0.0f)
-                most += 3.0f *
-                        std::exp(glm::clamp(log_density + std::log(g.weight[i]) +
-                                                float(2 * g.id[i].x + g.id[i].y) * DELIOT2023_LN2 +
-                                                jitter * DELIOT2023_MAX_JITTER_Z,
-                                            -80.0f, 80.0f));
+                most += 3.0f * std::exp(glm::clamp(log_density + std::log(g.weight[i]) +
+                                                       float(2 * deliot2023_grid_id(g, i).x +
+                                                             deliot2023_grid_id(g, i).y) *
+                                                           DELIOT2023_LN2 +
+                                                       jitter * DELIOT2023_MAX_JITTER_Z,
+                                                   -80.0f, 80.0f));
         if (most * p < 5.9604645e-8f) {
             ++exits_a;
             if (full != 0.0f) ++nonzero_a;

@@ -179,45 +179,54 @@ void kneiphof2025_probabilities(vec4 w_a, vec4 w_b, int levels, float p_visible,
 // every count before its radiance does: L^(k) M_k overflows fp32 where
 // N reaches e^80 (log density ~60, or density_randomization ~20) under a
 // bright environment.
+// Component k in [0, 8) of the levels' pair of vectors (a: 0-3, b: 4-7).
+// The multinomial reads its levels through this instead of local float[8]
+// arrays: a level loop bounded by the uniform K is not unrolled, and a local
+// array indexed by a non-constant k is kept in scratch memory by Mesa's
+// compiler (a gather per read), where a vector indexed so becomes selects
+// (issue 17; the zirr2016 mat4 was the same case). Same values.
+float kneiphof2025_level(vec4 a, vec4 b, int k) {
+    return k < 4 ? a[k & 3] : b[k & 3];
+}
 float kneiphof2025_weighted_multinomial_scaled(float N, float scale, int levels, vec4 p_a, vec4 p_b,
                                                vec4 L_a, vec4 L_b, bool conditional,
                                                INOUT(uint) vs) {
-    float p[8];
-    float L[8];
-    for (int k = 0; k < 4; ++k) {
-        p[k] = p_a[k];
-        p[k + 4] = p_b[k];
-        L[k] = L_a[k];
-        L[k + 4] = L_b[k];
-    }
     // Suffix sums p_k + ... + p_K, from the end (no cancellation).
-    float rest[8];
+    vec4 rest_a = vec4(0.0f);
+    vec4 rest_b = vec4(0.0f);
     float acc = 0.0f;
-    for (int k = 7; k >= 0; --k) {
-        acc += k < levels ? p[k] : 0.0f;
-        rest[k] = acc;
+    for (int k = 7; k >= 4; --k) {
+        acc += k < levels ? p_b[k - 4] : 0.0f;
+        rest_b[k - 4] = acc;
+    }
+    for (int k = 3; k >= 0; --k) {
+        acc += k < levels ? p_a[k] : 0.0f;
+        rest_a[k] = acc;
     }
     float remaining = max(N, 0.0f);
     if (conditional) remaining = floor(remaining + hash_random(vs));
     float value = 0.0f;
     for (int k = 0; k < levels - 1; ++k) {
-        float q = rest[k] > 0.0f ? clamp(p[k] / rest[k], 0.0f, 1.0f) : 0.0f;
+        float rest_k = kneiphof2025_level(rest_a, rest_b, k);
+        float q = rest_k > 0.0f ? clamp(kneiphof2025_level(p_a, p_b, k) / rest_k, 0.0f, 1.0f) : 0.0f;
         float xi1 = hash_random(vs);
         float xi2 = hash_random(vs);
         vec2 c;
         if (!conditional) {
             c = binomial_dual_gated(remaining, q, xi1, xi2, true);
         } else if (q > 0.5f) {
-            float q_rest = rest[k] > 0.0f ? clamp(rest[k + 1] / rest[k], 0.0f, 1.0f) : 0.0f;
+            float q_rest = rest_k > 0.0f
+                               ? clamp(kneiphof2025_level(rest_a, rest_b, k + 1) / rest_k, 0.0f, 1.0f)
+                               : 0.0f;
             c = binomial_dual_gated_conditional(remaining, q_rest, xi1, xi2, true);
             c = vec2(c.y, c.x);
         } else {
             c = binomial_dual_gated_conditional(remaining, q, xi1, xi2, true);
         }
-        value += L[k] * (c.x * scale);
+        value += kneiphof2025_level(L_a, L_b, k) * (c.x * scale);
         remaining = c.y;
     }
-    return value + L[levels - 1] * (remaining * scale);
+    return value + kneiphof2025_level(L_a, L_b, levels - 1) * (remaining * scale);
 }
 float kneiphof2025_weighted_multinomial(float N, int levels, vec4 p_a, vec4 p_b, vec4 L_a, vec4 L_b,
                                         bool conditional, INOUT(uint) vs) {
@@ -290,7 +299,7 @@ float kneiphof2025_ibl_factor(Footprint fp, float log_density, uint seed, float 
     vec3 acc = vec3(0.0f);
     for (int i = 0; i < 4; ++i) {
         if (grids.weight[i] <= 0.0f) continue;
-        vec3 g = kneiphof2025_grid_multinomial(grids.id[i], grids.weight[i], fp.uv, log_density,
+        vec3 g = kneiphof2025_grid_multinomial(deliot2023_grid_id(grids, i), grids.weight[i], fp.uv, log_density,
                                                seed, density_randomization, levels, p_a, p_b, L_a,
                                                L_b, conditional);
         acc = kneiphof2025_scaled_add(acc, vec2(g.x, g.y), g.z);
@@ -313,7 +322,7 @@ float kneiphof2025_binomial_factor_no_h(Footprint fp, float p, float log_density
     vec2 acc = vec2(0.0f);
     for (int i = 0; i < 4; ++i) {
         if (grids.weight[i] <= 0.0f) continue;
-        Deliot2023Simplex s = deliot2023_simplex(grids.id[i], grids.weight[i], fp.uv, log_density, seed);
+        Deliot2023Simplex s = deliot2023_simplex(deliot2023_grid_id(grids, i), grids.weight[i], fp.uv, log_density, seed);
         for (int v = 0; v < 3; ++v) {
             float bv = s.beta[v];
             if (bv <= 0.0f) continue;
@@ -345,7 +354,7 @@ float kneiphof2025_area_factor(vec3 h_center, Footprint fp, float p, float log_d
     vec2 acc = vec2(0.0f);
     for (int i = 0; i < 4; ++i) {
         if (grids.weight[i] <= 0.0f) continue;
-        acc += deliot2023_grid_counts(grids.id[i], grids.weight[i], fp.uv, slope, p, log_density, seed,
+        acc += deliot2023_grid_counts(deliot2023_grid_id(grids, i), grids.weight[i], fp.uv, slope, p, log_density, seed,
                                       density_randomization, false);
     }
     return acc.y > 0.0f ? kneiphof2025_count_ratio(acc.x, acc.y, p) : 1.0f;

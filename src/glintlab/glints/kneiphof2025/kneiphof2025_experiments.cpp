@@ -243,10 +243,10 @@ GateBias kneiphof2025_gate_bias(float p, float n_expected, int footprints, uint3
         glm::vec2 a(0.0f), b(0.0f);
         for (int k = 0; k < 4; ++k) {
             if (g.weight[k] <= 0.0f) continue;
-            a += shader::deliot2023_grid_counts(g.id[k], g.weight[k], fp.uv, slope, p, log_density,
-                                                sd, 0.0f, false);
-            b += shader::deliot2023_grid_counts(g.id[k], g.weight[k], fp.uv, slope, p, log_density,
-                                                sd, 0.0f, true);
+            a += shader::deliot2023_grid_counts(shader::deliot2023_grid_id(g, k), g.weight[k],
+                                                fp.uv, slope, p, log_density, sd, 0.0f, false);
+            b += shader::deliot2023_grid_counts(shader::deliot2023_grid_id(g, k), g.weight[k],
+                                                fp.uv, slope, p, log_density, sd, 0.0f, true);
         }
         fixed += a.y > 0.0f ? a.x / (a.y * p) : 0.0f;
         original += b.y > 0.0f ? b.x / (b.y * p) : 0.0f;
@@ -389,8 +389,7 @@ std::vector<SphereComparison> kneiphof2025_sphere_comparison(const SphereCompari
                     c.conditional = conditional;
                     c.facets_per_pixel = fpp;
                     c.realizations = R;
-                    double sum = 0.0, sq = 0.0, sum_means = 0.0, sum_means2 = 0.0,
-                           sum_smooth = 0.0;
+                    double sum = 0.0, sq = 0.0, sum_means = 0.0, sum_means2 = 0.0, sum_smooth = 0.0;
                     for (int r = 0; r < R; ++r) {
                         const double sum_before = sum;
                         desc.seed = o.seed * 7919u + static_cast<uint32_t>(r);
