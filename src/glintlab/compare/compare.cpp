@@ -256,6 +256,12 @@ CompareResult run_compare(const CompareOptions& o) {
         }
         GlintDesc d = original;
         switch_glint_model(d, m->id);
+        // The scene's own model keeps the scene's parameters (a researcher's
+        // tuned material); the others get their defaults. E.g. deliot2023's
+        // microfacet_roughness sets the facets' angular extent, which the
+        // flicker and variance of its sparkles follow (docs/VALIDATION.md
+        // "compare").
+        if (m->id == original.model_id) d.params = original.params;
         d.base_albedo = glm::vec3(0.0f);  // the truth has no diffuse base either
         const auto [truth, key] = add_truth(d);
         row.compared = true;
