@@ -79,6 +79,20 @@ struct Chermain2020Cell {
     float colour_u;  // U_c of the colour table (line 11)
 };
 
+// The dictionary level l_dist of a cell of hierarchy level `level`, from
+// its density-randomisation uniform u_zeta (Algorithm 3 lines 5-9).
+int chermain2020_dist_level(int level, Chermain2020Dict d, float log_density,
+                            float density_randomization, float u_zeta) {
+    // Lines 5-6: n = 4^l / 4^(nLevels-1) rho facets in the cell, l_dist = log(n) / (2 log 2).
+    float l_dist = 0.5f * (log_density * 1.44269504f + 2.0f * float(level) - 2.0f * float(d.n_levels - 1));
+    // Line 8: density randomisation, l_dist ~ N(l_dist, zeta^2). The uniform
+    // is drawn in any case (the stream stays the same); without randomisation
+    // the quantile is not evaluated (it is finite, so zeta z would add 0).
+    if (density_randomization != 0.0f) l_dist += density_randomization * normal_quantile(u_zeta);
+    // Line 9: round (half up, identical in GLSL and C++) and clamp.
+    return int(clamp(floor(l_dist + 0.5f), 0.0f, float(d.n_levels)));
+}
+
 // Cell at integer coordinates `cell` of hierarchy level `level`: seeded by
 // its coherent index (Eq. 8) only, so the parent at level + 1 draws the same
 // numbers as one of its four children (Fig. 7) and keeps its marginals and
@@ -90,15 +104,8 @@ Chermain2020Cell chermain2020_cell(ivec2 cell, int level, Chermain2020Dict d, fl
     uint state = hash_combine(hash_combine(seed, sx), sy);
     Chermain2020Cell c;
     c.kept = hash_random(state) < relative_area;  // line 3-4: discard if U_beta > beta
-    // Lines 5-6: n = 4^l / 4^(nLevels-1) rho facets in the cell, l_dist = log(n) / (2 log 2).
-    float l_dist = 0.5f * (log_density * 1.44269504f + 2.0f * float(level) - 2.0f * float(d.n_levels - 1));
-    // Line 8: density randomisation, l_dist ~ N(l_dist, zeta^2). The uniform
-    // is drawn in any case (the stream stays the same); without randomisation
-    // the quantile is not evaluated (it is finite, so zeta z would add 0).
-    float u_zeta = hash_random(state);
-    if (density_randomization != 0.0f) l_dist += density_randomization * normal_quantile(u_zeta);
-    // Line 9: round (half up, identical in GLSL and C++) and clamp.
-    c.dist_level = int(clamp(floor(l_dist + 0.5f), 0.0f, float(d.n_levels)));
+    c.dist_level = chermain2020_dist_level(level, d, log_density, density_randomization,
+                                           hash_random(state));
     c.colour_u = hash_random(state);
     c.theta = TWO_PI * hash_random(state);
     c.dist_x = min(int(float(d.n_dists) * hash_random(state)), d.n_dists - 1);
@@ -209,10 +216,8 @@ vec2 chermain2020_cell_sdf(ivec2 cell, int level, Chermain2020Dict d, float log_
     uint sy = uint(cell.y) << uint(level);
     uint state = hash_combine(hash_combine(seed, sx), sy);
     if (!(hash_random(state) < relative_area)) return vec2(0.0f);  // line 3-4
-    float l_dist = 0.5f * (log_density * 1.44269504f + 2.0f * float(level) - 2.0f * float(d.n_levels - 1));
-    float u_zeta = hash_random(state);
-    if (density_randomization != 0.0f) l_dist += density_randomization * normal_quantile(u_zeta);
-    int dist_level = int(clamp(floor(l_dist + 0.5f), 0.0f, float(d.n_levels)));
+    int dist_level = chermain2020_dist_level(level, d, log_density, density_randomization,
+                                             hash_random(state));
     float colour_u = hash_random(state);
     if (dist_level >= d.n_levels) return vec2(k.target_p22, colour_u);
     if (!k.in_support) return vec2(0.0f);
@@ -288,9 +293,9 @@ vec3 chermain2020_level_p22(vec2 slope, vec2 uv, vec3 ellipse, int level, Cherma
     }
     if (sum_w > 0.0f) return sum_p / sum_w;
     // Footprint smaller than a cell (only at level 0): the cell under its centre.
-    Chermain2020Cell c = chermain2020_cell(ivec2(floor(centre)), level, d, log_density, relative_area,
-                                           density_randomization, seed);
-    return chermain2020_cell_p22(c, slope, d, alpha_x, alpha_y) * chermain2020_cell_colour(c, colours);
+    vec2 sdf = chermain2020_cell_sdf(ivec2(floor(centre)), level, d, log_density, relative_area,
+                                     density_randomization, seed, lookup);
+    return sdf.x * chermain2020_colour(sdf.y, colours);
 }
 
 // RGB D_P(h) of Eq. 13 over the footprint (Algorithm 1) with coloured glints,

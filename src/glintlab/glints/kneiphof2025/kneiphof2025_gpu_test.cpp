@@ -120,15 +120,7 @@ TEST_P(GpuKneiphof2025Prefilter, EqualsTheCpuPrefilter) {
     o.base_width = 64;  // 64 x 32, 7 layers, 64 kernel samples
     const Kneiphof2025Environment cpu(env, o);
 
-    gl::Texture source = gl::make_texture(GL_TEXTURE_2D);
-    glTextureStorage2D(source.get(), 1, GL_RGB32F, img.width, img.height);
-    glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
-    glTextureSubImage2D(source.get(), 0, 0, 0, img.width, img.height, GL_RGB, GL_FLOAT,
-                        img.pixels.data());
-    glTextureParameteri(source.get(), GL_TEXTURE_MIN_FILTER, GL_LINEAR);
-    glTextureParameteri(source.get(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-    glTextureParameteri(source.get(), GL_TEXTURE_WRAP_S, GL_REPEAT);
-    glTextureParameteri(source.get(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    gl::Texture source = upload(img);
     gl::Kneiphof2025GpuPrefilter gpu(o);
     gpu.run(source.get(), img.width, img.height, scale);
 
