@@ -29,8 +29,14 @@ demo: build
 test: build
 	cd $(BUILD) && ctest --output-on-failure -j $(JOBS)
 
+# -O1 -g1 (line tables): the sanitizers' reports keep file:line while the
+# tree compiles in about half the time of -O2 -g (measured per translation
+# unit: 27.6 s -> 12.6 s of CPU for compare.cpp), the larger part of CI.
+ASAN_OPT_FLAGS = -O1 -g1 -DNDEBUG
 $(BUILD_ASAN)/build.ninja: | deps
-	cmake -S . -B $(BUILD_ASAN) -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DGLINTLAB_SANITIZE=ON $(CMAKE_FLAGS)
+	cmake -S . -B $(BUILD_ASAN) -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DGLINTLAB_SANITIZE=ON \
+	    -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="$(ASAN_OPT_FLAGS)" -DCMAKE_C_FLAGS_RELWITHDEBINFO="$(ASAN_OPT_FLAGS)" \
+	    $(CMAKE_FLAGS)
 
 # The same suite under AddressSanitizer + UndefinedBehaviorSanitizer.
 # intercept_tls_get_addr=0: GCC 12's LeakSanitizer, tracking the dynamic TLS

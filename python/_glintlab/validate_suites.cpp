@@ -22,6 +22,8 @@ nlohmann::json run_compare(const CompareArgs& a) {
     o.material = a.material;
     o.models = a.models;
     o.realizations = a.realizations;
+    o.truth_realizations = a.truth_realizations;
+    o.match_facet_extent = a.match_facet_extent;
     o.width = a.width, o.height = a.height;
     o.spp = a.spp;
     o.frames = a.frames;

@@ -28,6 +28,8 @@ struct CompareArgs {
     uint64_t seed = 1;
     bool gpu = false;
     std::string output;
+    int truth_realizations = 0;      // 0: realizations
+    bool match_facet_extent = true;  // false: the models' default facet extents
 };
 nlohmann::json run_compare(const CompareArgs& args);
 

@@ -47,6 +47,19 @@ def test_compare_matches_the_cli_json(tmp_path):
         assert smooth[key] == cli_rows["smooth"][key], key
 
 
+def test_compare_matches_the_facet_extent_unless_asked_not_to(tmp_path):
+    scene = tmp_path / "tiny.json"
+    scene.write_text(json.dumps(SCENE))
+    common = dict(models=["jakob2014"], realizations=2, frames=2, res="12x12",
+                  truth_realizations=3)
+    matched = {m["model"]: m for m in glintlab.compare(scene, **common)["models"]}
+    assert matched["jakob2014"]["facet_extent"] == "gamma_deg 1"
+    assert matched["explicit"]["facet_extent"] == "gamma_deg 1"
+    defaults = {m["model"]: m for m in glintlab.compare(
+        scene, match_facet_extent=False, **common)["models"]}
+    assert defaults["jakob2014"]["facet_extent"] == "the model's defaults"
+
+
 def test_compare_errors_name_the_option(tmp_path):
     scene = tmp_path / "tiny.json"
     scene.write_text(json.dumps(SCENE))

@@ -115,6 +115,10 @@ void add_compare_command(CLI::App& app, int* status) {
     sub->add_option("--orbit", o.orbit_deg,
                     "Degrees the camera orbits its target over the flicker path")
         ->check(CLI::Range(1e-3, 90.0));
+    sub->add_flag("!--model-extent", o.match_facet_extent,
+                  "Keep every model's default facet extent (microfacet_roughness, gamma_deg) "
+                  "instead of matching it to the ground truth's reflection cone "
+                  "(docs/VALIDATION.md \"compare\")");
     sub->add_option("--seed", o.seed, "First seed (realization r uses seed + r)")
         ->check(CLI::Range(uint64_t{0}, uint64_t{4294967295}));
     sub->add_option("--threads", o.threads, "Worker threads (0 = all cores)")

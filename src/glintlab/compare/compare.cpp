@@ -83,9 +83,9 @@ Mask material_mask(const Scene& scene, const Accelerator& accel, const Camera& c
 }
 
 std::string truth_key(const GlintDesc& d) {
-    return fmt::format("explicit {} alpha {:.4g}x{:.4g} ln density {:.4g}",
+    return fmt::format("explicit {} alpha {:.4g}x{:.4g} ln density {:.4g} gamma {:.3g} deg",
                        d.ndf == NdfType::GGX ? "ggx" : "beckmann", d.alpha_x, d.alpha_y,
-                       d.log_density);
+                       d.log_density, std::get<ExplicitParams>(d.params).gamma_deg);
 }
 
 // One set of renders: a model (or the truth) on R realizations and F frames.
@@ -201,10 +201,17 @@ CompareResult run_compare(const CompareOptions& o) {
     // with explicit microfacets of the same distribution).
     std::vector<Job> jobs;
     std::map<std::string, size_t> truth_job;  // key -> index into jobs
-    auto add_truth = [&](const GlintDesc& fitted) {
+    // The truth's reflection cone under delta lights (explicit's gamma_deg:
+    // the scene's when the scene's material is explicit, else its default).
+    double truth_gamma_deg = ExplicitParams{}.gamma_deg;
+    if (original.model_id == GlintModelId::Explicit)
+        truth_gamma_deg = std::get<ExplicitParams>(original.params).gamma_deg;
+    const double truth_gamma = glm::radians(truth_gamma_deg);
+    auto add_truth = [&](const GlintDesc& fitted, double gamma_deg) {
         GlintDesc t = original;
         switch_glint_model(t, GlintModelId::Explicit);
         if (original.model_id == GlintModelId::Explicit) t.params = original.params;
+        std::get<ExplicitParams>(t.params).gamma_deg = float(gamma_deg);
         t.ndf = fitted.ndf, t.alpha_x = fitted.alpha_x, t.alpha_y = fitted.alpha_y;
         t.log_density = std::clamp(fitted.log_density, 0.0f, 30.0f);  // explicit's range
         t.base_albedo = glm::vec3(0.0f);
@@ -214,6 +221,7 @@ CompareResult run_compare(const CompareOptions& o) {
         ModelMetrics row;
         row.model = "explicit", row.compared = true, row.reference = true, row.backend = "cpu";
         row.truth = key;
+        row.facet_extent = fmt::format("gamma_deg {:.3g}", gamma_deg);
         result.models.push_back(row);
         Job j;
         j.row = result.models.size() - 1, j.desc = t;
@@ -226,7 +234,7 @@ CompareResult run_compare(const CompareOptions& o) {
         GlintDesc d = original;
         if (d.model_id != GlintModelId::Explicit && find_glint_model(d.model_id)->fit_material)
             find_glint_model(d.model_id)->fit_material(d);
-        add_truth(d);
+        add_truth(d, truth_gamma_deg);
     }
     std::vector<std::pair<size_t, size_t>> pairs;  // (model job, truth job)
     for (const GlintModelDescriptor* m : asked) {
@@ -257,13 +265,33 @@ CompareResult run_compare(const CompareOptions& o) {
         GlintDesc d = original;
         switch_glint_model(d, m->id);
         // The scene's own model keeps the scene's parameters (a researcher's
-        // tuned material); the others get their defaults. E.g. deliot2023's
-        // microfacet_roughness sets the facets' angular extent, which the
-        // flicker and variance of its sparkles follow (docs/VALIDATION.md
-        // "compare").
-        if (m->id == original.model_id) d.params = original.params;
+        // tuned material); the others get their defaults, with the facets'
+        // angular extent matched to the truth's (facet_extent.h): the
+        // variance and flicker of the sparkles follow it, e.g. deliot2023's
+        // default microfacet_roughness makes facets 29x wider than explicit's
+        // 1-degree cone at roughness 0.3 (docs/VALIDATION.md "compare").
+        // A model whose method fixes the extent gets a truth of its extent.
+        double gamma_deg = truth_gamma_deg;
+        if (m->id == original.model_id) {
+            d.params = original.params;
+            row.facet_extent = "the scene's parameters";
+        } else if (o.match_facet_extent && m->match_facet_cone) {
+            row.facet_extent = m->match_facet_cone(d, truth_gamma);
+        } else {
+            row.facet_extent = "the model's defaults";
+        }
+        if (o.match_facet_extent && m->facet_cone) {
+            // explicit's gamma_deg range (explicit_descriptor.cpp).
+            const double wanted = glm::degrees(m->facet_cone(d));
+            gamma_deg = std::clamp(wanted, 0.5, 6.0);
+            row.facet_extent = fmt::format(
+                "fixed by the method: the truth's gamma_deg {:.3g}{}", gamma_deg,
+                gamma_deg == wanted
+                    ? ""
+                    : fmt::format(" (wanted {:.3g}, explicit's range [0.5, 6])", wanted));
+        }
         d.base_albedo = glm::vec3(0.0f);  // the truth has no diffuse base either
-        const auto [truth, key] = add_truth(d);
+        const auto [truth, key] = add_truth(d, gamma_deg);
         row.compared = true;
         row.backend = on_gpu ? "gpu" : "cpu";
         row.truth = key;

@@ -35,6 +35,9 @@ struct CompareOptions {
     int spp = 0;                // 0: the scene's samples per pixel
     int frames = 8;             // camera-path frames of the flicker measure, >= 2
     double orbit_deg = 4.0;     // the path: an orbit about the target's up axis
+    // Every model but the scene's own gets facets of the truth's angular
+    // extent (facet_extent.h; false: the models' default parameters).
+    bool match_facet_extent = true;
     bool gpu = false;   // real-time models on the OpenGL renderer (the truth stays on the CPU)
     int threads = 0;    // CPU render threads, 0: all cores
     uint64_t seed = 1;  // realization r uses render seed and glint seed seed + r
@@ -49,6 +52,7 @@ struct ModelMetrics {
     bool reference = false;         // the explicit ground truth itself
     std::string backend;            // "cpu" or "gpu"
     std::string truth;              // which ground-truth render it is compared with
+    std::string facet_extent;       // the facets' extent it was given (facet_extent.h)
     double mean_luminance = 0.0;    // masked, averaged over realizations
     double mean_rel_err = 0.0;      // vs the truth (0 for the truth)
     double mean_rel_err_se = 0.0;   // its standard error

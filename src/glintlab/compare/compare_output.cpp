@@ -99,6 +99,7 @@ nlohmann::json CompareResult::to_json() const {
         r["reference"] = m.reference;
         r["backend"] = m.backend;
         r["truth"] = m.truth;
+        r["facet_extent"] = m.facet_extent;
         r["mean_luminance"] = number(m.mean_luminance);
         r["mean_rel_err"] = number(m.mean_rel_err);
         r["mean_rel_err_se"] = number(m.mean_rel_err_se);
@@ -119,21 +120,23 @@ nlohmann::json CompareResult::to_json() const {
 
 std::string CompareResult::to_csv() const {
     std::string s =
-        "model,compared,reference,backend,truth,mean_luminance,mean_rel_err,mean_rel_err_se,"
+        "model,compared,reference,backend,truth,facet_extent,mean_luminance,mean_rel_err,mean_rel_"
+        "err_se,"
         "blurred_rel_rmse,pixel_variance,variance_ratio,wasserstein,flicker,flicker_ratio,"
         "seconds,nan_count,inf_count,negative_count,reason\n";
     for (const ModelMetrics& m : models) {
         if (!m.compared) {
-            s += fmt::format("{},false,,,,,,,,,,,,,,,,,\"{}\"\n", m.model, m.reason);
+            s += fmt::format("{},false,,,,,,,,,,,,,,,,,,\"{}\"\n", m.model, m.reason);
             continue;
         }
-        s += fmt::format("{},true,{},{},\"{}\",{},{},{},{},{},{},{},{},{},{},{},{},{},\n", m.model,
-                         m.reference, m.backend, m.truth, csv_number(m.mean_luminance),
-                         csv_number(m.mean_rel_err), csv_number(m.mean_rel_err_se),
-                         csv_number(m.blurred_rel_rmse), csv_number(m.pixel_variance),
-                         csv_number(m.variance_ratio), csv_number(m.wasserstein),
-                         csv_number(m.flicker), csv_number(m.flicker_ratio), csv_number(m.seconds),
-                         m.faults.nan, m.faults.inf, m.faults.negative);
+        s += fmt::format("{},true,{},{},\"{}\",\"{}\",{},{},{},{},{},{},{},{},{},{},{},{},{},\n",
+                         m.model, m.reference, m.backend, m.truth, m.facet_extent,
+                         csv_number(m.mean_luminance), csv_number(m.mean_rel_err),
+                         csv_number(m.mean_rel_err_se), csv_number(m.blurred_rel_rmse),
+                         csv_number(m.pixel_variance), csv_number(m.variance_ratio),
+                         csv_number(m.wasserstein), csv_number(m.flicker),
+                         csv_number(m.flicker_ratio), csv_number(m.seconds), m.faults.nan,
+                         m.faults.inf, m.faults.negative);
     }
     return s;
 }
@@ -162,6 +165,9 @@ std::string CompareResult::to_text() const {
             m.model, m.backend, err, m.blurred_rel_rmse, m.variance_ratio, m.wasserstein,
             m.flicker_ratio, m.seconds, m.faults.nan, m.faults.inf, m.faults.negative);
     }
+    s += "facet extents (under point and directional lights):\n";
+    for (const ModelMetrics& m : models)
+        if (m.compared) s += fmt::format("  {:<14} {}\n", m.model, m.facet_extent);
     return s;
 }
 

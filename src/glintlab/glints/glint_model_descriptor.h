@@ -154,6 +154,15 @@ struct GlintModelDescriptor {
     // every light.
     bool (*shades_light)(const GlintDesc& desc, const Scene& scene, int light) = nullptr;
     glm::vec3 (*light_radiance)(const GlintLightingContext& ctx, int light) = nullptr;
+    // Optional (facet_extent.h; `glintlab compare`): sets the model's own
+    // facet-extent parameter to the explicit ground truth's reflection cone
+    // of half-angle gamma (radians) and returns what it set, e.g.
+    // "microfacet_roughness 0.000846", noting a clamp to the parameter's
+    // range.
+    std::string (*match_facet_cone)(GlintDesc& desc, double gamma_rad) = nullptr;
+    // Optional: for a model whose facets' extent the method fixes (no
+    // parameter), the explicit cone half-angle (radians) of the same extent.
+    double (*facet_cone)(const GlintDesc& desc) = nullptr;
     GlintValidationSuite validation;  // name empty: no suite
     // Set (set_export): `glintlab export` writes the model (its GPU back end).
     std::optional<GlintModelExport> shader_export;

@@ -4,6 +4,8 @@
 
 #include "glintlab/core/error.h"
 #include "glintlab/core/json_reader.h"
+#include "glintlab/glints/chermain2020/dictionary.h"
+#include "glintlab/glints/facet_extent.h"
 #include "glintlab/glints/glint_model_descriptor.h"
 
 namespace glintlab {
@@ -34,6 +36,15 @@ void check_chermain2020(JsonObject& block, GlintDesc& desc) {
 // 004 §4.3: the multiscale SDF is separable only for Beckmann.
 void fit_chermain2020(GlintDesc& desc) {
     desc.ndf = NdfType::Beckmann;
+}
+
+// compare (facet_extent.h): the dictionary's Gaussian lobes (std-dev
+// lobe_sigma in the dictionary's slopes, 004 §4.4) scaled to the material's
+// slopes by alpha / alpha_dict (Alg. 3's S_alpha): the method fixes them.
+double chermain2020_facet_cone(const GlintDesc& desc) {
+    const DictionaryParams dict;  // default_dictionary()'s parameters
+    const double scale = double(dict.lobe_sigma) / double(dict.alpha_dict);
+    return cone_for_gaussian_slope_lobe(scale * desc.alpha_x, scale * desc.alpha_y);
 }
 
 }  // namespace
@@ -76,6 +87,7 @@ GlintModelDescriptor chermain2020_descriptor() {
     d.extra_keys = {colours};
     d.check = check_chermain2020;
     d.fit_material = fit_chermain2020;
+    d.facet_cone = chermain2020_facet_cone;
     d.validation = {"chermain2020"};  // run by the research library (validation_suites.h)
     return d;
 }

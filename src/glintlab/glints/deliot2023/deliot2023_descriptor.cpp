@@ -1,8 +1,19 @@
 // deliot2023's descriptor (glint_model_descriptor.h): point and directional
 // lights only (000 §8: the counting ignores a light's extent).
+#include "glintlab/glints/facet_extent.h"
 #include "glintlab/glints/glint_model_descriptor.h"
 
 namespace glintlab {
+namespace {
+
+// compare (facet_extent.h): R of 000 Eq. 4 with explicit's success
+// probability, R = D(n) omega_h(gamma).
+std::string match_deliot2023_facet_cone(GlintDesc& desc, double gamma_rad) {
+    return set_facet_extent_param(desc, "microfacet_roughness",
+                                  microfacet_roughness_for_cone(desc, gamma_rad));
+}
+
+}  // namespace
 
 const GpuModelHooks& deliot2023_gpu_hooks();               // deliot2023/deliot2023_gpu*.cpp
 void deliot2023_export_material(GlintExportContext& ctx);  // deliot2023/deliot2023_export.cpp
@@ -35,6 +46,7 @@ GlintModelDescriptor deliot2023_descriptor() {
         gp::boolean("original_defects", &P::original_defects,
                     "reproduce the original HLSL's defects (docs/MODELS.md) for comparisons"),
     };
+    d.match_facet_cone = match_deliot2023_facet_cone;
     d.validation = {"deliot2023"};  // run by the research library (validation_suites.h)
     return d;
 }

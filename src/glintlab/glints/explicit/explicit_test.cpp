@@ -179,6 +179,57 @@ TEST(ExplicitField, DeterministicOverlappingFootprintsAndTiling) {
     EXPECT_EQ(shifted, n_big);
 }
 
+// A thin footprint along a silhouette: its bounding box spans 258 x 114
+// tiles (29 412, over the 4096-tile limit, which it used to fail) while it
+// touches a few hundred. It visits exactly the facets inside it: those of a
+// brute-force pass over every tile of the bounding box.
+TEST(ExplicitField, ThinFootprintAcrossManyTilesVisitsTheFacetsInside) {
+    ExplicitFacetField field;
+    field.log_density = std::log(40.0);
+    field.seed = 5;
+    const glm::dvec2 c(0.3, 0.7), e1(257.0, 113.0);
+    const glm::dvec2 e2 = glm::dvec2(-e1.y, e1.x) * (0.02 / glm::length(e1));  // 0.02 wide
+    const Footprint thin{glm::vec2(c), glm::vec2(e1), glm::vec2(e2)};
+    const glm::dvec2 fc(thin.uv), f1(thin.duvdx), f2(thin.duvdy);  // as stored (float)
+    const double det = f1.x * f2.y - f1.y * f2.x;
+    const auto inside = [&](glm::vec2 uv) {
+        const glm::dvec2 d = glm::dvec2(uv) - fc;
+        const double s = (f2.y * d.x - f2.x * d.y) / det, t = (-f1.y * d.x + f1.x * d.y) / det;
+        return s >= -0.5 && s < 0.5 && t >= -0.5 && t < 0.5;
+    };
+    uint64_t count = 0;
+    double sum_u = 0.0;
+    const uint64_t visited = for_each_explicit_facet(field, thin, [&](const ExplicitFacet& f) {
+        EXPECT_TRUE(inside(f.uv)) << f.uv.x << " " << f.uv.y;
+        ++count, sum_u += f.uv.x;
+    });
+    EXPECT_EQ(visited, count);
+    uint64_t brute = 0;
+    double brute_u = 0.0;
+    for (int ty = -57; ty <= 57; ++ty)
+        for (int tx = -129; tx <= 129; ++tx)
+            for_each_explicit_facet(field,
+                                    Footprint{{tx + 0.5f, ty + 0.5f}, {1.0f, 0.0f}, {0.0f, 1.0f}},
+                                    [&](const ExplicitFacet& f) {
+                                        if (inside(f.uv)) ++brute, brute_u += f.uv.x;
+                                    });
+    EXPECT_EQ(count, brute);
+    EXPECT_NEAR(sum_u, brute_u, 1e-6 * (1.0 + std::abs(brute_u)));
+    // N a(A) = 40 * 280.7 * 0.02 = 225 expected facets.
+    EXPECT_GT(count, 150u);
+    EXPECT_LT(count, 300u);
+    // A footprint that does touch more than 4096 tiles still fails, by name.
+    field.log_density = 0.0;  // 1 facet per tile: under max_facets_per_footprint
+    try {
+        for_each_explicit_facet(field, square({0.5f, 0.5f}, 70.0f), [](const ExplicitFacet&) {});
+        FAIL() << "no error above 4096 touched tiles";
+    } catch (const Error& e) {
+        EXPECT_NE(std::string(e.what()).find("touches 5041 uv tiles (more than 4096"),
+                  std::string::npos)
+            << e.what();
+    }
+}
+
 TEST(ExplicitField, BillionFacetsPerUnitAreaOnTinyFootprints) {
     ExplicitFacetField field;
     field.log_density = std::log(1.0e9);

@@ -9,6 +9,7 @@
 
 #include "glintlab/core/error.h"
 #include "glintlab/core/json_reader.h"
+#include "glintlab/glints/facet_extent.h"
 #include "glintlab/glints/glint_model_descriptor.h"
 #include "glintlab/glints/jakob2014/jakob2014.h"
 
@@ -34,6 +35,12 @@ void fit_jakob2014(GlintDesc& desc) {
     float max = static_cast<float>(jakob2014::kMaxLogDensity);
     if (static_cast<double>(max) > jakob2014::kMaxLogDensity) max = std::nextafter(max, 0.0f);
     desc.log_density = std::min(desc.log_density, max);
+}
+
+// compare (facet_extent.h): the search cone gamma is explicit's own
+// definition (the reflected direction within gamma of the light).
+std::string match_jakob2014_facet_cone(GlintDesc& desc, double gamma_rad) {
+    return set_facet_cone_param(desc, "gamma_deg", gamma_rad);
 }
 
 }  // namespace
@@ -68,6 +75,7 @@ GlintModelDescriptor jakob2014_descriptor() {
     };
     d.check = check_jakob2014;
     d.fit_material = fit_jakob2014;
+    d.match_facet_cone = match_jakob2014_facet_cone;
     d.validation = {"jakob2014"};  // run by the research library (validation_suites.h)
     return d;
 }

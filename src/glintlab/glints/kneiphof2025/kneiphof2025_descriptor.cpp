@@ -5,6 +5,7 @@
 #include <algorithm>
 
 #include "glintlab/core/json_reader.h"
+#include "glintlab/glints/facet_extent.h"
 #include "glintlab/glints/glint_model_descriptor.h"
 #include "glintlab/glints/kneiphof2025/kneiphof2025.h"
 
@@ -25,6 +26,17 @@ void check_kneiphof2025(JsonObject& block, GlintDesc& desc) {
 void fit_kneiphof2025(GlintDesc& desc) {
     desc.ndf = NdfType::GGX;
     desc.alpha_x = desc.alpha_y = std::min(desc.alpha_x, 1.0f);
+}
+
+// compare (facet_extent.h): the point-light grid's R of 000 Eq. 4, and the
+// wang2020_style variant's cone (the same definition as explicit's gamma).
+std::string match_kneiphof2025_facet_cone(GlintDesc& desc, double gamma_rad) {
+    std::string text = set_facet_extent_param(desc, "microfacet_roughness",
+                                              microfacet_roughness_for_cone(desc, gamma_rad));
+    if (std::get<Kneiphof2025Params>(desc.params).variant ==
+        Kneiphof2025Params::Variant::Wang2020Style)
+        text += ", " + set_facet_cone_param(desc, "gamma_deg", gamma_rad);
+    return text;
 }
 
 }  // namespace
@@ -89,6 +101,7 @@ GlintModelDescriptor kneiphof2025_descriptor() {
     d.fit_material = fit_kneiphof2025;
     d.shades_light = GLINTLAB_SHADES_LIGHT_HOOK(kneiphof2025_shades_light);
     d.light_radiance = GLINTLAB_LIGHT_RADIANCE_HOOK(kneiphof2025_light_radiance);
+    d.match_facet_cone = match_kneiphof2025_facet_cone;
     d.validation = {"kneiphof2025"};  // run by the research library (validation_suites.h)
     return d;
 }

@@ -9,6 +9,7 @@
 #include <fmt/format.h>
 
 #include "glintlab/core/json_reader.h"
+#include "glintlab/glints/facet_extent.h"
 #include "glintlab/glints/glint_model_descriptor.h"
 #include "glintlab/glints/wang2020/wang2020_model.h"
 #include "glintlab/glints/wang2020/wang2020_quadtree.h"
@@ -76,6 +77,12 @@ void fit_wang2020(GlintDesc& desc) {
     }
 }
 
+// compare (facet_extent.h): the search cone gamma is explicit's own
+// definition (the reflected direction within gamma of the light).
+std::string match_wang2020_facet_cone(GlintDesc& desc, double gamma_rad) {
+    return set_facet_cone_param(desc, "gamma_deg", gamma_rad);
+}
+
 }  // namespace
 
 const GpuModelHooks& wang2020_gpu_hooks();               // wang2020/wang2020_gpu*.cpp
@@ -124,6 +131,7 @@ GlintModelDescriptor wang2020_descriptor() {
     d.fit_material = fit_wang2020;
     d.shades_light = GLINTLAB_SHADES_LIGHT_HOOK(wang2020_shades_light);
     d.light_radiance = GLINTLAB_LIGHT_RADIANCE_HOOK(wang2020_light_radiance);
+    d.match_facet_cone = match_wang2020_facet_cone;
     d.validation = {"wang2020"};  // run by the research library (validation_suites.h)
     return d;
 }

@@ -1,8 +1,19 @@
 // zirr2016's descriptor (glint_model_descriptor.h): point and directional
 // lights only (000 §3: counts for one half vector).
+#include "glintlab/glints/facet_extent.h"
 #include "glintlab/glints/glint_model_descriptor.h"
 
 namespace glintlab {
+namespace {
+
+// compare (facet_extent.h): R of 000 Eq. 4 with explicit's success
+// probability, R = D(n) omega_h(gamma).
+std::string match_zirr2016_facet_cone(GlintDesc& desc, double gamma_rad) {
+    return set_facet_extent_param(desc, "microfacet_roughness",
+                                  microfacet_roughness_for_cone(desc, gamma_rad));
+}
+
+}  // namespace
 
 const GpuModelHooks& zirr2016_gpu_hooks();  // zirr2016/zirr2016_gpu*.cpp
 
@@ -29,6 +40,7 @@ GlintModelDescriptor zirr2016_descriptor() {
         gp::number("screen_space_scale", &P::screen_space_scale, 0.5, 8.0, "",
                    "texel width in footprint minor widths: LOD = log2(minor * S)"),
     };
+    d.match_facet_cone = match_zirr2016_facet_cone;
     d.validation = {"zirr2016"};  // run by the research library (validation_suites.h)
     return d;
 }
