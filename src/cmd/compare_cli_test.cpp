@@ -104,7 +104,9 @@ TEST(CompareCli, WritesTheFilesAndTheJsonTable) {
     std::string header;
     std::getline(csv, header);
     EXPECT_EQ(
-        header.rfind("model,compared,reference,backend,truth,mean_luminance,mean_rel_err,", 0), 0u);
+        header.rfind(
+            "model,compared,reference,backend,truth,facet_extent,mean_luminance,mean_rel_err,", 0),
+        0u);
     std::filesystem::remove_all(dir);
 }
 

@@ -212,6 +212,9 @@ CompareResult run_compare(const CompareOptions& o) {
         switch_glint_model(t, GlintModelId::Explicit);
         if (original.model_id == GlintModelId::Explicit) t.params = original.params;
         std::get<ExplicitParams>(t.params).gamma_deg = float(gamma_deg);
+        // Silhouette samples (outside the mask) have footprints of
+        // unbounded area: a part of them, unbiased, rather than an error.
+        std::get<ExplicitParams>(t.params).subsample_over_budget = true;
         t.ndf = fitted.ndf, t.alpha_x = fitted.alpha_x, t.alpha_y = fitted.alpha_y;
         t.log_density = std::clamp(fitted.log_density, 0.0f, 30.0f);  // explicit's range
         t.base_albedo = glm::vec3(0.0f);

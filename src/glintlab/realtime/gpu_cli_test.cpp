@@ -397,6 +397,11 @@ TEST(GpuViewer, PanelFitsTheWindowUnderXvfb) {
 // only pixels the material covers entirely, so smooth (no sparkle noise)
 // still agrees within 1 % (measured 0.0 %; with silhouette pixels in the
 // mask it was +3.3 % at 64x64).
+// --model-extent: the models' default facet extents. With the truth's
+// (deliot2023's R 30x smaller) each sparkle lives in a 30x narrower angular
+// cell, so the fp32 differences of the two back ends' half vectors move
+// glints across cell borders and the rows differ by sparkle noise (3.8 %
+// for deliot2023 at 2 realizations), not by what this test checks.
 TEST(GpuCompare, RealTimeModelsRunOnTheGpuAndMatchTheirCpuRows) {
     GLINTLAB_REQUIRE_GL();
     testing::ScratchDir dir;
@@ -404,10 +409,10 @@ TEST(GpuCompare, RealTimeModelsRunOnTheGpuAndMatchTheirCpuRows) {
                                "lights_point_directional.json")
                                   .string();
     auto compare = [&](const std::string& models, int spp, bool gpu) {
-        const RunResult r =
-            run(cli() + " compare " + scene + " --models " + models +
-                " --res 48x48 --realizations 2 --frames 2 --spp " + std::to_string(spp) +
-                (gpu ? " --gpu" : "") + " --no-cache -q --json -o " + (dir / "out").string());
+        const RunResult r = run(cli() + " compare " + scene + " --models " + models +
+                                " --res 48x48 --realizations 2 --frames 2 --model-extent --spp " +
+                                std::to_string(spp) + (gpu ? " --gpu" : "") +
+                                " --no-cache -q --json -o " + (dir / "out").string());
         EXPECT_EQ(r.status, 0) << r.output;
         std::map<std::string, nlohmann::json> rows;
         try {

@@ -52,6 +52,9 @@ struct ExplicitFacetField {
     // Expected facets per footprint (N a(A)) above which the enumeration
     // fails with a glintlab::Error instead of running for minutes.
     double max_facets_per_footprint = 1e6;
+    // Above the budget: enumerate one part of the footprint
+    // (explicit_enumerated_footprint) instead of failing.
+    bool subsample_over_budget = false;
 };
 
 struct ExplicitFacet {
@@ -73,6 +76,15 @@ void validate_explicit_field(const ExplicitFacetField& field);
 // P22 the Gaussian (Beckmann) or the bivariate Student-t with 2 degrees of
 // freedom (GGX), stretched by (alpha_x, alpha_y) (Heitz 2014 §5.1, Eq. 36).
 glm::vec3 sample_explicit_normal(NdfType ndf, float alpha_x, float alpha_y, double u1, double u2);
+
+// The footprint the estimators enumerate and normalise by: fp itself,
+// unless it holds more than field.max_facets_per_footprint facets in
+// expectation and field.subsample_over_budget is set. Then it is one of the
+// K x K equal sub-parallelograms of fp, K = ceil(sqrt(N a(fp) / max)),
+// picked by a hash of fp's centre (which the pixel samples jitter): each
+// estimate (1/(N a)) sum over a footprint is the mean of its parts'
+// estimates, so a uniformly chosen part is unbiased for it.
+Footprint explicit_enumerated_footprint(const ExplicitFacetField& field, const Footprint& fp);
 
 // Calls visit(facet) for every facet whose uv lies in the footprint
 // parallelogram (convention above). Returns the number visited.

@@ -56,6 +56,10 @@ GlintModelDescriptor explicit_descriptor() {
                    "expected facets per pixel footprint above which shading fails with an "
                    "error instead of enumerating for minutes",
                    GlintParamUi::Log),
+        gp::choice("over_budget", &P::subsample_over_budget,
+                   {{"error", false}, {"subsample", true}},
+                   "a footprint above max_facets_per_footprint: fail naming it, or enumerate one "
+                   "of K x K equal parts (unbiased; for grazing and silhouette footprints)"),
     };
     d.check = check_explicit;
     d.fit_material = fit_explicit;

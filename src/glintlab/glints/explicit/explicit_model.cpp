@@ -30,13 +30,14 @@ struct Cone {
 glm::vec3 cone_radiance(const GlintLightingContext& ctx, const Cone& cone) {
     const GlintDesc& desc = *ctx.desc;
     const ExplicitFacetField field = explicit_field(desc);
-    const double area = explicit_footprint_area(ctx.footprint);
+    const Footprint fp = explicit_enumerated_footprint(field, ctx.footprint);
+    const double area = explicit_footprint_area(fp);
     if (!(area > 0.0)) return glm::vec3(0.0f);
     const glm::vec3 axis = ctx.to_local(cone.axis);
     GlintBxdf bxdf;
     bxdf.desc = &desc;
     glm::dvec3 sum(0.0);
-    for_each_explicit_facet(field, ctx.footprint, [&](const ExplicitFacet& f) {
+    for_each_explicit_facet(field, fp, [&](const ExplicitFacet& f) {
         glm::vec3 r;
         const float w = explicit_facet_weight(field, ctx.wo, f.m, r);
         if (w <= 0.0f || glm::dot(r, axis) < cone.cos_max) return;
@@ -57,6 +58,7 @@ ExplicitFacetField explicit_field(const GlintDesc& desc) {
     f.log_density = desc.log_density;
     f.seed = desc.seed;
     f.max_facets_per_footprint = params_of(desc).max_facets_per_footprint;
+    f.subsample_over_budget = params_of(desc).subsample_over_budget;
     return f;
 }
 
@@ -66,7 +68,8 @@ float explicit_gamma_rad(const GlintDesc& desc) {
 
 float explicit_footprint_ndf(glm::vec3 wo, glm::vec3 wi, const Footprint& footprint,
                              const GlintDesc& desc) {
-    return explicit_footprint_ndf(explicit_field(desc), footprint, wo, wi,
+    const ExplicitFacetField field = explicit_field(desc);
+    return explicit_footprint_ndf(field, explicit_enumerated_footprint(field, footprint), wo, wi,
                                   explicit_gamma_rad(desc));
 }
 
@@ -88,8 +91,9 @@ glm::vec3 explicit_light_radiance(const GlintLightingContext& ctx, int light) {
         // visible environment, ∫ f V L cos dwi, as the integrators' light
         // sampling computes it for every other BSDF. Without V, concave or
         // self-shadowing shapes (the compare blob) were too bright.
+        const ExplicitFacetField field = explicit_field(desc);
         const glm::vec3 L = explicit_environment_radiance(
-            explicit_field(desc), ctx.footprint, ctx.wo,
+            field, explicit_enumerated_footprint(field, ctx.footprint), ctx.wo,
             [&](glm::vec3 r) {
                 const glm::vec3 d = ctx.to_world(r);
                 const glm::vec3 le = map.eval(d);

@@ -13,6 +13,14 @@ struct ExplicitParams {
     // error instead of enumerating for minutes (docs/BENCHMARKS.md: ~20-40 ns
     // per facet, so 1e6 facets ~ 30 ms per shading call).
     double max_facets_per_footprint = 1e6;
+    // "over_budget": what a footprint above that budget does. "error"
+    // (default): shading fails, naming the footprint. "subsample": one of
+    // K x K equal parts of the footprint is enumerated (K the smallest that
+    // fits the budget), chosen by a hash of the footprint's centre; the
+    // estimate, normalised by that part's expected count, stays unbiased
+    // (docs/MODELS.md explicit). For the grazing and silhouette footprints
+    // of ray differentials, e.g. in `glintlab compare`'s truth.
+    bool subsample_over_budget = false;
 };
 
 }  // namespace glintlab

@@ -230,6 +230,56 @@ TEST(ExplicitField, ThinFootprintAcrossManyTilesVisitsTheFacetsInside) {
     }
 }
 
+// over_budget "subsample": a footprint above the budget is replaced by one
+// of K x K equal parts, which partition its facets (so the mean of the
+// parts' estimates is the footprint's: unbiased), chosen uniformly.
+TEST(ExplicitField, OverBudgetFootprintEnumeratesOneOfItsEqualParts) {
+    ExplicitFacetField field;
+    field.log_density = std::log(1.0e6);
+    field.seed = 3;
+    field.max_facets_per_footprint = 1000.0;
+    const Footprint fp{{0.37f, 0.61f}, {0.05f, 0.01f}, {-0.02f, 0.06f}};  // 3200 facets: K = 2
+    const auto noop = [](const ExplicitFacet&) {};
+    EXPECT_EQ(explicit_enumerated_footprint(field, fp).duvdx, fp.duvdx);  // off: unchanged
+    EXPECT_THROW(for_each_explicit_facet(field, fp, noop), Error);
+    field.subsample_over_budget = true;
+    std::vector<Footprint> parts;
+    for (int j = 0; j < 2; ++j)
+        for (int i = 0; i < 2; ++i)
+            parts.push_back(
+                Footprint{fp.uv + (0.5f * i - 0.25f) * fp.duvdx + (0.5f * j - 0.25f) * fp.duvdy,
+                          0.5f * fp.duvdx, 0.5f * fp.duvdy});
+    uint64_t sum = 0;
+    for (const Footprint& p : parts) sum += for_each_explicit_facet(field, p, noop);
+    field.max_facets_per_footprint = 1e6;
+    const uint64_t whole = for_each_explicit_facet(field, fp, noop);
+    EXPECT_EQ(sum, whole);  // the parts partition the footprint's facets
+    EXPECT_GT(whole, 3000u);
+    field.max_facets_per_footprint = 1000.0;
+    // Jittered centres pick the parts uniformly: 4000 draws, 1000 expected
+    // each (sd 27), bounds at 5 sd.
+    int hits[4] = {0, 0, 0, 0};
+    for (int n = 0; n < 4000; ++n) {
+        Footprint jittered = fp;
+        jittered.uv += glm::vec2(1e-4f * float(n % 63), 1e-4f * float(n / 63));
+        const Footprint part = explicit_enumerated_footprint(field, jittered);
+        EXPECT_EQ(part.duvdx, 0.5f * fp.duvdx);
+        int found = -1;
+        for (int k = 0; k < 4; ++k)
+            if (glm::length(part.uv - (parts[size_t(k)].uv + (jittered.uv - fp.uv))) < 1e-6f)
+                found = k;
+        ASSERT_GE(found, 0);
+        ++hits[found];
+    }
+    for (int k = 0; k < 4; ++k) {
+        EXPECT_GT(hits[k], 865) << k;
+        EXPECT_LT(hits[k], 1135) << k;
+    }
+    // Within the budget, the footprint itself.
+    field.max_facets_per_footprint = 1e4;
+    EXPECT_EQ(explicit_enumerated_footprint(field, fp).duvdx, fp.duvdx);
+}
+
 TEST(ExplicitField, BillionFacetsPerUnitAreaOnTinyFootprints) {
     ExplicitFacetField field;
     field.log_density = std::log(1.0e9);

@@ -1,6 +1,7 @@
 // The procedural facet field of explicit.h: quadtree of exact binomial
 // splits, leaves of uniform facets (explicit.h header comment).
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <limits>
 #include <numbers>
@@ -191,6 +192,24 @@ glm::vec3 sample_explicit_normal(NdfType ndf, float alpha_x, float alpha_y, doub
     // Slopes (sx, sy) = (-m.x/m.z, -m.y/m.z) (Heitz 2014 Eq. 36).
     const double inv = 1.0 / std::sqrt(sx * sx + sy * sy + 1.0);
     return glm::vec3(float(-sx * inv), float(-sy * inv), float(inv));
+}
+
+Footprint explicit_enumerated_footprint(const ExplicitFacetField& field, const Footprint& fp) {
+    if (!field.subsample_over_budget) return fp;
+    const double expected = double(explicit_facets_per_tile(field)) * explicit_footprint_area(fp);
+    if (!(expected > field.max_facets_per_footprint) || !std::isfinite(expected)) return fp;
+    const double k_real = std::ceil(std::sqrt(expected / field.max_facets_per_footprint));
+    if (!(k_real <= 65536.0)) return fp;  // beyond any image: for_each names the footprint
+    const uint32_t k = static_cast<uint32_t>(k_real);
+    const uint64_t key = mix_bits((uint64_t(std::bit_cast<uint32_t>(fp.uv.x)) << 32) ^
+                                  std::bit_cast<uint32_t>(fp.uv.y) ^ (uint64_t(field.seed) << 17));
+    const uint32_t cell = static_cast<uint32_t>(key % (uint64_t(k) * k));
+    const float i = float(cell % k), j = float(cell / k), kf = float(k);
+    Footprint part = fp;
+    part.duvdx = fp.duvdx / kf;
+    part.duvdy = fp.duvdy / kf;
+    part.uv = fp.uv + ((i + 0.5f) / kf - 0.5f) * fp.duvdx + ((j + 0.5f) / kf - 0.5f) * fp.duvdy;
+    return part;
 }
 
 uint64_t for_each_explicit_facet(const ExplicitFacetField& field, const Footprint& fp,
