@@ -281,7 +281,8 @@ CompareResult run_compare(const CompareOptions& o) {
         } else if (o.match_facet_extent && m->match_facet_cone) {
             row.facet_extent = m->match_facet_cone(d, truth_gamma);
         } else {
-            row.facet_extent = "the model's defaults";
+            row.facet_extent =
+                m->match_facet_cone || m->facet_cone ? "the model's defaults" : "none (no facets)";
         }
         if (o.match_facet_extent && m->facet_cone) {
             // explicit's gamma_deg range (explicit_descriptor.cpp).
