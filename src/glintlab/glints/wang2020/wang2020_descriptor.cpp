@@ -126,6 +126,10 @@ GlintModelDescriptor wang2020_descriptor() {
         gp::choice("prefilter", &P::prefilter_mis, {{"mis", true}, {"as_published", false}},
                    "001 Eq. 16 prefilter: BRDF + environment samples by MIS (default) or BRDF "
                    "samples only"),
+        gp::choice("dpf_roughness", &P::dpf_exact_roughness,
+                   {{"exact", true}, {"as_published", false}},
+                   "DPF table of the material's own roughness (default) or 001 §4.4's linear "
+                   "interpolation between the two bracketing tables"),
     };
     d.check = check_wang2020;
     d.fit_material = fit_wang2020;

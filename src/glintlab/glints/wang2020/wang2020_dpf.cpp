@@ -168,9 +168,11 @@ DpfSet load_or_build_dpf_set(DpfResolution res) {
     return set;
 }
 
-DpfTable load_or_extract_dpf(const DpfSet& set, double alpha, double gamma_rad) {
+DpfTable load_or_extract_dpf(const DpfSet& set, double alpha, double gamma_rad,
+                             DpfRoughness roughness) {
     CacheKey key("wang2020_dpf_extract", kDpfTableVersion);
     key.add(dpf_cache_key(set.res, set.gamma_rad)).add(alpha).add(gamma_rad);
+    if (roughness == DpfRoughness::Exact) key.add(std::string_view("exact roughness"));
     const DpfResolution res = set.res;
     const size_t cells = size_t(res.theta_i) * size_t(res.theta_o) * size_t(res.phi);
     if (const auto bytes = disk_cache_load("wang2020_dpf_extract", key.value())) {
@@ -184,7 +186,7 @@ DpfTable load_or_extract_dpf(const DpfSet& set, double alpha, double gamma_rad) 
                                           "(cached afterwards)",
                                           alpha, gamma_rad * 180.0 / kPi),
                               false);
-    DpfTable t = extract_dpf(set, alpha, gamma_rad);
+    DpfTable t = extract_dpf(set, alpha, gamma_rad, roughness);
     progress.update();
     progress.done();
     ByteWriter out;
@@ -202,7 +204,7 @@ const DpfSet& dpf_set(DpfResolution res) {
     return *slot;
 }
 
-DpfTable extract_dpf(const DpfSet& set, double alpha, double gamma_rad) {
+DpfTable extract_dpf(const DpfSet& set, double alpha, double gamma_rad, DpfRoughness roughness) {
     // A scene's roughness is a float: its 0.02 is 0.0199999996, the first
     // table's roughness up to float rounding.
     if (alpha >= double(float(kRoughnessSet.front())) && alpha < kRoughnessSet.front())
@@ -212,18 +214,23 @@ DpfTable extract_dpf(const DpfSet& set, double alpha, double gamma_rad) {
     const double gamma_max = 30.0 * kPi / 180.0;
     if (!(gamma_rad >= set.gamma_rad * (1.0 - 1e-9) && gamma_rad <= gamma_max))
         fail("wang2020: gamma {} deg outside [1, 30] deg", gamma_rad * 180.0 / kPi);
-    // Roughness interpolation (linear in α between bracketing tables).
-    size_t hi = 1;
-    while (hi + 1 < kRoughnessSet.size() && kRoughnessSet[hi] < alpha) ++hi;
-    const size_t lo = hi - 1;
-    const double w = (alpha - kRoughnessSet[lo]) / (kRoughnessSet[hi] - kRoughnessSet[lo]);
     const auto& res = set.res;
-    const auto& vl = set.tables[lo].values();
-    const auto& vh = set.tables[hi].values();
-    std::vector<float> mixed(vl.size());
-    for (size_t k = 0; k < vl.size(); ++k)
-        mixed[k] = static_cast<float>((1.0 - w) * vl[k] + w * vh[k]);
-    DpfTable base(res, std::move(mixed));
+    auto interpolated = [&] {
+        // Roughness interpolation (linear in α between bracketing tables).
+        size_t hi = 1;
+        while (hi + 1 < kRoughnessSet.size() && kRoughnessSet[hi] < alpha) ++hi;
+        const size_t lo = hi - 1;
+        const double w = (alpha - kRoughnessSet[lo]) / (kRoughnessSet[hi] - kRoughnessSet[lo]);
+        const auto& vl = set.tables[lo].values();
+        const auto& vh = set.tables[hi].values();
+        std::vector<float> mixed(vl.size());
+        for (size_t k = 0; k < vl.size(); ++k)
+            mixed[k] = static_cast<float>((1.0 - w) * vl[k] + w * vh[k]);
+        return DpfTable(res, std::move(mixed));
+    };
+    const DpfTable base = roughness == DpfRoughness::Exact
+                              ? generate_dpf_table(alpha, set.gamma_rad, res)
+                              : interpolated();
     if (gamma_rad <= set.gamma_rad * (1.0 + 1e-9)) return base;
 
     // γ accumulation: P_γ(i, o) = ∫_{cone(o, γ)} P_1(i, o') / σ_1 do', a sum

@@ -33,7 +33,7 @@ uint64_t particles_of(const GlintDesc& desc) {
 // One model per (material, environment map); the map pointer identifies the
 // environment (scenes own their maps for the whole render).
 using Key = std::tuple<float, float, uint64_t, uint32_t, double, int, int, int, int, bool, bool,
-                       const EnvironmentMap*>;
+                       bool, const EnvironmentMap*>;
 
 // The map pointer is part of the key; the entry also keeps a weak_ptr to the
 // map so that a new map allocated at a freed map's address (a later scene)
@@ -48,10 +48,19 @@ std::shared_ptr<const Wang2020Model> model_for(const GlintDesc& desc,
     static std::mutex mutex;
     static std::map<Key, CacheEntry> cache;
     const Wang2020Params& p = params_of(desc);
-    const Key key{
-        desc.alpha_x,    0.0f,        particles_of(desc), desc.seed,           p.gamma_deg,
-        p.depth,         p.dpf_theta, p.dpf_phi,          p.prefilter_samples, p.micro_per_particle,
-        p.prefilter_mis, env.get()};
+    const Key key{desc.alpha_x,
+                  0.0f,
+                  particles_of(desc),
+                  desc.seed,
+                  p.gamma_deg,
+                  p.depth,
+                  p.dpf_theta,
+                  p.dpf_phi,
+                  p.prefilter_samples,
+                  p.micro_per_particle,
+                  p.prefilter_mis,
+                  p.dpf_exact_roughness,
+                  env.get()};
     const std::lock_guard lock(mutex);
     CacheEntry& slot = cache[key];
     if (!slot.model || (env && slot.env.expired())) {
@@ -70,6 +79,8 @@ std::shared_ptr<const Wang2020Model> model_for(const GlintDesc& desc,
                                        : wang2020::MicroMode::AsPublished;
         m.prefilter =
             p.prefilter_mis ? wang2020::PrefilterMode::Mis : wang2020::PrefilterMode::AsPublished;
+        m.dpf_roughness = p.dpf_exact_roughness ? wang2020::DpfRoughness::Exact
+                                                : wang2020::DpfRoughness::Interpolated;
         auto model = std::make_shared<Wang2020Model>(m);
         if (env) {
             const EnvironmentMap* map = env.get();

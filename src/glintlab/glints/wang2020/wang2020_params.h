@@ -25,6 +25,10 @@ struct Wang2020Params {
     // "prefilter": "mis" (default: K BRDF + K environment samples per texel,
     // balance heuristic) or "as_published" (Eq. 16: K BRDF samples).
     bool prefilter_mis = true;
+    // "dpf_roughness": "exact" (default: the DPF table of the material's own
+    // α) or "as_published" (§4.4: linear in α between the two bracketing
+    // tables of 0.02, 0.04, 0.1, 0.2, 0.4, 0.6, 0.8, 1). docs/MODELS.md.
+    bool dpf_exact_roughness = true;
 };
 
 }  // namespace glintlab

@@ -58,7 +58,7 @@ double checked_gamma(const Wang2020Material& m) {
 DpfTable timed_extract(const Wang2020Material& m, double gamma, double& seconds) {
     const DpfSet& set = dpf_set(m.dpf_res);
     const auto t0 = std::chrono::steady_clock::now();
-    DpfTable t = load_or_extract_dpf(set, m.alpha, gamma);
+    DpfTable t = load_or_extract_dpf(set, m.alpha, gamma, m.dpf_roughness);
     seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     return t;
 }

@@ -49,7 +49,8 @@ struct Wang2020Material {
     std::optional<PrefilterResolution> prefilter_res;  // default: Table 2 by α
     int prefilter_samples = 64;                        // K of Eq. 16
     MicroMode micro = MicroMode::PerParticle;
-    PrefilterMode prefilter = PrefilterMode::Mis;  // without a sampler: as published
+    PrefilterMode prefilter = PrefilterMode::Mis;      // without a sampler: as published
+    DpfRoughness dpf_roughness = DpfRoughness::Exact;  // §4.4 as published: Interpolated
 };
 
 enum class Scale { Micro, Meso, Macro };

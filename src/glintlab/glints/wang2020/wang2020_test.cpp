@@ -71,6 +71,46 @@ TEST(Wang2020Dpf, TableMatchesExactAndRoughnessInterpolates) {
     EXPECT_THROW(extract_dpf(set, std::nan(""), kDeg), Error);
 }
 
+// "dpf_roughness": "exact" (the default): the table of the material's own
+// α, equal to the analytic DPF at every cell centre, where §4.4's linear mix
+// of the 0.2 and 0.4 tables is 37 % high at the specular peak (the mix of
+// 1/(pi 0.04) and 1/(pi 0.16) against 1/(pi 0.09)) and, in the lobe's tail,
+// many times too bright (the 0.4 lobe dominates where the 0.3 lobe is ~0).
+TEST(Wang2020Dpf, ExactRoughnessTableIsTheDpfOfTheMaterialsRoughness) {
+    const DpfResolution res{24, 24, 48};
+    const DpfSet& set = dpf_set(res);
+    const DpfTable exact = extract_dpf(set, 0.3, kDeg, DpfRoughness::Exact);
+    const DpfTable mixed = extract_dpf(set, 0.3, kDeg, DpfRoughness::Interpolated);
+    double worst_exact = 0.0;
+    for (int a : {0, 5, 11, 17}) {
+        for (int b : {0, 4, 9, 16, 22}) {
+            for (int p : {0, 7, 24, 40}) {
+                const double ti = (a + 0.5) / 24 * 0.5 * kPi, to = (b + 0.5) / 24 * 0.5 * kPi;
+                const glm::dvec3 wi = spherical_dir(ti, 0.0);
+                const glm::dvec3 wo = spherical_dir(to, (p + 0.5) / 48 * 2 * kPi);
+                const double ref = dpf_exact(wi, wo, 0.3, kDeg);
+                worst_exact = std::max(worst_exact,
+                                       std::abs(exact.lookup(wi, wo) - ref) / std::max(ref, 1e-12));
+            }
+        }
+    }
+    EXPECT_LT(worst_exact, 1e-5);
+    // The specular peak (wi = wo reflected about n, near normal incidence).
+    const glm::dvec3 wi = spherical_dir(0.5 / 24 * 0.5 * kPi, 0.0);
+    const glm::dvec3 wo = spherical_dir(0.5 / 24 * 0.5 * kPi, 24.5 / 48 * 2 * kPi);
+    const double peak = dpf_exact(wi, wo, 0.3, kDeg);
+    EXPECT_NEAR(exact.lookup(wi, wo) / peak, 1.0, 1e-5);
+    EXPECT_NEAR(mixed.lookup(wi, wo) / peak, 0.5 * (0.09 / 0.04 + 0.09 / 0.16), 0.01);
+    // A tail cell (theta_i 41 deg, theta_o 45 deg, opposite azimuth: h tilted
+    // ~43 deg): D_0.3 is e^-9.6 of its peak; the 0.4 table's share wins.
+    const glm::dvec3 ti = spherical_dir(10.5 / 24 * 0.5 * kPi, 0.0);
+    const glm::dvec3 tor = spherical_dir(11.5 / 24 * 0.5 * kPi, 0.5 / 48 * 2 * kPi);
+    EXPECT_GT(mixed.lookup(ti, tor) / dpf_exact(ti, tor, 0.3, kDeg), 5.0);
+    EXPECT_NEAR(exact.lookup(ti, tor) / dpf_exact(ti, tor, 0.3, kDeg), 1.0, 1e-5);
+    // On a node of the set both modes give that table.
+    EXPECT_EQ(extract_dpf(set, 0.4, kDeg, DpfRoughness::Exact).values(), set.tables[4].values());
+}
+
 TEST(Wang2020Dpf, GammaAccumulationMatchesTheWiderCone) {
     // For a lobe much wider than γ, P(γ) ≈ P(1°) σ(γ)/σ(1°) = dpf_exact(γ).
     const DpfSet& set = dpf_set({24, 24, 48});
