@@ -94,6 +94,15 @@ struct JpegHeader {
 // the decode (it throws to refuse the size); it is called from outside
 // libjpeg, so its exception unwinds only C++ frames. Returns false with
 // `message` set on a libjpeg error.
+// The caller's header check runs in its own frame: inlined into decode(), its
+// std::string work would keep locals in registers across the setjmp, which
+// GCC flags at -O1 (-Wclobbered; the ASan tree) and longjmp could restore
+// stale.
+template <class CheckHeader>
+[[gnu::noinline]] bool call_header_check(CheckHeader& check_header, const JpegHeader& header) {
+    return check_header(header);
+}
+
 template <class CheckHeader>
 bool decode(const std::string& bytes, CheckHeader check_header, std::vector<uint8_t>& rgb,
             JpegHeader& header, std::string& message) {
@@ -126,7 +135,7 @@ bool decode(const std::string& bytes, CheckHeader check_header, std::vector<uint
     header.components = cinfo.num_components;
     header.progressive = cinfo.progressive_mode;
     header.color_space = cinfo.jpeg_color_space;
-    if (!check_header(header)) {
+    if (!call_header_check(check_header, header)) {
         jpeg_destroy_decompress(&cinfo);
         return true;  // refused by the caller, who reports why
     }
