@@ -11,6 +11,7 @@
 #include <fmt/format.h>
 
 #include "glintlab/core/error.h"
+#include "glintlab/glints/facet_extent.h"
 #include "glintlab/glints/registry.h"
 #include "glintlab/render/accel.h"
 #include "glintlab/render/renderer.h"
@@ -285,14 +286,12 @@ CompareResult run_compare(const CompareOptions& o) {
                 m->match_facet_cone || m->facet_cone ? "the model's defaults" : "none (no facets)";
         }
         if (o.match_facet_extent && m->facet_cone) {
-            // explicit's gamma_deg range (explicit_descriptor.cpp).
-            const double wanted = glm::degrees(m->facet_cone(d));
-            gamma_deg = std::clamp(wanted, 0.5, 6.0);
-            row.facet_extent = fmt::format(
-                "fixed by the method: the truth's gamma_deg {:.3g}{}", gamma_deg,
-                gamma_deg == wanted
-                    ? ""
-                    : fmt::format(" (wanted {:.3g}, explicit's range [0.5, 6])", wanted));
+            // The truth's cone, clamped to explicit's gamma_deg range.
+            GlintDesc cone;
+            switch_glint_model(cone, GlintModelId::Explicit);
+            row.facet_extent = "fixed by the method: the truth's " +
+                               set_facet_cone_param(cone, "gamma_deg", m->facet_cone(d));
+            gamma_deg = std::get<ExplicitParams>(cone.params).gamma_deg;
         }
         d.base_albedo = glm::vec3(0.0f);  // the truth has no diffuse base either
         const auto [truth, key] = add_truth(d, gamma_deg);

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "glintlab/glints/facet_extent.h"
 #include "glintlab/microfacet/microfacet.h"
 
 namespace glintlab {
@@ -49,9 +50,9 @@ struct GaussLegendre {
 }  // namespace
 
 double explicit_cone_solid_angle(double gamma_rad) {
-    // 2π(1 - cos γ) = 4π sin²(γ/2), without cancellation for small γ.
-    const double s = std::sin(0.5 * gamma_rad);
-    return 4.0 * std::numbers::pi * s * s;
+    // 2π(1 - cos γ): the reflected directions' cone, 4 times the half-vector
+    // cone of facet_extent.h (dω_h = dω_i / 4 at normal incidence).
+    return 4.0 * facet_cone_half_vector_solid_angle(gamma_rad);
 }
 
 uint64_t explicit_count(const ExplicitFacetField& field, const Footprint& fp, glm::vec3 wo,
