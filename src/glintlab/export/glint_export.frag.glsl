@@ -24,14 +24,11 @@ in vec3 v_dpdu;      // world dp/du: the tangent of the shading frame
 out vec4 o_radiance;  // linear radiance, alpha 1
 
 uniform vec3 u_eye;  // world camera position
-// The glint material (GlintDesc, scene.h): colour, Fresnel (GLINT_FRESNEL_*),
-// optional diffuse base under a dielectric coat, masking (GLINT_G2_*).
+// The glint material (GlintDesc, scene.h): colour, optional diffuse base
+// under a dielectric coat, masking (GLINT_G2_*); its Fresnel u_fresnel_*
+// (GLINT_FRESNEL_*) is declared in glint_uniforms.glsl.
 uniform vec3 u_glint_color;
 uniform vec3 u_glint_base_albedo;
-uniform int u_fresnel_mode;
-uniform vec3 u_fresnel_f0;
-uniform vec3 u_fresnel_eta;
-uniform vec3 u_fresnel_k;
 uniform int u_glint_g2;
 // Lights: directional (world direction towards the light, irradiance) and
 // point (world position, intensity W/sr per channel), first `count` used.

@@ -70,6 +70,12 @@ shader::GlintMaterial material(const GlintDesc& desc) {
 
 }  // namespace
 
+glm::vec3 glint_fresnel(const FresnelDesc& fresnel, float cos_oh) {
+    GlintDesc desc;
+    desc.fresnel = fresnel;
+    return shader::glint_fresnel(material(desc), cos_oh);
+}
+
 int glint_g2_mode(GlintModelId model) {
     return with_kernel(model, []<class K>(K) {
         if constexpr (requires { K::v_cavity_masking; })

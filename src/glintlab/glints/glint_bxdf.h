@@ -29,10 +29,16 @@
 namespace glintlab {
 
 struct GlintDesc;
+struct FresnelDesc;
 
 // The masking-shadowing G2 of `model` (material.glsl GLINT_G2_*): the CPU's
 // GlintBxdf and the GPU's u_glint_g2 both take it from here.
 int glint_g2_mode(GlintModelId model);
+
+// F(cos) of a material's Fresnel description (material.glsl glint_fresnel):
+// models that apply F inside their own integrals (wang2020's M, 001 Eq. 11)
+// take it from here.
+glm::vec3 glint_fresnel(const FresnelDesc& fresnel, float cos_oh);
 
 struct GlintBxdf {
     const GlintDesc* desc = nullptr;

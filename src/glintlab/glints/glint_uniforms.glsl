@@ -9,5 +9,13 @@ uniform int u_glint_ndf;  // NDF_BECKMANN / NDF_GGX
 uniform vec2 u_glint_alpha;  // alpha_x, alpha_y
 uniform float u_glint_log_density;
 uniform uint u_glint_seed;
+// The glint material's Fresnel (FresnelDesc: GLINT_FRESNEL_* mode of
+// glint_fresnel.glsl, Schlick f0, conductor eta + i k, dielectric eta.x);
+// here rather than in the forward pass, since wang2020's glue evaluates F
+// inside its own M (001 Eq. 11).
+uniform int u_fresnel_mode;
+uniform vec3 u_fresnel_f0;
+uniform vec3 u_fresnel_eta;
+uniform vec3 u_fresnel_k;
 
 #endif

@@ -17,15 +17,10 @@
 
 #include "glintlab/core/constants.glsl"
 #include "glintlab/microfacet/bxdfs.glsl"
+#include "glintlab/glints/glint_fresnel.glsl"
 #include "glintlab/microfacet/fresnel.glsl"
 #include "glintlab/microfacet/masking.glsl"
 #include "glintlab/microfacet/ndf.glsl"
-
-// FresnelDesc::Mode (scene.h), in its order.
-const int GLINT_FRESNEL_NONE = 0;
-const int GLINT_FRESNEL_SCHLICK = 1;
-const int GLINT_FRESNEL_CONDUCTOR = 2;
-const int GLINT_FRESNEL_DIELECTRIC = 3;
 
 // The model's masking-shadowing (glint_g2_mode in glint_bxdf.h): chermain2020's
 // P-NDF has no Smith masking, it uses the V-cavity one (004 Eq. 14-16); the
@@ -48,12 +43,7 @@ struct GlintMaterial {
 };
 
 vec3 glint_fresnel(GlintMaterial m, float cos_oh) {
-    if (m.fresnel_mode == GLINT_FRESNEL_SCHLICK) return F_Schlick(m.fresnel_f0, cos_oh);
-    if (m.fresnel_mode == GLINT_FRESNEL_CONDUCTOR)
-        return F_Conductor(cos_oh, m.fresnel_eta, m.fresnel_k);
-    if (m.fresnel_mode == GLINT_FRESNEL_DIELECTRIC)
-        return vec3(F_Dielectric(cos_oh, m.fresnel_eta.x));
-    return vec3(1.0f);
+    return glint_fresnel_mode(m.fresnel_mode, m.fresnel_f0, m.fresnel_eta, m.fresnel_k, cos_oh);
 }
 
 float glint_g2(GlintMaterial m, vec3 wo, vec3 wi, vec3 h) {

@@ -31,6 +31,10 @@ Wang2020Tables wang2020_tables() {
     t.micro = u_wang2020_micro;
     t.cone_res = u_wang2020_cone_res;
     t.cos_gamma = u_wang2020_cos_gamma;
+    t.fresnel_mode = u_fresnel_mode;  // glint_uniforms.glsl
+    t.fresnel_f0 = u_fresnel_f0;
+    t.fresnel_eta = u_fresnel_eta;
+    t.fresnel_k = u_fresnel_k;
     return t;
 }
 // Eq. 21 (the CPU's wang2020_light_radiance, untinted).

@@ -1,6 +1,7 @@
 #include "glintlab/glints/wang2020/wang2020_model.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <map>
@@ -33,7 +34,13 @@ uint64_t particles_of(const GlintDesc& desc) {
 // One model per (material, environment map); the map pointer identifies the
 // environment (scenes own their maps for the whole render).
 using Key = std::tuple<float, float, uint64_t, uint32_t, double, int, int, int, int, bool, bool,
-                       bool, const EnvironmentMap*>;
+                       bool, std::array<float, 10>, const EnvironmentMap*>;
+
+// The Fresnel of M (001 Eq. 11) is inside the prefiltered tables.
+std::array<float, 10> fresnel_key(const FresnelDesc& f) {
+    return {static_cast<float>(f.mode), f.f0.x, f.f0.y, f.f0.z, f.eta.x,
+            f.eta.y,                    f.eta.z, f.k.x, f.k.y, f.k.z};
+}
 
 // The map pointer is part of the key; the entry also keeps a weak_ptr to the
 // map so that a new map allocated at a freed map's address (a later scene)
@@ -60,6 +67,7 @@ std::shared_ptr<const Wang2020Model> model_for(const GlintDesc& desc,
                   p.micro_per_particle,
                   p.prefilter_mis,
                   p.dpf_exact_roughness,
+                  fresnel_key(desc.fresnel),
                   env.get()};
     const std::lock_guard lock(mutex);
     CacheEntry& slot = cache[key];
@@ -73,6 +81,7 @@ std::shared_ptr<const Wang2020Model> model_for(const GlintDesc& desc,
         m.depth = p.depth;
         m.seed = desc.seed;
         m.color = glm::dvec3(1.0);  // the tint is applied per call
+        m.fresnel = desc.fresnel;
         m.dpf_res = {p.dpf_theta, p.dpf_theta, p.dpf_phi};
         m.prefilter_samples = p.prefilter_samples;
         m.micro = p.micro_per_particle ? wang2020::MicroMode::PerParticle

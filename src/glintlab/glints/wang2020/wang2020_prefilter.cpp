@@ -9,6 +9,7 @@
 
 #include "glintlab/core/error.h"
 #include "glintlab/core/rng.h"
+#include "glintlab/glints/glint_bxdf.h"
 #include "glintlab/glints/wang2020/wang2020_beckmann.h"
 
 namespace glintlab::wang2020 {
@@ -165,9 +166,16 @@ double m_term(const glm::dvec3& wi, const glm::dvec3& wo, double alpha) {
     return glm::dot(wi, h) * beckmann_G2(wi.z, wo.z, alpha) / (h.z * wo.z);
 }
 
+glm::dvec3 m_fresnel(const FresnelDesc* fresnel, const glm::dvec3& wi, const glm::dvec3& wo) {
+    if (fresnel == nullptr || fresnel->mode == FresnelDesc::Mode::None) return glm::dvec3(1.0);
+    const glm::dvec3 h = glm::normalize(wi + wo);
+    return glm::dvec3(glint_fresnel(*fresnel, static_cast<float>(glm::dot(wi, h))));
+}
+
 glm::dvec4 PrefilterTable::evaluate(const DpfTable& dpf, double alpha, const EnvironmentFn& env,
                                     const glm::dvec3& n, const glm::dvec3& o, int K,
-                                    uint64_t texel_id, const EnvironmentSampler* sampler) {
+                                    uint64_t texel_id, const EnvironmentSampler* sampler,
+                                    const FresnelDesc* fresnel) {
     glm::dvec3 t, b;
     tangent_frame(n, t, b);
     auto to_world = [&](const glm::dvec3& v) { return v.x * t + v.y * b + v.z * n; };
@@ -191,7 +199,7 @@ glm::dvec4 PrefilterTable::evaluate(const DpfTable& dpf, double alpha, const Env
             if (i.z <= 0.0) continue;
             const double pdf = beckmann_D(h.z, alpha) * h.z / (4.0 * oh);
             if (!(pdf > 0.0)) continue;
-            const glm::dvec3 li = glm::dvec3(env(to_world(i)));
+            const glm::dvec3 li = glm::dvec3(env(to_world(i))) * m_fresnel(fresnel, i, o);
             if (!sampler) {
                 lo += li * (dpf.lookup(i, o) * m_term(i, o, alpha) / (pdf * k_used));  // Eq. 16
                 continue;
@@ -216,7 +224,7 @@ glm::dvec4 PrefilterTable::evaluate(const DpfTable& dpf, double alpha, const Env
                 const double pb = brdf_pdf(i, o, alpha);
                 const double g = dpf.lookup(i, o) * m_term(i, o, alpha);
                 if (!(g > 0.0)) continue;
-                lo += glm::dvec3(env(d)) * (g / (k_used * (pb + pe)));
+                lo += glm::dvec3(env(d)) * m_fresnel(fresnel, i, o) * (g / (k_used * (pb + pe)));
             }
         }
     }
@@ -235,7 +243,7 @@ glm::dvec4 PrefilterTable::evaluate(const DpfTable& dpf, double alpha, const Env
 
 PrefilterTable::PrefilterTable(const DpfTable& dpf, double alpha, double /*gamma_rad*/,
                                const EnvironmentFn& env, PrefilterResolution res, int K,
-                               const EnvironmentSampler* sampler)
+                               const EnvironmentSampler* sampler, const FresnelDesc* fresnel)
     : res_(res) {
     if (res.theta_n < 2 || res.phi_n < 2 || res.theta_o < 2 || res.phi_o < 2)
         fail("wang2020: prefilter resolution {}x{}x{}x{} must be at least 2 everywhere",
@@ -255,7 +263,7 @@ PrefilterTable::PrefilterTable(const DpfTable& dpf, double alpha, double /*gamma
                 for (int d = 0; d < res.phi_o; ++d) {
                     const glm::dvec3 o = spherical_dir((c + 0.5) / res.theta_o * kHalfPi,
                                                        (d + 0.5) / res.phi_o * kTwoPi);
-                    data_[k] = glm::vec4(evaluate(dpf, alpha, env, n, o, K, k, sampler));
+                    data_[k] = glm::vec4(evaluate(dpf, alpha, env, n, o, K, k, sampler, fresnel));
                     ++k;
                 }
         }

@@ -11,7 +11,9 @@
 // P/σ(Ωo) · M reproduces the smooth Beckmann integrand f(i,o)(i·n) only with
 //   M(i, o) = (i·h) F(i·h) G2(i, o) / ((h·n)(o·n));
 // we use this form (decision documented in docs/MODELS.md; checked by the
-// white-furnace test). F = 1: the glint colour multiplies the result.
+// white-furnace test). F is the material's Fresnel (none: F = 1), evaluated
+// at i·h inside the integral (RGB, so L̂o carries a conductor's colour); the
+// glint colour multiplies the result.
 // Importance sampling ("prefilter": "as_published"): i = reflect(o, h) with
 // h ~ D(h)(h·n) (Beckmann), pdf_b(i) = D(h)(h·n) / (4 (o·h)); the K samples
 // are a √K × √K jittered stratified grid.
@@ -28,6 +30,7 @@
 
 #include <glm/glm.hpp>
 
+#include "glintlab/glints/glint_desc.h"
 #include "glintlab/glints/wang2020/wang2020_dpf.h"
 
 namespace glintlab::wang2020 {
@@ -69,8 +72,11 @@ struct PrefilterResolution {
 };
 PrefilterResolution default_prefilter_resolution(double alpha);  // Table 2
 
-// M(i, o) of Eq. 11 in the form above (local frame, F = 1).
+// M(i, o) of Eq. 11 in the form above without its F (local frame).
 double m_term(const glm::dvec3& wi, const glm::dvec3& wo, double alpha);
+// F(i·h) of Eq. 11, h = normalize(wi + wo); 1 without a Fresnel (null or
+// mode None).
+glm::dvec3 m_fresnel(const FresnelDesc* fresnel, const glm::dvec3& wi, const glm::dvec3& wo);
 
 // Orthonormal tangent frame of a world normal (continuous except n = −z).
 void tangent_frame(const glm::dvec3& n, glm::dvec3& t, glm::dvec3& b);
@@ -79,9 +85,11 @@ class PrefilterTable {
   public:
     // dpf: the extracted table for (α, γ); gamma_rad its cone angle.
     // sampler: null selects "as_published" (BRDF samples only), else "mis".
+    // fresnel: F of M (null: F = 1).
     PrefilterTable(const DpfTable& dpf, double alpha, double gamma_rad, const EnvironmentFn& env,
                    PrefilterResolution res, int K = 64,
-                   const EnvironmentSampler* sampler = nullptr);
+                   const EnvironmentSampler* sampler = nullptr,
+                   const FresnelDesc* fresnel = nullptr);
 
     // Quadrilinear lookup: rgb = L̂o(n, o) (Eq. 16), w = P̂(n, o) (Eq. 17).
     glm::dvec4 lookup(const glm::dvec3& n_world, const glm::dvec3& o_world) const;
@@ -89,7 +97,8 @@ class PrefilterTable {
     glm::dvec4 texel(int tn, int pn, int to, int po) const;
     static glm::dvec4 evaluate(const DpfTable& dpf, double alpha, const EnvironmentFn& env,
                                const glm::dvec3& n_world, const glm::dvec3& o_local, int K,
-                               uint64_t texel_id = 0, const EnvironmentSampler* sampler = nullptr);
+                               uint64_t texel_id = 0, const EnvironmentSampler* sampler = nullptr,
+                               const FresnelDesc* fresnel = nullptr);
 
     const PrefilterResolution& resolution() const { return res_; }
     size_t memory_bytes() const { return data_.size() * sizeof(glm::vec4); }

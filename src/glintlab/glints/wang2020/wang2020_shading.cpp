@@ -5,6 +5,7 @@
 
 #include "glintlab/core/error.h"
 #include "glintlab/core/glsl.h"
+#include "glintlab/glints/glint_bxdf.h"
 #include "glintlab/glints/wang2020/wang2020_beckmann.h"
 
 GLINTLAB_SHADER_FUNCTIONS_BEGIN
@@ -76,7 +77,8 @@ void Wang2020Model::prefilter(const EnvironmentFn& env, const EnvironmentSampler
         m_.prefilter_res.value_or(default_prefilter_resolution(m_.alpha));
     prefiltered_ =
         std::make_unique<PrefilterTable>(dpf_, m_.alpha, gamma_rad_, env, res, m_.prefilter_samples,
-                                         m_.prefilter == PrefilterMode::Mis ? sampler : nullptr);
+                                         m_.prefilter == PrefilterMode::Mis ? sampler : nullptr,
+                                         &m_.fresnel);
     cone_ = m_.micro == MicroMode::PerParticle ? std::make_unique<ConeAverageTable>(env, gamma_rad_)
                                                : nullptr;
 }
@@ -97,13 +99,17 @@ glm::dvec3 Wang2020Model::particle_environment(const UvBox& A, const glm::dvec3&
                                                const glm::dvec3& t, const glm::dvec3& b,
                                                const glm::dvec3& n) const {
     glm::dvec3 sum(0.0);
+    const bool has_fresnel = m_.fresnel.mode != FresnelDesc::Mode::None;
     tree_.for_each(A.lo, A.hi, [&](const Particle& q) {
         const glm::dvec3 m = beckmann_sample_normal(q.normal_u.x, q.normal_u.y, m_.alpha);
         const double om = glm::dot(o, m);
         if (!(om > 0.0)) return;
         const glm::dvec3 i = 2.0 * om * m - o;  // reflect(o, m_k)
         if (!(i.z > 0.0)) return;
-        sum += cone_->lookup(i.x * t + i.y * b + i.z * n) * m_term(i, o, m_.alpha);
+        const glm::dvec3 f = has_fresnel
+                                 ? glm::dvec3(glint_fresnel(m_.fresnel, static_cast<float>(om)))
+                                 : glm::dvec3(1.0);
+        sum += cone_->lookup(i.x * t + i.y * b + i.z * n) * f * m_term(i, o, m_.alpha);
     });
     return sum;
 }
@@ -163,7 +169,7 @@ glm::dvec3 Wang2020Model::light_radiance(const UvBox& A, const glm::dvec3& wi, c
                                          const glm::dvec3& li, Scale* used) const {
     if (!(wi.z > 0.0) || !(wo.z > 0.0)) return glm::dvec3(0.0);
     const double p = dpf_.lookup(wi, wo);  // P(i, o, γ), 3-D table (§5)
-    const double m = m_term(wi, wo, m_.alpha);
+    const glm::dvec3 m = m_term(wi, wo, m_.alpha) * m_fresnel(&m_.fresnel, wi, wo);  // Eq. 11
     const double a = A.area();
     const double N = static_cast<double>(tree_.particles());
     const Scale s = scale_for(A, N);

@@ -15,7 +15,8 @@
 // That is MicroMode::AsPublished. MicroMode::PerParticle (the default) gives
 // every particle k its own normal m_k ~ D(m)(m·n) (hashes of the particle,
 // the same on CPU and GPU); the micro scale sums what each facet reflects:
-//   environment: Lo = (1/(a N)) Σ_{k in A} L_γ(i_k) M(i_k, o), i_k = reflect(o, m_k),
+//   environment: Lo = (1/(a N)) Σ_{k in A} L_γ(i_k) M(i_k, o), i_k = reflect(o, m_k)
+//                (M's F at o·m_k, the particle's own normal),
 //   lights (Eq. 21): particle k is lit iff reflect(i, m_k) lies in the γ cone
 //   around o (probability P(i, o, γ), Eq. 6),
 // and the scales blend over log2-linear bands of the expected count around
@@ -51,6 +52,7 @@ struct Wang2020Material {
     MicroMode micro = MicroMode::PerParticle;
     PrefilterMode prefilter = PrefilterMode::Mis;      // without a sampler: as published
     DpfRoughness dpf_roughness = DpfRoughness::Exact;  // §4.4 as published: Interpolated
+    FresnelDesc fresnel;  // F of M (Eq. 11); mode None: F = 1
 };
 
 enum class Scale { Micro, Meso, Macro };

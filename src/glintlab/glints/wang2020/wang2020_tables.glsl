@@ -24,6 +24,7 @@
 #include "glintlab/core/constants.glsl"
 #include "glintlab/core/footprint.glsl"
 #include "glintlab/core/frame.glsl"
+#include "glintlab/glints/glint_fresnel.glsl"
 #include "glintlab/glints/wang2020/wang2020.glsl"
 #include "glintlab/microfacet/masking.glsl"
 
@@ -49,7 +50,17 @@ struct Wang2020Tables {
     int micro;            // 1: "micro": "per_particle", 0: "as_published"
     ivec2 cone_res;       // L_γ table width, height (per_particle with an environment)
     float cos_gamma;      // cos γ
+    int fresnel_mode;     // F of M (Eq. 11): GLINT_FRESNEL_* (glint_fresnel.glsl)
+    vec3 fresnel_f0;
+    vec3 fresnel_eta;
+    vec3 fresnel_k;
 };
+
+// F(cos) of M (Eq. 11), the material's Fresnel (Wang2020Material::fresnel).
+vec3 wang2020_fresnel(Wang2020Tables tb, float cos_ih) {
+    return glint_fresnel_mode(tb.fresnel_mode, tb.fresnel_f0, tb.fresnel_eta, tb.fresnel_k,
+                              cos_ih);
+}
 
 // False for NaN and ±inf (a comparison, not isnan/isinf: the C++ side would
 // see <cmath>'s overloads next to GLM's).
@@ -259,6 +270,7 @@ void wang2020_quadtree_visit(Wang2020Tables tb, vec2 lo, vec2 hi, Wang2020Visit 
                                 if (!(i.z > 0.0f)) continue;
                                 sum += wang2020_cone_lookup(tb.cone_res,
                                                             i.x * v.t + i.y * v.b + i.z * v.n) *
+                                       wang2020_fresnel(tb, om) *
                                        wang2020_m_term(i, v.o, tb.alpha);
                                 total += 1u;
                             } else {
@@ -400,8 +412,8 @@ float wang2020_light_dprime(Wang2020Tables tb, vec2 lo, vec2 hi, vec3 wi, vec3 w
     return wang2020_point_dprime(scale, p, count, accepted, area, tb.particles, tb.sigma);
 }
 
-// M(i, o) of Eq. 11 in wang2020_prefilter.h's form (i·h) G2 / ((h·n)(o·n)),
-// F = 1, height-correlated Beckmann G2 (erf_approx: |error| < 1.2e-7).
+// M(i, o) of Eq. 11 in wang2020_prefilter.h's form (i·h) G2 / ((h·n)(o·n))
+// without its F (wang2020_fresnel), height-correlated Beckmann G2 (erf_approx: |error| < 1.2e-7).
 float wang2020_m_term(vec3 wi, vec3 wo, float alpha) {
     if (!(wi.z > 0.0f) || !(wo.z > 0.0f)) return 0.0f;
     vec3 h = normalize(wi + wo);
@@ -410,9 +422,11 @@ float wang2020_m_term(vec3 wi, vec3 wo, float alpha) {
 }
 
 // Eq. 21 for a light of irradiance li normal to wi (local directions):
-// Lo = li D̂'(A, o, i) M(i, o), before the tint.
+// Lo = li D̂'(A, o, i) M(i, o), before the tint; M's F at i·h (m_fresnel).
 vec3 wang2020_light(Wang2020Tables tb, vec2 lo, vec2 hi, vec3 wi, vec3 wo, vec3 li) {
-    return li * (wang2020_light_dprime(tb, lo, hi, wi, wo) * wang2020_m_term(wi, wo, tb.alpha));
+    vec3 f = vec3(1.0f);
+    if (tb.fresnel_mode != GLINT_FRESNEL_NONE) f = wang2020_fresnel(tb, dot(wi, normalize(wi + wo)));
+    return li * f * (wang2020_light_dprime(tb, lo, hi, wi, wo) * wang2020_m_term(wi, wo, tb.alpha));
 }
 
 #endif  // GLINTLAB_GLINTS_WANG2020_TABLES_GLSL

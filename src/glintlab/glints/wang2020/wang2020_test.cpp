@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include "glintlab/core/error.h"
+#include "glintlab/glints/glint_bxdf.h"
 #include "glintlab/glints/wang2020/wang2020_beckmann.h"
 #include "glintlab/glints/wang2020/wang2020_dpf.h"
 #include "glintlab/glints/wang2020/wang2020_postprocess.h"
@@ -32,6 +33,24 @@ double smooth_albedo(const glm::dvec3& o, double alpha, int side = 512) {
             sum += beckmann_G2(i.z, o.z, alpha) * oh / (o.z * h.z);
         }
     return sum / (side * side);
+}
+
+// The same with the Fresnel F(i·h) inside the integral (001 Eq. 11's M).
+glm::dvec3 smooth_albedo_fresnel(const glm::dvec3& o, double alpha, const FresnelDesc& f,
+                                 int side = 256) {
+    glm::dvec3 sum(0.0);
+    for (int y = 0; y < side; ++y)
+        for (int x = 0; x < side; ++x) {
+            const double u1 = (x + 0.5) / side, u2 = (y + 0.5) / side;
+            const double ch = 1.0 / std::sqrt(1.0 - alpha * alpha * std::log(1.0 - u1));
+            const glm::dvec3 h = spherical_dir(std::acos(ch), 2.0 * kPi * u2);
+            const double oh = glm::dot(o, h);
+            if (oh <= 0.0) continue;
+            const glm::dvec3 i = 2.0 * oh * h - o;
+            if (i.z <= 0.0) continue;
+            sum += m_fresnel(&f, i, o) * (beckmann_G2(i.z, o.z, alpha) * oh / (o.z * h.z));
+        }
+    return sum / double(side * side);
 }
 
 TEST(Wang2020Dpf, ExactDpfIsTheNormalProbabilityOfTheCone) {
@@ -213,6 +232,49 @@ TEST(Wang2020Prefilter, WhiteFurnaceMacroEqualsSmoothModel) {
         EXPECT_EQ(s, Scale::Macro);
         EXPECT_NEAR(l.x, ref, 0.08 * ref) << th;  // texel noise + interpolation
     }
+}
+
+TEST(Wang2020Prefilter, FresnelIsInsideTheIntegralOfM) {
+    // 001 Eq. 11: M carries F(i·h). Schlick with f0 = (0.04, 0.5, 1): the
+    // blue channel is the F = 1 furnace, red the dielectric-like grazing
+    // rise (at θo = 65°, F(i·h) over the α = 0.6 lobe spans 0.04-0.6).
+    Wang2020Material mat = furnace_material(1.0);
+    mat.fresnel.mode = FresnelDesc::Mode::Schlick;
+    mat.fresnel.f0 = glm::vec3(0.04f, 0.5f, 1.0f);
+    Wang2020Model model(mat);
+    auto white = [](const glm::dvec3&) { return glm::vec3(1.0f); };
+    model.prefilter(white);
+    for (double th : {10.0, 65.0}) {
+        const glm::dvec3 o = spherical_dir(th * kDeg, 0.0);
+        const glm::dvec3 ref = smooth_albedo_fresnel(o, 0.6, mat.fresnel);
+        // The furnace test's bound on the mean of 16 texel streams (2 %).
+        glm::dvec3 mean(0.0);
+        for (uint64_t id = 0; id < 16; ++id)
+            mean += glm::dvec3(PrefilterTable::evaluate(model.dpf(), 0.6, white, {0, 0, 1}, o, 64,
+                                                         id, nullptr, &mat.fresnel)) /
+                    (16.0 * model.sigma_o());
+        for (int c = 0; c < 3; ++c) EXPECT_NEAR(mean[c], ref[c], 0.02 * ref[c]) << th << " " << c;
+        // F outside the integral, at o·n, would be this far off (red):
+        const double outside =
+            ref.z * glint_fresnel(mat.fresnel, static_cast<float>(o.z)).x;
+        if (th == 65.0) {
+            EXPECT_GT(std::abs(outside - ref.x), 0.1 * ref.x);
+        }
+    }
+    // Point and directional lights (Eq. 21): F(i·h) per channel, exactly.
+    Wang2020Material plain = furnace_material(1.0);
+    const Wang2020Model without(plain);
+    plain.fresnel.mode = FresnelDesc::Mode::Conductor;  // gold
+    plain.fresnel.eta = glm::vec3(0.143f, 0.374f, 1.442f);
+    plain.fresnel.k = glm::vec3(3.983f, 2.385f, 1.603f);
+    const Wang2020Model with(plain);
+    const glm::dvec3 wi = spherical_dir(50 * kDeg, 0.0), wo = spherical_dir(70 * kDeg, kPi);
+    const glm::dvec3 h = glm::normalize(wi + wo);
+    const glm::dvec3 f(glint_fresnel(plain.fresnel, static_cast<float>(glm::dot(wi, h))));
+    const glm::dvec3 a = with.light_radiance({{0, 0}, {1, 1}}, wi, wo, glm::dvec3(1.0));
+    const glm::dvec3 b = without.light_radiance({{0, 0}, {1, 1}}, wi, wo, glm::dvec3(1.0));
+    ASSERT_GT(b.x, 0.0);
+    for (int c = 0; c < 3; ++c) EXPECT_NEAR(a[c], f[c] * b[c], 1e-12 * b[c]) << c;
 }
 
 TEST(Wang2020Shading, MicroScaleRealizationsAverageToTheSmoothModel) {

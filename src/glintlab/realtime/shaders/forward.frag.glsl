@@ -54,14 +54,9 @@ uniform vec2 u_alpha;
 uniform vec3 u_eta;
 uniform vec3 u_k;
 uniform vec3 u_emission;  // sphere-light shapes (outer side)
-// Glint material: colour and Fresnel (FresnelDesc: 0 none, 1 Schlick,
-// 2 conductor, 3 dielectric).
+// Glint material: colour (its Fresnel u_fresnel_* is glint_uniforms.glsl's).
 uniform vec3 u_glint_color;
 uniform vec3 u_glint_base_albedo;  // diffuse base under a dielectric coat (0: none)
-uniform int u_fresnel_mode;
-uniform vec3 u_fresnel_f0;
-uniform vec3 u_fresnel_eta;
-uniform vec3 u_fresnel_k;
 uniform int u_glint_g2;  // GLINT_G2_*: the model's masking (glint_g2_mode, glint_bxdf.h)
 
 #if GLINTLAB_POINT_LIGHTS > 0
