@@ -65,6 +65,25 @@ vec3 wang2020_scale_weights(float expected_count) {
     return vec3(0.0f, 0.0f, 1.0f);
 }
 
+// The micro scale's enumeration bound under the "effective" scale count
+// (wang2020_shading.h kMicroEnumerationMax).
+const float WANG2020_MICRO_ENUMERATION_MAX = 4096.0f;
+
+// Blend weights for a footprint of `count` expected particles whose micro
+// estimate has relative variance 1 / (count · fraction): the bands above
+// over the effective count count · fraction (fraction 1: 001's particle
+// count). Near the enumeration bound the micro scale fades out: over counts
+// [bound / 2, bound] (log2-linear) the weights move to those of the
+// effective count raised to the micro band's top, 8 (no micro weight). A
+// convex blend of convex weights: the mean is kept.
+vec3 wang2020_effective_weights(float count, float fraction) {
+    float effective = count * clamp(fraction, 0.0f, 1.0f);
+    vec3 w = wang2020_scale_weights(effective);
+    float t = clamp(log2(max(count, 1.0f) * (2.0f / WANG2020_MICRO_ENUMERATION_MAX)), 0.0f, 1.0f);
+    if (t > 0.0f) w = mix(w, wang2020_scale_weights(max(effective, 8.0f)), t);
+    return w;
+}
+
 // Environment radiance (before tint), per_particle mode: micro = (1/(a N))
 // Σ_{k in A} L_γ(i_k) M(i_k, o) (particle_sum holds the Σ), blended with
 // Eq. 18 (meso) and its macro limit by the weights w.

@@ -130,6 +130,11 @@ GlintModelDescriptor wang2020_descriptor() {
                    {{"exact", true}, {"as_published", false}},
                    "DPF table of the material's own roughness (default) or 001 §4.4's linear "
                    "interpolation between the two bracketing tables"),
+        gp::choice("scale_count", &P::scale_count_effective,
+                   {{"effective", true}, {"particles", false}},
+                   "what selects the scale with \"micro\": \"per_particle\": the effective "
+                   "particle count n r of the micro estimate (default; r = P under lights, "
+                   "E[f]^2/E[f^2] under the environment) or 001 §4.3's particle count n"),
     };
     d.check = check_wang2020;
     d.fit_material = fit_wang2020;

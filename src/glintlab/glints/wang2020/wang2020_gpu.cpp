@@ -82,8 +82,7 @@ void Wang2020Resources::bind(unsigned program, UniformCache& u, const GlintDesc&
     glProgramUniform1f(program, loc("u_wang2020_particles"),
                        static_cast<float>(model_->quadtree().particles()));
     glProgramUniform1f(program, loc("u_wang2020_sigma"), static_cast<float>(model_->sigma_o()));
-    const bool per_particle = model_->material().micro == wang2020::MicroMode::PerParticle;
-    glProgramUniform1i(program, loc("u_wang2020_micro"), per_particle ? 1 : 0);
+    glProgramUniform1i(program, loc("u_wang2020_micro"), model_->micro_mode_index());
     const glm::ivec2 cres =
         model_->cone_average() != nullptr
             ? glm::ivec2(model_->cone_average()->width(), model_->cone_average()->height())

@@ -37,6 +37,9 @@ Wang2020Material material(MicroMode micro, uint64_t particles) {
     m.prefilter_res = PrefilterResolution{8, 16, 4, 12};
     m.prefilter_samples = 16;
     m.micro = micro;
+    // These tests are about the bands on 001 §4.3's particle count; the
+    // "effective" count has its own tests (wang2020_scale_count_test.cpp).
+    m.scale_count = ScaleCount::Particles;
     return m;
 }
 

@@ -34,7 +34,7 @@ uint64_t particles_of(const GlintDesc& desc) {
 // One model per (material, environment map); the map pointer identifies the
 // environment (scenes own their maps for the whole render).
 using Key = std::tuple<float, float, uint64_t, uint32_t, double, int, int, int, int, bool, bool,
-                       bool, std::array<float, 10>, const EnvironmentMap*>;
+                       bool, bool, std::array<float, 10>, const EnvironmentMap*>;
 
 // The Fresnel of M (001 Eq. 11) is inside the prefiltered tables.
 std::array<float, 10> fresnel_key(const FresnelDesc& f) {
@@ -67,6 +67,7 @@ std::shared_ptr<const Wang2020Model> model_for(const GlintDesc& desc,
                   p.micro_per_particle,
                   p.prefilter_mis,
                   p.dpf_exact_roughness,
+                  p.scale_count_effective,
                   fresnel_key(desc.fresnel),
                   env.get()};
     const std::lock_guard lock(mutex);
@@ -82,6 +83,8 @@ std::shared_ptr<const Wang2020Model> model_for(const GlintDesc& desc,
         m.seed = desc.seed;
         m.color = glm::dvec3(1.0);  // the tint is applied per call
         m.fresnel = desc.fresnel;
+        m.scale_count = p.scale_count_effective ? wang2020::ScaleCount::Effective
+                                                : wang2020::ScaleCount::Particles;
         m.dpf_res = {p.dpf_theta, p.dpf_theta, p.dpf_phi};
         m.prefilter_samples = p.prefilter_samples;
         m.micro = p.micro_per_particle ? wang2020::MicroMode::PerParticle

@@ -29,6 +29,12 @@ struct Wang2020Params {
     // α) or "as_published" (§4.4: linear in α between the two bracketing
     // tables of 0.02, 0.04, 0.1, 0.2, 0.4, 0.6, 0.8, 1). docs/MODELS.md.
     bool dpf_exact_roughness = true;
+    // "scale_count": "effective" (default: with "micro": "per_particle", the
+    // scales are chosen by the footprint's effective particle count n r, r =
+    // P under lights, E[f]²/E[f²] under the environment, so the micro scale
+    // sparkles wherever the ground truth does; at most 4096 particles
+    // enumerated) or "particles" (001 §4.3: the particle count n).
+    bool scale_count_effective = true;
 };
 
 }  // namespace glintlab

@@ -8,9 +8,11 @@
 #include <vector>
 
 #include "glintlab/core/error.h"
+#include "glintlab/core/image.h"
 #include "glintlab/core/rng.h"
 #include "glintlab/glints/glint_bxdf.h"
 #include "glintlab/glints/wang2020/wang2020_beckmann.h"
+#include "glintlab/scene/environment.h"
 
 namespace glintlab::wang2020 {
 
@@ -125,6 +127,31 @@ ConeAverageTable::ConeAverageTable(const EnvironmentFn& env, double gamma_rad) {
             data_[static_cast<size_t>(y) * width_ + x] = glm::vec4(glm::vec3(v), 0.0f);
         }
     });
+    // The sampling map, in EnvironmentMap's convention (y up: d = (sinθ sinφ,
+    // cosθ, −sinθ cosφ) at u = 0.5 + φ/2π, v = θ/π), at the table's
+    // resolution.
+    Image image(width_, height_);
+    for (int y = 0; y < height_; ++y)
+        for (int x = 0; x < width_; ++x) {
+            const double th = (y + 0.5) / height_ * kPi;
+            const double ph = ((x + 0.5) / width_ - 0.5) * kTwoPi;
+            const glm::dvec3 d(std::sin(th) * std::sin(ph), std::cos(th),
+                               -std::sin(th) * std::cos(ph));
+            image.at(x, y) = glm::vec3(lookup(d));
+        }
+    map_ = std::make_shared<const EnvironmentMap>(std::move(image), 1.0f, 0.0f);
+}
+
+double ConeAverageTable::sample(const glm::dvec2& u, glm::dvec3& world_dir) const {
+    glm::vec3 d(0.0f);
+    float pdf = 0.0f;
+    map_->sample(glm::vec2(u), &d, &pdf);
+    world_dir = glm::dvec3(d);
+    return static_cast<double>(pdf);
+}
+
+double ConeAverageTable::pdf(const glm::dvec3& world_dir) const {
+    return static_cast<double>(map_->pdf(glm::vec3(world_dir)));
 }
 
 glm::dvec3 ConeAverageTable::lookup(const glm::dvec3& d) const {
@@ -175,11 +202,24 @@ glm::dvec3 m_fresnel(const FresnelDesc* fresnel, const glm::dvec3& wi, const glm
 glm::dvec4 PrefilterTable::evaluate(const DpfTable& dpf, double alpha, const EnvironmentFn& env,
                                     const glm::dvec3& n, const glm::dvec3& o, int K,
                                     uint64_t texel_id, const EnvironmentSampler* sampler,
-                                    const FresnelDesc* fresnel) {
+                                    const FresnelDesc* fresnel, const ConeAverageTable* cone) {
     glm::dvec3 t, b;
     tangent_frame(n, t, b);
     auto to_world = [&](const glm::dvec3& v) { return v.x * t + v.y * b + v.z * n; };
     glm::dvec3 lo(0.0);
+    // Effective fraction (cone != null): the moments E[f], E[f²] of one
+    // particle's luminance f = lum(L_γ(i) F) M(i, o) over its normal
+    // m ~ D(m)(m·n), i.e. ∫ f^k p_b di, from the K BRDF samples and K samples
+    // of L_γ's own distribution p_c (ConeAverageTable::sample), balance
+    // heuristic: weight p_b / (K (p_b + p_c)). A particle whose reflection
+    // leaves the hemisphere counts as f = 0.
+    double f1 = 0.0, f2 = 0.0;
+    auto add_moment = [&](const glm::dvec3& i, double weight) {
+        const glm::dvec3 l = cone->lookup(to_world(i)) * m_fresnel(fresnel, i, o);
+        const double f = luminance(glm::vec3(l)) * m_term(i, o, alpha);
+        f1 += weight * f;
+        f2 += weight * f * f;
+    };
     const int side = std::max(1, static_cast<int>(std::lround(std::sqrt(K))));
     const int k_used = side * side;
     Pcg32 rng(texel_id, 0x9e3779b97f4a7c15ull);
@@ -200,6 +240,7 @@ glm::dvec4 PrefilterTable::evaluate(const DpfTable& dpf, double alpha, const Env
             const double pdf = beckmann_D(h.z, alpha) * h.z / (4.0 * oh);
             if (!(pdf > 0.0)) continue;
             const glm::dvec3 li = glm::dvec3(env(to_world(i))) * m_fresnel(fresnel, i, o);
+            if (cone != nullptr) add_moment(i, pdf / (k_used * (pdf + cone->pdf(to_world(i)))));
             if (!sampler) {
                 lo += li * (dpf.lookup(i, o) * m_term(i, o, alpha) / (pdf * k_used));  // Eq. 16
                 continue;
@@ -228,6 +269,25 @@ glm::dvec4 PrefilterTable::evaluate(const DpfTable& dpf, double alpha, const Env
             }
         }
     }
+    if (cone != nullptr) {
+        for (int sy = 0; sy < side; ++sy) {
+            for (int sx = 0; sx < side; ++sx) {
+                const glm::dvec2 u((sx + rng.next_double()) / side,
+                                   (sy + rng.next_double()) / side);
+                glm::dvec3 d(0.0);
+                const double pc = cone->sample(u, d);
+                if (!(pc > 0.0) || !std::isfinite(pc)) continue;
+                const glm::dvec3 i{glm::dot(d, t), glm::dot(d, b), glm::dot(d, n)};
+                if (i.z <= 0.0) continue;
+                const double pb = brdf_pdf(i, o, alpha);
+                if (pb > 0.0) add_moment(i, pb / (k_used * (pb + pc)));
+            }
+        }
+        // r = E[f]² / E[f²] ∈ (0, 1]; 1 where nothing is reflected (no
+        // texture either way).
+        const double r = f2 > 0.0 ? std::clamp(f1 * f1 / f2, 0.0, 1.0) : 1.0;
+        return {lo, r};
+    }
     // Eq. 17: B = 36 × 9 uniform (equal solid angle) hemisphere strata.
     double p_avg = 0.0;
     constexpr int kPhi = 36, kTheta = 9;
@@ -243,7 +303,8 @@ glm::dvec4 PrefilterTable::evaluate(const DpfTable& dpf, double alpha, const Env
 
 PrefilterTable::PrefilterTable(const DpfTable& dpf, double alpha, double /*gamma_rad*/,
                                const EnvironmentFn& env, PrefilterResolution res, int K,
-                               const EnvironmentSampler* sampler, const FresnelDesc* fresnel)
+                               const EnvironmentSampler* sampler, const FresnelDesc* fresnel,
+                               const ConeAverageTable* cone)
     : res_(res) {
     if (res.theta_n < 2 || res.phi_n < 2 || res.theta_o < 2 || res.phi_o < 2)
         fail("wang2020: prefilter resolution {}x{}x{}x{} must be at least 2 everywhere",
@@ -263,7 +324,7 @@ PrefilterTable::PrefilterTable(const DpfTable& dpf, double alpha, double /*gamma
                 for (int d = 0; d < res.phi_o; ++d) {
                     const glm::dvec3 o = spherical_dir((c + 0.5) / res.theta_o * kHalfPi,
                                                        (d + 0.5) / res.phi_o * kTwoPi);
-                    data_[k] = glm::vec4(evaluate(dpf, alpha, env, n, o, K, k, sampler, fresnel));
+                    data_[k] = glm::vec4(evaluate(dpf, alpha, env, n, o, K, k, sampler, fresnel, cone));
                     ++k;
                 }
         }

@@ -26,12 +26,17 @@
 
 #include <cstdint>
 #include <functional>
+#include <memory>
 #include <vector>
 
 #include <glm/glm.hpp>
 
 #include "glintlab/glints/glint_desc.h"
 #include "glintlab/glints/wang2020/wang2020_dpf.h"
+
+namespace glintlab {
+class EnvironmentMap;
+}
 
 namespace glintlab::wang2020 {
 
@@ -57,6 +62,14 @@ class ConeAverageTable {
   public:
     ConeAverageTable(const EnvironmentFn& env, double gamma_rad);
     glm::dvec3 lookup(const glm::dvec3& world_dir) const;
+    // Importance sampling of L_γ itself (a lat-long EnvironmentMap of the
+    // table, luminance-proportional): sample returns the world direction's
+    // solid-angle density (0: none), pdf the density of any direction. The
+    // effective fraction's moments (PrefilterTable) sample it, since L_γ is
+    // non-zero over the sun's disc widened by γ, which the environment's own
+    // samples (the disc) would miss.
+    double sample(const glm::dvec2& u, glm::dvec3& world_dir) const;
+    double pdf(const glm::dvec3& world_dir) const;
     int width() const { return width_; }
     int height() const { return height_; }
     // Texel (x, y) at index y · width + x; rgb = L_γ, w = 0.
@@ -65,6 +78,7 @@ class ConeAverageTable {
   private:
     int width_ = 0, height_ = 0;
     std::vector<glm::vec4> data_;
+    std::shared_ptr<const EnvironmentMap> map_;  // for sample() and pdf()
 };
 
 struct PrefilterResolution {
@@ -86,19 +100,27 @@ class PrefilterTable {
     // dpf: the extracted table for (α, γ); gamma_rad its cone angle.
     // sampler: null selects "as_published" (BRDF samples only), else "mis".
     // fresnel: F of M (null: F = 1).
+    // cone: null stores P̂ (Eq. 17) in w; else w holds the effective
+    // fraction r(n, o) = E[f]² / E[f²] of one particle's reflected luminance
+    // f = lum(L_γ(i) F) M(i, o), m ~ D(m)(m·n), for the per_particle micro
+    // scale's "effective" scale selection (wang2020_shading.h), whose
+    // estimate's relative variance over a footprint of n particles is
+    // 1 / (n r). Same samples as L̂o (MIS weights included).
     PrefilterTable(const DpfTable& dpf, double alpha, double gamma_rad, const EnvironmentFn& env,
                    PrefilterResolution res, int K = 64,
                    const EnvironmentSampler* sampler = nullptr,
-                   const FresnelDesc* fresnel = nullptr);
+                   const FresnelDesc* fresnel = nullptr, const ConeAverageTable* cone = nullptr);
 
-    // Quadrilinear lookup: rgb = L̂o(n, o) (Eq. 16), w = P̂(n, o) (Eq. 17).
+    // Quadrilinear lookup: rgb = L̂o(n, o) (Eq. 16), w = P̂(n, o) (Eq. 17)
+    // or the effective fraction r(n, o) (built with a cone table).
     glm::dvec4 lookup(const glm::dvec3& n_world, const glm::dvec3& o_world) const;
     // One texel (exact value at the sample directions).
     glm::dvec4 texel(int tn, int pn, int to, int po) const;
     static glm::dvec4 evaluate(const DpfTable& dpf, double alpha, const EnvironmentFn& env,
                                const glm::dvec3& n_world, const glm::dvec3& o_local, int K,
                                uint64_t texel_id = 0, const EnvironmentSampler* sampler = nullptr,
-                               const FresnelDesc* fresnel = nullptr);
+                               const FresnelDesc* fresnel = nullptr,
+                               const ConeAverageTable* cone = nullptr);
 
     const PrefilterResolution& resolution() const { return res_; }
     size_t memory_bytes() const { return data_.size() * sizeof(glm::vec4); }

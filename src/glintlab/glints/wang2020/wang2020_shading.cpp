@@ -36,11 +36,13 @@ Scale scale_for(const UvBox& A, double N) {
     return select_scale(N * A.area());
 }
 
-// Blend weights of the per_particle mode (wang2020.glsl); the macro cases of
-// scale_for (degenerate boxes, > 64 tiles) are pure macro.
-glm::dvec3 blend_weights(const UvBox& A, double N) {
+// Blend weights of the per_particle mode (wang2020.glsl) for the effective
+// fraction r (1: the particle count); the macro cases of scale_for
+// (degenerate boxes, > 64 tiles) are pure macro.
+glm::dvec3 blend_weights(const UvBox& A, double N, double fraction) {
     if (forced_macro(A)) return {0.0, 0.0, 1.0};
-    return glm::dvec3(shader::wang2020_scale_weights(static_cast<float>(N * A.area())));
+    return glm::dvec3(shader::wang2020_effective_weights(static_cast<float>(N * A.area()),
+                                                         static_cast<float>(fraction)));
 }
 
 double checked_gamma(const Wang2020Material& m) {
@@ -75,12 +77,12 @@ Wang2020Model::Wang2020Model(const Wang2020Material& m)
 void Wang2020Model::prefilter(const EnvironmentFn& env, const EnvironmentSampler* sampler) {
     const PrefilterResolution res =
         m_.prefilter_res.value_or(default_prefilter_resolution(m_.alpha));
-    prefiltered_ =
-        std::make_unique<PrefilterTable>(dpf_, m_.alpha, gamma_rad_, env, res, m_.prefilter_samples,
-                                         m_.prefilter == PrefilterMode::Mis ? sampler : nullptr,
-                                         &m_.fresnel);
     cone_ = m_.micro == MicroMode::PerParticle ? std::make_unique<ConeAverageTable>(env, gamma_rad_)
                                                : nullptr;
+    prefiltered_ = std::make_unique<PrefilterTable>(
+        dpf_, m_.alpha, gamma_rad_, env, res, m_.prefilter_samples,
+        m_.prefilter == PrefilterMode::Mis ? sampler : nullptr, &m_.fresnel,
+        effective_scales() ? cone_.get() : nullptr);
 }
 
 void Wang2020Model::rebuild_quadtree(uint64_t particles, uint32_t seed) {
@@ -139,7 +141,8 @@ glm::dvec3 Wang2020Model::environment_radiance(const UvBox& A, const glm::dvec3&
     const Scale s = scale_for(A, N);
     if (used) *used = s;
     if (m_.micro == MicroMode::PerParticle) {
-        const glm::dvec3 w = blend_weights(A, N);
+        // w of the table is the effective fraction r under "effective".
+        const glm::dvec3 w = blend_weights(A, N, effective_scales() ? phat : 1.0);
         glm::dvec3 sum(0.0);
         if (w.x > 0.0) {
             glm::dvec3 t, b;
@@ -175,7 +178,8 @@ glm::dvec3 Wang2020Model::light_radiance(const UvBox& A, const glm::dvec3& wi, c
     const Scale s = scale_for(A, N);
     if (used) *used = s;
     if (m_.micro == MicroMode::PerParticle) {
-        const glm::dvec3 w = blend_weights(A, N);
+        // Each particle is lit with probability p: r = E[f]² / E[f²] = p.
+        const glm::dvec3 w = blend_weights(A, N, effective_scales() ? p : 1.0);
         const double lit = w.x > 0.0 ? static_cast<double>(particles_lit(A, wi, wo)) : 0.0;
         const double count = w.y > 0.0 ? static_cast<double>(tree_.count(A.lo, A.hi)) : 0.0;
         const double dprime = shader::wang2020_point_dprime_blend(

@@ -20,8 +20,9 @@
 //   lights (Eq. 21): particle k is lit iff reflect(i, m_k) lies in the γ cone
 //   around o (probability P(i, o, γ), Eq. 6),
 // and the scales blend over log2-linear bands of the expected count around
-// 4 and 64 (wang2020_scale_weights). Derivation and measurements:
-// docs/MODELS.md, wang2020.
+// 4 and 64 (wang2020_scale_weights). The count is the effective one
+// (ScaleCount::Effective, below) unless "scale_count" is "particles".
+// Derivation and measurements: docs/MODELS.md, wang2020.
 #pragma once
 
 #include <cstdint>
@@ -37,6 +38,18 @@
 namespace glintlab::wang2020 {
 
 enum class MicroMode { PerParticle, AsPublished };
+// What the per_particle mode's scale bands count (wang2020_scale_weights):
+// Effective (default): the effective number of particles n r of the
+// footprint's micro estimate, whose relative variance is 1 / (n r) — r = P
+// (the DPF) under a light, r = E[f]² / E[f²] from the prefiltered table
+// under the environment — capped so that the micro scale never enumerates
+// more than kMicroEnumerationMax particles; Particles: 001 §4.3's particle
+// count n (the scales of MicroMode::AsPublished).
+enum class ScaleCount { Effective, Particles };
+// The micro scale enumerates at most this many expected particles per
+// footprint under ScaleCount::Effective (its cost bound); above it the
+// particle count selects the scale (wang2020.glsl WANG2020_MICRO_ENUMERATION_MAX).
+inline constexpr double kMicroEnumerationMax = 4096.0;
 enum class PrefilterMode { Mis, AsPublished };
 
 struct Wang2020Material {
@@ -53,6 +66,7 @@ struct Wang2020Material {
     PrefilterMode prefilter = PrefilterMode::Mis;      // without a sampler: as published
     DpfRoughness dpf_roughness = DpfRoughness::Exact;  // §4.4 as published: Interpolated
     FresnelDesc fresnel;  // F of M (Eq. 11); mode None: F = 1
+    ScaleCount scale_count = ScaleCount::Effective;  // per_particle only
 };
 
 enum class Scale { Micro, Meso, Macro };
@@ -92,6 +106,16 @@ class Wang2020Model {
     // L_γ (PerParticle with an environment only; null otherwise).
     const ConeAverageTable* cone_average() const { return cone_.get(); }
     double sigma_o() const { return sigma_o_; }  // σ(Ωo) = 2π(1 − cos γ)
+    // per_particle with ScaleCount::Effective (the prefiltered table's w is
+    // then the effective fraction r, not P̂).
+    bool effective_scales() const {
+        return m_.micro == MicroMode::PerParticle && m_.scale_count == ScaleCount::Effective;
+    }
+    // Wang2020Tables::micro of the GPU (wang2020_tables.glsl WANG2020_MICRO_MODE_*).
+    int micro_mode_index() const {
+        if (m_.micro == MicroMode::AsPublished) return 0;
+        return effective_scales() ? 2 : 1;
+    }
     double extract_seconds() const { return extract_seconds_; }
 
   private:

@@ -38,6 +38,13 @@ const float WANG2020_HALF_PI = 1.57079632679489661923f;
 // holds at most 3 depth + 1 <= 49 items for depth <= 16.
 const int WANG2020_STACK = 64;
 
+// Wang2020Tables::micro: "micro": "as_published"; "per_particle" with
+// "scale_count": "particles"; "per_particle" with "effective" (the
+// prefiltered table's w is then the effective fraction r, not P̂).
+const int WANG2020_MICRO_MODE_AS_PUBLISHED = 0;
+const int WANG2020_MICRO_MODE_PER_PARTICLE = 1;
+const int WANG2020_MICRO_MODE_PER_PARTICLE_EFFECTIVE = 2;
+
 // What the shader needs of one material's tables (Wang2020Model).
 struct Wang2020Tables {
     ivec3 dpf_res;        // θi, θo, Δφ
@@ -47,7 +54,7 @@ struct Wang2020Tables {
     float particles;      // N per uv tile
     float sigma;          // σ(Ωo) = 2π(1 − cos γ)
     float alpha;          // Beckmann roughness
-    int micro;            // 1: "micro": "per_particle", 0: "as_published"
+    int micro;            // WANG2020_MICRO_MODE_* (wang2020_micro_mode_index)
     ivec2 cone_res;       // L_γ table width, height (per_particle with an environment)
     float cos_gamma;      // cos γ
     int fresnel_mode;     // F of M (Eq. 11): GLINT_FRESNEL_* (glint_fresnel.glsl)
@@ -337,14 +344,15 @@ int wang2020_scale_for(vec2 lo, vec2 hi, float particles) {
     return wang2020_select_scale(particles * area);
 }
 
-// Blend weights of the per_particle mode (Wang2020Model blend_weights):
-// degenerate boxes and boxes over more than 64 tiles are pure macro.
-vec3 wang2020_weights_for(vec2 lo, vec2 hi, float particles) {
+// Blend weights of the per_particle mode (Wang2020Model blend_weights) for
+// the effective fraction (1: the particle count): degenerate boxes and boxes
+// over more than 64 tiles are pure macro.
+vec3 wang2020_weights_for(vec2 lo, vec2 hi, float particles, float fraction) {
     float area = max(0.0f, hi.x - lo.x) * max(0.0f, hi.y - lo.y);
     if (!(area > 0.0f) || !wang2020_finite(area)) return vec3(0.0f, 0.0f, 1.0f);
     float tiles = (floor(hi.x) - floor(lo.x) + 1.0f) * (floor(hi.y) - floor(lo.y) + 1.0f);
     if (!(tiles <= 64.0f)) return vec3(0.0f, 0.0f, 1.0f);
-    return wang2020_scale_weights(particles * area);
+    return wang2020_effective_weights(particles * area, fraction);
 }
 
 // Environment radiance towards o (world), before the tint: Eqs. 18-20
@@ -354,8 +362,9 @@ vec3 wang2020_environment(Wang2020Tables tb, vec2 lo, vec2 hi, vec3 n_world, vec
     vec4 t = wang2020_prefilter_lookup(tb.prefilter_res, n_world, o_world);
     vec3 lhat = vec3(t.x, t.y, t.z);
     float phat = t.w;
-    if (tb.micro == 1) {
-        vec3 w = wang2020_weights_for(lo, hi, tb.particles);
+    if (tb.micro != WANG2020_MICRO_MODE_AS_PUBLISHED) {
+        float fraction = tb.micro == WANG2020_MICRO_MODE_PER_PARTICLE_EFFECTIVE ? phat : 1.0f;
+        vec3 w = wang2020_weights_for(lo, hi, tb.particles, fraction);
         uint n_visited;
         vec3 sum = vec3(0.0f);
         if (w.x > 0.0f) {
@@ -387,8 +396,10 @@ vec3 wang2020_environment(Wang2020Tables tb, vec2 lo, vec2 hi, vec3 n_world, vec
 float wang2020_light_dprime(Wang2020Tables tb, vec2 lo, vec2 hi, vec3 wi, vec3 wo) {
     if (!(wi.z > 0.0f) || !(wo.z > 0.0f)) return 0.0f;
     float p = wang2020_dpf_lookup(tb.dpf_res, wi, wo);  // P(i, o, γ), §5
-    if (tb.micro == 1) {
-        vec3 w = wang2020_weights_for(lo, hi, tb.particles);
+    if (tb.micro != WANG2020_MICRO_MODE_AS_PUBLISHED) {
+        // Each particle is lit with probability p: fraction r = p.
+        float fraction = tb.micro == WANG2020_MICRO_MODE_PER_PARTICLE_EFFECTIVE ? p : 1.0f;
+        vec3 w = wang2020_weights_for(lo, hi, tb.particles, fraction);
         uint lit = 0u;
         vec3 unused;
         if (w.x > 0.0f) {

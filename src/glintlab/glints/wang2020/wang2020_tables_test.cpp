@@ -73,7 +73,7 @@ shader::Wang2020Tables tables_of(const Wang2020Model& model) {
     t.particles = static_cast<float>(model.quadtree().particles());
     t.sigma = static_cast<float>(model.sigma_o());
     t.alpha = static_cast<float>(model.material().alpha);
-    t.micro = model.material().micro == MicroMode::PerParticle ? 1 : 0;
+    t.micro = model.micro_mode_index();
     t.cone_res = model.cone_average() != nullptr
                      ? glm::ivec2(model.cone_average()->width(), model.cone_average()->height())
                      : glm::ivec2(1);
@@ -157,13 +157,15 @@ TEST(Wang2020Tables, GlslLookupsEqualTheCpuTables) {
     EXPECT_LT(max_pre, 1e-3);
 }
 
-// Both micro modes: "per_particle" (hashed normals, L_γ, blended scales)
-// and "as_published" (Eq. 20).
-class Wang2020TablesModes : public testing::TestWithParam<MicroMode> {};
+// The three micro modes (Wang2020Model::micro_mode_index): "as_published"
+// (Eq. 20), "per_particle" (hashed normals, L_γ, blended scales) on the
+// particle count, and on the effective count.
+class Wang2020TablesModes : public testing::TestWithParam<int> {};
 
 TEST_P(Wang2020TablesModes, GlslShadingEqualsTheCpuModelAtEveryScale) {
     Wang2020Material mat = small_material(30000, 8);
-    mat.micro = GetParam();
+    mat.micro = GetParam() == 0 ? MicroMode::AsPublished : MicroMode::PerParticle;
+    mat.scale_count = GetParam() == 2 ? ScaleCount::Effective : ScaleCount::Particles;
     // A coloured conductor (gold): M's F (001 Eq. 11) on both sides.
     mat.fresnel.mode = FresnelDesc::Mode::Conductor;
     mat.fresnel.eta = glm::vec3(0.143f, 0.374f, 1.442f);
@@ -174,7 +176,9 @@ TEST_P(Wang2020TablesModes, GlslShadingEqualsTheCpuModelAtEveryScale) {
     const shader::Wang2020Tables tb = tables_of(model);
     Pcg32 rng(21, 4);
     int used[3] = {0, 0, 0}, off = 0, lit = 0;
-    const int trials = 600;
+    // The effective count puts most light queries in the micro scale, where
+    // few are lit: more trials keep > 100 lit ones.
+    const int trials = GetParam() == 2 ? 3000 : 600;
     for (int i = 0; i < trials; ++i) {
         glm::vec2 lo, hi;
         random_box(rng, lo, hi);
@@ -208,10 +212,11 @@ TEST_P(Wang2020TablesModes, GlslShadingEqualsTheCpuModelAtEveryScale) {
     EXPECT_GT(used[2], 50);
     EXPECT_GT(lit, 100);
     EXPECT_LE(off, trials / 100) << "of " << 2 * trials;
+    EXPECT_EQ(model.micro_mode_index(), GetParam());
 }
 
 INSTANTIATE_TEST_SUITE_P(Wang2020Tables, Wang2020TablesModes,
-                         testing::Values(MicroMode::PerParticle, MicroMode::AsPublished));
+                         testing::Values(0, 1, 2));
 
 }  // namespace
 }  // namespace glintlab::wang2020

@@ -308,7 +308,11 @@ TEST(Wang2020Shading, MicroScaleRealizationsAverageToTheSmoothModel) {
 }
 
 TEST(Wang2020Shading, PointLightEq21IsUnbiasedAtEveryScale) {
-    Wang2020Model model(furnace_material(10.0));
+    // 001 §4.3's scales on the particle count (the meso footprints below
+    // must be meso).
+    Wang2020Material mat = furnace_material(10.0);
+    mat.scale_count = ScaleCount::Particles;
+    Wang2020Model model(mat);
     const glm::dvec3 wi = spherical_dir(30 * kDeg, 0.0), wo = spherical_dir(40 * kDeg, kPi);
     const double alpha = 0.6;
     const glm::dvec3 h = glm::normalize(wi + wo);
