@@ -43,6 +43,10 @@ void add_bench_command(CLI::App& app, int* status) {
                     "IBL_STATIC IBL_DYNAMIC DIRECTIONAL x smooth wang2020_style kneiphof2025_k4 "
                     "kneiphof2025_k8; needs --gpu)")
         ->check(CLI::IsMember({"000", "003"}));
+    sub->add_option("--set", o->sets,
+                    "POINTER=VALUE: set a value of every row's scene document before loading "
+                    "(as render --set; the 000 table's material is /materials/0); repeatable")
+        ->allow_extra_args(false);
     sub->callback([o, res, json, status, sub] {
         // GPU frames are cheap: by default the median of 20 after the warm-up.
         if (o->gpu && sub->count("--frames") == 0) o->frames = 20;
@@ -58,6 +62,8 @@ void add_bench_command(CLI::App& app, int* status) {
         }
         if (o->gpu_noise_texture && !o->gpu) fail("--noise-texture needs --gpu");
         if (o->gpu_stochastic_grid && !o->gpu) fail("--stochastic-grid needs --gpu");
+        if (!o->sets.empty() && o->table == "003")
+            fail("--set edits the 000 table's scenes; the 003 table builds its own");
         const auto rows = run_table1(*o);
         if (*json)
             fmt::print("{}\n", table1_to_json(*o, rows).dump(2));

@@ -11,6 +11,7 @@
 #include "glintlab/glints/registry.h"
 #include "glintlab/render/accel.h"
 #include "glintlab/render/renderer.h"
+#include "glintlab/scene/scene_edits.h"
 #include "glintlab/scene/scene_loader.h"
 #if GLINTLAB_WITH_GL
 #include "glintlab/bench/table1_003_gpu.h"
@@ -149,8 +150,8 @@ std::vector<Table1Row> run_table1(const Table1Options& options) {
         for (const std::string& model : models) {
             Table1Row row{scene_name, model, {}, 0.0, 0.0, {}, {}, {}, {}, {}};
             for (float log_density : options.log_densities) {
-                const nlohmann::json j = table1_scene_json(scene_name, model, log_density,
-                                                           options.width, options.height);
+                const nlohmann::json j =
+                    table1_scene_document(options, scene_name, model, log_density);
                 const Scene scene = parse_scene(j, "bench:" + scene_name);
                 std::vector<double> times;
                 // Frame time = shading + ray casting, without the BVH build
@@ -175,6 +176,13 @@ std::vector<Table1Row> run_table1(const Table1Options& options) {
     return rows;
 }
 
+nlohmann::json table1_scene_document(const Table1Options& options, const std::string& scene,
+                                     const std::string& model, float log_density) {
+    nlohmann::json j = table1_scene_json(scene, model, log_density, options.width, options.height);
+    for (const std::string& set : options.sets) apply_override_assignment(j, set);
+    return j;
+}
+
 nlohmann::json table1_to_json(const Table1Options& o, const std::vector<Table1Row>& rows) {
     nlohmann::json j;
     j["benchmark"] = o.table == "003" ? "table1_003_gpu" : o.gpu ? "table1_gpu" : "table1_cpu";
@@ -187,6 +195,7 @@ nlohmann::json table1_to_json(const Table1Options& o, const std::vector<Table1Ro
     }
 #endif
     j["resolution"] = {o.width, o.height};
+    if (!o.sets.empty()) j["sets"] = o.sets;
     j["frames"] = o.frames;
     j["log_densities"] = o.log_densities;
     nlohmann::json arr = nlohmann::json::array();

@@ -31,6 +31,10 @@ struct Table1Options {
     // Table 1 (GPU only; bench/table1_003_gpu.h: IBL static / dynamic /
     // directional rows, smooth / wang2020-style / K = 4 / K = 8 columns).
     std::string table = "000";
+    // POINTER=VALUE edits of every row's scene document before loading
+    // (scene/scene_edits.h apply_override_assignment; `bench --set`), e.g.
+    // /materials/0/wang2020={"scale_count":"particles"} with --model wang2020.
+    std::vector<std::string> sets;
 };
 
 struct Table1Row {
@@ -61,6 +65,10 @@ std::vector<std::string> table1_scene_names();
 // `model` at `log_density`, rendered at width x height.
 nlohmann::json table1_scene_json(const std::string& scene, const std::string& model,
                                  float log_density, int width, int height);
+
+// table1_scene_json with options.sets applied (the document every row loads).
+nlohmann::json table1_scene_document(const Table1Options& options, const std::string& scene,
+                                     const std::string& model, float log_density);
 
 // Throws glintlab::Error naming an unknown scene or model.
 std::vector<Table1Row> run_table1(const Table1Options& options);

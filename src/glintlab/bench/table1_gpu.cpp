@@ -51,9 +51,8 @@ std::vector<Table1Row> run_table1_gpu(const Table1Options& options,
     return run_gpu_table(
         options, scenes, models,
         [&](const std::string& scene_name, const std::string& model, float log_density) {
-            return parse_scene(
-                table1_scene_json(scene_name, model, log_density, options.width, options.height),
-                "bench:" + scene_name);
+            return parse_scene(table1_scene_document(options, scene_name, model, log_density),
+                               "bench:" + scene_name);
         },
         [&](GpuRenderer& renderer, const Scene& scene, const std::string&, const std::string& model,
             Table1Row& row) {
