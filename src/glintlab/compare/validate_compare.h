@@ -22,6 +22,10 @@ struct CompareValidationOptions {
     // plane25_interior: -42.1 % +- 14.3 % from 3, -17.7 % +- 18.3 % from 24;
     // docs/VALIDATION.md "compare"), and 3 seeds understate the se.
     int sparse_realizations = 12;
+    // Dense scenes: models whose mean's se is above the conclusive bound
+    // (2.5 %) after `realizations` seeds are re-run with R (se / 2.5 %)² · 1.2
+    // seeds, at most this many (1 or less: never).
+    int max_realizations = 48;
     // Seeds of the explicit truth (compare.h: its mean is heavy-tailed under
     // environments with small bright sources; docs/VALIDATION.md "compare").
     int truth_realizations = 64;

@@ -68,6 +68,29 @@ TEST(CompareValidation, ReducedSuitePassesWithTheContractChecks) {
     }
 }
 
+// A dense scene's bounded model whose se is above 2.5 % is re-run with more
+// seeds (R (se / 2.5 %)² · 1.2, capped): kneiphof2025 on sphere_city has se
+// ≈ 5 % from 2 seeds, so it is re-run, here with the cap of 4.
+TEST(CompareValidation, DenseModelsWithALargeSeAreRerunWithMoreRealizations) {
+    if (std::getenv("GLINTLAB_SANITIZED") != nullptr) GTEST_SKIP() << "the reduced suite covers it";
+    CompareValidationOptions o;
+    o.size = 32;
+    o.realizations = 2;
+    o.max_realizations = 4;
+    o.truth_realizations = 4;
+    o.frames = 2;
+    o.spp = 4;
+    o.scenes = {"sphere_city"};
+    o.models = {"kneiphof2025"};
+    const nlohmann::json j = validate_compare(o).to_json();
+    ASSERT_EQ(j["scenes"].size(), 1u);
+    const nlohmann::json& s = j["scenes"][0];
+    ASSERT_TRUE(s.contains("refined_realizations")) << s.dump();
+    EXPECT_EQ(s["refined_realizations"]["kneiphof2025"], 4);
+    o.max_realizations = 0;  // never
+    EXPECT_FALSE(validate_compare(o).to_json()["scenes"][0].contains("refined_realizations"));
+}
+
 TEST(CompareValidation, RejectsUnknownScenesAndSizes) {
     CompareValidationOptions o;
     o.scenes = {"no_such_scene"};
