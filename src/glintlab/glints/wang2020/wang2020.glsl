@@ -69,19 +69,23 @@ vec3 wang2020_scale_weights(float expected_count) {
 // (wang2020_shading.h kMicroEnumerationMax).
 const float WANG2020_MICRO_ENUMERATION_MAX = 4096.0f;
 
-// Blend weights for a footprint of `count` expected particles whose micro
-// estimate has relative variance 1 / (count · fraction): the bands above
-// over the effective count count · fraction (fraction 1: 001's particle
-// count). Near the enumeration bound the micro scale fades out: over counts
-// [bound / 2, bound] (log2-linear) the weights move to those of the
-// effective count raised to the micro band's top, 8 (no micro weight). A
-// convex blend of convex weights: the mean is kept.
+// Blend weights (micro, meso, macro) of the "effective" scale count for a
+// footprint of `count` expected particles whose micro estimate has relative
+// variance 1 / e, e = count · fraction (wang2020_shading.h ScaleCount): the
+// micro scale up to e = 64, blended log2-linearly into the macro scale over
+// e in [64, 256]. The meso scale (count × table) is not used: its only
+// texture is the count's 1/sqrt(count), not the 1/sqrt(e) of the particles'
+// contributions, so in the meso band the pixels were as frozen as in the
+// macro one (compare's flicker ratio 0.2-0.4 under the environments). Near
+// the enumeration bound the micro scale fades out: over counts [bound / 2,
+// bound] (log2-linear) towards the macro scale. Convex blends of estimates
+// with the same mean: the mean is kept.
 vec3 wang2020_effective_weights(float count, float fraction) {
     float effective = count * clamp(fraction, 0.0f, 1.0f);
-    vec3 w = wang2020_scale_weights(effective);
+    float micro = 1.0f - clamp(0.5f * log2(max(effective, 1e-30f) * (1.0f / 64.0f)), 0.0f, 1.0f);
     float t = clamp(log2(max(count, 1.0f) * (2.0f / WANG2020_MICRO_ENUMERATION_MAX)), 0.0f, 1.0f);
-    if (t > 0.0f) w = mix(w, wang2020_scale_weights(max(effective, 8.0f)), t);
-    return w;
+    micro *= 1.0f - t;
+    return vec3(micro, 0.0f, 1.0f - micro);
 }
 
 // Environment radiance (before tint), per_particle mode: micro = (1/(a N))

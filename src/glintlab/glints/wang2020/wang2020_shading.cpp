@@ -36,13 +36,16 @@ Scale scale_for(const UvBox& A, double N) {
     return select_scale(N * A.area());
 }
 
-// Blend weights of the per_particle mode (wang2020.glsl) for the effective
-// fraction r (1: the particle count); the macro cases of scale_for
-// (degenerate boxes, > 64 tiles) are pure macro.
-glm::dvec3 blend_weights(const UvBox& A, double N, double fraction) {
+// Blend weights of the per_particle mode (wang2020.glsl): "effective" with
+// the fraction r, else the particle count's bands; the macro cases of
+// scale_for (degenerate boxes, > 64 tiles) are pure macro.
+glm::dvec3 blend_weights(const UvBox& A, double N, bool effective, double fraction) {
     if (forced_macro(A)) return {0.0, 0.0, 1.0};
-    return glm::dvec3(shader::wang2020_effective_weights(static_cast<float>(N * A.area()),
-                                                         static_cast<float>(fraction)));
+    const float count = static_cast<float>(N * A.area());
+    if (effective)
+        return glm::dvec3(
+            shader::wang2020_effective_weights(count, static_cast<float>(fraction)));
+    return glm::dvec3(shader::wang2020_scale_weights(count));
 }
 
 double checked_gamma(const Wang2020Material& m) {
@@ -142,7 +145,7 @@ glm::dvec3 Wang2020Model::environment_radiance(const UvBox& A, const glm::dvec3&
     if (used) *used = s;
     if (m_.micro == MicroMode::PerParticle) {
         // w of the table is the effective fraction r under "effective".
-        const glm::dvec3 w = blend_weights(A, N, effective_scales() ? phat : 1.0);
+        const glm::dvec3 w = blend_weights(A, N, effective_scales(), phat);
         glm::dvec3 sum(0.0);
         if (w.x > 0.0) {
             glm::dvec3 t, b;
@@ -179,7 +182,7 @@ glm::dvec3 Wang2020Model::light_radiance(const UvBox& A, const glm::dvec3& wi, c
     if (used) *used = s;
     if (m_.micro == MicroMode::PerParticle) {
         // Each particle is lit with probability p: r = E[f]² / E[f²] = p.
-        const glm::dvec3 w = blend_weights(A, N, effective_scales() ? p : 1.0);
+        const glm::dvec3 w = blend_weights(A, N, effective_scales(), p);
         const double lit = w.x > 0.0 ? static_cast<double>(particles_lit(A, wi, wo)) : 0.0;
         const double count = w.y > 0.0 ? static_cast<double>(tree_.count(A.lo, A.hi)) : 0.0;
         const double dprime = shader::wang2020_point_dprime_blend(

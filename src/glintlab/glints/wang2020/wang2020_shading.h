@@ -42,9 +42,10 @@ enum class MicroMode { PerParticle, AsPublished };
 // Effective (default): the effective number of particles n r of the
 // footprint's micro estimate, whose relative variance is 1 / (n r) — r = P
 // (the DPF) under a light, r = E[f]² / E[f²] from the prefiltered table
-// under the environment — capped so that the micro scale never enumerates
-// more than kMicroEnumerationMax particles; Particles: 001 §4.3's particle
-// count n (the scales of MicroMode::AsPublished).
+// under the environment — micro up to n r = 64, macro from 256
+// (wang2020.glsl wang2020_effective_weights), the micro scale never
+// enumerating more than kMicroEnumerationMax particles; Particles: 001
+// §4.3's particle count n with the micro / meso / macro bands.
 enum class ScaleCount { Effective, Particles };
 // The micro scale enumerates at most this many expected particles per
 // footprint under ScaleCount::Effective (its cost bound); above it the

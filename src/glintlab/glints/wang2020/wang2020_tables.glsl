@@ -344,15 +344,17 @@ int wang2020_scale_for(vec2 lo, vec2 hi, float particles) {
     return wang2020_select_scale(particles * area);
 }
 
-// Blend weights of the per_particle mode (Wang2020Model blend_weights) for
-// the effective fraction (1: the particle count): degenerate boxes and boxes
-// over more than 64 tiles are pure macro.
-vec3 wang2020_weights_for(vec2 lo, vec2 hi, float particles, float fraction) {
+// Blend weights of the per_particle mode (Wang2020Model blend_weights):
+// "effective" (wang2020_effective_weights of the fraction) or the particle
+// count's bands; degenerate boxes and boxes over more than 64 tiles are pure
+// macro.
+vec3 wang2020_weights_for(vec2 lo, vec2 hi, float particles, bool effective, float fraction) {
     float area = max(0.0f, hi.x - lo.x) * max(0.0f, hi.y - lo.y);
     if (!(area > 0.0f) || !wang2020_finite(area)) return vec3(0.0f, 0.0f, 1.0f);
     float tiles = (floor(hi.x) - floor(lo.x) + 1.0f) * (floor(hi.y) - floor(lo.y) + 1.0f);
     if (!(tiles <= 64.0f)) return vec3(0.0f, 0.0f, 1.0f);
-    return wang2020_effective_weights(particles * area, fraction);
+    if (effective) return wang2020_effective_weights(particles * area, fraction);
+    return wang2020_scale_weights(particles * area);
 }
 
 // Environment radiance towards o (world), before the tint: Eqs. 18-20
@@ -363,8 +365,9 @@ vec3 wang2020_environment(Wang2020Tables tb, vec2 lo, vec2 hi, vec3 n_world, vec
     vec3 lhat = vec3(t.x, t.y, t.z);
     float phat = t.w;
     if (tb.micro != WANG2020_MICRO_MODE_AS_PUBLISHED) {
-        float fraction = tb.micro == WANG2020_MICRO_MODE_PER_PARTICLE_EFFECTIVE ? phat : 1.0f;
-        vec3 w = wang2020_weights_for(lo, hi, tb.particles, fraction);
+        // The table's w is the effective fraction r under "effective".
+        bool effective = tb.micro == WANG2020_MICRO_MODE_PER_PARTICLE_EFFECTIVE;
+        vec3 w = wang2020_weights_for(lo, hi, tb.particles, effective, phat);
         uint n_visited;
         vec3 sum = vec3(0.0f);
         if (w.x > 0.0f) {
@@ -398,8 +401,8 @@ float wang2020_light_dprime(Wang2020Tables tb, vec2 lo, vec2 hi, vec3 wi, vec3 w
     float p = wang2020_dpf_lookup(tb.dpf_res, wi, wo);  // P(i, o, γ), §5
     if (tb.micro != WANG2020_MICRO_MODE_AS_PUBLISHED) {
         // Each particle is lit with probability p: fraction r = p.
-        float fraction = tb.micro == WANG2020_MICRO_MODE_PER_PARTICLE_EFFECTIVE ? p : 1.0f;
-        vec3 w = wang2020_weights_for(lo, hi, tb.particles, fraction);
+        bool effective = tb.micro == WANG2020_MICRO_MODE_PER_PARTICLE_EFFECTIVE;
+        vec3 w = wang2020_weights_for(lo, hi, tb.particles, effective, p);
         uint lit = 0u;
         vec3 unused;
         if (w.x > 0.0f) {
