@@ -214,15 +214,33 @@ glm::dvec4 PrefilterTable::evaluate(const DpfTable& dpf, double alpha, const Env
     // heuristic: weight p_b / (K (p_b + p_c)). A particle whose reflection
     // leaves the hemisphere counts as f = 0.
     double f1 = 0.0, f2 = 0.0;
-    auto add_moment = [&](const glm::dvec3& i, double weight) {
-        const glm::dvec3 l = cone->lookup(to_world(i)) * m_fresnel(fresnel, i, o);
-        const double f = luminance(glm::vec3(l)) * m_term(i, o, alpha);
+    // i local, w = i in world space, f_i = F(i·h).
+    auto add_moment = [&](const glm::dvec3& i, const glm::dvec3& w, const glm::dvec3& f_i,
+                          double weight) {
+        const double f = luminance(glm::vec3(cone->lookup(w) * f_i)) * m_term(i, o, alpha);
         f1 += weight * f;
         f2 += weight * f * f;
     };
     const int side = std::max(1, static_cast<int>(std::lround(std::sqrt(K))));
     const int k_used = side * side;
     Pcg32 rng(texel_id, 0x9e3779b97f4a7c15ull);
+    // One jittered stratum per (sx, sy) of a second strategy's 2-D sample
+    // space: sample(u, world_dir) returns its density; visit(world_dir, i,
+    // density) gets the samples above the horizon (i local).
+    auto for_each_stratum = [&](auto&& sample, auto&& visit) {
+        for (int sy = 0; sy < side; ++sy) {
+            for (int sx = 0; sx < side; ++sx) {
+                const glm::dvec2 u((sx + rng.next_double()) / side,
+                                   (sy + rng.next_double()) / side);
+                glm::dvec3 d(0.0);
+                const double p = sample(u, d);
+                if (!(p > 0.0) || !std::isfinite(p)) continue;
+                const glm::dvec3 i{glm::dot(d, t), glm::dot(d, b), glm::dot(d, n)};
+                if (i.z <= 0.0) continue;
+                visit(d, i, p);
+            }
+        }
+    };
     for (int sy = 0; sy < side; ++sy) {
         for (int sx = 0; sx < side; ++sx) {
             // Jittered strata (one Pcg32 stream per texel): unbiased per texel,
@@ -239,50 +257,39 @@ glm::dvec4 PrefilterTable::evaluate(const DpfTable& dpf, double alpha, const Env
             if (i.z <= 0.0) continue;
             const double pdf = beckmann_D(h.z, alpha) * h.z / (4.0 * oh);
             if (!(pdf > 0.0)) continue;
-            const glm::dvec3 li = glm::dvec3(env(to_world(i))) * m_fresnel(fresnel, i, o);
-            if (cone != nullptr) add_moment(i, pdf / (k_used * (pdf + cone->pdf(to_world(i)))));
+            const glm::dvec3 w = to_world(i);
+            const glm::dvec3 f_i = m_fresnel(fresnel, i, o);
+            const glm::dvec3 li = glm::dvec3(env(w)) * f_i;
+            if (cone != nullptr) add_moment(i, w, f_i, pdf / (k_used * (pdf + cone->pdf(w))));
             if (!sampler) {
                 lo += li * (dpf.lookup(i, o) * m_term(i, o, alpha) / (pdf * k_used));  // Eq. 16
                 continue;
             }
             // Balance heuristic: g / (K pdf_b + K pdf_e) for samples of either strategy.
-            const double pe = sampler->pdf(to_world(i));
+            const double pe = sampler->pdf(w);
             lo += li * (dpf.lookup(i, o) * m_term(i, o, alpha) / (k_used * (pdf + pe)));
         }
     }
     if (sampler) {
         // The environment strategy: K samples of its luminance distribution
         // (same jittered strata over its 2-D sample space).
-        for (int sy = 0; sy < side; ++sy) {
-            for (int sx = 0; sx < side; ++sx) {
-                const glm::dvec2 u((sx + rng.next_double()) / side,
-                                   (sy + rng.next_double()) / side);
-                glm::dvec3 d(0.0);
-                const double pe = sampler->sample(u, d);
-                if (!(pe > 0.0) || !std::isfinite(pe)) continue;
-                const glm::dvec3 i{glm::dot(d, t), glm::dot(d, b), glm::dot(d, n)};
-                if (i.z <= 0.0) continue;
+        for_each_stratum(
+            [&](const glm::dvec2& u, glm::dvec3& d) { return sampler->sample(u, d); },
+            [&](const glm::dvec3& d, const glm::dvec3& i, double pe) {
                 const double pb = brdf_pdf(i, o, alpha);
                 const double g = dpf.lookup(i, o) * m_term(i, o, alpha);
-                if (!(g > 0.0)) continue;
+                if (!(g > 0.0)) return;
                 lo += glm::dvec3(env(d)) * m_fresnel(fresnel, i, o) * (g / (k_used * (pb + pe)));
-            }
-        }
+            });
     }
     if (cone != nullptr) {
-        for (int sy = 0; sy < side; ++sy) {
-            for (int sx = 0; sx < side; ++sx) {
-                const glm::dvec2 u((sx + rng.next_double()) / side,
-                                   (sy + rng.next_double()) / side);
-                glm::dvec3 d(0.0);
-                const double pc = cone->sample(u, d);
-                if (!(pc > 0.0) || !std::isfinite(pc)) continue;
-                const glm::dvec3 i{glm::dot(d, t), glm::dot(d, b), glm::dot(d, n)};
-                if (i.z <= 0.0) continue;
+        // The moments' second strategy: K samples of L_γ's luminance.
+        for_each_stratum(
+            [&](const glm::dvec2& u, glm::dvec3& d) { return cone->sample(u, d); },
+            [&](const glm::dvec3& d, const glm::dvec3& i, double pc) {
                 const double pb = brdf_pdf(i, o, alpha);
-                if (pb > 0.0) add_moment(i, pb / (k_used * (pb + pc)));
-            }
-        }
+                if (pb > 0.0) add_moment(i, d, m_fresnel(fresnel, i, o), pb / (k_used * (pb + pc)));
+            });
         // r = E[f]² / E[f²] ∈ (0, 1]; 1 where nothing is reflected (no
         // texture either way).
         const double r = f2 > 0.0 ? std::clamp(f1 * f1 / f2, 0.0, 1.0) : 1.0;

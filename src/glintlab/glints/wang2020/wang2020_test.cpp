@@ -17,25 +17,8 @@ namespace {
 
 constexpr double kDeg = kPi / 180.0;
 
-// Smooth Beckmann reference of ∫ f(i,o) cos θi di under a white environment
-// (F = 1), 512 × 512 stratified NDF samples: the "smooth model" of the furnace.
-double smooth_albedo(const glm::dvec3& o, double alpha, int side = 512) {
-    double sum = 0.0;
-    for (int y = 0; y < side; ++y)
-        for (int x = 0; x < side; ++x) {
-            const double u1 = (x + 0.5) / side, u2 = (y + 0.5) / side;
-            const double ch = 1.0 / std::sqrt(1.0 - alpha * alpha * std::log(1.0 - u1));
-            const glm::dvec3 h = spherical_dir(std::acos(ch), 2.0 * kPi * u2);
-            const double oh = glm::dot(o, h);
-            if (oh <= 0.0) continue;
-            const glm::dvec3 i = 2.0 * oh * h - o;
-            if (i.z <= 0.0) continue;
-            sum += beckmann_G2(i.z, o.z, alpha) * oh / (o.z * h.z);
-        }
-    return sum / (side * side);
-}
-
-// The same with the Fresnel F(i·h) inside the integral (001 Eq. 11's M).
+// Smooth Beckmann reference of ∫ F(i·h) f(i,o) cos θi di under a white
+// environment (001 Eq. 11's M carries F), side × side stratified NDF samples.
 glm::dvec3 smooth_albedo_fresnel(const glm::dvec3& o, double alpha, const FresnelDesc& f,
                                  int side = 256) {
     glm::dvec3 sum(0.0);
@@ -51,6 +34,11 @@ glm::dvec3 smooth_albedo_fresnel(const glm::dvec3& o, double alpha, const Fresne
             sum += m_fresnel(&f, i, o) * (beckmann_G2(i.z, o.z, alpha) * oh / (o.z * h.z));
         }
     return sum / double(side * side);
+}
+
+// The same with F = 1, 512 × 512 samples: the "smooth model" of the furnace.
+double smooth_albedo(const glm::dvec3& o, double alpha, int side = 512) {
+    return smooth_albedo_fresnel(o, alpha, FresnelDesc{}, side).x;
 }
 
 TEST(Wang2020Dpf, ExactDpfIsTheNormalProbabilityOfTheCone) {
