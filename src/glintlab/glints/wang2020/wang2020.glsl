@@ -66,7 +66,7 @@ vec3 wang2020_scale_weights(float expected_count) {
 }
 
 // The micro scale's enumeration bound under the "effective" scale count
-// (wang2020_shading.h kMicroEnumerationMax).
+// (wang2020_shading.h ScaleCount::Effective): its cost bound.
 const float WANG2020_MICRO_ENUMERATION_MAX = 4096.0f;
 
 // Blend weights (micro, meso, macro) of the "effective" scale count for a

@@ -44,13 +44,10 @@ enum class MicroMode { PerParticle, AsPublished };
 // (the DPF) under a light, r = E[f]² / E[f²] from the prefiltered table
 // under the environment — micro up to n r = 64, macro from 256
 // (wang2020.glsl wang2020_effective_weights), the micro scale never
-// enumerating more than kMicroEnumerationMax particles; Particles: 001
+// enumerating more than WANG2020_MICRO_ENUMERATION_MAX (wang2020.glsl, shared
+// with the GPU) particles; Particles: 001
 // §4.3's particle count n with the micro / meso / macro bands.
 enum class ScaleCount { Effective, Particles };
-// The micro scale enumerates at most this many expected particles per
-// footprint under ScaleCount::Effective (its cost bound); above it the
-// particle count selects the scale (wang2020.glsl WANG2020_MICRO_ENUMERATION_MAX).
-inline constexpr double kMicroEnumerationMax = 4096.0;
 enum class PrefilterMode { Mis, AsPublished };
 
 struct Wang2020Material {
