@@ -10,6 +10,9 @@
 // hooks do, glints/<model>/<model>_gpu.cpp), or they were applied when the
 // files were exported (`baked`: changing them means exporting again).
 const HOST_PARAMS = {
+  deliot2023: {
+    gaussian: {uniform: 'u_deliot2023_conditional', value: (v) => (v === 'conditional' ? 1 : 0)},
+  },
   kneiphof2025: {
     levels: {baked: 'K of the prefiltered maps (glintlab export --env)'},
     black_level: {baked: 'black level of the prefiltered maps (glintlab export --env)'},

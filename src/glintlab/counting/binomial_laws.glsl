@@ -9,6 +9,7 @@
 #define GLINTLAB_COUNTING_BINOMIAL_LAWS_GLSL
 
 #include "glintlab/counting/normal_quantile.glsl"
+#include "glintlab/microfacet/erf.glsl"
 
 // epsilon = 10^-3.54 of 003 §6 "Numeric Gating Issues", found optimal there
 // for fp32 over (N, p) in [1, 1e16] x [1e-16, 1].
@@ -105,6 +106,7 @@ struct SingleGatedLaw {
     float mean;    // 1 + (N - 1) p
     float sd;      // sqrt((N - 1) p (1 - p))
     float top;     // max(N, 1)
+    float scale;   // 1 here; the conditional form's mean correction (Law 5b)
 };
 SingleGatedLaw binomial_single_gated_law(float N, float p) {
     float n = max(N, 0.0f);
@@ -114,11 +116,74 @@ SingleGatedLaw binomial_single_gated_law(float N, float p) {
     law.mean = 1.0f + rest * p;
     law.sd = sqrt(max(rest * p * (1.0f - p), 0.0f));
     law.top = max(n, 1.0f);
+    law.scale = 1.0f;
     return law;
 }
 float binomial_single_gated_draw(SingleGatedLaw law, float xi1, float xi2) {
     float g = law.mean + law.sd * normal_quantile(xi2);
-    return xi1 < law.p_gate ? clamp(g, 1.0f, law.top) : 0.0f;
+    return xi1 < law.p_gate ? clamp(g, 1.0f, law.top) * law.scale : 0.0f;
+}
+
+// Standard normal CDF from the shared erf (absolute error < 1e-7).
+float standard_normal_cdf(float x) {
+    return 0.5f + 0.5f * erf_approx(x * 0.70710678f);
+}
+
+// E[clamp(X, lo, hi)] for X ~ N(mean, sd^2), lo <= mean <= hi, lo < hi:
+//   mean + sd (phi(a) + a Phi(a)) - sd (phi(b) - b (1 - Phi(b))),
+// a = (lo - mean) / sd, b = (hi - mean) / sd (the two terms are E[(lo - X)+]
+// and E[(X - hi)+]); mean is clamped to [lo, hi] first, so a <= 0 <= b, and
+// a, b are kept within 40 of 0, where both terms are 0 in fp32 (sd -> 0 and
+// hi = 1e35 stay finite).
+float clamped_gaussian_mean(float mean, float sd, float lo, float hi) {
+    mean = clamp(mean, lo, hi);
+    if (!(sd > 0.0f)) return mean;
+    const float inv_sqrt_2pi = 0.39894228f;
+    float a = clamp((lo - mean) / sd, -40.0f, 0.0f);
+    float b = clamp((hi - mean) / sd, 0.0f, 40.0f);
+    float below = inv_sqrt_2pi * exp(-0.5f * a * a) + a * standard_normal_cdf(a);
+    float above = inv_sqrt_2pi * exp(-0.5f * b * b) - b * standard_normal_cdf(-b);
+    return mean + sd * (max(below, 0.0f) - max(above, 0.0f));
+}
+
+// Law 5b (an extension, not in 000 or 003; deliot2023's and kneiphof2025's
+// `"gaussian": "conditional"`, their default): Law 5's gate, then a Gaussian
+// with the moments of b(N, p) conditioned on the gate, clamped to
+// [1, max(N, 1)] and rescaled so that its mean is the conditional mean
+// exactly. Law 5 centres the Gaussian on 1 + (N - 1) p ("one success, N - 1
+// free trials"), which is the conditional mean only when the gate is sure:
+// E[count] / (N p) - 1 is +31 % at N p = 1-2 (p = 0.025; +11 % at N p = 0.1,
+// +10 % at N p = 10). With the gate g = min(N p, P(>=1)) (P(>=1) = 1 - (1 - p)^N):
+//   mu  = E[n | gate] = N p / g,
+//   var = E[n^2] / g - mu^2 = mu ((1 - p) - (mu - N p))   (E[n^2] = N p (1 - p) + (N p)^2),
+// (for N < 1, g = N p, mu = 1 and the count is 1: 003 Appendix B's law). The
+// clamp to [1, N] alone would still add up to +8 % (N p ~ 0.5: a Gaussian of
+// mean 1.3 and sd 0.6 piled up at 1), hence the factor
+// scale = mu / E[clamped Gaussian] (<= 1, clamped_gaussian_mean):
+// E[count] = g scale E[clamped] = g mu = N p for every real N >= 0 and p
+// (CountingLaws.ConditionalSingleGatedIsUnbiased); the variance is the
+// conditional one up to the clamp and the factor. Same draw as Law 5
+// (binomial_single_gated_draw): the extra cost is per (N, p), not per count.
+SingleGatedLaw binomial_single_gated_conditional_law(float N, float p) {
+    float n = max(N, 0.0f);
+    float np = n * p;
+    SingleGatedLaw law;
+    law.p_gate = min(np, 1.0f - pow_one_minus_stable(p, n));
+    law.top = max(n, 1.0f);
+    if (!(law.p_gate > 0.0f)) {
+        law.mean = 1.0f;
+        law.sd = 0.0f;
+        law.scale = 1.0f;
+        return law;
+    }
+    float mu = clamp(np / law.p_gate, 1.0f, law.top);
+    law.mean = mu;
+    law.sd = sqrt(max(mu * ((1.0f - p) - (mu - np)), 0.0f));
+    law.scale = mu / clamped_gaussian_mean(mu, law.sd, 1.0f, law.top);
+    return law;
+}
+float binomial_single_gated_conditional(float N, float p, float xi1, float xi2) {
+    return binomial_single_gated_draw(binomial_single_gated_conditional_law(N, p), xi1, xi2);
 }
 float binomial_single_gated(float N, float p, float xi1, float xi2) {
     return binomial_single_gated_draw(binomial_single_gated_law(N, p), xi1, xi2);

@@ -3,6 +3,7 @@
 // cell, fixed seeds) and shared by the tests below.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <memory>
@@ -77,7 +78,7 @@ TEST(CountingLaws, GatedMeansWithinOnePercentInTheirAsymptoticRegimes) {
             }
         }
     }
-    EXPECT_EQ(checked, 3 * 31 + 2 * 14);  // the domain is what the comment says
+    EXPECT_EQ(checked, 4 * 31 + 3 * 14);  // the domain is what the comment says
 }
 
 // 003 Fig. 12: the dual-gated law is closer to the binomial than the
@@ -134,7 +135,7 @@ TEST(CountingLaws, ExactSamplerMatchesItsOwnLaw) {
 TEST(CountingLaws, NoNanInfOrNegativeOutputOnTenMillionRandomInputs) {
     const RobustnessResult r = sweep_counting_laws(10'000'000, 12345u);
     EXPECT_EQ(r.invalid, 0);
-    EXPECT_EQ(r.evaluations, 15 * 10'000'000LL);  // 11 law outputs + 4 multinomial bins
+    EXPECT_EQ(r.evaluations, 16 * 10'000'000LL);  // 12 law outputs + 4 multinomial bins
     // The named edges, explicitly.
     const float edges_N[] = {0.0f, 1.0f, 2.0f, 1e15f, 1e20f, 5.5e34f};
     const float edges_p[] = {0.0f, 1.0f, 1e-31f, 1e-45f, 0.5f};
@@ -145,6 +146,7 @@ TEST(CountingLaws, NoNanInfOrNegativeOutputOnTenMillionRandomInputs) {
                 const float v[] = {shader::binomial_gaussian(N, p, xi),
                                    shader::binomial_deliot2023(N, p, xi, xi),
                                    shader::binomial_single_gated(N, p, xi, xi),
+                                   shader::binomial_single_gated_conditional(N, p, xi, xi),
                                    shader::binomial_dual_gated(N, p, xi, xi, false).x,
                                    shader::binomial_dual_gated(N, p, xi, xi, false).y,
                                    shader::binomial_dual_gated_conditional(N, p, xi, xi, true).x,
@@ -187,6 +189,61 @@ TEST(CountingLaws, ZirrLoopsOnlyBelowNpFive) {
               shader::binomial_zirr2016(100.0f, 0.1f, 0.5f, zeros));
     // Below, 4 trials of probability 0.5 all succeed with uniforms 0.
     EXPECT_EQ(shader::binomial_zirr2016(4.0f, 0.5f, 0.5f, glsl::mat4(0.0f)), 4.0f);
+}
+
+// Law 5b (binomial_single_gated_conditional, deliot2023's default): E[count]
+// = N p for every real N and p. A count is [xi1 < gate] f(xi2), so
+// E = gate x E[f(xi2)]: the gate in double (min(N p, 1 - (1 - p)^N)) times a
+// midpoint quadrature of the draw over 2^16 values of xi2 with xi1 = 0 (the
+// gate passes). Tolerance 2e-3 relative: the fp32 stable power of the law's
+// gate is within Np eps / 2 + 2^-24 / eps relative of (1 - p)^N (003 Eq. 25,
+// <= 1e-3 on this grid), the quadrature misses the normal tails beyond
+// 2^-17 (< 1e-4 of the mean). Law 5 (Eq. 23) is checked to be > 20 % high at
+// N p = 1, the bias this law removes.
+TEST(CountingLaws, ConditionalSingleGatedIsUnbiased) {
+    constexpr int kQuadrature = 1 << 16;
+    auto mean_of = [&](float (*law)(float, float, float, float), double N, double p) {
+        const double gate = std::min(N * p, 1.0 - std::pow(1.0 - p, N));
+        double sum = 0.0;
+        for (int k = 0; k < kQuadrature; ++k) {
+            const float xi2 = static_cast<float>((k + 0.5) / kQuadrature);
+            sum += law(static_cast<float>(N), static_cast<float>(p), 0.0f, xi2);
+        }
+        return gate * sum / kQuadrature;
+    };
+    for (double N : {0.3, 0.9, 1.0, 1.5, 3.0, 10.0, 40.0, 100.0, 1e3, 1e5, 1e9}) {
+        for (double p : {1e-4, 0.01, 0.025, 0.1, 0.5, 0.9, 1.0}) {
+            const double np = static_cast<double>(static_cast<float>(N)) *
+                              static_cast<double>(static_cast<float>(p));
+            const double mean = mean_of(shader::binomial_single_gated_conditional, N, p);
+            EXPECT_NEAR(mean / np, 1.0, 2e-3) << "N " << N << " p " << p;
+        }
+    }
+    EXPECT_GT(mean_of(shader::binomial_single_gated, 40.0, 0.025) / 1.0, 1.2);
+    EXPECT_GT(mean_of(shader::binomial_single_gated, 400.0, 0.025) / 10.0, 1.05);
+}
+
+// The conditional law's clamped-Gaussian mean against a quadrature of the
+// clamp, and its limits (sd 0, bounds far away).
+TEST(CountingLaws, ClampedGaussianMeanMatchesQuadrature) {
+    for (float mean : {1.0f, 1.3f, 2.5f, 3.9f}) {
+        for (float sd : {0.05f, 0.6f, 2.0f}) {
+            const float hi = 4.0f;
+            double sum = 0.0;
+            constexpr int kSteps = 1 << 16;
+            for (int k = 0; k < kSteps; ++k) {
+                const double x = mean + sd * shader::normal_quantile(
+                                                 static_cast<float>((k + 0.5) / kSteps));
+                sum += std::clamp(x, 1.0, static_cast<double>(hi));
+            }
+            EXPECT_NEAR(shader::clamped_gaussian_mean(mean, sd, 1.0f, hi), sum / kSteps, 2e-4)
+                << mean << " " << sd;
+        }
+    }
+    EXPECT_EQ(shader::clamped_gaussian_mean(2.0f, 0.0f, 1.0f, 4.0f), 2.0f);
+    EXPECT_FLOAT_EQ(shader::clamped_gaussian_mean(1e6f, 1e3f, 1.0f, 1e35f), 1e6f);
+    EXPECT_NEAR(shader::standard_normal_cdf(0.0f), 0.5f, 1e-7f);
+    EXPECT_NEAR(shader::standard_normal_cdf(-1.0f), 0.15865525f, 2e-7f);
 }
 
 }  // namespace

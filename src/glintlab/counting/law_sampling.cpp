@@ -9,9 +9,11 @@
 namespace glintlab {
 namespace {
 
-constexpr std::array<CountingLaw, 6> kLaws = {CountingLaw::exact,        CountingLaw::gaussian,
-                                              CountingLaw::zirr2016,     CountingLaw::deliot2023,
-                                              CountingLaw::single_gated, CountingLaw::dual_gated};
+// Appended laws go last: the validation seeds each (law, cell) by its index.
+constexpr std::array<CountingLaw, 7> kLaws = {
+    CountingLaw::exact,        CountingLaw::gaussian,   CountingLaw::zirr2016,
+    CountingLaw::deliot2023,   CountingLaw::single_gated, CountingLaw::dual_gated,
+    CountingLaw::single_gated_conditional};
 
 // Uniforms handed to the fp32 laws must stay below 1 after rounding to float.
 float to_unit_float(double u) {
@@ -36,6 +38,8 @@ std::string_view law_name(CountingLaw law) {
             return "deliot2023";
         case CountingLaw::single_gated:
             return "single_gated";
+        case CountingLaw::single_gated_conditional:
+            return "single_gated_conditional";
         case CountingLaw::dual_gated:
             return "dual_gated";
     }
@@ -44,7 +48,7 @@ std::string_view law_name(CountingLaw law) {
 
 bool is_gated(CountingLaw law) {
     return law == CountingLaw::deliot2023 || law == CountingLaw::single_gated ||
-           law == CountingLaw::dual_gated;
+           law == CountingLaw::single_gated_conditional || law == CountingLaw::dual_gated;
 }
 
 double sample_count(CountingLaw law, double N, double p, const LawUniforms& xi, Pcg32& rng,
@@ -70,6 +74,8 @@ double sample_count(CountingLaw law, double N, double p, const LawUniforms& xi, 
             return shader::binomial_deliot2023(n, q, u1, u2);
         case CountingLaw::single_gated:
             return shader::binomial_single_gated(n, q, u1, u2);
+        case CountingLaw::single_gated_conditional:
+            return shader::binomial_single_gated_conditional(n, q, u1, u2);
         case CountingLaw::dual_gated:
             return shader::binomial_dual_gated(n, q, u1, u2, false).x;
     }

@@ -18,6 +18,7 @@ enum class CountingLaw {
     deliot2023,    // binomial_deliot2023 (000 Eq. 16-18)
     single_gated,  // binomial_single_gated (003 Eq. 23)
     dual_gated,    // binomial_dual_gated (003 Algorithm 1), positives
+    single_gated_conditional,  // binomial_single_gated_conditional (Law 5b, unbiased mean)
 };
 
 std::span<const CountingLaw> all_counting_laws();

@@ -23,6 +23,9 @@ float binomial_gaussian(float N, float p, float xi);
 float binomial_zirr2016(float N, float p, float xi_gauss, mat4 xi_trials);
 float binomial_deliot2023(float N, float p, float xi0, float xi1);
 float binomial_single_gated(float N, float p, float xi1, float xi2);
+float standard_normal_cdf(float x);
+float clamped_gaussian_mean(float mean, float sd, float lo, float hi);
+float binomial_single_gated_conditional(float N, float p, float xi1, float xi2);
 vec2 binomial_dual_gated(float N, float p, float xi1, float xi2, bool integer_gaussian);
 vec2 binomial_dual_gated_conditional(float N, float p, float xi1, float xi2, bool integer_gaussian);
 // multinomial.glsl

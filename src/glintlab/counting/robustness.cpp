@@ -85,6 +85,7 @@ RobustnessResult sweep_counting_laws(int64_t samples, uint64_t seed) {
                                     shader::binomial_zirr2016(N, p, xi2, trials),
                                     shader::binomial_deliot2023(N, p, xi1, xi2),
                                     shader::binomial_single_gated(N, p, xi1, xi2),
+                                    shader::binomial_single_gated_conditional(N, p, xi1, xi2),
                                     dual.x,
                                     dual.y,
                                     dual_int.x,
@@ -93,7 +94,7 @@ RobustnessResult sweep_counting_laws(int64_t samples, uint64_t seed) {
                                     cond.y,
                                     shader::pow_one_minus_stable(p, N)};
             for (float v : values) local_bad += invalid(v) ? 1 : 0;
-            local_evals += 11;
+            local_evals += 12;
             // Multinomial over 4 bins with a random split of the probability.
             const glsl::vec4 probs(rng.next_float(), rng.next_float(), rng.next_float(), p);
             const glsl::vec4 counts =

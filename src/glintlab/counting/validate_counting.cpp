@@ -52,7 +52,21 @@ bool in_mean_domain(CountingLaw law, double N, double p) {
     const double np = N * p;
     if (np >= 200.0) return true;
     if (N >= 1.0) return np <= 0.01 * (1.0 + 1e-9);  // N p = 100 x 1e-4 stays in
-    return law == CountingLaw::single_gated || law == CountingLaw::dual_gated;
+    return law == CountingLaw::single_gated || law == CountingLaw::dual_gated ||
+           law == CountingLaw::single_gated_conditional;
+}
+
+// conditional_mean_z_max: the unbiased gated law (Law 5b) is checked in EVERY
+// cell, as a z-score of its sample mean against N p. The standard error uses
+// the larger of the sample's and the exact law's variance (the exact one
+// keeps rare-event cells, where no sample succeeds, from dividing by 0), plus
+// 1e-6 N p for the fp32 evaluation (N and p rounded to float, the rescaling
+// factor's erf to 1e-7). 91 cells: P(max |z| > 4.5) ~ 91 x 6.8e-6 < 1e-3
+// for an unbiased law; the single-gated law's +30 % at N p ~ 1 is z > 50.
+double mean_z(const CellStatistics& s, int64_t samples) {
+    const double var = std::max(s.variance, s.ref_variance) / static_cast<double>(samples);
+    const double fp = 1e-6 * s.ref_mean;
+    return std::abs(s.mean - s.ref_mean) / std::sqrt(var + fp * fp + 1e-300);
 }
 
 // Domain of tv_max_N_ge_10: N >= 10 where the Gaussian regime applies, taken
@@ -131,7 +145,7 @@ ValidationReport validate_counting(const CountingValidationOptions& options) {
 
     // Aggregates for the checks.
     double gated_mean_err = 0.0, gated_mean_err_all = 0.0, tv_max = 0.0, tv_max_all = 0.0;
-    double tv_single_sum = 0.0, tv_dual_sum = 0.0;
+    double tv_single_sum = 0.0, tv_dual_sum = 0.0, conditional_z_max = 0.0;
     int small_cells = 0;
     int64_t invalid = 0;
     nlohmann::json laws_json = nlohmann::json::object();
@@ -146,6 +160,9 @@ ValidationReport validate_counting(const CountingValidationOptions& options) {
                 gated_mean_err_all = std::max(gated_mean_err_all, merr);
                 if (in_mean_domain(r.law, N, p)) gated_mean_err = std::max(gated_mean_err, merr);
             }
+            if (r.law == CountingLaw::single_gated_conditional)
+                conditional_z_max =
+                    std::max(conditional_z_max, mean_z(s, options.samples_per_cell));
             if (N >= 10.0) tv_max_all = std::max(tv_max_all, s.tv);
             if (in_tv_domain(N, p)) tv_max = std::max(tv_max, s.tv);
             if (N <= 10.0 && r.law == CountingLaw::single_gated) tv_single_sum += s.tv;
@@ -211,6 +228,7 @@ ValidationReport validate_counting(const CountingValidationOptions& options) {
         fig4.chi2_p_uniform, sweep.evaluations, sweep.invalid);
 
     report.check("gated_mean_rel_err_max", gated_mean_err, "<=", 0.01);
+    report.check("conditional_mean_z_max", conditional_z_max, "<=", 4.5);
     report.check("tv_max_N_ge_10", tv_max, "<=", 0.02);
     report.check("tv_dual_mean_N_le_10", tv_dual_mean, "<", tv_single_mean);
     report.check("tv_single_mean_N_le_10", tv_single_mean, ">", tv_dual_mean);
@@ -226,9 +244,13 @@ ValidationReport validate_counting(const CountingValidationOptions& options) {
     d["laws"] = std::move(laws_json);
     d["check_domains"] = {
         {"gated_mean_rel_err_max",
-         "gated laws (deliot2023, single_gated, dual_gated); cells with N p >= 200, or N >= 1 "
-         "and N p <= 0.01, or N < 1 (single_gated and dual_gated only); error = |mean - N p| / "
+         "gated laws (deliot2023, single_gated, single_gated_conditional, dual_gated); cells "
+         "with N p >= 200, or N >= 1 and N p <= 0.01, or N < 1 (the 003 laws and Law 5b only); "
+         "error = |mean - N p| / "
          "max(N p, 0.1)"},
+        {"conditional_mean_z_max",
+         "single_gated_conditional, every cell: |mean - N p| / sqrt(max(sample, exact "
+         "variance) / samples + (1e-6 N p)^2)"},
         {"tv_max_N_ge_10", "all laws; cells with N >= 10 and N p (1 - p) >= 625"},
         {"tv_mean_N_le_10", "mean TV over the 56 cells with N <= 10"}};
     d["unchecked"] = {{"gated_mean_rel_err_max_all_cells", gated_mean_err_all},

@@ -26,7 +26,8 @@ TEST(CountingValidation, ReportHasTheIssueChecksAndPasses) {
     const std::set<std::string> expected = {"gated_mean_rel_err_max",   "tv_max_N_ge_10",
                                             "tv_dual_mean_N_le_10",     "tv_single_mean_N_le_10",
                                             "pow_stable_rel_err_max",   "fig4_chi2_p_distributed",
-                                            "fig4_chi2_p_output_blend", "nan_count"};
+                                            "fig4_chi2_p_output_blend", "nan_count",
+                                            "conditional_mean_z_max"};
     std::set<std::string> names;
     for (const ValidationCheck& c : r.checks) {
         names.insert(c.name);
@@ -39,7 +40,8 @@ TEST(CountingValidation, ReportHasTheIssueChecksAndPasses) {
     EXPECT_EQ(j["suite"], "counting");
     EXPECT_EQ(j["checks"].size(), expected.size());
     for (const char* law :
-         {"exact", "gaussian", "zirr2016", "deliot2023", "single_gated", "dual_gated"})
+         {"exact", "gaussian", "zirr2016", "deliot2023", "single_gated", "dual_gated",
+          "single_gated_conditional"})
         EXPECT_EQ(j["laws"][law].size(), 13u * 7u) << law;
     EXPECT_TRUE(j.contains("fig4"));
     EXPECT_TRUE(j.contains("pow_fp32"));

@@ -18,7 +18,7 @@ float deliot2023_ndf(glm::vec3 h, const Footprint& footprint, const Deliot2023Ta
     return shader::deliot2023_ndf(h, footprint, target.ndf, target.alpha_x, target.alpha_y,
                                   target.log_density, target.seed, params.microfacet_roughness,
                                   params.screen_space_scale, params.density_randomization,
-                                  params.original_defects);
+                                  params.original_defects, params.conditional_gaussian);
 }
 
 float deliot2023_target_ndf(glm::vec3 h, const Deliot2023Target& target) {

@@ -315,7 +315,8 @@ float deliot2023_vertex_trials(float log_trials, float density_randomization, IN
 // Counts of one grid (Eq. 14 per simplex vertex), accumulated into
 // acc = (sum of blended counts, sum of blended trials).
 vec2 deliot2023_grid_counts(ivec3 id, float weight, vec2 uv, vec2 slope, float p, float log_density,
-                            uint seed, float density_randomization, bool original_defects) {
+                            uint seed, float density_randomization, bool original_defects,
+                            bool conditional) {
     Deliot2023Simplex s = deliot2023_simplex(id, weight, uv, log_density, seed);
     vec2 acc = vec2(0.0f);
     for (int v = 0; v < 3; ++v) {
@@ -332,8 +333,14 @@ vec2 deliot2023_grid_counts(ivec3 id, float weight, vec2 uv, vec2 slope, float p
         vec2 af = floor(a);
         ivec2 ac = ivec2(af);
         vec2 at = clamp(a - af, 0.0f, 1.0f);
-        // The 4 corners share (N, p): the gate's power once per vertex.
-        SingleGatedLaw law = binomial_single_gated_law(N, p);
+        // The 4 corners share (N, p): the gate's power (and the conditional
+        // law's moments and mean correction) once per vertex.
+        // (if / else: WebGL has no ?: on structs.)
+        SingleGatedLaw law;
+        if (conditional)
+            law = binomial_single_gated_conditional_law(N, p);
+        else
+            law = binomial_single_gated_law(N, p);
         float count = 0.0f;
         for (int c = 0; c < 4; ++c) {
             ivec2 corner = ac + ivec2(c & 1, c >> 1);
@@ -403,7 +410,7 @@ bool deliot2023_expectation_exit(Deliot2023Grids grids, float p, float log_densi
 // screen_space_scale: minimum glint size in pixels.
 float deliot2023_ndf(vec3 h, Footprint fp, int ndf, float alpha_x, float alpha_y, float log_density,
                      uint seed, float microfacet_roughness, float screen_space_scale,
-                     float density_randomization, bool original_defects) {
+                     float density_randomization, bool original_defects, bool conditional) {
     float d_h = D_Microfacet(ndf, h, alpha_x, alpha_y);
     if (!(d_h > 0.0f)) return 0.0f;
     float d_n = D_Microfacet(ndf, vec3(0.0f, 0.0f, 1.0f), alpha_x, alpha_y);  // max of D
@@ -421,7 +428,7 @@ float deliot2023_ndf(vec3 h, Footprint fp, int ndf, float alpha_x, float alpha_y
     for (int i = 0; i < 4; ++i) {
         if (grids.weight[i] <= 0.0f) continue;
         acc += deliot2023_grid_counts(deliot2023_grid_id(grids, i), grids.weight[i], fp.uv, slope, p, log_density, seed,
-                                      density_randomization, original_defects);
+                                      density_randomization, original_defects, conditional);
     }
     // Eq. 4 with the footprint's trial count: D(n)/R x count/N, E = D(h) (Eq. 5-6).
     // (count/trials first: both reach 1e35 at the largest densities.)
@@ -442,7 +449,8 @@ float deliot2023_ndf(vec3 h, Footprint fp, int ndf, float alpha_x, float alpha_y
 // noisier (one grid's counts over a share of the trials).
 float deliot2023_ndf_stochastic(vec3 h, Footprint fp, int ndf, float alpha_x, float alpha_y,
                                 float log_density, uint seed, float microfacet_roughness,
-                                float screen_space_scale, float density_randomization, float u) {
+                                float screen_space_scale, float density_randomization, bool conditional,
+                                float u) {
     float d_h = D_Microfacet(ndf, h, alpha_x, alpha_y);
     if (!(d_h > 0.0f)) return 0.0f;
     float d_n = D_Microfacet(ndf, vec3(0.0f, 0.0f, 1.0f), alpha_x, alpha_y);
@@ -468,7 +476,7 @@ float deliot2023_ndf_stochastic(vec3 h, Footprint fp, int ndf, float alpha_x, fl
         if (u < below) found = true;
     }
     vec2 acc = deliot2023_grid_counts(id, weight, fp.uv, vec2(h.x, h.y) / R, p, log_density, seed,
-                                      density_randomization, false);
+                                      density_randomization, false, conditional);
     return acc.y > 0.0f ? d_n / R * (acc.x / acc.y) : d_h;
 }
 

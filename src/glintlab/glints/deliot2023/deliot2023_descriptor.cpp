@@ -45,6 +45,10 @@ GlintModelDescriptor deliot2023_descriptor() {
                    "std-dev of the per-cell jitter of ln(density) (the authors clamp to [0, 50])"),
         gp::boolean("original_defects", &P::original_defects,
                     "reproduce the original HLSL's defects (docs/MODELS.md) for comparisons"),
+        gp::choice("gaussian", &P::conditional_gaussian,
+                   {{"conditional", true}, {"single_gated", false}},
+                   "the count's Gaussian: conditioned on the gate with its mean kept exact "
+                   "(unbiased), or 003 Eq. 23's single-gated law as published"),
     };
     d.match_facet_cone = match_deliot2023_facet_cone;
     d.validation = {"deliot2023"};  // run by the research library (validation_suites.h)

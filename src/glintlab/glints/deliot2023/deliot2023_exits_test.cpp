@@ -32,7 +32,7 @@ float full_ndf(glm::vec3 h, const Footprint& fp, float alpha, float log_density,
         if (g.weight[i] <= 0.0f) continue;
         acc += deliot2023_grid_counts(deliot2023_grid_id(g, i), g.weight[i], fp.uv,
                                       glm::vec2(h.x, h.y) / R, p, log_density, seed, randomization,
-                                      false);
+                                      false, true);
     }
     return acc.y > 0.0f ? d_n / R * (acc.x / acc.y) : d_h;
 }
@@ -78,7 +78,7 @@ TEST(Deliot2023Exits, ExpectationExitsAgreeWithTheFullEvaluation) {
         const Deliot2023Grids g = deliot2023_footprint_grids(fp, 1.0f, false);
         if (!deliot2023_expectation_exit(g, p, log_density, jitter)) continue;
         const float exited = deliot2023_ndf(h, fp, NDF_BECKMANN, alpha, alpha, log_density, seed, R,
-                                            1.0f, jitter, false);
+                                            1.0f, jitter, false, true);
         ASSERT_EQ(exited, d_h);
         const float full = full_ndf(h, fp, alpha, log_density, seed, R, jitter);
         // Which exit: (a) has far fewer than one expected success.

@@ -6,6 +6,10 @@
 namespace glintlab {
 
 void deliot2023_export_material(GlintExportContext& ctx) {
+    const auto& p = std::get<Deliot2023Params>(ctx.material.params);
+    ctx.derived_uniforms = {{{"uniform", "u_deliot2023_conditional"},
+                             {"value", p.conditional_gaussian},
+                             {"from", "gaussian == \"conditional\""}}};
     if (!ctx.resources) return;
     std::vector<float> pairs;
     for (const glm::vec2& v : deliot2023_noise_table()) {

@@ -55,6 +55,8 @@ class State final : public GpuModelState {
                            p.density_randomization);
         glProgramUniform1i(program, loc("u_deliot2023_original_defects"),
                            p.original_defects ? 1 : 0);
+        glProgramUniform1i(program, loc("u_deliot2023_conditional"),
+                           p.conditional_gaussian ? 1 : 0);
         if ((options & kStochasticGrid) != 0)
             glProgramUniform1ui(program, loc("u_deliot2023_frame"), frame_);
         if ((options & kNoiseTexture) == 0) return;

@@ -17,6 +17,7 @@ uniform float u_deliot2023_microfacet_roughness;
 uniform float u_deliot2023_screen_space_scale;
 uniform float u_deliot2023_density_randomization;
 uniform bool u_deliot2023_original_defects;
+uniform bool u_deliot2023_conditional;  // "gaussian": "conditional" (binomial_laws.glsl Law 5b)
 #ifdef GLINTLAB_DELIOT2023_STOCHASTIC_GRID
 // Option stochastic_grid: one grid per pixel, drawn from the pixel, the
 // material's seed and the frame number (deliot2023_ndf_stochastic).
@@ -27,21 +28,24 @@ vec3 glint_ndf(vec3 h, Footprint fp) {
                                    u_glint_log_density, u_glint_seed,
                                    u_deliot2023_microfacet_roughness,
                                    u_deliot2023_screen_space_scale,
-                                   u_deliot2023_density_randomization, true));
+                                   u_deliot2023_density_randomization, true,
+                                   u_deliot2023_conditional));
     uint pixel = hash_cell(ivec2(gl_FragCoord.xy), u_glint_seed ^ 0x5bd1e995u);
     float u = uint_to_unit_float(pcg_hash(pixel ^ (u_deliot2023_frame * 0x9e3779b9u)));
     return vec3(deliot2023_ndf_stochastic(h, fp, u_glint_ndf, u_glint_alpha.x, u_glint_alpha.y,
                                           u_glint_log_density, u_glint_seed,
                                           u_deliot2023_microfacet_roughness,
                                           u_deliot2023_screen_space_scale,
-                                          u_deliot2023_density_randomization, u));
+                                          u_deliot2023_density_randomization,
+                                          u_deliot2023_conditional, u));
 }
 #else
 vec3 glint_ndf(vec3 h, Footprint fp) {
     return vec3(deliot2023_ndf(h, fp, u_glint_ndf, u_glint_alpha.x, u_glint_alpha.y,
                                u_glint_log_density, u_glint_seed,
                                u_deliot2023_microfacet_roughness, u_deliot2023_screen_space_scale,
-                               u_deliot2023_density_randomization, u_deliot2023_original_defects));
+                               u_deliot2023_density_randomization, u_deliot2023_original_defects,
+                               u_deliot2023_conditional));
 }
 #endif
 

@@ -51,7 +51,7 @@ float deliot2023_ndf_noise_table(glm::vec3 h, const Footprint& footprint,
     return shader::deliot2023_ndf(h, footprint, target.ndf, target.alpha_x, target.alpha_y,
                                   target.log_density, target.seed, params.microfacet_roughness,
                                   params.screen_space_scale, params.density_randomization,
-                                  params.original_defects);
+                                  params.original_defects, params.conditional_gaussian);
 }
 
 }  // namespace glintlab

@@ -14,6 +14,11 @@ struct Deliot2023Params {
     float density_randomization = 0.0f;
     // Reproduce the original HLSL's defects (papers/README.md) for comparisons.
     bool original_defects = false;
+    // "gaussian": the count's law. true ("conditional", default): Law 5b of
+    // counting/binomial_laws.glsl, unbiased (E = N p); false ("single_gated"):
+    // 003 Eq. 23 as published, +10-31 % at N p ~ 0.1-10. original_defects
+    // overrides both with the authors' Eq. 16-18.
+    bool conditional_gaussian = true;
 };
 
 }  // namespace glintlab

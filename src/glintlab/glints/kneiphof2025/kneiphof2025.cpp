@@ -127,7 +127,8 @@ glm::vec3 area_light_radiance(const GlintLightingContext& ctx, const Cone& cone)
     const glm::vec3 L = shader::kneiphof2025_area_light(
         cone.axis, cone.cos_max, cone.radiance, ctx.t, ctx.b, ctx.n, ctx.wo, alpha_of(desc),
         kneiphof2025_f0(desc), desc.color, ctx.footprint, desc.log_density, desc.seed,
-        k.microfacet_roughness, k.screen_space_scale, k.density_randomization);
+        k.microfacet_roughness, k.screen_space_scale, k.density_randomization,
+        k.conditional_gaussian);
     t_rng = nullptr;
     return L;
 }
@@ -201,7 +202,7 @@ float kneiphof2025_area_factor(glm::vec3 h_center, const Footprint& footprint, f
     const Kneiphof2025Params& k = params_of(desc);
     return shader::kneiphof2025_area_factor(h_center, footprint, p, desc.log_density, desc.seed,
                                             k.microfacet_roughness, k.screen_space_scale,
-                                            k.density_randomization);
+                                            k.density_randomization, k.conditional_gaussian);
 }
 
 float kneiphof2025_binomial_factor(const Footprint& footprint, float p, const GlintDesc& desc) {
@@ -224,6 +225,7 @@ float kneiphof2025_footprint_ndf(glm::vec3 h, const Footprint& footprint, const 
     d.screen_space_scale = k.screen_space_scale;
     d.density_randomization = k.density_randomization;
     d.original_defects = false;
+    d.conditional_gaussian = k.conditional_gaussian;
     return deliot2023_ndf(h, footprint, t, d);
 }
 

@@ -343,11 +343,13 @@ float kneiphof2025_binomial_factor_no_h(Footprint fp, float p, float log_density
 
 // K = 1 area light (kneiphof2024; 003 Eq. 6-9, 23): b(N_P, p_Omega) on the
 // full deliot2023 grid, whose angular dimension is indexed by the half vector
-// h_c towards the light's centre in units of R (000 Eq. 14), with the fixed
-// single-gated law. Returns b / (E[N_P] p), mean 1.
+// h_c towards the light's centre in units of R (000 Eq. 14), with the
+// single-gated law (Eq. 23), or its unbiased conditional form where
+// `conditional` (kneiphof2025's "gaussian": "conditional", binomial_laws.glsl
+// Law 5b). Returns b / (E[N_P] p), mean 1 (conditional).
 float kneiphof2025_area_factor(vec3 h_center, Footprint fp, float p, float log_density, uint seed,
                                float microfacet_roughness, float screen_space_scale,
-                               float density_randomization) {
+                               float density_randomization, bool conditional) {
     if (!(p > 0.0f)) return 1.0f;
     Deliot2023Grids grids = deliot2023_footprint_grids(fp, screen_space_scale, false);
     vec2 slope = vec2(h_center.x, h_center.y) / microfacet_roughness;
@@ -355,7 +357,7 @@ float kneiphof2025_area_factor(vec3 h_center, Footprint fp, float p, float log_d
     for (int i = 0; i < 4; ++i) {
         if (grids.weight[i] <= 0.0f) continue;
         acc += deliot2023_grid_counts(deliot2023_grid_id(grids, i), grids.weight[i], fp.uv, slope, p, log_density, seed,
-                                      density_randomization, false);
+                                      density_randomization, false, conditional);
     }
     return acc.y > 0.0f ? kneiphof2025_count_ratio(acc.x, acc.y, p) : 1.0f;
 }
@@ -414,14 +416,14 @@ vec3 kneiphof2025_integrate_cone(vec3 axis, float cos_max, vec3 radiance, vec3 t
 vec3 kneiphof2025_area_light(vec3 axis, float cos_max, vec3 radiance, vec3 t, vec3 b, vec3 n,
                              vec3 wo, float alpha, vec3 f0, vec3 color, Footprint fp,
                              float log_density, uint seed, float microfacet_roughness,
-                             float screen_space_scale, float density_randomization) {
+                             float screen_space_scale, float density_randomization, bool conditional) {
     float p = 0.0f;
     vec3 h_center = vec3(0.0f, 0.0f, 1.0f);
     vec3 L = kneiphof2025_integrate_cone(axis, cos_max, radiance, t, b, n, wo, alpha, f0, color, p,
                                          h_center);
     if ((L.x == 0.0f && L.y == 0.0f && L.z == 0.0f) || h_center.z <= 0.0f) return vec3(0.0f);
     return L * kneiphof2025_area_factor(h_center, fp, p, log_density, seed, microfacet_roughness,
-                                        screen_space_scale, density_randomization);
+                                        screen_space_scale, density_randomization, conditional);
 }
 
 // The direction at which the prefiltered maps are read: the split-sum kernel

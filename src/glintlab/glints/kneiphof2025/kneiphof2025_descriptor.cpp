@@ -76,8 +76,9 @@ GlintModelDescriptor kneiphof2025_descriptor() {
                    "half-angle gamma_deg"),
         gp::choice("gaussian", &P::conditional_gaussian,
                    {{"conditional", true}, {"algorithm1", false}},
-                   "Gaussian of the dual-gated law: exact interior moments, or 003 Algorithm 1 "
-                   "as published"),
+                   "Gaussian of the dual-gated law (environment) and of the single-gated law "
+                   "(lights): conditional moments (unbiased), or 003 Algorithm 1 / Eq. 23 as "
+                   "published"),
         gp::choice("smooth", &P::smooth,
                    {{"lobe_sun", P::Smooth::LobeSun},
                     {"as_published", P::Smooth::SplitSum},

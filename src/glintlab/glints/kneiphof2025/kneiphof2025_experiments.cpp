@@ -244,9 +244,9 @@ GateBias kneiphof2025_gate_bias(float p, float n_expected, int footprints, uint3
         for (int k = 0; k < 4; ++k) {
             if (g.weight[k] <= 0.0f) continue;
             a += shader::deliot2023_grid_counts(shader::deliot2023_grid_id(g, k), g.weight[k],
-                                                fp.uv, slope, p, log_density, sd, 0.0f, false);
+                                                fp.uv, slope, p, log_density, sd, 0.0f, false, false);
             b += shader::deliot2023_grid_counts(shader::deliot2023_grid_id(g, k), g.weight[k],
-                                                fp.uv, slope, p, log_density, sd, 0.0f, true);
+                                                fp.uv, slope, p, log_density, sd, 0.0f, true, false);
         }
         fixed += a.y > 0.0f ? a.x / (a.y * p) : 0.0f;
         original += b.y > 0.0f ? b.x / (b.y * p) : 0.0f;

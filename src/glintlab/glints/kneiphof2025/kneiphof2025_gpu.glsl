@@ -38,7 +38,8 @@ vec3 glint_ndf(vec3 h, Footprint fp) {
                                u_glint_log_density, u_glint_seed,
                                u_kneiphof2025_microfacet_roughness,
                                u_kneiphof2025_screen_space_scale,
-                               u_kneiphof2025_density_randomization, false));
+                               u_kneiphof2025_density_randomization, false,
+                               u_kneiphof2025_conditional));
 }
 #define GLINTLAB_GLINT_SHADES_ENVIRONMENT 1
 // Eq. 17 under the environment (unshadowed, 003 §7); wo local, (t, b, n) the
@@ -67,7 +68,7 @@ vec3 glint_area_light(vec3 axis, float cos_max, vec3 radiance, vec3 t, vec3 b, v
                                    u_kneiphof2025_f0, color, fp, u_glint_log_density,
                                    u_glint_seed, u_kneiphof2025_microfacet_roughness,
                                    u_kneiphof2025_screen_space_scale,
-                                   u_kneiphof2025_density_randomization);
+                                   u_kneiphof2025_density_randomization, u_kneiphof2025_conditional);
 }
 
 #endif
