@@ -345,6 +345,25 @@ glm::dvec4 PrefilterTable::texel(int tn, int pn, int to, int po) const {
         data_[((static_cast<size_t>(tn) * res_.phi_n + pn) * res_.theta_o + to) * res_.phi_o + po]);
 }
 
+glm::dvec3 PrefilterTable::texel_normal(int tn, int pn) const {
+    return spherical_dir((tn + 0.5) / res_.theta_n * kPi, (pn + 0.5) / res_.phi_n * kTwoPi);
+}
+
+// The azimuth, in the tangent frame of the normal m, of the query frame's
+// tangent t (frame of n) carried to m by the rotation taking n to m (the
+// shortest arc): local azimuths of n's frame read at texel m are shifted by
+// it. tangent_frame's two branches (n.z >= 0, n.z < 0) meet at the equator
+// with frames turned against each other; within a branch the turn between
+// neighbouring texels is small but not zero.
+double frame_turn(const glm::dvec3& n, const glm::dvec3& t, const glm::dvec3& m) {
+    const double c = glm::dot(n, m);
+    const glm::dvec3 k = glm::cross(n, m);
+    const glm::dvec3 tm = t * c + glm::cross(k, t) + k * (glm::dot(k, t) / (1.0 + c));
+    glm::dvec3 tt, bb;
+    tangent_frame(m, tt, bb);
+    return std::atan2(glm::dot(tm, bb), glm::dot(tm, tt));
+}
+
 glm::dvec4 PrefilterTable::lookup(const glm::dvec3& n, const glm::dvec3& o_world) const {
     if (!std::isfinite(n.x + n.y + n.z + o_world.x + o_world.y + o_world.z))
         return glm::dvec4(0.0);  // no NaN → int casts in the cell search
@@ -356,19 +375,23 @@ glm::dvec4 PrefilterTable::lookup(const glm::dvec3& n, const glm::dvec3& o_world
     cell(pn / kTwoPi * res_.phi_n - 0.5, res_.phi_n, true, b0, b1, fb);
     // o in the query normal's tangent frame; the four neighbouring normal
     // texels are read at these local coordinates (L̂o varies slowly with n at
-    // fixed local o; exact for a constant environment). Reading each texel at
-    // o expressed in that texel's own frame instead was measured 5 % off the
-    // furnace at θo = 70° with 4 normal rows (docs/MODELS.md).
+    // fixed local o; exact for a constant environment), the azimuth turned
+    // by frame_turn into each texel's own frame: tangent_frame's two
+    // branches meet at the equator turned against each other, and reading a
+    // texel across it at the query's azimuth was a seam under a sun (2-3x
+    // the interpolation error in |n.z| < 0.05, Wang2020Prefilter.
+    // LookupHasNoSeamAtTheFramesEquator). Reading each texel at o expressed
+    // in that texel's own frame instead was measured 5 % off the furnace at
+    // θo = 70° with 4 normal rows (docs/MODELS.md).
     glm::dvec3 t, b;
     tangent_frame(n, t, b);
     const glm::dvec3 ol{glm::dot(o_world, t), glm::dot(o_world, b),
                         std::max(glm::dot(o_world, n), 0.0)};
     const double to = std::acos(std::clamp(ol.z / std::max(glm::length(ol), 1e-12), 0.0, 1.0));
     const double po = std::atan2(ol.y, ol.x);
-    int c0, c1, d0, d1;
-    double fc, fd;
+    int c0, c1;
+    double fc;
     cell(to / kHalfPi * res_.theta_o - 0.5, res_.theta_o, false, c0, c1, fc);
-    cell(po / kTwoPi * res_.phi_o - 0.5, res_.phi_o, true, d0, d1, fd);
     glm::dvec4 sum(0.0);
     const int an[2] = {a0, a1}, bn[2] = {b0, b1};
     const double wa[2] = {1.0 - fa, fa}, wb[2] = {1.0 - fb, fb};
@@ -376,6 +399,10 @@ glm::dvec4 PrefilterTable::lookup(const glm::dvec3& n, const glm::dvec3& o_world
         for (int j = 0; j < 2; ++j) {
             const double w = wa[i] * wb[j];
             if (w == 0.0) continue;
+            const double dphi = frame_turn(n, t, texel_normal(an[i], bn[j]));
+            int d0, d1;
+            double fd;
+            cell((po + dphi) / kTwoPi * res_.phi_o - 0.5, res_.phi_o, true, d0, d1, fd);
             const glm::dvec4 v =
                 (1 - fc) *
                     ((1 - fd) * texel(an[i], bn[j], c0, d0) + fd * texel(an[i], bn[j], c0, d1)) +

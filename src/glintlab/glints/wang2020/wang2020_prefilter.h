@@ -94,6 +94,10 @@ glm::dvec3 m_fresnel(const FresnelDesc* fresnel, const glm::dvec3& wi, const glm
 
 // Orthonormal tangent frame of a world normal (continuous except n = −z).
 void tangent_frame(const glm::dvec3& n, glm::dvec3& t, glm::dvec3& b);
+// The azimuth, in the tangent frame of the normal m, of the tangent t of n's
+// frame carried to m by the shortest-arc rotation from n to m (the lookup's
+// correction of a texel's local azimuth).
+double frame_turn(const glm::dvec3& n, const glm::dvec3& t, const glm::dvec3& m);
 
 class PrefilterTable {
   public:
@@ -114,6 +118,8 @@ class PrefilterTable {
     // Quadrilinear lookup: rgb = L̂o(n, o) (Eq. 16), w = P̂(n, o) (Eq. 17)
     // or the effective fraction r(n, o) (built with a cone table).
     glm::dvec4 lookup(const glm::dvec3& n_world, const glm::dvec3& o_world) const;
+    // The normal of texel row tn, column pn (cell centres).
+    glm::dvec3 texel_normal(int tn, int pn) const;
     // One texel (exact value at the sample directions).
     glm::dvec4 texel(int tn, int pn, int to, int po) const;
     static glm::dvec4 evaluate(const DpfTable& dpf, double alpha, const EnvironmentFn& env,

@@ -121,9 +121,12 @@ vec4 wang2020_prefilter_texel(ivec4 res, int tn, int pn, int to, int po) {
     return wang2020_prefilter_value(((tn * res.y + pn) * res.z + to) * res.w + po);
 }
 
-// Bilinear in (θo, φo) at one normal texel.
-vec4 wang2020_prefilter_o(ivec4 res, int tn, int pn, int c0, int c1, float fc, int d0, int d1,
-                          float fd) {
+// Bilinear in (θo, φo) at one normal texel, φo in [0, 2π) cells (po in
+// radians, any real: the cell search wraps it).
+vec4 wang2020_prefilter_o(ivec4 res, int tn, int pn, int c0, int c1, float fc, float po) {
+    int d0, d1;
+    float fd;
+    wang2020_cell(po / TWO_PI * float(res.w) - 0.5f, res.w, true, d0, d1, fd);
     vec4 v0 = mix(wang2020_prefilter_texel(res, tn, pn, c0, d0),
                   wang2020_prefilter_texel(res, tn, pn, c0, d1), fd);
     vec4 v1 = mix(wang2020_prefilter_texel(res, tn, pn, c1, d0),
@@ -131,15 +134,35 @@ vec4 wang2020_prefilter_o(ivec4 res, int tn, int pn, int c0, int c1, float fc, i
     return mix(v0, v1, fc);
 }
 
+// PrefilterTable::frame_turn: the azimuth, in the tangent frame of the
+// normal texel m, of the query frame's tangent t (frame of n) carried to m by
+// the shortest-arc rotation from n to m.
+float wang2020_frame_turn(vec3 n, vec3 t, vec3 m) {
+    float c = dot(n, m);
+    vec3 k = cross(n, m);
+    vec3 tm = t * c + cross(k, t) + k * (dot(k, t) / (1.0f + c));
+    vec3 tt, bb;
+    tangent_frame(m, tt, bb);
+    return atan(dot(tm, bb), dot(tm, tt));
+}
+
+// PrefilterTable::texel_normal.
+vec3 wang2020_prefilter_normal(ivec4 res, int tn, int pn) {
+    float th = (float(tn) + 0.5f) / float(res.x) * PI;
+    float ph = (float(pn) + 0.5f) / float(res.y) * TWO_PI;
+    return vec3(sin(th) * cos(ph), sin(th) * sin(ph), cos(th));
+}
+
 // PrefilterTable::lookup: rgb = L̂o(n, o) (Eq. 16), w = P̂(n, o) (Eq. 17),
 // quadrilinear; o is expressed once in the query normal's tangent frame and
-// read at those local coordinates from the four neighbouring normal texels.
+// read at those local coordinates from the four neighbouring normal texels,
+// the azimuth turned by each texel's frame_turn.
 vec4 wang2020_prefilter_lookup(ivec4 res, vec3 n, vec3 o_world) {
     if (!wang2020_finite(n.x + n.y + n.z + o_world.x + o_world.y + o_world.z)) return vec4(0.0f);
     float tn = acos(clamp(n.z, -1.0f, 1.0f));
     float pn = atan(n.y, n.x);
-    int a0, a1, b0, b1, c0, c1, d0, d1;
-    float fa, fb, fc, fd;
+    int a0, a1, b0, b1, c0, c1;
+    float fa, fb, fc;
     wang2020_cell(tn / PI * float(res.x) - 0.5f, res.x, false, a0, a1, fa);
     wang2020_cell(pn / TWO_PI * float(res.y) - 0.5f, res.y, true, b0, b1, fb);
     vec3 t, b;
@@ -148,12 +171,15 @@ vec4 wang2020_prefilter_lookup(ivec4 res, vec3 n, vec3 o_world) {
     float to = acos(clamp(ol.z / max(length(ol), 1e-12f), 0.0f, 1.0f));
     float po = atan(ol.y, ol.x);
     wang2020_cell(to / WANG2020_HALF_PI * float(res.z) - 0.5f, res.z, false, c0, c1, fc);
-    wang2020_cell(po / TWO_PI * float(res.w) - 0.5f, res.w, true, d0, d1, fd);
-    vec4 v0 = mix(wang2020_prefilter_o(res, a0, b0, c0, c1, fc, d0, d1, fd),
-                  wang2020_prefilter_o(res, a0, b1, c0, c1, fc, d0, d1, fd), fb);
-    vec4 v1 = mix(wang2020_prefilter_o(res, a1, b0, c0, c1, fc, d0, d1, fd),
-                  wang2020_prefilter_o(res, a1, b1, c0, c1, fc, d0, d1, fd), fb);
-    return mix(v0, v1, fa);
+    vec4 v00 = wang2020_prefilter_o(res, a0, b0, c0, c1, fc,
+                                    po + wang2020_frame_turn(n, t, wang2020_prefilter_normal(res, a0, b0)));
+    vec4 v01 = wang2020_prefilter_o(res, a0, b1, c0, c1, fc,
+                                    po + wang2020_frame_turn(n, t, wang2020_prefilter_normal(res, a0, b1)));
+    vec4 v10 = wang2020_prefilter_o(res, a1, b0, c0, c1, fc,
+                                    po + wang2020_frame_turn(n, t, wang2020_prefilter_normal(res, a1, b0)));
+    vec4 v11 = wang2020_prefilter_o(res, a1, b1, c0, c1, fc,
+                                    po + wang2020_frame_turn(n, t, wang2020_prefilter_normal(res, a1, b1)));
+    return mix(mix(v00, v01, fb), mix(v10, v11, fb), fa);
 }
 
 // wang2020_quadtree.cpp mix32 / hash_unit: lowbias32 (Wellons), 24-bit unit.
