@@ -37,6 +37,10 @@ GlintLightType light_type(const Light& light) {
         light);
 }
 
+// The sampling seed offset of the resampled frame (sampling_flicker): far
+// from every realization's seed + r (r < 4096).
+constexpr uint64_t kResampleSeedOffset = 0x9e3779b9u;
+
 // The camera of frame t of the flicker path: the eye orbits the target about
 // the camera's up axis, orbit_deg over the whole path (Rodrigues' rotation).
 Camera path_camera(const Camera& camera, int t, int frames, double orbit_deg) {
@@ -330,20 +334,23 @@ CompareResult run_compare(const CompareOptions& o) {
         return result.models[job.row].reference ? truth_realizations : o.realizations;
     };
     int total = 0;
-    for (const Job& job : jobs) total += realizations_of(job) + o.frames - 1;
+    for (const Job& job : jobs) total += realizations_of(job) + o.frames;
     int done = 0;
     for (Job& job : jobs) {
         ModelMetrics& row = result.models[job.row];
         const int R = realizations_of(job);
-        const int per_job = R + o.frames - 1;
+        const int per_job = R + o.frames;
         double seconds = 0.0;
+        Plane resampled;  // frame 0 of realization 0, another sampling seed
         for (int k = 0; k < per_job; ++k) {
-            // k < R: realization k at frame 0; then frames 1.. of realization 0.
+            // k < R: realization k at frame 0; then frames 1.. of realization
+            // 0; last, frame 0 of realization 0 with another sampling seed.
+            const bool resample = k == per_job - 1;
             const int r = k < R ? k : 0;
-            const int t = k < R ? 0 : k - R + 1;
+            const int t = k < R || resample ? 0 : k - R + 1;
             Scene s = base;
             s.camera = cameras[size_t(t)];
-            s.render.seed = o.seed + uint64_t(r);
+            s.render.seed = o.seed + uint64_t(r) + (resample ? kResampleSeedOffset : 0u);
             s.materials[size_t(mi)].glint = job.desc;
             s.materials[size_t(mi)].glint.seed =
                 uint32_t(original.seed + uint32_t(o.seed) + uint32_t(r));
@@ -365,7 +372,9 @@ CompareResult run_compare(const CompareOptions& o) {
                 std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
             row.faults += count_pixel_faults(image);
             Plane plane = luminance_plane(image);
-            if (k < R) {
+            if (resample) {
+                resampled = std::move(plane);
+            } else if (k < R) {
                 seconds += dt;
                 job.means.push_back(masked_mean(plane, masks[0]));
                 if (k == 0) {
@@ -385,6 +394,7 @@ CompareResult run_compare(const CompareOptions& o) {
         for (double m : job.means) row.mean_luminance += m / double(job.means.size());
         row.pixel_variance = mean_pixel_variance(job.realizations, masks[0]);
         row.flicker = flicker(job.frames, masks);
+        row.sampling_flicker = flicker({job.frames[0], resampled}, {masks[0], masks[0]});
     }
 
     // Metrics against each model's truth.

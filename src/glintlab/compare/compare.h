@@ -62,6 +62,10 @@ struct ModelMetrics {
     double wasserstein = 0.0;       // W1 of pooled luminance / the truth's mean
     double flicker = 0.0;           // metrics.h flicker over the camera path
     double flicker_ratio = 0.0;     // flicker / the truth's
+    // flicker between frame 0 and the same frame with another sampling seed
+    // (same microstructure, same camera): the estimator's own sampling noise,
+    // part of `flicker` for a Monte Carlo render, 0 for a deterministic one.
+    double sampling_flicker = 0.0;
     double seconds = 0.0;           // mean render time of one image
     PixelFaults faults;             // over every image rendered for it
     Image image;                    // realization 0 (for the grid)

@@ -109,6 +109,7 @@ nlohmann::json CompareResult::to_json() const {
         r["wasserstein"] = number(m.wasserstein);
         r["flicker"] = number(m.flicker);
         r["flicker_ratio"] = number(m.flicker_ratio);
+        r["sampling_flicker"] = number(m.sampling_flicker);
         r["seconds"] = number(m.seconds);
         r["nan_count"] = m.faults.nan;
         r["inf_count"] = m.faults.inf;
@@ -123,19 +124,20 @@ std::string CompareResult::to_csv() const {
         "model,compared,reference,backend,truth,facet_extent,mean_luminance,mean_rel_err,mean_rel_"
         "err_se,"
         "blurred_rel_rmse,pixel_variance,variance_ratio,wasserstein,flicker,flicker_ratio,"
-        "seconds,nan_count,inf_count,negative_count,reason\n";
+        "sampling_flicker,seconds,nan_count,inf_count,negative_count,reason\n";
     for (const ModelMetrics& m : models) {
         if (!m.compared) {
-            s += fmt::format("{},false,,,,,,,,,,,,,,,,,,\"{}\"\n", m.model, m.reason);
+            s += fmt::format("{},false,,,,,,,,,,,,,,,,,,,\"{}\"\n", m.model, m.reason);
             continue;
         }
-        s += fmt::format("{},true,{},{},\"{}\",\"{}\",{},{},{},{},{},{},{},{},{},{},{},{},{},\n",
+        s += fmt::format("{},true,{},{},\"{}\",\"{}\",{},{},{},{},{},{},{},{},{},{},{},{},{},{},\n",
                          m.model, m.reference, m.backend, m.truth, m.facet_extent,
                          csv_number(m.mean_luminance), csv_number(m.mean_rel_err),
                          csv_number(m.mean_rel_err_se), csv_number(m.blurred_rel_rmse),
                          csv_number(m.pixel_variance), csv_number(m.variance_ratio),
                          csv_number(m.wasserstein), csv_number(m.flicker),
-                         csv_number(m.flicker_ratio), csv_number(m.seconds), m.faults.nan,
+                         csv_number(m.flicker_ratio), csv_number(m.sampling_flicker),
+                         csv_number(m.seconds), m.faults.nan,
                          m.faults.inf, m.faults.negative);
     }
     return s;
