@@ -395,13 +395,14 @@ CompareResult run_compare(const CompareOptions& o) {
         row.pixel_variance = mean_pixel_variance(job.realizations, masks[0]);
         row.flicker = flicker(job.frames, masks);
         row.sampling_flicker = flicker({job.frames[0], resampled}, {masks[0], masks[0]});
+        row.sampling_variance = sampling_pixel_variance(job.frames[0], resampled, masks[0]);
     }
 
     // Metrics against each model's truth.
     for (const Job& truth : jobs) {
         if (!result.models[truth.row].reference) continue;
         ModelMetrics& row = result.models[truth.row];
-        row.variance_ratio = 1.0, row.flicker_ratio = 1.0;
+        row.variance_ratio = 1.0, row.flicker_ratio = 1.0, row.structure_variance_ratio = 1.0;
     }
     for (const auto& [mj, tj] : pairs) {
         const Job &model = jobs[mj], &truth = jobs[tj];
@@ -412,6 +413,9 @@ CompareResult run_compare(const CompareOptions& o) {
         row.blurred_rel_rmse =
             blurred_relative_rmse(row.mean_plane, t.mean_plane, masks[0], result.blur_sigma_px);
         row.variance_ratio = ratio(row.pixel_variance, t.pixel_variance);
+        row.structure_variance_ratio =
+            ratio(std::max(row.pixel_variance - row.sampling_variance, 0.0),
+                  std::max(t.pixel_variance - t.sampling_variance, 0.0));
         row.wasserstein = ratio(wasserstein1(pooled_masked_values(model.realizations, masks[0]),
                                              pooled_masked_values(truth.realizations, masks[0])),
                                 t.mean_luminance);

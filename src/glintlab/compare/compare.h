@@ -59,17 +59,26 @@ struct ModelMetrics {
     double blurred_rel_rmse = 0.0;  // after gaussian_blur(sigma = blur_sigma_px)
     double pixel_variance = 0.0;    // mean over the mask of the variance over realizations
     double variance_ratio = 0.0;    // pixel_variance / the truth's
-    double wasserstein = 0.0;       // W1 of pooled luminance / the truth's mean
-    double flicker = 0.0;           // metrics.h flicker over the camera path
-    double flicker_ratio = 0.0;     // flicker / the truth's
+    // The part of pixel_variance that is one render's sampling noise
+    // (metrics.h sampling_pixel_variance of frame 0 and its resampled twin;
+    // 0 for a deterministic render), and the rest, the microstructure's
+    // variance (pixel_variance - sampling_variance, at least 0), as a ratio
+    // to the truth's: the sparkle's strength without either estimator's
+    // noise, which dominates a truth's pixel_variance under an environment
+    // at a few spp (docs/VALIDATION.md "compare").
+    double sampling_variance = 0.0;
+    double structure_variance_ratio = 0.0;
+    double wasserstein = 0.0;    // W1 of pooled luminance / the truth's mean
+    double flicker = 0.0;        // metrics.h flicker over the camera path
+    double flicker_ratio = 0.0;  // flicker / the truth's
     // flicker between frame 0 and the same frame with another sampling seed
     // (same microstructure, same camera): the estimator's own sampling noise,
     // part of `flicker` for a Monte Carlo render, 0 for a deterministic one.
     double sampling_flicker = 0.0;
-    double seconds = 0.0;           // mean render time of one image
-    PixelFaults faults;             // over every image rendered for it
-    Image image;                    // realization 0 (for the grid)
-    Plane mean_plane;               // luminance averaged over realizations
+    double seconds = 0.0;  // mean render time of one image
+    PixelFaults faults;    // over every image rendered for it
+    Image image;           // realization 0 (for the grid)
+    Plane mean_plane;      // luminance averaged over realizations
 };
 
 struct CompareResult {

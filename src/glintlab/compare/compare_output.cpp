@@ -106,6 +106,8 @@ nlohmann::json CompareResult::to_json() const {
         r["blurred_rel_rmse"] = number(m.blurred_rel_rmse);
         r["pixel_variance"] = number(m.pixel_variance);
         r["variance_ratio"] = number(m.variance_ratio);
+        r["sampling_variance"] = number(m.sampling_variance);
+        r["structure_variance_ratio"] = number(m.structure_variance_ratio);
         r["wasserstein"] = number(m.wasserstein);
         r["flicker"] = number(m.flicker);
         r["flicker_ratio"] = number(m.flicker_ratio);
@@ -123,22 +125,23 @@ std::string CompareResult::to_csv() const {
     std::string s =
         "model,compared,reference,backend,truth,facet_extent,mean_luminance,mean_rel_err,mean_rel_"
         "err_se,"
-        "blurred_rel_rmse,pixel_variance,variance_ratio,wasserstein,flicker,flicker_ratio,"
+        "blurred_rel_rmse,pixel_variance,variance_ratio,sampling_variance,structure_variance_ratio,"
+        "wasserstein,flicker,flicker_ratio,"
         "sampling_flicker,seconds,nan_count,inf_count,negative_count,reason\n";
     for (const ModelMetrics& m : models) {
         if (!m.compared) {
-            s += fmt::format("{},false,,,,,,,,,,,,,,,,,,,\"{}\"\n", m.model, m.reason);
+            s += fmt::format("{},false,,,,,,,,,,,,,,,,,,,,,\"{}\"\n", m.model, m.reason);
             continue;
         }
-        s += fmt::format("{},true,{},{},\"{}\",\"{}\",{},{},{},{},{},{},{},{},{},{},{},{},{},{},\n",
-                         m.model, m.reference, m.backend, m.truth, m.facet_extent,
-                         csv_number(m.mean_luminance), csv_number(m.mean_rel_err),
-                         csv_number(m.mean_rel_err_se), csv_number(m.blurred_rel_rmse),
-                         csv_number(m.pixel_variance), csv_number(m.variance_ratio),
-                         csv_number(m.wasserstein), csv_number(m.flicker),
-                         csv_number(m.flicker_ratio), csv_number(m.sampling_flicker),
-                         csv_number(m.seconds), m.faults.nan,
-                         m.faults.inf, m.faults.negative);
+        s += fmt::format(
+            "{},true,{},{},\"{}\",\"{}\",{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},\n",
+            m.model, m.reference, m.backend, m.truth, m.facet_extent, csv_number(m.mean_luminance),
+            csv_number(m.mean_rel_err), csv_number(m.mean_rel_err_se),
+            csv_number(m.blurred_rel_rmse), csv_number(m.pixel_variance),
+            csv_number(m.variance_ratio), csv_number(m.sampling_variance),
+            csv_number(m.structure_variance_ratio), csv_number(m.wasserstein),
+            csv_number(m.flicker), csv_number(m.flicker_ratio), csv_number(m.sampling_flicker),
+            csv_number(m.seconds), m.faults.nan, m.faults.inf, m.faults.negative);
     }
     return s;
 }
@@ -149,9 +152,9 @@ std::string CompareResult::to_text() const {
         "over {} deg, blur sigma {:.2g} px, {} material pixels\n",
         scene, material, lights, width, height, spp, realizations, truth_realizations, frames,
         orbit_deg, blur_sigma_px, mask_pixels);
-    s += fmt::format("{:<14} {:<4} {:>16} {:>9} {:>9} {:>8} {:>9} {:>9} {:>12}\n", "model", "dev",
-                     "mean err (se)", "blur rmse", "var ratio", "W1", "flicker x", "time s",
-                     "nan/inf/neg");
+    s += fmt::format("{:<14} {:<4} {:>16} {:>9} {:>9} {:>10} {:>8} {:>9} {:>9} {:>12}\n", "model",
+                     "dev", "mean err (se)", "blur rmse", "var ratio", "struct var", "W1",
+                     "flicker x", "time s", "nan/inf/neg");
     for (const ModelMetrics& m : models) {
         if (!m.compared) {
             s += fmt::format("{:<14} not compared: {}\n", m.model, m.reason);
@@ -162,10 +165,11 @@ std::string CompareResult::to_text() const {
                                     : fmt::format("{} ({:.1f}%)", signed_percent(m.mean_rel_err),
                                                   100.0 * m.mean_rel_err_se);
         s += fmt::format(
-            "{:<14} {:<4} {:>16} {:>9.3g} {:>9.3g} {:>8.3g} {:>9.3g} {:>9.3g} "
+            "{:<14} {:<4} {:>16} {:>9.3g} {:>9.3g} {:>10.3g} {:>8.3g} {:>9.3g} {:>9.3g} "
             "{:>4}/{}/{}\n",
-            m.model, m.backend, err, m.blurred_rel_rmse, m.variance_ratio, m.wasserstein,
-            m.flicker_ratio, m.seconds, m.faults.nan, m.faults.inf, m.faults.negative);
+            m.model, m.backend, err, m.blurred_rel_rmse, m.variance_ratio,
+            m.structure_variance_ratio, m.wasserstein, m.flicker_ratio, m.seconds, m.faults.nan,
+            m.faults.inf, m.faults.negative);
     }
     s += "facet extents (under point and directional lights):\n";
     for (const ModelMetrics& m : models)

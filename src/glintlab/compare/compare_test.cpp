@@ -106,10 +106,14 @@ TEST(Compare, DeltaLightModelsFlickerAsTheTruthWithItsFacetExtent) {
     }
     EXPECT_EQ(matched.find("deliot2023")->facet_extent, "microfacet_roughness 0.0008461");
     // The truth's 4-spp estimate has sampling noise of its own: the same
-    // frame with another sampling seed differs (sampling_flicker > 0).
+    // frame with another sampling seed differs (sampling_flicker > 0), and
+    // that noise is part of, not more than, its variance over realizations.
     for (const compare::ModelMetrics& row : matched.models) {
         if (row.reference) {
             EXPECT_GT(row.sampling_flicker, 0.0) << row.truth;
+            EXPECT_GT(row.sampling_variance, 0.0) << row.truth;
+            EXPECT_LT(row.sampling_variance, row.pixel_variance) << row.truth;
+            EXPECT_EQ(row.structure_variance_ratio, 1.0) << row.truth;
         }
     }
     if (std::getenv("GLINTLAB_SANITIZED") != nullptr) return;  // the contrast: Release only

@@ -84,6 +84,15 @@ double wasserstein1(std::vector<float> a, std::vector<float> b);
 // distribution of a model).
 std::vector<float> pooled_masked_values(const std::vector<Plane>& realizations, const Mask& mask);
 
+// The per-pixel variance of one render's sampling noise, from two renders of
+// the same microstructure and camera with independent sampling seeds a and
+// b: the mean over the mask of (a - b)^2 / 2 (E[(a - b)^2] = 2 Var for
+// independent draws of equal variance). mean_pixel_variance over
+// realizations that each draw their own microstructure and sampling seed is
+// the microstructure's variance plus this one, so their difference is the
+// glint statistic without the estimator's noise.
+double sampling_pixel_variance(const Plane& a, const Plane& b, const Mask& mask);
+
 // Temporal flicker of a frame sequence: the mean over consecutive pairs of
 // mean_p |L_{t+1}(p) - L_t(p)| / mean_p (L_t(p) + L_{t+1}(p)) / 2, over the
 // pixels in both frames' masks. 0 for a frozen sequence.

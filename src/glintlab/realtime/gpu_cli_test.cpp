@@ -441,6 +441,7 @@ TEST(GpuCompare, RealTimeModelsRunOnTheGpuAndMatchTheirCpuRows) {
             EXPECT_EQ(row.at(count).get<int64_t>(), 0) << count;
         // The GPU render is deterministic: the resampled frame is the frame.
         EXPECT_EQ(row.at("sampling_flicker").get<double>(), 0.0);
+        EXPECT_EQ(row.at("sampling_variance").get<double>(), 0.0);
         const double g = row.at("mean_luminance"), c = cpu.at(model).at("mean_luminance");
         EXPECT_GT(c, 0.01);
         EXPECT_NEAR(g / c, 1.0, 0.03);
