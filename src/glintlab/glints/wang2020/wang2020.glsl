@@ -78,12 +78,15 @@ const float WANG2020_MICRO_ENUMERATION_MAX = 4096.0f;
 // contributions, so in the meso band the pixels were as frozen as in the
 // macro one (compare's flicker ratio 0.2-0.4 under the environments). Near
 // the enumeration bound the micro scale fades out: over counts [bound / 2,
-// bound] (log2-linear) towards the macro scale. Convex blends of estimates
-// with the same mean: the mean is kept.
-vec3 wang2020_effective_weights(float count, float fraction) {
+// bound] (log2-linear) towards the macro scale. `count` is the footprint
+// parallelogram's, `visited` the box's whose particles the enumeration
+// visits (equal without a parallelogram). Convex blends of estimates with
+// the same mean: the mean is kept.
+vec3 wang2020_effective_weights(float count, float visited, float fraction) {
     float effective = count * clamp(fraction, 0.0f, 1.0f);
     float micro = 1.0f - clamp(0.5f * log2(max(effective, 1e-30f) * (1.0f / 64.0f)), 0.0f, 1.0f);
-    float t = clamp(log2(max(count, 1.0f) * (2.0f / WANG2020_MICRO_ENUMERATION_MAX)), 0.0f, 1.0f);
+    float t =
+        clamp(log2(max(visited, 1.0f) * (2.0f / WANG2020_MICRO_ENUMERATION_MAX)), 0.0f, 1.0f);
     micro *= 1.0f - t;
     return vec3(micro, 0.0f, 1.0f - micro);
 }

@@ -39,15 +39,11 @@ Wang2020Tables wang2020_tables() {
 }
 // Eq. 21 (the CPU's wang2020_light_radiance, untinted).
 vec3 glint_own_light(vec3 wo, vec3 wi, vec3 li, Footprint fp) {
-    vec2 lo, hi;
-    wang2020_footprint_box(fp, lo, hi);
-    return wang2020_light(wang2020_tables(), lo, hi, wi, wo, li);
+    return wang2020_light(wang2020_tables(), wang2020_footprint(fp), wi, wo, li);
 }
 // Eqs. 18-20 (untinted; no directional occlusion on the GPU).
 vec3 glint_own_environment(vec3 n, vec3 o_world, Footprint fp) {
-    vec2 lo, hi;
-    wang2020_footprint_box(fp, lo, hi);
-    return wang2020_environment(wang2020_tables(), lo, hi, n, o_world);
+    return wang2020_environment(wang2020_tables(), wang2020_footprint(fp), n, o_world);
 }
 // The smooth Beckmann limit (the CPU GlintBxdf's wang2020 case): eval_bsdf
 // needs glint_ndf, but every light of the forward pass (point, sphere as

@@ -116,10 +116,12 @@ std::shared_ptr<const Wang2020Model> model_for(const GlintDesc& desc,
     return slot.model;
 }
 
-// AABB of the footprint parallelogram uv + s duvdx + t duvdy, s, t ∈ [-½, ½).
+// AABB of the footprint parallelogram uv + s duvdx + t duvdy, s, t ∈ [-½, ½),
+// with the parallelogram itself (UvBox).
 UvBox box_of(const Footprint& fp) {
     const glm::dvec2 half = 0.5 * (glm::abs(glm::dvec2(fp.duvdx)) + glm::abs(glm::dvec2(fp.duvdy)));
-    return {glm::dvec2(fp.uv) - half, glm::dvec2(fp.uv) + half};
+    return {glm::dvec2(fp.uv) - half, glm::dvec2(fp.uv) + half, glm::dvec2(fp.uv),
+            glm::dvec2(fp.duvdx), glm::dvec2(fp.duvdy)};
 }
 
 }  // namespace

@@ -20,6 +20,16 @@ Scale select_scale(double expected_count) {
     return Scale::Macro;
 }
 
+bool UvBox::contains(glm::dvec2 p) const {
+    if (!has_parallelogram()) return true;
+    const double det = du.x * dv.y - du.y * dv.x;
+    if (!(det != 0.0)) return false;
+    const glm::dvec2 d = p - centre;
+    const double s = (d.x * dv.y - d.y * dv.x) / det;
+    const double t = (du.x * d.y - du.y * d.x) / det;
+    return s >= -0.5 && s < 0.5 && t >= -0.5 && t < 0.5;
+}
+
 namespace {
 // Scale of §4.3 for footprint A; degenerate / non-finite boxes and boxes
 // spanning more than 64 uv tiles (the traversal's limit) use the macro scale.
@@ -39,12 +49,15 @@ Scale scale_for(const UvBox& A, double N) {
 // Blend weights of the per_particle mode (wang2020.glsl): "effective" with
 // the fraction r, else the particle count's bands; the macro cases of
 // scale_for (degenerate boxes, > 64 tiles) are pure macro.
+// The count is the parallelogram's (UvBox::footprint_area); the enumeration
+// bound of the effective weights the box's, whose particles are visited.
 glm::dvec3 blend_weights(const UvBox& A, double N, bool effective, double fraction) {
-    if (forced_macro(A)) return {0.0, 0.0, 1.0};
-    const float count = static_cast<float>(N * A.area());
+    const double a = A.footprint_area();
+    if (forced_macro(A) || !(a > 0.0)) return {0.0, 0.0, 1.0};
+    const float count = static_cast<float>(N * a);
     if (effective)
-        return glm::dvec3(
-            shader::wang2020_effective_weights(count, static_cast<float>(fraction)));
+        return glm::dvec3(shader::wang2020_effective_weights(
+            count, static_cast<float>(N * A.area()), static_cast<float>(fraction)));
     return glm::dvec3(shader::wang2020_scale_weights(count));
 }
 
@@ -82,16 +95,23 @@ void Wang2020Model::prefilter(const EnvironmentFn& env, const EnvironmentSampler
         m_.prefilter_res.value_or(default_prefilter_resolution(m_.alpha));
     cone_ = m_.micro == MicroMode::PerParticle ? std::make_unique<ConeAverageTable>(env, gamma_rad_)
                                                : nullptr;
-    prefiltered_ = std::make_unique<PrefilterTable>(
-        dpf_, m_.alpha, gamma_rad_, env, res, m_.prefilter_samples,
-        m_.prefilter == PrefilterMode::Mis ? sampler : nullptr, &m_.fresnel,
-        effective_scales() ? cone_.get() : nullptr);
+    prefiltered_ =
+        std::make_unique<PrefilterTable>(dpf_, m_.alpha, gamma_rad_, env, res, m_.prefilter_samples,
+                                         m_.prefilter == PrefilterMode::Mis ? sampler : nullptr,
+                                         &m_.fresnel, effective_scales() ? cone_.get() : nullptr);
 }
 
 void Wang2020Model::rebuild_quadtree(uint64_t particles, uint32_t seed) {
     tree_ = ParticleQuadtree(particles, m_.depth, seed);
     m_.particles = particles;
     m_.seed = seed;
+}
+
+uint64_t Wang2020Model::footprint_count(const UvBox& A) const {
+    if (!A.has_parallelogram()) return tree_.count(A.lo, A.hi);
+    uint64_t n = 0;
+    tree_.for_each(A.lo, A.hi, [&](const Particle& q) { n += A.contains(q.uv) ? 1u : 0u; });
+    return n;
 }
 
 uint64_t Wang2020Model::accepted(const UvBox& A, double p) const {
@@ -106,6 +126,7 @@ glm::dvec3 Wang2020Model::particle_environment(const UvBox& A, const glm::dvec3&
     glm::dvec3 sum(0.0);
     const bool has_fresnel = m_.fresnel.mode != FresnelDesc::Mode::None;
     tree_.for_each(A.lo, A.hi, [&](const Particle& q) {
+        if (!A.contains(q.uv)) return;
         const glm::dvec3 m = beckmann_sample_normal(q.normal_u.x, q.normal_u.y, m_.alpha);
         const double om = glm::dot(o, m);
         if (!(om > 0.0)) return;
@@ -124,6 +145,7 @@ uint64_t Wang2020Model::particles_lit(const UvBox& A, const glm::dvec3& wi,
     const double cos_g = std::cos(gamma_rad_);
     uint64_t lit = 0;
     tree_.for_each(A.lo, A.hi, [&](const Particle& q) {
+        if (!A.contains(q.uv)) return;
         const glm::dvec3 m = beckmann_sample_normal(q.normal_u.x, q.normal_u.y, m_.alpha);
         const double im = glm::dot(wi, m);
         if (!(im > 0.0)) return;
@@ -153,10 +175,11 @@ glm::dvec3 Wang2020Model::environment_radiance(const UvBox& A, const glm::dvec3&
             const glm::dvec3 ol{glm::dot(o, t), glm::dot(o, b), glm::dot(o, n)};
             sum = particle_environment(A, ol / glm::length(ol), t, b, n);
         }
-        const double count = w.y > 0.0 ? static_cast<double>(tree_.count(A.lo, A.hi)) : 0.0;
+        const double count = w.y > 0.0 ? static_cast<double>(footprint_count(A)) : 0.0;
         const glm::vec3 r = shader::wang2020_environment_blend(
             glm::vec3(w), glm::vec3(lhat), glm::vec3(sum), static_cast<float>(count),
-            static_cast<float>(a), static_cast<float>(N), static_cast<float>(sigma_o_));
+            static_cast<float>(A.footprint_area()), static_cast<float>(N),
+            static_cast<float>(sigma_o_));
         return m_.color * glm::dvec3(r);
     }
     // Eqs. 18-20 (wang2020.glsl, shared with the GPU subset).
@@ -184,10 +207,11 @@ glm::dvec3 Wang2020Model::light_radiance(const UvBox& A, const glm::dvec3& wi, c
         // Each particle is lit with probability p: r = E[f]² / E[f²] = p.
         const glm::dvec3 w = blend_weights(A, N, effective_scales(), p);
         const double lit = w.x > 0.0 ? static_cast<double>(particles_lit(A, wi, wo)) : 0.0;
-        const double count = w.y > 0.0 ? static_cast<double>(tree_.count(A.lo, A.hi)) : 0.0;
+        const double count = w.y > 0.0 ? static_cast<double>(footprint_count(A)) : 0.0;
         const double dprime = shader::wang2020_point_dprime_blend(
             glm::vec3(w), static_cast<float>(p), static_cast<float>(count), static_cast<float>(lit),
-            static_cast<float>(a), static_cast<float>(N), static_cast<float>(sigma_o_));
+            static_cast<float>(A.footprint_area()), static_cast<float>(N),
+            static_cast<float>(sigma_o_));
         return m_.color * li * (dprime * m);
     }
     // D̂'(A, o, i) = D̂ / (a σ), D̂ from Eq. 5 / Eq. 7 (wang2020.glsl).

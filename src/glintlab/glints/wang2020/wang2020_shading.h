@@ -63,8 +63,8 @@ struct Wang2020Material {
     MicroMode micro = MicroMode::PerParticle;
     PrefilterMode prefilter = PrefilterMode::Mis;      // without a sampler: as published
     DpfRoughness dpf_roughness = DpfRoughness::Exact;  // §4.4 as published: Interpolated
-    FresnelDesc fresnel;  // F of M (Eq. 11); mode None: F = 1
-    ScaleCount scale_count = ScaleCount::Effective;  // per_particle only
+    FresnelDesc fresnel;                               // F of M (Eq. 11); mode None: F = 1
+    ScaleCount scale_count = ScaleCount::Effective;    // per_particle only
 };
 
 enum class Scale { Micro, Meso, Macro };
@@ -72,9 +72,24 @@ inline constexpr double kMicroMax = 4.0;  // §4.3
 inline constexpr double kMesoMax = 64.0;  // §4.3
 Scale select_scale(double expected_count);
 
+// Footprint A: the uv box [lo, hi] the quadtree is queried with (001 §5)
+// and, when known (renders: wang2020_model.cpp box_of), the pixel's
+// parallelogram centre + s du + t dv, s, t ∈ [-½, ½), whose AABB the box is.
+// The per_particle modes count and sum only the parallelogram's particles
+// (the explicit truth's footprint convention): at grazing the AABB of a
+// long diagonal parallelogram holds 2x its particles and more, which
+// averaged the sparkle away (docs/MODELS.md wang2020). du = dv = 0: the box.
 struct UvBox {
     glm::dvec2 lo, hi;
+    glm::dvec2 centre{0.0}, du{0.0}, dv{0.0};
     double area() const { return std::max(0.0, hi.x - lo.x) * std::max(0.0, hi.y - lo.y); }
+    bool has_parallelogram() const { return du != glm::dvec2(0.0) || dv != glm::dvec2(0.0); }
+    // The parallelogram's area |det(du, dv)|, else the box's.
+    double footprint_area() const {
+        return has_parallelogram() ? std::abs(du.x * dv.y - du.y * dv.x) : area();
+    }
+    // Whether the uv point lies in the parallelogram (in the box: true).
+    bool contains(glm::dvec2 p) const;
 };
 
 class Wang2020Model {
@@ -120,6 +135,9 @@ class Wang2020Model {
     // Σ_k 1_A(x_k) H(p − λ_k) (micro) as a function of a per-particle
     // acceptance probability.
     uint64_t accepted(const UvBox& A, double p) const;
+    // Σ_k 1_A(x_k) over the parallelogram (per_particle's meso count; the
+    // box's tree count without one).
+    uint64_t footprint_count(const UvBox& A) const;
     // PerParticle micro sums over the particles in A (local frame, z = n):
     // Σ L_γ(i_k) M(i_k, o) (frame t, b, n maps to world) and the number of
     // particles whose normal reflects wi into the γ cone around wo.

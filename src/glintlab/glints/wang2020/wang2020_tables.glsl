@@ -240,17 +240,60 @@ struct Wang2020Visit {
     vec3 t, b, n;  // local -> world frame (ENV)
 };
 
-// The particles of the uv box [lo, hi] (tiles repeat), visited as v.mode
-// says; total counts, sum accumulates (ENV). ParticleQuadtree::traverse:
+// Footprint A of a query (Wang2020Model's UvBox): the uv box [lo, hi] the
+// quadtree is queried with and, when `parallelogram`, the pixel's
+// parallelogram centre + s du + t dv, s, t ∈ [-½, ½), whose AABB the box is.
+// The per_particle modes count and sum only the parallelogram's particles.
+struct Wang2020Footprint {
+    vec2 lo;
+    vec2 hi;
+    vec2 centre;
+    vec2 du;
+    vec2 dv;
+    bool parallelogram;
+};
+
+Wang2020Footprint wang2020_box_footprint(vec2 lo, vec2 hi) {
+    Wang2020Footprint a;
+    a.lo = lo;
+    a.hi = hi;
+    a.centre = vec2(0.0f);
+    a.du = vec2(0.0f);
+    a.dv = vec2(0.0f);
+    a.parallelogram = false;
+    return a;
+}
+
+// UvBox::contains: p (uv) in the parallelogram (true without one).
+bool wang2020_in_parallelogram(Wang2020Footprint a, vec2 p) {
+    if (!a.parallelogram) return true;
+    float det = a.du.x * a.dv.y - a.du.y * a.dv.x;
+    if (!(det != 0.0f)) return false;
+    vec2 d = p - a.centre;
+    float s = (d.x * a.dv.y - d.y * a.dv.x) / det;
+    float t = (a.du.x * d.y - a.du.y * d.x) / det;
+    return s >= -0.5f && s < 0.5f && t >= -0.5f && t < 0.5f;
+}
+
+// UvBox::footprint_area: the parallelogram's area, else the box's.
+float wang2020_footprint_area(Wang2020Footprint a) {
+    if (a.parallelogram) return abs(a.du.x * a.dv.y - a.du.y * a.dv.x);
+    return max(0.0f, a.hi.x - a.lo.x) * max(0.0f, a.hi.y - a.lo.y);
+}
+
+// The particles of the uv box [A.lo, A.hi] (tiles repeat), of its
+// parallelogram only when `clip`, visited as v.mode says; total counts, sum accumulates (ENV). ParticleQuadtree::traverse:
 // nodes wholly inside A add their count (COUNT only), leaves cut by A's
 // border are resolved particle by particle; particle k of leaf (x, y) sits
 // at ((x, y) + hash(leaf, k, seed, 1|2)) / 2^depth with λ = hash(leaf, k,
 // seed, 3) and normal hashes 4, 5. Boxes over more than 64 tiles visit
 // nothing (the caller uses the macro scale).
-void wang2020_quadtree_visit(Wang2020Tables tb, vec2 lo, vec2 hi, Wang2020Visit v,
+void wang2020_quadtree_visit(Wang2020Tables tb, Wang2020Footprint A, bool clip, Wang2020Visit v,
                              OUT(uint) total, OUT(vec3) sum) {
     total = 0u;
     sum = vec3(0.0f);
+    vec2 lo = A.lo, hi = A.hi;
+    clip = clip && A.parallelogram;
     if (!(lo.x <= hi.x && lo.y <= hi.y)) return;
     float tx0 = floor(lo.x), tx1 = floor(hi.x), ty0 = floor(lo.y), ty1 = floor(hi.y);
     if (!((tx1 - tx0 + 1.0f) * (ty1 - ty0 + 1.0f) <= 64.0f)) return;
@@ -273,7 +316,7 @@ void wang2020_quadtree_visit(Wang2020Tables tb, vec2 lo, vec2 hi, Wang2020Visit 
                 if (n1x <= a.x || n0x >= b.x || n1y <= a.y || n0y >= b.y) continue;
                 bool inside = n0x >= a.x && n1x <= b.x && n0y >= a.y && n1y <= b.y;
                 uint count = node.y & 0x0FFFFFFFu;
-                if (inside && !per_particle) {
+                if (inside && !per_particle && !clip) {
                     total += count;
                     continue;
                 }
@@ -288,6 +331,10 @@ void wang2020_quadtree_visit(Wang2020Tables tb, vec2 lo, vec2 hi, Wang2020Visit 
                         float hx = wang2020_hash_unit(leaf, k, tb.seed, 1u);
                         float hy = wang2020_hash_unit(leaf, k, tb.seed, 2u);
                         if (!(hx >= ax && hx < bx && hy >= ay && hy < by)) continue;
+                        if (clip && !wang2020_in_parallelogram(
+                                        A, vec2(tx + (float(it.z) + hx) / leaves,
+                                                ty + (float(it.w) + hy) / leaves)))
+                            continue;
                         if (v.mode == WANG2020_VISIT_COUNT) {
                             total += 1u;
                         } else if (v.mode == WANG2020_VISIT_ACCEPT) {
@@ -340,24 +387,30 @@ Wang2020Visit wang2020_visit(int mode, float p) {
     return v;
 }
 
-// Σ_k 1_A(x_k) over the particles of the uv box [lo, hi], or, when
-// `per_particle`, Σ_k 1_A(x_k) H(p − λ_k) (micro scale, Eq. 20: a particle is
-// accepted iff λ(x_k) < p).
-uint wang2020_quadtree_count(Wang2020Tables tb, vec2 lo, vec2 hi, bool per_particle, float p) {
+// Σ_k 1_A(x_k) over the particles of the uv box of A (of its parallelogram
+// when `clip`), or, when `per_particle`, Σ_k 1_A(x_k) H(p − λ_k) (micro
+// scale, Eq. 20: a particle is accepted iff λ(x_k) < p).
+uint wang2020_quadtree_count(Wang2020Tables tb, Wang2020Footprint A, bool clip, bool per_particle,
+                             float p) {
     uint total;
     vec3 sum;
     wang2020_quadtree_visit(
-        tb, lo, hi, wang2020_visit(per_particle ? WANG2020_VISIT_ACCEPT : WANG2020_VISIT_COUNT, p),
-        total, sum);
+        tb, A, clip,
+        wang2020_visit(per_particle ? WANG2020_VISIT_ACCEPT : WANG2020_VISIT_COUNT, p), total,
+        sum);
     return total;
 }
 
-// AABB of the footprint parallelogram uv + s duvdx + t duvdy, s, t ∈ [-½, ½)
-// (wang2020_model.cpp box_of).
-void wang2020_footprint_box(Footprint fp, OUT(vec2) lo, OUT(vec2) hi) {
+// The footprint parallelogram uv + s duvdx + t duvdy, s, t ∈ [-½, ½) and its
+// AABB (wang2020_model.cpp box_of).
+Wang2020Footprint wang2020_footprint(Footprint fp) {
     vec2 half_extent = 0.5f * (abs(fp.duvdx) + abs(fp.duvdy));
-    lo = fp.uv - half_extent;
-    hi = fp.uv + half_extent;
+    Wang2020Footprint a = wang2020_box_footprint(fp.uv - half_extent, fp.uv + half_extent);
+    a.centre = fp.uv;
+    a.du = fp.duvdx;
+    a.dv = fp.duvdy;
+    a.parallelogram = any(notEqual(fp.duvdx, vec2(0.0f))) || any(notEqual(fp.duvdy, vec2(0.0f)));
+    return a;
 }
 
 // §4.3 scale of box A (Wang2020Model scale_for): degenerate boxes and boxes
@@ -372,20 +425,26 @@ int wang2020_scale_for(vec2 lo, vec2 hi, float particles) {
 
 // Blend weights of the per_particle mode (Wang2020Model blend_weights):
 // "effective" (wang2020_effective_weights of the fraction) or the particle
-// count's bands; degenerate boxes and boxes over more than 64 tiles are pure
+// count's bands, counts of the parallelogram (the enumeration bound: of the
+// box); degenerate footprints and boxes over more than 64 tiles are pure
 // macro.
-vec3 wang2020_weights_for(vec2 lo, vec2 hi, float particles, bool effective, float fraction) {
+vec3 wang2020_weights_for(Wang2020Footprint A, float particles, bool effective, float fraction) {
+    vec2 lo = A.lo, hi = A.hi;
     float area = max(0.0f, hi.x - lo.x) * max(0.0f, hi.y - lo.y);
     if (!(area > 0.0f) || !wang2020_finite(area)) return vec3(0.0f, 0.0f, 1.0f);
     float tiles = (floor(hi.x) - floor(lo.x) + 1.0f) * (floor(hi.y) - floor(lo.y) + 1.0f);
     if (!(tiles <= 64.0f)) return vec3(0.0f, 0.0f, 1.0f);
-    if (effective) return wang2020_effective_weights(particles * area, fraction);
-    return wang2020_scale_weights(particles * area);
+    float footprint = wang2020_footprint_area(A);
+    if (!(footprint > 0.0f)) return vec3(0.0f, 0.0f, 1.0f);
+    if (effective)
+        return wang2020_effective_weights(particles * footprint, particles * area, fraction);
+    return wang2020_scale_weights(particles * footprint);
 }
 
 // Environment radiance towards o (world), before the tint: Eqs. 18-20
 // (Wang2020Model::environment_radiance).
-vec3 wang2020_environment(Wang2020Tables tb, vec2 lo, vec2 hi, vec3 n_world, vec3 o_world) {
+vec3 wang2020_environment(Wang2020Tables tb, Wang2020Footprint A, vec3 n_world, vec3 o_world) {
+    vec2 lo = A.lo, hi = A.hi;
     if (!(dot(n_world, o_world) > 0.0f)) return vec3(0.0f);
     vec4 t = wang2020_prefilter_lookup(tb.prefilter_res, n_world, o_world);
     vec3 lhat = vec3(t.x, t.y, t.z);
@@ -393,7 +452,7 @@ vec3 wang2020_environment(Wang2020Tables tb, vec2 lo, vec2 hi, vec3 n_world, vec
     if (tb.micro != WANG2020_MICRO_MODE_AS_PUBLISHED) {
         // The table's w is the effective fraction r under "effective".
         bool effective = tb.micro == WANG2020_MICRO_MODE_PER_PARTICLE_EFFECTIVE;
-        vec3 w = wang2020_weights_for(lo, hi, tb.particles, effective, phat);
+        vec3 w = wang2020_weights_for(A, tb.particles, effective, phat);
         uint n_visited;
         vec3 sum = vec3(0.0f);
         if (w.x > 0.0f) {
@@ -402,19 +461,19 @@ vec3 wang2020_environment(Wang2020Tables tb, vec2 lo, vec2 hi, vec3 n_world, vec
             v.n = n_world;
             vec3 ol = vec3(dot(o_world, v.t), dot(o_world, v.b), dot(o_world, n_world));
             v.o = ol / length(ol);
-            wang2020_quadtree_visit(tb, lo, hi, v, n_visited, sum);
+            wang2020_quadtree_visit(tb, A, true, v, n_visited, sum);
         }
         float count = 0.0f;
-        if (w.y > 0.0f) count = float(wang2020_quadtree_count(tb, lo, hi, false, 0.0f));
-        float area = max(0.0f, hi.x - lo.x) * max(0.0f, hi.y - lo.y);
-        return wang2020_environment_blend(w, lhat, sum, count, area, tb.particles, tb.sigma);
+        if (w.y > 0.0f) count = float(wang2020_quadtree_count(tb, A, true, false, 0.0f));
+        return wang2020_environment_blend(w, lhat, sum, count, wang2020_footprint_area(A),
+                                          tb.particles, tb.sigma);
     }
     int scale = wang2020_scale_for(lo, hi, tb.particles);
     float count = 0.0f;
     float accepted = 0.0f;
-    if (scale == WANG2020_MESO) count = float(wang2020_quadtree_count(tb, lo, hi, false, 0.0f));
+    if (scale == WANG2020_MESO) count = float(wang2020_quadtree_count(tb, A, false, false, 0.0f));
     if (scale == WANG2020_MICRO && phat > 0.0f)
-        accepted = float(wang2020_quadtree_count(tb, lo, hi, true, min(phat, 1.0f)));
+        accepted = float(wang2020_quadtree_count(tb, A, false, true, min(phat, 1.0f)));
     float area = max(0.0f, hi.x - lo.x) * max(0.0f, hi.y - lo.y);
     return wang2020_environment_combine(scale, lhat, phat, count, accepted, area, tb.particles,
                                         tb.sigma);
@@ -422,32 +481,33 @@ vec3 wang2020_environment(Wang2020Tables tb, vec2 lo, vec2 hi, vec3 n_world, vec
 
 // D̂'(A, o, i) of Eq. 21 for a light from local direction wi towards local
 // wo (Wang2020Model::light_radiance without M and the light's radiance).
-float wang2020_light_dprime(Wang2020Tables tb, vec2 lo, vec2 hi, vec3 wi, vec3 wo) {
+float wang2020_light_dprime(Wang2020Tables tb, Wang2020Footprint A, vec3 wi, vec3 wo) {
+    vec2 lo = A.lo, hi = A.hi;
     if (!(wi.z > 0.0f) || !(wo.z > 0.0f)) return 0.0f;
     float p = wang2020_dpf_lookup(tb.dpf_res, wi, wo);  // P(i, o, γ), §5
     if (tb.micro != WANG2020_MICRO_MODE_AS_PUBLISHED) {
         // Each particle is lit with probability p: fraction r = p.
         bool effective = tb.micro == WANG2020_MICRO_MODE_PER_PARTICLE_EFFECTIVE;
-        vec3 w = wang2020_weights_for(lo, hi, tb.particles, effective, p);
+        vec3 w = wang2020_weights_for(A, tb.particles, effective, p);
         uint lit = 0u;
         vec3 unused;
         if (w.x > 0.0f) {
             Wang2020Visit v = wang2020_visit(WANG2020_VISIT_LIT, 0.0f);
             v.o = wo;
             v.wi = wi;
-            wang2020_quadtree_visit(tb, lo, hi, v, lit, unused);
+            wang2020_quadtree_visit(tb, A, true, v, lit, unused);
         }
         float count = 0.0f;
-        if (w.y > 0.0f) count = float(wang2020_quadtree_count(tb, lo, hi, false, 0.0f));
-        float area = max(0.0f, hi.x - lo.x) * max(0.0f, hi.y - lo.y);
-        return wang2020_point_dprime_blend(w, p, count, float(lit), area, tb.particles, tb.sigma);
+        if (w.y > 0.0f) count = float(wang2020_quadtree_count(tb, A, true, false, 0.0f));
+        return wang2020_point_dprime_blend(w, p, count, float(lit), wang2020_footprint_area(A),
+                                           tb.particles, tb.sigma);
     }
     int scale = wang2020_scale_for(lo, hi, tb.particles);
     float count = 0.0f;
     float accepted = 0.0f;
-    if (scale == WANG2020_MESO) count = float(wang2020_quadtree_count(tb, lo, hi, false, 0.0f));
+    if (scale == WANG2020_MESO) count = float(wang2020_quadtree_count(tb, A, false, false, 0.0f));
     if (scale == WANG2020_MICRO)
-        accepted = float(wang2020_quadtree_count(tb, lo, hi, true, min(p, 1.0f)));
+        accepted = float(wang2020_quadtree_count(tb, A, false, true, min(p, 1.0f)));
     float area = max(0.0f, hi.x - lo.x) * max(0.0f, hi.y - lo.y);
     return wang2020_point_dprime(scale, p, count, accepted, area, tb.particles, tb.sigma);
 }
@@ -463,10 +523,10 @@ float wang2020_m_term(vec3 wi, vec3 wo, float alpha) {
 
 // Eq. 21 for a light of irradiance li normal to wi (local directions):
 // Lo = li D̂'(A, o, i) M(i, o), before the tint; M's F at i·h (m_fresnel).
-vec3 wang2020_light(Wang2020Tables tb, vec2 lo, vec2 hi, vec3 wi, vec3 wo, vec3 li) {
+vec3 wang2020_light(Wang2020Tables tb, Wang2020Footprint A, vec3 wi, vec3 wo, vec3 li) {
     vec3 f = vec3(1.0f);
     if (tb.fresnel_mode != GLINT_FRESNEL_NONE) f = wang2020_fresnel(tb, dot(wi, normalize(wi + wo)));
-    return li * f * (wang2020_light_dprime(tb, lo, hi, wi, wo) * wang2020_m_term(wi, wo, tb.alpha));
+    return li * f * (wang2020_light_dprime(tb, A, wi, wo) * wang2020_m_term(wi, wo, tb.alpha));
 }
 
 #endif  // GLINTLAB_GLINTS_WANG2020_TABLES_GLSL

@@ -99,6 +99,31 @@ glm::dvec3 unit(Pcg32& rng, bool upper) {
 
 // A float box (both sides read the same box) centred anywhere in [-3, 3)²,
 // sides from 1e-4 to 0.5 uv (log-uniform): micro to macro, over tile borders.
+// A parallelogram c + s du + t dv of random orientation and aspect (edges
+// 10^-4 .. 0.5 uv) and its AABB: the footprints of renders (box_of).
+shader::Wang2020Footprint random_parallelogram(Pcg32& rng) {
+    auto edge = [&] {
+        const double len = std::pow(10.0, -4.0 + 3.7 * rng.next_double());
+        const double phi = 2.0 * kPi * rng.next_double();
+        return glm::vec2(static_cast<float>(len * std::cos(phi)),
+                         static_cast<float>(len * std::sin(phi)));
+    };
+    const glm::vec2 c(static_cast<float>(6.0 * rng.next_double() - 3.0),
+                      static_cast<float>(6.0 * rng.next_double() - 3.0));
+    const glm::vec2 du = edge(), dv = edge();
+    const glm::vec2 half = 0.5f * (glm::abs(du) + glm::abs(dv));
+    shader::Wang2020Footprint a = shader::wang2020_box_footprint(c - half, c + half);
+    a.centre = c, a.du = du, a.dv = dv, a.parallelogram = true;
+    return a;
+}
+
+UvBox uv_box_of(const shader::Wang2020Footprint& a) {
+    UvBox b{glm::dvec2(a.lo), glm::dvec2(a.hi)};
+    if (a.parallelogram)
+        b.centre = glm::dvec2(a.centre), b.du = glm::dvec2(a.du), b.dv = glm::dvec2(a.dv);
+    return b;
+}
+
 void random_box(Pcg32& rng, glm::vec2& lo, glm::vec2& hi) {
     const glm::vec2 c(static_cast<float>(6.0 * rng.next_double() - 3.0),
                       static_cast<float>(6.0 * rng.next_double() - 3.0));
@@ -119,13 +144,14 @@ TEST(Wang2020Tables, GlslQuadtreeCountsEqualTheCpuTraversal) {
         random_box(rng, lo, hi);
         const glm::dvec2 dlo(lo), dhi(hi);
         const uint64_t cpu = model.quadtree().count(dlo, dhi);
-        EXPECT_EQ(shader::wang2020_quadtree_count(tb, lo, hi, false, 0.0f), cpu) << i;
+        const shader::Wang2020Footprint box = shader::wang2020_box_footprint(lo, hi);
+        EXPECT_EQ(shader::wang2020_quadtree_count(tb, box, false, false, 0.0f), cpu) << i;
         const float p = static_cast<float>(rng.next_double());
         uint64_t accepted = 0;
         model.quadtree().for_each(dlo, dhi, [&](const Particle& q) {
             accepted += q.lambda < static_cast<double>(p) ? 1u : 0u;
         });
-        EXPECT_EQ(shader::wang2020_quadtree_count(tb, lo, hi, true, p), accepted) << i;
+        EXPECT_EQ(shader::wang2020_quadtree_count(tb, box, false, true, p), accepted) << i;
         nonzero += cpu > 0 ? 1 : 0;
     }
     EXPECT_GT(nonzero, 100);  // the boxes do hit particles
@@ -180,26 +206,34 @@ TEST_P(Wang2020TablesModes, GlslShadingEqualsTheCpuModelAtEveryScale) {
     // few are lit: more trials keep > 100 lit ones.
     const int trials = GetParam() == 2 ? 3000 : 600;
     for (int i = 0; i < trials; ++i) {
-        glm::vec2 lo, hi;
-        random_box(rng, lo, hi);
-        const UvBox A{glm::dvec2(lo), glm::dvec2(hi)};
+        // Odd trials: a parallelogram footprint (the per_particle modes
+        // count and sum only its particles), even ones the box alone.
+        shader::Wang2020Footprint fp;
+        if (i % 2 == 1) {
+            fp = random_parallelogram(rng);
+        } else {
+            glm::vec2 lo, hi;
+            random_box(rng, lo, hi);
+            fp = shader::wang2020_box_footprint(lo, hi);
+        }
+        const UvBox A = uv_box_of(fp);
         const glm::dvec3 wi = unit(rng, true), wo = unit(rng, true);
         Scale s = Scale::Macro;
         const glm::dvec3 cpu_light = model.light_radiance(A, wi, wo, glm::dvec3(1.0), &s);
         used[static_cast<int>(s)] += 1;
         const glm::vec3 gpu_light =
-            shader::wang2020_light(tb, lo, hi, glm::vec3(wi), glm::vec3(wo), glm::vec3(1.0f));
+            shader::wang2020_light(tb, fp, glm::vec3(wi), glm::vec3(wo), glm::vec3(1.0f));
         const glm::dvec3 n = unit(rng, false);
         glm::dvec3 o = unit(rng, false);
         if (glm::dot(n, o) < 0.0) o = -o;
         const glm::dvec3 cpu_env = model.environment_radiance(A, n, o);
-        const glm::vec3 gpu_env =
-            shader::wang2020_environment(tb, lo, hi, glm::vec3(n), glm::vec3(o));
+        const glm::vec3 gpu_env = shader::wang2020_environment(tb, fp, glm::vec3(n), glm::vec3(o));
         // The micro scale decides λ < P per particle: a P within fp32 noise
         // of a λ may flip one particle; count such cases, they must be rare.
         bool light_ok = true, env_ok = true;
         for (int c = 0; c < 3; ++c) {
-            light_ok = light_ok && std::abs(gpu_light[c] - cpu_light[c]) <= 2e-3 * cpu_light[c] + 1e-7;
+            light_ok =
+                light_ok && std::abs(gpu_light[c] - cpu_light[c]) <= 2e-3 * cpu_light[c] + 1e-7;
             env_ok = env_ok && std::abs(gpu_env[c] - cpu_env[c]) <= 2e-3 * cpu_env[c] + 1e-7;
         }
         off += (light_ok ? 0 : 1) + (env_ok ? 0 : 1);
@@ -215,8 +249,7 @@ TEST_P(Wang2020TablesModes, GlslShadingEqualsTheCpuModelAtEveryScale) {
     EXPECT_EQ(model.micro_mode_index(), GetParam());
 }
 
-INSTANTIATE_TEST_SUITE_P(Wang2020Tables, Wang2020TablesModes,
-                         testing::Values(0, 1, 2));
+INSTANTIATE_TEST_SUITE_P(Wang2020Tables, Wang2020TablesModes, testing::Values(0, 1, 2));
 
 }  // namespace
 }  // namespace glintlab::wang2020
