@@ -135,6 +135,11 @@ GlintModelDescriptor wang2020_descriptor() {
                    "what selects the scale with \"micro\": \"per_particle\": the effective "
                    "particle count n r of the micro estimate (default; r = P under lights, "
                    "E[f]^2/E[f^2] under the environment) or 001 §4.3's particle count n"),
+        gp::choice("particle_radiance", &P::particle_radiance_point,
+                   {{"point", true}, {"cone", false}},
+                   "what a particle of \"micro\": \"per_particle\" reflects under the "
+                   "environment: the value in its mirror direction (default, as an explicit "
+                   "facet) or the gamma-cone average"),
     };
     d.check = check_wang2020;
     d.fit_material = fit_wang2020;

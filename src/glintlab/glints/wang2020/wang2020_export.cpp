@@ -72,7 +72,8 @@ void wang2020_export_material(GlintExportContext& ctx) {
               model_tables->cone_average() ? vec4s(model_tables->cone_average()->data())
                                            : std::vector<float>(4, 0.0f),
               4, "RGBA32F", "u_wang2020_cone_texture",
-              "cone-averaged environment L_gamma (micro per_particle mode; one zero texel "
+              "environment the particles reflect: point values or cone average L_gamma (micro "
+              "per_particle mode; one zero texel "
               "otherwise)");
     const wang2020::DpfResolution& dr = model_tables->dpf().resolution();
     std::array<int, 4> pres{1, 1, 1, 1};

@@ -3,7 +3,7 @@
 // storage buffers. Each table is the renderer's array unchanged, laid out
 // row-major in a texture WANG2020_TABLE_WIDTH (4096) texels wide (element i at
 // texel (i % width, i / width)): DPF R32F, prefiltered environment RGBA32F,
-// quadtree nodes RG32UI, cone-averaged environment RGBA32F, all read with
+// quadtree nodes RG32UI, the environment the particles reflect RGBA32F, all read with
 // texelFetch (no filtering).
 #ifndef GLINTLAB_GLINTS_WANG2020_EXPORT_TEXTURES_GLSL
 #define GLINTLAB_GLINTS_WANG2020_EXPORT_TEXTURES_GLSL

@@ -34,12 +34,20 @@ uint64_t particles_of(const GlintDesc& desc) {
 // One model per (material, environment map); the map pointer identifies the
 // environment (scenes own their maps for the whole render).
 using Key = std::tuple<float, float, uint64_t, uint32_t, double, int, int, int, int, bool, bool,
-                       bool, bool, std::array<float, 10>, const EnvironmentMap*>;
+                       bool, bool, bool, std::array<float, 10>, const EnvironmentMap*>;
 
 // The Fresnel of M (001 Eq. 11) is inside the prefiltered tables.
 std::array<float, 10> fresnel_key(const FresnelDesc& f) {
-    return {static_cast<float>(f.mode), f.f0.x, f.f0.y, f.f0.z, f.eta.x,
-            f.eta.y,                    f.eta.z, f.k.x, f.k.y, f.k.z};
+    return {static_cast<float>(f.mode),
+            f.f0.x,
+            f.f0.y,
+            f.f0.z,
+            f.eta.x,
+            f.eta.y,
+            f.eta.z,
+            f.k.x,
+            f.k.y,
+            f.k.z};
 }
 
 // The map pointer is part of the key; the entry also keeps a weak_ptr to the
@@ -68,6 +76,7 @@ std::shared_ptr<const Wang2020Model> model_for(const GlintDesc& desc,
                   p.prefilter_mis,
                   p.dpf_exact_roughness,
                   p.scale_count_effective,
+                  p.particle_radiance_point,
                   fresnel_key(desc.fresnel),
                   env.get()};
     const std::lock_guard lock(mutex);
@@ -85,6 +94,8 @@ std::shared_ptr<const Wang2020Model> model_for(const GlintDesc& desc,
         m.fresnel = desc.fresnel;
         m.scale_count = p.scale_count_effective ? wang2020::ScaleCount::Effective
                                                 : wang2020::ScaleCount::Particles;
+        m.particle_radiance = p.particle_radiance_point ? wang2020::ParticleRadiance::Point
+                                                        : wang2020::ParticleRadiance::Cone;
         m.dpf_res = {p.dpf_theta, p.dpf_theta, p.dpf_phi};
         m.prefilter_samples = p.prefilter_samples;
         m.micro = p.micro_per_particle ? wang2020::MicroMode::PerParticle
@@ -108,7 +119,7 @@ std::shared_ptr<const Wang2020Model> model_for(const GlintDesc& desc,
                 return static_cast<double>(map->pdf(glm::vec3(d)));
             };
             model->prefilter([map](const glm::dvec3& d) { return map->eval(glm::vec3(d)); },
-                             &sampler);
+                             &sampler, map->image().height);
         }
         slot.model = std::move(model);
         slot.env = env;

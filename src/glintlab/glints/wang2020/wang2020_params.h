@@ -35,6 +35,10 @@ struct Wang2020Params {
     // sparkles wherever the ground truth does; at most 4096 particles
     // enumerated) or "particles" (001 §4.3: the particle count n).
     bool scale_count_effective = true;
+    // "particle_radiance": "point" (default: with "micro": "per_particle",
+    // each particle reflects the environment's value in its mirror direction,
+    // as an explicit facet does) or "cone" (the γ-cone average L_γ).
+    bool particle_radiance_point = true;
 };
 
 }  // namespace glintlab

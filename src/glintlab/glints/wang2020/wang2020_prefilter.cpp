@@ -127,6 +127,30 @@ ConeAverageTable::ConeAverageTable(const EnvironmentFn& env, double gamma_rad) {
             data_[static_cast<size_t>(y) * width_ + x] = glm::vec4(glm::vec3(v), 0.0f);
         }
     });
+    build_sampling_map();
+}
+
+ConeAverageTable ConeAverageTable::point_values(const EnvironmentFn& env, int rows) {
+    if (rows < 2 || rows > 4096)
+        fail("wang2020: point-value table of {} rows outside [2, 4096]", rows);
+    ConeAverageTable t;
+    t.height_ = rows;
+    t.width_ = 2 * rows;
+    t.data_.assign(static_cast<size_t>(t.width_) * t.height_, glm::vec4(0.0f));
+    parallel_rows(t.height_, [&](int y) {
+        const double tc = (y + 0.5) / t.height_ * kPi;
+        const double stc = std::sin(tc), ctc = std::cos(tc);
+        for (int x = 0; x < t.width_; ++x) {
+            const double pc = (x + 0.5) / t.width_ * kTwoPi;
+            const glm::dvec3 c(stc * std::cos(pc), stc * std::sin(pc), ctc);
+            t.data_[static_cast<size_t>(y) * t.width_ + x] = glm::vec4(env(c), 0.0f);
+        }
+    });
+    t.build_sampling_map();
+    return t;
+}
+
+void ConeAverageTable::build_sampling_map() {
     // The sampling map, in EnvironmentMap's convention (y up: d = (sinθ sinφ,
     // cosθ, −sinθ cosφ) at u = 0.5 + φ/2π, v = θ/π), at the table's
     // resolution.
@@ -273,23 +297,24 @@ glm::dvec4 PrefilterTable::evaluate(const DpfTable& dpf, double alpha, const Env
     if (sampler) {
         // The environment strategy: K samples of its luminance distribution
         // (same jittered strata over its 2-D sample space).
-        for_each_stratum(
-            [&](const glm::dvec2& u, glm::dvec3& d) { return sampler->sample(u, d); },
-            [&](const glm::dvec3& d, const glm::dvec3& i, double pe) {
-                const double pb = brdf_pdf(i, o, alpha);
-                const double g = dpf.lookup(i, o) * m_term(i, o, alpha);
-                if (!(g > 0.0)) return;
-                lo += glm::dvec3(env(d)) * m_fresnel(fresnel, i, o) * (g / (k_used * (pb + pe)));
-            });
+        for_each_stratum([&](const glm::dvec2& u, glm::dvec3& d) { return sampler->sample(u, d); },
+                         [&](const glm::dvec3& d, const glm::dvec3& i, double pe) {
+                             const double pb = brdf_pdf(i, o, alpha);
+                             const double g = dpf.lookup(i, o) * m_term(i, o, alpha);
+                             if (!(g > 0.0)) return;
+                             lo += glm::dvec3(env(d)) * m_fresnel(fresnel, i, o) *
+                                   (g / (k_used * (pb + pe)));
+                         });
     }
     if (cone != nullptr) {
         // The moments' second strategy: K samples of L_γ's luminance.
-        for_each_stratum(
-            [&](const glm::dvec2& u, glm::dvec3& d) { return cone->sample(u, d); },
-            [&](const glm::dvec3& d, const glm::dvec3& i, double pc) {
-                const double pb = brdf_pdf(i, o, alpha);
-                if (pb > 0.0) add_moment(i, d, m_fresnel(fresnel, i, o), pb / (k_used * (pb + pc)));
-            });
+        for_each_stratum([&](const glm::dvec2& u, glm::dvec3& d) { return cone->sample(u, d); },
+                         [&](const glm::dvec3& d, const glm::dvec3& i, double pc) {
+                             const double pb = brdf_pdf(i, o, alpha);
+                             if (pb > 0.0)
+                                 add_moment(i, d, m_fresnel(fresnel, i, o),
+                                            pb / (k_used * (pb + pc)));
+                         });
         // r = E[f]² / E[f²] ∈ (0, 1]; 1 where nothing is reflected (no
         // texture either way).
         const double r = f2 > 0.0 ? std::clamp(f1 * f1 / f2, 0.0, 1.0) : 1.0;
@@ -331,7 +356,8 @@ PrefilterTable::PrefilterTable(const DpfTable& dpf, double alpha, double /*gamma
                 for (int d = 0; d < res.phi_o; ++d) {
                     const glm::dvec3 o = spherical_dir((c + 0.5) / res.theta_o * kHalfPi,
                                                        (d + 0.5) / res.phi_o * kTwoPi);
-                    data_[k] = glm::vec4(evaluate(dpf, alpha, env, n, o, K, k, sampler, fresnel, cone));
+                    data_[k] =
+                        glm::vec4(evaluate(dpf, alpha, env, n, o, K, k, sampler, fresnel, cone));
                     ++k;
                 }
         }

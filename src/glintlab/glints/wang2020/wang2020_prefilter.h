@@ -61,6 +61,12 @@ struct EnvironmentSampler {
 class ConeAverageTable {
   public:
     ConeAverageTable(const EnvironmentFn& env, double gamma_rad);
+    // The point values instead of the cone average ("particle_radiance":
+    // "point", the default): texel (x, y) = env at its centre, `rows` rows
+    // (the caller takes twice the environment map's, so that the bilinear
+    // lookup of the resampled grid stays within half a map texel of the
+    // map's own bilinear value). Same lookup, sampling and GPU layout.
+    static ConeAverageTable point_values(const EnvironmentFn& env, int rows);
     glm::dvec3 lookup(const glm::dvec3& world_dir) const;
     // Importance sampling of L_γ itself (a lat-long EnvironmentMap of the
     // table, luminance-proportional): sample returns the world direction's
@@ -76,6 +82,8 @@ class ConeAverageTable {
     const std::vector<glm::vec4>& data() const { return data_; }
 
   private:
+    ConeAverageTable() = default;
+    void build_sampling_map();  // map_ from data_
     int width_ = 0, height_ = 0;
     std::vector<glm::vec4> data_;
     std::shared_ptr<const EnvironmentMap> map_;  // for sample() and pdf()
@@ -111,8 +119,7 @@ class PrefilterTable {
     // estimate's relative variance over a footprint of n particles is
     // 1 / (n r). Same samples as L̂o (MIS weights included).
     PrefilterTable(const DpfTable& dpf, double alpha, double gamma_rad, const EnvironmentFn& env,
-                   PrefilterResolution res, int K = 64,
-                   const EnvironmentSampler* sampler = nullptr,
+                   PrefilterResolution res, int K = 64, const EnvironmentSampler* sampler = nullptr,
                    const FresnelDesc* fresnel = nullptr, const ConeAverageTable* cone = nullptr);
 
     // Quadrilinear lookup: rgb = L̂o(n, o) (Eq. 16), w = P̂(n, o) (Eq. 17)

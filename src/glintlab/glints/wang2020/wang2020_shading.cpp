@@ -90,11 +90,20 @@ Wang2020Model::Wang2020Model(const Wang2020Material& m)
       dpf_(timed_extract(m, gamma_rad_, extract_seconds_)),
       tree_(m.particles, m.depth, m.seed) {}
 
-void Wang2020Model::prefilter(const EnvironmentFn& env, const EnvironmentSampler* sampler) {
+void Wang2020Model::prefilter(const EnvironmentFn& env, const EnvironmentSampler* sampler,
+                              int environment_rows) {
     const PrefilterResolution res =
         m_.prefilter_res.value_or(default_prefilter_resolution(m_.alpha));
-    cone_ = m_.micro == MicroMode::PerParticle ? std::make_unique<ConeAverageTable>(env, gamma_rad_)
-                                               : nullptr;
+    cone_ = nullptr;
+    if (m_.micro == MicroMode::PerParticle) {
+        if (m_.particle_radiance == ParticleRadiance::Cone) {
+            cone_ = std::make_unique<ConeAverageTable>(env, gamma_rad_);
+        } else {
+            const int rows =
+                environment_rows > 0 ? std::clamp(2 * environment_rows, 16, 1024) : 1024;
+            cone_ = std::make_unique<ConeAverageTable>(ConeAverageTable::point_values(env, rows));
+        }
+    }
     prefiltered_ =
         std::make_unique<PrefilterTable>(dpf_, m_.alpha, gamma_rad_, env, res, m_.prefilter_samples,
                                          m_.prefilter == PrefilterMode::Mis ? sampler : nullptr,

@@ -49,6 +49,14 @@ enum class MicroMode { PerParticle, AsPublished };
 // §4.3's particle count n with the micro / meso / macro bands.
 enum class ScaleCount { Effective, Particles };
 enum class PrefilterMode { Mis, AsPublished };
+// What each particle of the per_particle micro sum reflects under the
+// environment: Point (default): the environment's value in its mirror
+// direction, as an explicit facet does, so a small sun lights few particles
+// brightly; Cone: L_γ, the environment averaged over the γ cone (spreads a
+// sun of radius ρ over ρ + γ, (1 + γ/ρ)² times the particles each catching
+// as much less light; the sparkle's variance falls by that factor).
+// docs/MODELS.md, wang2020.
+enum class ParticleRadiance { Point, Cone };
 
 struct Wang2020Material {
     double alpha = 0.1;           // Beckmann roughness, [0.02, 1]
@@ -65,6 +73,7 @@ struct Wang2020Material {
     DpfRoughness dpf_roughness = DpfRoughness::Exact;  // §4.4 as published: Interpolated
     FresnelDesc fresnel;                               // F of M (Eq. 11); mode None: F = 1
     ScaleCount scale_count = ScaleCount::Effective;    // per_particle only
+    ParticleRadiance particle_radiance = ParticleRadiance::Point;  // per_particle only
 };
 
 enum class Scale { Micro, Meso, Macro };
@@ -98,8 +107,12 @@ class Wang2020Model {
 
     // Prefilter pass (Eqs. 16–17) for an environment; replaces any previous
     // one. The sampler (optional) serves PrefilterMode::Mis; PerParticle also
-    // builds the cone-averaged environment L_γ.
-    void prefilter(const EnvironmentFn& env, const EnvironmentSampler* sampler = nullptr);
+    // builds the table its particles reflect: L_γ (ParticleRadiance::Cone)
+    // or the point values on a grid of 2 × environment_rows rows (the
+    // environment map's rows; 0: an analytic environment, 1024 rows), at
+    // most 1024 (a 32 MB table on the GPU).
+    void prefilter(const EnvironmentFn& env, const EnvironmentSampler* sampler = nullptr,
+                   int environment_rows = 0);
     bool has_environment() const { return prefiltered_ != nullptr; }
     // Spatial tree pass only (§4.5: editing N re-runs just the quadtree).
     void rebuild_quadtree(uint64_t particles, uint32_t seed);
@@ -116,7 +129,8 @@ class Wang2020Model {
     const DpfTable& dpf() const { return dpf_; }
     const ParticleQuadtree& quadtree() const { return tree_; }
     const PrefilterTable* prefiltered() const { return prefiltered_.get(); }
-    // L_γ (PerParticle with an environment only; null otherwise).
+    // What the particles reflect (PerParticle with an environment only; null
+    // otherwise): L_γ or the point values (ParticleRadiance).
     const ConeAverageTable* cone_average() const { return cone_.get(); }
     double sigma_o() const { return sigma_o_; }  // σ(Ωo) = 2π(1 − cos γ)
     // per_particle with ScaleCount::Effective (the prefiltered table's w is
@@ -139,7 +153,8 @@ class Wang2020Model {
     // box's tree count without one).
     uint64_t footprint_count(const UvBox& A) const;
     // PerParticle micro sums over the particles in A (local frame, z = n):
-    // Σ L_γ(i_k) M(i_k, o) (frame t, b, n maps to world) and the number of
+    // Σ L(i_k) M(i_k, o), L = cone_'s table (frame t, b, n maps to world),
+    // and the number of
     // particles whose normal reflects wi into the γ cone around wo.
     glm::dvec3 particle_environment(const UvBox& A, const glm::dvec3& o, const glm::dvec3& t,
                                     const glm::dvec3& b, const glm::dvec3& n) const;

@@ -267,7 +267,9 @@ TEST(Wang2020Prefilter, LookupHasNoSeamAtTheFramesEquator) {
                     double ref = 0.0;
                     for (uint64_t id = 0; id < 8; ++id)
                         ref += PrefilterTable::evaluate(model.dpf(), m.alpha, env, n, ol, 64,
-                                                        1000 + id).x / 8.0;
+                                                        1000 + id)
+                                   .x /
+                               8.0;
                     err += std::abs(table.lookup(n, o).x - ref);
                     peak = std::max(peak, ref);
                     ++count;
@@ -304,12 +306,11 @@ TEST(Wang2020Prefilter, FresnelIsInsideTheIntegralOfM) {
         glm::dvec3 mean(0.0);
         for (uint64_t id = 0; id < 16; ++id)
             mean += glm::dvec3(PrefilterTable::evaluate(model.dpf(), 0.6, white, {0, 0, 1}, o, 64,
-                                                         id, nullptr, &mat.fresnel)) /
+                                                        id, nullptr, &mat.fresnel)) /
                     (16.0 * model.sigma_o());
         for (int c = 0; c < 3; ++c) EXPECT_NEAR(mean[c], ref[c], 0.02 * ref[c]) << th << " " << c;
         // F outside the integral, at o·n, would be this far off (red):
-        const double outside =
-            ref.z * glint_fresnel(mat.fresnel, static_cast<float>(o.z)).x;
+        const double outside = ref.z * glint_fresnel(mat.fresnel, static_cast<float>(o.z)).x;
         if (th == 65.0) {
             EXPECT_GT(std::abs(outside - ref.x), 0.1 * ref.x);
         }
