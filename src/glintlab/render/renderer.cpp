@@ -10,6 +10,7 @@
 #include "glintlab/core/progress.h"
 #include "glintlab/core/rng.h"
 #include "glintlab/glints/glint_lighting.h"
+#include "glintlab/glints/wang2020/wang2020_model.h"
 #include "glintlab/glints/wang2020/wang2020_postprocess.h"
 #include "glintlab/render/accel.h"
 #include "glintlab/render/integrators.h"
@@ -97,8 +98,10 @@ Image render_scene(const Scene& scene, const Accelerator& accel, const RenderOpt
         });
     progress.done();
     if (any_post.load()) {
-        // 001 §4.4: δ = G9 * visibility, glints = G3 * (rgb · δ).
-        const wang2020::GlintBuffer blurred = wang2020::postprocess_glints(post);
+        // 001 §4.4: δ = G9 * visibility, glints = G3 * (rgb · δ) with
+        // "glint_blur": "as_published", else rgb · δ.
+        const wang2020::GlintBuffer blurred =
+            wang2020::postprocess_glints(post, 9, wang2020_glint_blur_taps(scene));
         for (size_t i = 0; i < image.pixels.size(); ++i)
             image.pixels[i] += glm::vec3(blurred.texels[i]);
     }

@@ -140,6 +140,10 @@ GlintModelDescriptor wang2020_descriptor() {
                    "what a particle of \"micro\": \"per_particle\" reflects under the "
                    "environment: the value in its mirror direction (default, as an explicit "
                    "facet) or the gamma-cone average"),
+        gp::choice("glint_blur", &P::glint_blur_published,
+                   {{"none", false}, {"as_published", true}},
+                   "with \"blur\": the glint layer unblurred after the occlusion blur (default, "
+                   "as the explicit facets) or 001 §4.4's 3-tap Gaussian blur of it"),
     };
     d.check = check_wang2020;
     d.fit_material = fit_wang2020;

@@ -9,6 +9,7 @@
 #include <mutex>
 #include <tuple>
 
+#include "glintlab/core/error.h"
 #include "glintlab/glints/glint_lighting.h"
 #include "glintlab/glints/model_params.h"
 #include "glintlab/glints/wang2020/wang2020_shading.h"
@@ -140,6 +141,30 @@ UvBox box_of(const Footprint& fp) {
 std::shared_ptr<const wang2020::Wang2020Model> wang2020_model_for(
     const GlintDesc& desc, const std::shared_ptr<const EnvironmentMap>& env) {
     return model_for(desc, env);
+}
+
+int wang2020_glint_blur_taps(const Scene& scene) {
+    const MaterialDesc* owner = nullptr;
+    for (const Shape& shape : scene.shapes) {
+        if (shape.material < 0 || static_cast<size_t>(shape.material) >= scene.materials.size())
+            continue;
+        const MaterialDesc& m = scene.materials[static_cast<size_t>(shape.material)];
+        if (m.type != MaterialDesc::Type::Glint) continue;
+        const auto* p = std::get_if<Wang2020Params>(&m.glint.params);
+        if (p == nullptr || !p->blur) continue;
+        if (owner != nullptr &&
+            std::get<Wang2020Params>(owner->glint.params).glint_blur_published !=
+                p->glint_blur_published)
+            fail(
+                "wang2020: materials \"{}\" and \"{}\" differ in \"glint_blur\" (\"none\" or "
+                "\"as_published\"): one 001 §4.4 post-process runs per image, so every wang2020 "
+                "material with \"blur\" on must use the same",
+                owner->name, m.name);
+        owner = &m;
+    }
+    return owner != nullptr && std::get<Wang2020Params>(owner->glint.params).glint_blur_published
+               ? 3
+               : 1;
 }
 
 bool wang2020_shades_light(const GlintDesc&, const Scene& scene, int light) {

@@ -9,6 +9,7 @@
 #include "glintlab/core/error.h"
 #include "glintlab/glints/model_params.h"
 #include "glintlab/glints/registry.h"
+#include "glintlab/glints/wang2020/wang2020_model.h"
 #include "glintlab/glints/wang2020/wang2020_quadtree.h"
 #include "glintlab/render/renderer.h"
 #include "glintlab/scene/scene_loader.h"
@@ -124,15 +125,19 @@ TEST(Wang2020Model, DepthIsBoundedByParticlesPerLeafAndNodes) {
 }
 
 // The §4.4 blurs in renders: with directional occlusion off (visibility 1,
-// δ = 1) the pass is G3 * rgb, a normalised kernel, so the image mean is
-// unchanged while the sphere stays clear of the borders (clamped edges are
-// the only place a normalised blur moves energy), and neighbouring pixels
-// differ less (the 3-tap Gaussian removes part of the pixel-scale variance).
+// δ = 1) and "glint_blur": "as_published" the pass is G3 * rgb, a normalised
+// kernel, so the image mean is unchanged while the sphere stays clear of the
+// borders (clamped edges are the only place a normalised blur moves energy),
+// and neighbouring pixels differ less (the 3-tap Gaussian removes part of
+// the pixel-scale variance). With the default "glint_blur": "none" the pass
+// is rgb · δ = rgb: the image is the unblurred one (up to float rounding:
+// the deferred term is averaged and added apart).
 TEST(Wang2020Model, RenderBlursTheGlintLayerAndKeepsItsEnergy) {
     nlohmann::json block = {{"dpf_theta", 12},
                             {"dpf_phi", 24},
                             {"prefilter_samples", 16},
-                            {"directional_occlusion", false}};
+                            {"directional_occlusion", false},
+                            {"glint_blur", "as_published"}};
     nlohmann::json doc = scene_with(glint_material(block));
     doc["film"] = {{"width", 40}, {"height", 40}};
     doc["camera"]["fov_deg"] = 60;
@@ -155,6 +160,44 @@ TEST(Wang2020Model, RenderBlursTheGlintLayerAndKeepsItsEnergy) {
     EXPECT_NEAR(mean_b / mean_s, 1.0, 1e-4);
     EXPECT_LT(tv_b, 0.9 * tv_s) << tv_b << " vs " << tv_s;
     EXPECT_NE(error_of(scene_with(glint_material({{"blur", 3}}))).find("blur"), std::string::npos);
+    EXPECT_NE(error_of(scene_with(glint_material({{"glint_blur", "gaussian"}}))).find("glint_blur"),
+              std::string::npos);
+    doc["materials"][0]["wang2020"]["blur"] = true;
+    doc["materials"][0]["wang2020"].erase("glint_blur");
+    const Image occlusion_only = render_scene(parse_scene(doc, "occlusion_only.json"), opt);
+    for (size_t i = 0; i < sharp.pixels.size(); ++i)
+        for (int c = 0; c < 3; ++c)
+            ASSERT_NEAR(occlusion_only.pixels[i][c], sharp.pixels[i][c],
+                        1e-5f * (1.0f + sharp.pixels[i][c]))
+                << i;
+}
+
+// One §4.4 post-process runs per image: two wang2020 materials of a scene
+// that disagree on "glint_blur" are refused with both names.
+TEST(Wang2020Model, MaterialsMustAgreeOnTheGlintBlur) {
+    nlohmann::json doc = scene_with(glint_material({{"dpf_theta", 12}, {"dpf_phi", 24}}));
+    nlohmann::json second = doc["materials"][0];
+    second["name"] = "second_glitter";
+    second["wang2020"]["glint_blur"] = "as_published";
+    doc["materials"].push_back(second);
+    nlohmann::json shape = doc["shapes"][0];
+    shape["name"] = "s2";
+    shape["material"] = "second_glitter";
+    doc["shapes"].push_back(shape);
+    const Scene scene = parse_scene(doc, "two.json");
+    try {
+        wang2020_glint_blur_taps(scene);
+        ADD_FAILURE() << "no error";
+    } catch (const Error& e) {
+        const std::string what = e.what();
+        EXPECT_NE(what.find("glint_blur"), std::string::npos) << what;
+        EXPECT_NE(what.find("second_glitter"), std::string::npos) << what;
+    }
+    // Agreeing materials, and "blur": false on the odd one, are fine.
+    doc["materials"][1]["wang2020"]["blur"] = false;
+    EXPECT_EQ(wang2020_glint_blur_taps(parse_scene(doc, "two_ok.json")), 1);
+    doc["materials"][0]["wang2020"]["glint_blur"] = "as_published";
+    EXPECT_EQ(wang2020_glint_blur_taps(parse_scene(doc, "one_published.json")), 3);
 }
 
 // Regression: roughness 0.02, the documented minimum, loaded (0.02f passed the

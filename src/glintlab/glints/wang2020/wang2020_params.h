@@ -39,6 +39,12 @@ struct Wang2020Params {
     // each particle reflects the environment's value in its mirror direction,
     // as an explicit facet does) or "cone" (the γ-cone average L_γ).
     bool particle_radiance_point = true;
+    // "glint_blur": "none" (default: with "blur" on, only the 9-tap blur of
+    // the directional occlusion runs; the glints stay as sharp as the
+    // explicit truth's) or "as_published" (§4.4's 3-tap Gaussian blur of the
+    // glint layer too). One kernel per image: the wang2020 materials of a
+    // scene with "blur" on must agree (wang2020_glint_blur_taps).
+    bool glint_blur_published = false;
 };
 
 }  // namespace glintlab
