@@ -98,10 +98,10 @@ Image render_scene(const Scene& scene, const Accelerator& accel, const RenderOpt
         });
     progress.done();
     if (any_post.load()) {
-        // 001 §4.4: δ = G9 * visibility, glints = G3 * (rgb · δ) with
-        // "glint_blur": "as_published", else rgb · δ.
+        // 001 §4.4: δ = G9 * visibility, glints = G3 * (rgb · δ) where
+        // "glint_blur" asks for it (at 1 spp under "auto"), else rgb · δ.
         const wang2020::GlintBuffer blurred =
-            wang2020::postprocess_glints(post, 9, wang2020_glint_blur_taps(scene));
+            wang2020::postprocess_glints(post, 9, wang2020_glint_blur_taps(scene, spp == 1));
         for (size_t i = 0; i < image.pixels.size(); ++i)
             image.pixels[i] += glm::vec3(blurred.texels[i]);
     }

@@ -140,10 +140,13 @@ GlintModelDescriptor wang2020_descriptor() {
                    "what a particle of \"micro\": \"per_particle\" reflects under the "
                    "environment: the value in its mirror direction (default, as an explicit "
                    "facet) or the gamma-cone average"),
-        gp::choice("glint_blur", &P::glint_blur_published,
-                   {{"none", false}, {"as_published", true}},
-                   "with \"blur\": the glint layer unblurred after the occlusion blur (default, "
-                   "as the explicit facets) or 001 §4.4's 3-tap Gaussian blur of it"),
+        gp::choice("glint_blur", &P::glint_blur,
+                   {{"auto", P::GlintBlur::Auto},
+                    {"none", P::GlintBlur::None},
+                    {"as_published", P::GlintBlur::AsPublished}},
+                   "with \"blur\": 001 §4.4's 3-tap Gaussian blur of the glint layer where the "
+                   "image has one sample per pixel (GPU, CPU at 1 spp) and none where the CPU "
+                   "supersamples (default), never, or always as published"),
     };
     d.check = check_wang2020;
     d.fit_material = fit_wang2020;

@@ -28,7 +28,7 @@ class State final : public GpuModelState {
     void prepare(unsigned program, gl::UniformCache& u, const GlintDesc& desc, const GpuFrame& f,
                  unsigned) override {
         resources_.bind(program, u, desc, f.scene);
-        glint_taps_ = wang2020_glint_blur_taps(f.scene);
+        glint_taps_ = wang2020_glint_blur_taps(f.scene, true);  // one sample per pixel
     }
     // 001 §4.4's blurs of the deferred environment glints, added into the
     // colour target (render_scene's postprocess_glints).

@@ -143,8 +143,9 @@ std::shared_ptr<const wang2020::Wang2020Model> wang2020_model_for(
     return model_for(desc, env);
 }
 
-int wang2020_glint_blur_taps(const Scene& scene) {
+int wang2020_glint_blur_taps(const Scene& scene, bool one_sample) {
     const MaterialDesc* owner = nullptr;
+    int taps = 1;
     for (const Shape& shape : scene.shapes) {
         if (shape.material < 0 || static_cast<size_t>(shape.material) >= scene.materials.size())
             continue;
@@ -152,19 +153,19 @@ int wang2020_glint_blur_taps(const Scene& scene) {
         if (m.type != MaterialDesc::Type::Glint) continue;
         const auto* p = std::get_if<Wang2020Params>(&m.glint.params);
         if (p == nullptr || !p->blur) continue;
-        if (owner != nullptr &&
-            std::get<Wang2020Params>(owner->glint.params).glint_blur_published !=
-                p->glint_blur_published)
+        using B = Wang2020Params::GlintBlur;
+        const int own =
+            p->glint_blur == B::AsPublished || (p->glint_blur == B::Auto && one_sample) ? 3 : 1;
+        if (owner != nullptr && own != taps)
             fail(
-                "wang2020: materials \"{}\" and \"{}\" differ in \"glint_blur\" (\"none\" or "
-                "\"as_published\"): one 001 §4.4 post-process runs per image, so every wang2020 "
-                "material with \"blur\" on must use the same",
-                owner->name, m.name);
+                "wang2020: materials \"{}\" and \"{}\" differ in \"glint_blur\" ({} and {} "
+                "taps here): one 001 §4.4 post-process runs per image, so every wang2020 "
+                "material with \"blur\" on must resolve to the same kernel",
+                owner->name, m.name, taps, own);
         owner = &m;
+        taps = own;
     }
-    return owner != nullptr && std::get<Wang2020Params>(owner->glint.params).glint_blur_published
-               ? 3
-               : 1;
+    return taps;
 }
 
 bool wang2020_shades_light(const GlintDesc&, const Scene& scene, int light) {

@@ -39,11 +39,12 @@ glm::vec3 wang2020_light_radiance(const GlintLightingContext& ctx, int light);
 
 // The glint kernel of 001 §4.4's post-process for a scene's image: 3 taps
 // when its shapes' wang2020 materials with "blur" on have "glint_blur":
-// "as_published", 1 (no glint blur; the 9-tap occlusion blur still runs)
-// with "none" or without such materials. One post-process runs per image
-// (render_scene, GpuRenderer), so materials that disagree are an error
-// naming both.
-int wang2020_glint_blur_taps(const Scene& scene);
+// "as_published", or "auto" and the image has one sample per pixel
+// (one_sample: the GPU, a CPU render at 1 spp); else 1 (no glint blur; the
+// 9-tap occlusion blur still runs). One post-process runs per image
+// (render_scene, GpuRenderer), so materials that resolve to different
+// kernels are an error naming both.
+int wang2020_glint_blur_taps(const Scene& scene, bool one_sample);
 
 // The cached tables of a wang2020 material (built on first use): the ones
 // the CPU renderer shades with, so the GPU renderer uploads the same arrays.

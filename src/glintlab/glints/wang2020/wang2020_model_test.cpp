@@ -129,9 +129,9 @@ TEST(Wang2020Model, DepthIsBoundedByParticlesPerLeafAndNodes) {
 // kernel, so the image mean is unchanged while the sphere stays clear of the
 // borders (clamped edges are the only place a normalised blur moves energy),
 // and neighbouring pixels differ less (the 3-tap Gaussian removes part of
-// the pixel-scale variance). With the default "glint_blur": "none" the pass
-// is rgb · δ = rgb: the image is the unblurred one (up to float rounding:
-// the deferred term is averaged and added apart).
+// the pixel-scale variance). With "glint_blur": "none" the pass is
+// rgb · δ = rgb: the image is the unblurred one (up to float rounding: the
+// deferred term is averaged and added apart).
 TEST(Wang2020Model, RenderBlursTheGlintLayerAndKeepsItsEnergy) {
     nlohmann::json block = {{"dpf_theta", 12},
                             {"dpf_phi", 24},
@@ -163,7 +163,7 @@ TEST(Wang2020Model, RenderBlursTheGlintLayerAndKeepsItsEnergy) {
     EXPECT_NE(error_of(scene_with(glint_material({{"glint_blur", "gaussian"}}))).find("glint_blur"),
               std::string::npos);
     doc["materials"][0]["wang2020"]["blur"] = true;
-    doc["materials"][0]["wang2020"].erase("glint_blur");
+    doc["materials"][0]["wang2020"]["glint_blur"] = "none";
     const Image occlusion_only = render_scene(parse_scene(doc, "occlusion_only.json"), opt);
     for (size_t i = 0; i < sharp.pixels.size(); ++i)
         for (int c = 0; c < 3; ++c)
@@ -173,7 +173,8 @@ TEST(Wang2020Model, RenderBlursTheGlintLayerAndKeepsItsEnergy) {
 }
 
 // One §4.4 post-process runs per image: two wang2020 materials of a scene
-// that disagree on "glint_blur" are refused with both names.
+// whose "glint_blur" resolve to different kernels are refused with both
+// names; "auto" (default) is the 3-tap blur with one sample per pixel only.
 TEST(Wang2020Model, MaterialsMustAgreeOnTheGlintBlur) {
     nlohmann::json doc = scene_with(glint_material({{"dpf_theta", 12}, {"dpf_phi", 24}}));
     nlohmann::json second = doc["materials"][0];
@@ -185,8 +186,9 @@ TEST(Wang2020Model, MaterialsMustAgreeOnTheGlintBlur) {
     shape["material"] = "second_glitter";
     doc["shapes"].push_back(shape);
     const Scene scene = parse_scene(doc, "two.json");
+    EXPECT_EQ(wang2020_glint_blur_taps(scene, true), 3);  // auto = as_published here
     try {
-        wang2020_glint_blur_taps(scene);
+        wang2020_glint_blur_taps(scene, false);
         ADD_FAILURE() << "no error";
     } catch (const Error& e) {
         const std::string what = e.what();
@@ -195,9 +197,12 @@ TEST(Wang2020Model, MaterialsMustAgreeOnTheGlintBlur) {
     }
     // Agreeing materials, and "blur": false on the odd one, are fine.
     doc["materials"][1]["wang2020"]["blur"] = false;
-    EXPECT_EQ(wang2020_glint_blur_taps(parse_scene(doc, "two_ok.json")), 1);
+    EXPECT_EQ(wang2020_glint_blur_taps(parse_scene(doc, "two_ok.json"), false), 1);
+    EXPECT_EQ(wang2020_glint_blur_taps(parse_scene(doc, "two_ok.json"), true), 3);
+    doc["materials"][0]["wang2020"]["glint_blur"] = "none";
+    EXPECT_EQ(wang2020_glint_blur_taps(parse_scene(doc, "one_none.json"), true), 1);
     doc["materials"][0]["wang2020"]["glint_blur"] = "as_published";
-    EXPECT_EQ(wang2020_glint_blur_taps(parse_scene(doc, "one_published.json")), 3);
+    EXPECT_EQ(wang2020_glint_blur_taps(parse_scene(doc, "one_published.json"), false), 3);
 }
 
 // Regression: roughness 0.02, the documented minimum, loaded (0.02f passed the

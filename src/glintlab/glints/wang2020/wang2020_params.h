@@ -39,12 +39,16 @@ struct Wang2020Params {
     // each particle reflects the environment's value in its mirror direction,
     // as an explicit facet does) or "cone" (the γ-cone average L_γ).
     bool particle_radiance_point = true;
-    // "glint_blur": "none" (default: with "blur" on, only the 9-tap blur of
-    // the directional occlusion runs; the glints stay as sharp as the
-    // explicit truth's) or "as_published" (§4.4's 3-tap Gaussian blur of the
-    // glint layer too). One kernel per image: the wang2020 materials of a
-    // scene with "blur" on must agree (wang2020_glint_blur_taps).
-    bool glint_blur_published = false;
+    // "glint_blur" (with "blur" on; the 9-tap blur of the directional
+    // occlusion always runs): "auto" (default: §4.4's 3-tap Gaussian blur of
+    // the glint layer where the image takes one sample per pixel, the GPU
+    // and a CPU render at 1 spp, none where the CPU supersamples, whose
+    // jittered footprints already filter the sparkle as the ground truth's
+    // do), "none" or "as_published" (always the 3-tap blur). One kernel per
+    // image: the wang2020 materials of a scene with "blur" on must agree
+    // (wang2020_glint_blur_taps).
+    enum class GlintBlur { Auto, None, AsPublished };
+    GlintBlur glint_blur = GlintBlur::Auto;
 };
 
 }  // namespace glintlab
