@@ -262,13 +262,14 @@ PYBIND11_MODULE(_glintlab, m) {
         [](const std::string& scene, const std::vector<std::string>& sets,
            const std::string& material, const std::vector<std::string>& models, int realizations,
            int width, int height, int spp, int frames, double orbit_deg, uint64_t seed, bool gpu,
-           int threads, const std::string& output, int truth_realizations,
-           bool match_facet_extent) {
+           int threads, const std::string& output, int truth_realizations, bool match_facet_extent,
+           int flicker_paths) {
             glintlab::python::CompareArgs a{scene,     sets,   material, models, realizations,
                                             width,     height, spp,      frames, threads,
                                             orbit_deg, seed,   gpu,      output};
             a.truth_realizations = truth_realizations;
             a.match_facet_extent = match_facet_extent;
+            a.flicker_paths = flicker_paths;
             nlohmann::json j;
             {
                 py::gil_scoped_release release;
@@ -280,7 +281,7 @@ PYBIND11_MODULE(_glintlab, m) {
         py::arg("realizations"), py::arg("width"), py::arg("height"), py::arg("spp"),
         py::arg("frames"), py::arg("orbit_deg"), py::arg("seed"), py::arg("gpu"),
         py::arg("threads"), py::arg("output"), py::arg("truth_realizations") = 0,
-        py::arg("match_facet_extent") = true,
+        py::arg("match_facet_extent") = true, py::arg("flicker_paths") = 4,
         "glintlab compare: the metrics.json document (docs/VALIDATION.md \"compare\")");
     m.def(
         "read_image", [](const std::string& path) { return to_numpy(read_image(path)); },

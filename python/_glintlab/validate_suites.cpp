@@ -23,6 +23,7 @@ nlohmann::json run_compare(const CompareArgs& a) {
     o.models = a.models;
     o.realizations = a.realizations;
     o.truth_realizations = a.truth_realizations;
+    o.flicker_paths = a.flicker_paths;
     o.match_facet_extent = a.match_facet_extent;
     o.width = a.width, o.height = a.height;
     o.spp = a.spp;

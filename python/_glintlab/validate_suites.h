@@ -29,6 +29,7 @@ struct CompareArgs {
     bool gpu = false;
     std::string output;
     int truth_realizations = 0;      // 0: realizations
+    int flicker_paths = 4;           // camera paths of the flicker measure
     bool match_facet_extent = true;  // false: the models' default facet extents
 };
 nlohmann::json run_compare(const CompareArgs& args);

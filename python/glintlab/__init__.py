@@ -227,7 +227,7 @@ def validate(suite, seed=1):
 
 def compare(scene, models=None, material=None, realizations=4, res=None, spp=None, frames=8,
             orbit_deg=4.0, seed=1, gpu=False, threads=0, overrides=None, output=None,
-            truth_realizations=0, match_facet_extent=True):
+            truth_realizations=0, match_facet_extent=True, flicker_paths=4):
     """`glintlab compare` on a scene file: every model that can shade the
     scene's lights against the explicit ground truth (docs/VALIDATION.md
     "compare"). Returns the metrics.json document as a dict (one entry per
@@ -235,7 +235,9 @@ def compare(scene, models=None, material=None, realizations=4, res=None, spp=Non
     tables. `overrides` is a list of "POINTER=VALUE" strings (render --set).
     `truth_realizations` (0: `realizations`) are the truth's seeds;
     `match_facet_extent=False` keeps every model's default facet extent
-    instead of the truth's (CLI --model-extent)."""
+    instead of the truth's (CLI --model-extent); `flicker_paths` camera
+    paths (each another realization) give the flicker and its standard
+    error (CLI --flicker-paths)."""
     width, height = _resolution(res) if res is not None else (0, 0)
     if isinstance(models, str):
         models = [models]
@@ -243,7 +245,7 @@ def compare(scene, models=None, material=None, realizations=4, res=None, spp=Non
         os.fspath(scene), list(overrides or []), material or "", list(models or []),
         int(realizations), width, height, int(spp or 0), int(frames), float(orbit_deg),
         int(seed), bool(gpu), int(threads), os.fspath(output) if output else "",
-        int(truth_realizations), bool(match_facet_extent)))
+        int(truth_realizations), bool(match_facet_extent), int(flicker_paths)))
 
 
 def read_image(path):

@@ -43,8 +43,10 @@ def test_compare_matches_the_cli_json(tmp_path):
                           str(tmp_path / "cli")], check=True, capture_output=True, text=True)
     cli_rows = {m["model"]: m for m in json.loads(cli.stdout)["models"]}
     for key in ("mean_rel_err", "mean_rel_err_se", "blurred_rel_rmse", "variance_ratio",
-                "sampling_variance", "structure_variance_ratio", "wasserstein", "flicker_ratio"):
+                "sampling_variance", "structure_variance_ratio", "wasserstein", "flicker_ratio",
+                "flicker_se", "flicker_ratio_se"):
         assert smooth[key] == cli_rows["smooth"][key], key
+    assert result["flicker_paths"] == 4  # the CLI's default too
 
 
 def test_compare_matches_the_facet_extent_unless_asked_not_to(tmp_path):

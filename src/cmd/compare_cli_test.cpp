@@ -60,16 +60,18 @@ TEST(CompareCli, WritesTheFilesAndTheJsonTable) {
     const auto out = dir / "out";
     const RunResult r = run("compare " + scene.string() +
                             " --models smooth,zirr2016,kneiphof2025 --realizations 2 --frames 2 "
-                            "--truth-realizations 3 --json -o " +
+                            "--flicker-paths 3 --truth-realizations 3 --json -o " +
                             out.string() + " 2>/dev/null");
     ASSERT_EQ(r.status, 0) << r.output;
     const nlohmann::json j = nlohmann::json::parse(r.output);  // stdout is the JSON alone
-    for (const char* key : {"scene", "material", "lights", "width", "height", "spp", "realizations",
-                            "frames", "orbit_deg", "blur_sigma_px", "mask_pixels", "models"})
+    for (const char* key :
+         {"scene", "material", "lights", "width", "height", "spp", "realizations", "frames",
+          "flicker_paths", "orbit_deg", "blur_sigma_px", "mask_pixels", "models"})
         EXPECT_TRUE(j.contains(key)) << key;
     EXPECT_EQ(j["width"], 24);
     EXPECT_EQ(j["realizations"], 2);
-    EXPECT_EQ(j["truth_realizations"], 3);        // the explicit rows' own seeds
+    EXPECT_EQ(j["truth_realizations"], 3);  // the explicit rows' own seeds
+    EXPECT_EQ(j["flicker_paths"], 3);
     EXPECT_GT(j["mask_pixels"].get<int>(), 100);  // the sphere fills ~40 % of 576 pixels
     std::map<std::string, nlohmann::json> rows;
     for (const nlohmann::json& m : j["models"]) rows[m["model"]] = m;
@@ -82,8 +84,8 @@ TEST(CompareCli, WritesTheFilesAndTheJsonTable) {
         ASSERT_TRUE(m["compared"].get<bool>()) << model;
         for (const char* key :
              {"mean_rel_err", "mean_rel_err_se", "blurred_rel_rmse", "variance_ratio",
-              "wasserstein", "flicker", "flicker_ratio", "seconds", "nan_count", "inf_count",
-              "negative_count", "truth", "backend"})
+              "wasserstein", "flicker", "flicker_se", "flicker_ratio", "flicker_ratio_se",
+              "seconds", "nan_count", "inf_count", "negative_count", "truth", "backend"})
             EXPECT_TRUE(m.contains(key)) << model << " " << key;
         EXPECT_EQ(m["nan_count"], 0) << model;
         EXPECT_EQ(m["negative_count"], 0) << model;
@@ -128,6 +130,9 @@ TEST(CompareCli, BadOptionsNameTheOption) {
     r = run(base + "--truth-realizations 1 2>&1");
     EXPECT_NE(r.status, 0);
     EXPECT_NE(r.output.find("truth-realizations"), std::string::npos) << r.output;
+    r = run(base + "--flicker-paths 0 2>&1");
+    EXPECT_NE(r.status, 0);
+    EXPECT_NE(r.output.find("flicker-paths"), std::string::npos) << r.output;
     r = run(base + "--res 0x4 2>&1");
     EXPECT_EQ(r.status, 1);
     EXPECT_NE(r.output.find("--res"), std::string::npos) << r.output;

@@ -112,6 +112,10 @@ void add_compare_command(CLI::App& app, int* status) {
         ->check(CLI::Range(1, 1 << 20));
     sub->add_option("--frames", o.frames, "Frames of the camera path of the flicker measure")
         ->check(CLI::Range(2, 256));
+    sub->add_option("--flicker-paths", o.flicker_paths,
+                    "Camera paths of the flicker measure, each another realization (default 4); "
+                    "the flicker is their mean, with its standard error")
+        ->check(CLI::Range(1, 256));
     sub->add_option("--orbit", o.orbit_deg,
                     "Degrees the camera orbits its target over the flicker path")
         ->check(CLI::Range(1e-3, 90.0));

@@ -93,12 +93,14 @@ std::string truth_key(const GlintDesc& d) {
                        d.log_density, std::get<ExplicitParams>(d.params).gamma_deg);
 }
 
-// One set of renders: a model (or the truth) on R realizations and F frames.
+// One set of renders: a model (or the truth) on R realizations, and P
+// camera paths of F frames (path p: realization p's seeds).
 struct Job {
     size_t row = 0;  // index into result.models
     GlintDesc desc;
     bool gpu = false;
-    std::vector<Plane> realizations, frames;
+    std::vector<Plane> realizations;
+    std::vector<std::vector<Plane>> paths;
     std::vector<double> means;
 };
 
@@ -119,6 +121,8 @@ void check_options(const CompareOptions& o) {
             scene, o.truth_realizations);
     if (o.frames < 2 || o.frames > 256)
         fail("compare {}: --frames must be in [2, 256], got {}", scene, o.frames);
+    if (o.flicker_paths < 1 || o.flicker_paths > 256)
+        fail("compare {}: --flicker-paths must be in [1, 256], got {}", scene, o.flicker_paths);
     if ((o.width != 0 || o.height != 0) &&
         (o.width < 1 || o.height < 1 || o.width > 16384 || o.height > 16384))
         fail("compare {}: --res: W and H must be in [1, 16384], got {}x{}", scene, o.width,
@@ -189,6 +193,7 @@ CompareResult run_compare(const CompareOptions& o) {
     result.width = base.camera.width, result.height = base.camera.height;
     result.spp = base.render.spp;
     result.realizations = o.realizations, result.frames = o.frames;
+    result.flicker_paths = o.flicker_paths;
     result.truth_realizations = o.truth_realizations > 0 ? o.truth_realizations : o.realizations;
     result.orbit_deg = o.orbit_deg;
     result.blur_sigma_px = sparkle_blur_sigma(result.width, result.height);
@@ -333,21 +338,36 @@ CompareResult run_compare(const CompareOptions& o) {
     const auto realizations_of = [&](const Job& job) {
         return result.models[job.row].reference ? truth_realizations : o.realizations;
     };
+    // The renders of a job, in order: realization r at frame 0 (r < R);
+    // then, per flicker path p, frame 0 of realization p where p >= R (the
+    // others reuse realization p's) and its frames 1..F-1; last, frame 0 of
+    // realization 0 with another sampling seed.
+    struct Render {
+        int realization = 0, frame = 0;
+        bool resample = false;
+    };
+    const auto renders_of = [&](const Job& job) {
+        const int R = realizations_of(job);
+        std::vector<Render> list;
+        for (int r = 0; r < R; ++r) list.push_back({r, 0, false});
+        for (int p = 0; p < o.flicker_paths; ++p)
+            for (int t = p < R ? 1 : 0; t < o.frames; ++t) list.push_back({p, t, false});
+        list.push_back({0, 0, true});
+        return list;
+    };
     int total = 0;
-    for (const Job& job : jobs) total += realizations_of(job) + o.frames;
+    for (const Job& job : jobs) total += int(renders_of(job).size());
     int done = 0;
     for (Job& job : jobs) {
         ModelMetrics& row = result.models[job.row];
         const int R = realizations_of(job);
-        const int per_job = R + o.frames;
         double seconds = 0.0;
         Plane resampled;  // frame 0 of realization 0, another sampling seed
-        for (int k = 0; k < per_job; ++k) {
-            // k < R: realization k at frame 0; then frames 1.. of realization
-            // 0; last, frame 0 of realization 0 with another sampling seed.
-            const bool resample = k == per_job - 1;
-            const int r = k < R ? k : 0;
-            const int t = k < R || resample ? 0 : k - R + 1;
+        job.paths.assign(size_t(o.flicker_paths), {});
+        for (const Render& render : renders_of(job)) {
+            const bool resample = render.resample;
+            const int r = render.realization;
+            const int t = render.frame;
             Scene s = base;
             s.camera = cameras[size_t(t)];
             s.render.seed = o.seed + uint64_t(r) + (resample ? kResampleSeedOffset : 0u);
@@ -374,16 +394,14 @@ CompareResult run_compare(const CompareOptions& o) {
             Plane plane = luminance_plane(image);
             if (resample) {
                 resampled = std::move(plane);
-            } else if (k < R) {
+            } else if (t == 0 && r < R) {
                 seconds += dt;
                 job.means.push_back(masked_mean(plane, masks[0]));
-                if (k == 0) {
-                    row.image = std::move(image);
-                    job.frames.push_back(plane);
-                }
+                if (r == 0) row.image = std::move(image);
+                if (r < o.flicker_paths) job.paths[size_t(r)].push_back(plane);
                 job.realizations.push_back(std::move(plane));
             } else {
-                job.frames.push_back(std::move(plane));
+                job.paths[size_t(r)].push_back(std::move(plane));
             }
             ++done;
             if (o.progress) o.progress(done, total);
@@ -392,10 +410,17 @@ CompareResult run_compare(const CompareOptions& o) {
         row.mean_plane = average(job.realizations);
         row.mean_luminance = 0.0;
         for (double m : job.means) row.mean_luminance += m / double(job.means.size());
+        if (job.means.size() > 1 && row.mean_luminance > 0.0) {
+            double ss = 0.0;
+            for (double m : job.means) ss += (m - row.mean_luminance) * (m - row.mean_luminance);
+            const double n = double(job.means.size());
+            row.mean_luminance_rel_se = std::sqrt(ss / (n - 1.0) / n) / row.mean_luminance;
+        }
         row.pixel_variance = mean_pixel_variance(job.realizations, masks[0]);
-        row.flicker = flicker(job.frames, masks);
-        row.sampling_flicker = flicker({job.frames[0], resampled}, {masks[0], masks[0]});
-        row.sampling_variance = sampling_pixel_variance(job.frames[0], resampled, masks[0]);
+        const FlickerEstimate f = flicker_over_paths(job.paths, masks);
+        row.flicker = f.mean, row.flicker_se = f.standard_error;
+        row.sampling_flicker = flicker({job.realizations[0], resampled}, {masks[0], masks[0]});
+        row.sampling_variance = sampling_pixel_variance(job.realizations[0], resampled, masks[0]);
     }
 
     // Metrics against each model's truth.
@@ -420,6 +445,9 @@ CompareResult run_compare(const CompareOptions& o) {
                                              pooled_masked_values(truth.realizations, masks[0])),
                                 t.mean_luminance);
         row.flicker_ratio = ratio(row.flicker, t.flicker);
+        if (row.flicker > 0.0 && t.flicker > 0.0)
+            row.flicker_ratio_se = row.flicker_ratio * std::hypot(row.flicker_se / row.flicker,
+                                                                  t.flicker_se / t.flicker);
     }
     return result;
 }

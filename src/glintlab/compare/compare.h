@@ -34,7 +34,13 @@ struct CompareOptions {
     int width = 0, height = 0;  // 0: the scene's resolution
     int spp = 0;                // 0: the scene's samples per pixel
     int frames = 8;             // camera-path frames of the flicker measure, >= 2
-    double orbit_deg = 4.0;     // the path: an orbit about the target's up axis
+    // Camera paths of the flicker measure: path p is realization p's
+    // microstructure and sampling seed over the `frames` frames (its frame 0
+    // is that realization's render). The flicker is their mean, with a
+    // standard error: one path's flicker varies 2-3x between seeds where
+    // few facets sparkle (docs/VALIDATION.md "compare"). In [1, 256].
+    int flicker_paths = 4;
+    double orbit_deg = 4.0;  // the path: an orbit about the target's up axis
     // Every model but the scene's own gets facets of the truth's angular
     // extent (facet_extent.h; false: the models' default parameters).
     bool match_facet_extent = true;
@@ -49,11 +55,15 @@ struct ModelMetrics {
     std::string model;
     bool compared = false;  // false: `reason` says why it was not rendered
     std::string reason;
-    bool reference = false;         // the explicit ground truth itself
-    std::string backend;            // "cpu" or "gpu"
-    std::string truth;              // which ground-truth render it is compared with
-    std::string facet_extent;       // the facets' extent it was given (facet_extent.h)
-    double mean_luminance = 0.0;    // masked, averaged over realizations
+    bool reference = false;       // the explicit ground truth itself
+    std::string backend;          // "cpu" or "gpu"
+    std::string truth;            // which ground-truth render it is compared with
+    std::string facet_extent;     // the facets' extent it was given (facet_extent.h)
+    double mean_luminance = 0.0;  // masked, averaged over realizations
+    // Its standard error over the realizations, relative to it (the truth's
+    // part of a model's mean_rel_err_se; validate compare re-runs a truth
+    // whose part keeps a dense check inconclusive).
+    double mean_luminance_rel_se = 0.0;
     double mean_rel_err = 0.0;      // vs the truth (0 for the truth)
     double mean_rel_err_se = 0.0;   // its standard error
     double blurred_rel_rmse = 0.0;  // after gaussian_blur(sigma = blur_sigma_px)
@@ -69,8 +79,12 @@ struct ModelMetrics {
     double sampling_variance = 0.0;
     double structure_variance_ratio = 0.0;
     double wasserstein = 0.0;    // W1 of pooled luminance / the truth's mean
-    double flicker = 0.0;        // metrics.h flicker over the camera path
+    double flicker = 0.0;        // metrics.h flicker, the mean over the flicker paths
+    double flicker_se = 0.0;     // its standard error over the paths (0 for one path)
     double flicker_ratio = 0.0;  // flicker / the truth's
+    // The ratio's standard error (first order: the relative standard errors
+    // of the two flickers added in quadrature; 0 for the truth itself).
+    double flicker_ratio_se = 0.0;
     // flicker between frame 0 and the same frame with another sampling seed
     // (same microstructure, same camera): the estimator's own sampling noise,
     // part of `flicker` for a Monte Carlo render, 0 for a deterministic one.
@@ -87,6 +101,7 @@ struct CompareResult {
     std::string lights;  // "environment, directional", the scene's light types
     int width = 0, height = 0, spp = 0, realizations = 0, frames = 0;
     int truth_realizations = 0;  // of the explicit rows
+    int flicker_paths = 0;
     double orbit_deg = 0.0;
     double blur_sigma_px = 0.0;
     int64_t mask_pixels = 0;           // pixels of the compared material (first frame)

@@ -83,6 +83,7 @@ nlohmann::json CompareResult::to_json() const {
     j["width"] = width, j["height"] = height, j["spp"] = spp;
     j["realizations"] = realizations, j["frames"] = frames;
     j["truth_realizations"] = truth_realizations;
+    j["flicker_paths"] = flicker_paths;
     j["orbit_deg"] = orbit_deg;
     j["blur_sigma_px"] = blur_sigma_px;
     j["mask_pixels"] = mask_pixels;
@@ -101,6 +102,7 @@ nlohmann::json CompareResult::to_json() const {
         r["truth"] = m.truth;
         r["facet_extent"] = m.facet_extent;
         r["mean_luminance"] = number(m.mean_luminance);
+        r["mean_luminance_rel_se"] = number(m.mean_luminance_rel_se);
         r["mean_rel_err"] = number(m.mean_rel_err);
         r["mean_rel_err_se"] = number(m.mean_rel_err_se);
         r["blurred_rel_rmse"] = number(m.blurred_rel_rmse);
@@ -110,7 +112,9 @@ nlohmann::json CompareResult::to_json() const {
         r["structure_variance_ratio"] = number(m.structure_variance_ratio);
         r["wasserstein"] = number(m.wasserstein);
         r["flicker"] = number(m.flicker);
+        r["flicker_se"] = number(m.flicker_se);
         r["flicker_ratio"] = number(m.flicker_ratio);
+        r["flicker_ratio_se"] = number(m.flicker_ratio_se);
         r["sampling_flicker"] = number(m.sampling_flicker);
         r["seconds"] = number(m.seconds);
         r["nan_count"] = m.faults.nan;
@@ -126,35 +130,36 @@ std::string CompareResult::to_csv() const {
         "model,compared,reference,backend,truth,facet_extent,mean_luminance,mean_rel_err,mean_rel_"
         "err_se,"
         "blurred_rel_rmse,pixel_variance,variance_ratio,sampling_variance,structure_variance_ratio,"
-        "wasserstein,flicker,flicker_ratio,"
+        "wasserstein,flicker,flicker_se,flicker_ratio,flicker_ratio_se,"
         "sampling_flicker,seconds,nan_count,inf_count,negative_count,reason\n";
     for (const ModelMetrics& m : models) {
         if (!m.compared) {
-            s += fmt::format("{},false,,,,,,,,,,,,,,,,,,,,,\"{}\"\n", m.model, m.reason);
+            s += fmt::format("{},false,,,,,,,,,,,,,,,,,,,,,,,\"{}\"\n", m.model, m.reason);
             continue;
         }
         s += fmt::format(
-            "{},true,{},{},\"{}\",\"{}\",{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},\n",
+            "{},true,{},{},\"{}\",\"{}\",{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},\n",
             m.model, m.reference, m.backend, m.truth, m.facet_extent, csv_number(m.mean_luminance),
             csv_number(m.mean_rel_err), csv_number(m.mean_rel_err_se),
             csv_number(m.blurred_rel_rmse), csv_number(m.pixel_variance),
             csv_number(m.variance_ratio), csv_number(m.sampling_variance),
             csv_number(m.structure_variance_ratio), csv_number(m.wasserstein),
-            csv_number(m.flicker), csv_number(m.flicker_ratio), csv_number(m.sampling_flicker),
-            csv_number(m.seconds), m.faults.nan, m.faults.inf, m.faults.negative);
+            csv_number(m.flicker), csv_number(m.flicker_se), csv_number(m.flicker_ratio),
+            csv_number(m.flicker_ratio_se), csv_number(m.sampling_flicker), csv_number(m.seconds),
+            m.faults.nan, m.faults.inf, m.faults.negative);
     }
     return s;
 }
 
 std::string CompareResult::to_text() const {
     std::string s = fmt::format(
-        "{}: material {}, lights {}, {}x{}, {} spp, {} realizations ({} of the truth), {} frames "
-        "over {} deg, blur sigma {:.2g} px, {} material pixels\n",
-        scene, material, lights, width, height, spp, realizations, truth_realizations, frames,
-        orbit_deg, blur_sigma_px, mask_pixels);
-    s += fmt::format("{:<14} {:<4} {:>16} {:>9} {:>9} {:>10} {:>8} {:>9} {:>9} {:>12}\n", "model",
+        "{}: material {}, lights {}, {}x{}, {} spp, {} realizations ({} of the truth), {} "
+        "flicker paths of {} frames over {} deg, blur sigma {:.2g} px, {} material pixels\n",
+        scene, material, lights, width, height, spp, realizations, truth_realizations,
+        flicker_paths, frames, orbit_deg, blur_sigma_px, mask_pixels);
+    s += fmt::format("{:<14} {:<4} {:>16} {:>9} {:>9} {:>10} {:>8} {:>14} {:>9} {:>12}\n", "model",
                      "dev", "mean err (se)", "blur rmse", "var ratio", "struct var", "W1",
-                     "flicker x", "time s", "nan/inf/neg");
+                     "flicker x (se)", "time s", "nan/inf/neg");
     for (const ModelMetrics& m : models) {
         if (!m.compared) {
             s += fmt::format("{:<14} not compared: {}\n", m.model, m.reason);
@@ -164,11 +169,15 @@ std::string CompareResult::to_text() const {
                                     ? std::string("truth")
                                     : fmt::format("{} ({:.1f}%)", signed_percent(m.mean_rel_err),
                                                   100.0 * m.mean_rel_err_se);
+        const std::string flicker =
+            m.reference
+                ? fmt::format("1 ({:.2g})", m.flicker > 0.0 ? m.flicker_se / m.flicker : 0.0)
+                : fmt::format("{:.3g} ({:.2g})", m.flicker_ratio, m.flicker_ratio_se);
         s += fmt::format(
-            "{:<14} {:<4} {:>16} {:>9.3g} {:>9.3g} {:>10.3g} {:>8.3g} {:>9.3g} {:>9.3g} "
+            "{:<14} {:<4} {:>16} {:>9.3g} {:>9.3g} {:>10.3g} {:>8.3g} {:>14} {:>9.3g} "
             "{:>4}/{}/{}\n",
             m.model, m.backend, err, m.blurred_rel_rmse, m.variance_ratio,
-            m.structure_variance_ratio, m.wasserstein, m.flicker_ratio, m.seconds, m.faults.nan,
+            m.structure_variance_ratio, m.wasserstein, flicker, m.seconds, m.faults.nan,
             m.faults.inf, m.faults.negative);
     }
     s += "facet extents (under point and directional lights):\n";

@@ -9,6 +9,7 @@
 #include <nlohmann/json.hpp>
 
 #include "glintlab/compare/compare.h"
+#include "glintlab/core/error.h"
 
 namespace glintlab {
 namespace {
@@ -72,6 +73,39 @@ TEST(Compare, TheScenesOwnModelKeepsTheScenesParameters) {
         << narrow.mean_luminance << " " << plain.mean_luminance;
 }
 
+// The flicker is measured over --flicker-paths camera paths, path p with
+// realization p's seeds: paths beyond the realizations render their own
+// frame 0. Each job renders R realizations, P (F - 1) path frames, the
+// frame 0 of the paths p >= R, and one resampled frame; the flicker carries
+// a standard error over the paths (none with one path).
+TEST(Compare, FlickerIsMeasuredOverSeveralCameraPaths) {
+    const auto scene = write_scene("compare_paths.json", "deliot2023", nullptr);
+    compare::CompareOptions o;
+    o.scene = scene;
+    o.models = {"deliot2023"};
+    o.realizations = 2, o.frames = 2, o.flicker_paths = 3, o.threads = 1;
+    int last_total = 0;
+    o.progress = [&](int, int total) { last_total = total; };
+    const compare::CompareResult r = compare::run_compare(o);
+    EXPECT_EQ(last_total, 2 * (2 + 3 * 1 + 1 + 1));  // the truth and deliot2023
+    EXPECT_EQ(r.flicker_paths, 3);
+    for (const compare::ModelMetrics& m : r.models) {
+        ASSERT_TRUE(m.compared) << m.model;
+        EXPECT_GT(m.flicker, 0.0) << m.model;
+        EXPECT_GT(m.flicker_se, 0.0) << m.model;
+        EXPECT_LT(m.flicker_se, m.flicker) << m.model;
+    }
+    const compare::ModelMetrics* row = r.find("deliot2023");
+    ASSERT_NE(row, nullptr);
+    EXPECT_GT(row->flicker_ratio_se, 0.0);
+    o.flicker_paths = 1;
+    const compare::CompareResult one = compare::run_compare(o);
+    EXPECT_EQ(last_total, 2 * (2 + 1 + 1));
+    for (const compare::ModelMetrics& m : one.models) EXPECT_EQ(m.flicker_se, 0.0) << m.model;
+    o.flicker_paths = 0;
+    EXPECT_THROW(compare::run_compare(o), Error);
+}
+
 // Under delta lights every model gets facets of the truth's angular extent
 // (facet_extent.h): deliot2023, zirr2016 and kneiphof2025 the R of
 // explicit's 1-degree cone, chermain2020 (whose dictionary fixes its lobes)
@@ -86,7 +120,7 @@ TEST(Compare, DeltaLightModelsFlickerAsTheTruthWithItsFacetExtent) {
         std::filesystem::path(GLINTLAB_SOURCE_DIR) / "scenes/compare/lights_point_directional.json";
     o.models = {"deliot2023", "zirr2016", "chermain2020", "kneiphof2025"};
     o.width = o.height = 48, o.spp = 4;
-    o.realizations = 2, o.frames = 4, o.seed = 1;
+    o.realizations = 2, o.frames = 4, o.flicker_paths = 2, o.seed = 1;
     const compare::CompareResult matched = compare::run_compare(o);
     const std::vector<std::string> truths = {
         "explicit beckmann alpha 0.3x0.3 ln density 12 gamma 1 deg",

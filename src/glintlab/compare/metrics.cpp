@@ -216,6 +216,22 @@ double flicker(const std::vector<Plane>& frames, const std::vector<Mask>& masks)
     return pairs > 0 ? total / pairs : 0.0;
 }
 
+FlickerEstimate flicker_over_paths(const std::vector<std::vector<Plane>>& paths,
+                                   const std::vector<Mask>& masks) {
+    if (paths.empty()) fail("compare: a flicker measure needs at least one camera path");
+    std::vector<double> values;
+    values.reserve(paths.size());
+    for (const std::vector<Plane>& frames : paths) values.push_back(flicker(frames, masks));
+    FlickerEstimate e;
+    for (double v : values) e.mean += v / double(values.size());
+    if (values.size() > 1) {
+        double ss = 0.0;
+        for (double v : values) ss += (v - e.mean) * (v - e.mean);
+        e.standard_error = std::sqrt(ss / double(values.size() - 1) / double(values.size()));
+    }
+    return e;
+}
+
 Plane average(const std::vector<Plane>& planes) {
     if (planes.empty()) fail("compare: nothing to average");
     Plane out(planes[0].width, planes[0].height);

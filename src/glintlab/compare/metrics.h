@@ -98,6 +98,20 @@ double sampling_pixel_variance(const Plane& a, const Plane& b, const Mask& mask)
 // pixels in both frames' masks. 0 for a frozen sequence.
 double flicker(const std::vector<Plane>& frames, const std::vector<Mask>& masks);
 
+// The flicker of several camera paths, each the same frames rendered with
+// another realization (microstructure and sampling seed): the mean of the
+// paths' flicker values and its standard error (their sample standard
+// deviation / sqrt(paths); 0 for one path). One path is not enough where
+// the sparkle is sparse: a few facets that reflect a bright source carry
+// most of a frame's change, so the flicker of one realization varies by
+// 2-3x between seeds (docs/VALIDATION.md "compare", flicker paths).
+struct FlickerEstimate {
+    double mean = 0.0;
+    double standard_error = 0.0;
+};
+FlickerEstimate flicker_over_paths(const std::vector<std::vector<Plane>>& paths,
+                                   const std::vector<Mask>& masks);
+
 // Per-pixel average of planes of equal size.
 Plane average(const std::vector<Plane>& planes);
 

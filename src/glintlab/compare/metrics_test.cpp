@@ -155,6 +155,24 @@ TEST(CompareMetrics, FlickerOfKnownSequences) {
     EXPECT_THROW(flicker({a}, {m}), Error);
 }
 
+// Over several paths the flicker is the mean of the paths' flicker values
+// and its standard error their sample sd / sqrt(paths): a frozen path (0)
+// and an alternating one (2/3) give 1/3 +- (2/3) / sqrt(2) / sqrt(2) = 1/3;
+// one path has the path's value and no standard error.
+TEST(CompareMetrics, FlickerOverPathsIsTheMeanWithItsStandardError) {
+    const Plane a = noise(10, 10, 6, 0.5f, 1.0f);
+    const Mask m = all(a);
+    Plane b = a;
+    for (float& v : b.values) v *= 2.0f;
+    const FlickerEstimate one = flicker_over_paths({{a, b, a}}, {m, m, m});
+    EXPECT_NEAR(one.mean, 2.0 / 3.0, 1e-6);
+    EXPECT_EQ(one.standard_error, 0.0);
+    const FlickerEstimate two = flicker_over_paths({{a, a, a}, {a, b, a}}, {m, m, m});
+    EXPECT_NEAR(two.mean, 1.0 / 3.0, 1e-6);
+    EXPECT_NEAR(two.standard_error, 1.0 / 3.0, 1e-6);
+    EXPECT_THROW(flicker_over_paths({}, {m, m, m}), Error);
+}
+
 TEST(CompareMetrics, CountsFaultyPixels) {
     Image img(3, 2, glm::vec3(0.5f));
     img.at(0, 0) = glm::vec3(std::numeric_limits<float>::quiet_NaN(), 0.0f, 0.0f);

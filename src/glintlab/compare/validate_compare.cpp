@@ -94,11 +94,12 @@ ValidationReport validate_compare(const CompareValidationOptions& o) {
     nlohmann::json details = nlohmann::json::array();
     std::string text = fmt::format(
         "compare suite: {0}x{0}, {1} realizations ({10} on sparse scenes, {9} of the truth), {2} "
-        "spp, {3} frames over "
+        "spp, {11} flicker paths of {3} frames over "
         "{4} deg; bounds: |mean err| <= {5:.0f}% with se <= {8:.1f}% (dense, ln density >= {6}) "
         "or <= 2 se + {5:.0f}% (sparse); flicker ratio in [1/{7}, {7}]\n",
         o.size, o.realizations, o.spp, o.frames, o.orbit_deg, 100.0 * kMeanBound, kDenseLogDensity,
-        kFlickerFactor, 100.0 * kDenseSeBound, o.truth_realizations, o.sparse_realizations);
+        kFlickerFactor, 100.0 * kDenseSeBound, o.truth_realizations, o.sparse_realizations,
+        o.flicker_paths);
 
     for (const std::string& name : scenes) {
         compare::CompareOptions c;
@@ -118,37 +119,79 @@ ValidationReport validate_compare(const CompareValidationOptions& o) {
         c.width = c.height = o.size;
         c.spp = o.spp;
         c.frames = o.frames;
+        c.flicker_paths = o.flicker_paths;
         c.orbit_deg = o.orbit_deg;
         c.seed = o.seed;
         c.threads = o.threads;
         compare::CompareResult r = compare::run_compare(c);
         // Dense scenes: a bounded model whose se is above kDenseSeBound is
-        // re-run with R (se / bound)² · 1.2 seeds (up to max_realizations),
-        // the same truth and the same first seeds, so that its check is
+        // re-run with more seeds, the same first seeds, so that its check is
         // conclusive (a sun's or moon's reflection is a rare event for the
-        // facets; docs/VALIDATION.md "compare").
+        // facets; docs/VALIDATION.md "compare"). The se has two parts, the
+        // model's and its truth's (added in quadrature): the truth is re-run
+        // with T (se_t / b)² · 1.2 seeds where its part is above b =
+        // bound / sqrt(2) (at most max_truth_realizations), then the model
+        // with R (se_m / b_m)² · 1.2 where its part is above what remains,
+        // b_m = sqrt(bound² - se_t'²) (at most max_realizations). A re-run
+        // truth re-runs every model compared with it.
         nlohmann::json refined = nlohmann::json::object();
-        if (dense && o.max_realizations > c.realizations) {
+        if (dense && (o.max_realizations > c.realizations ||
+                      o.max_truth_realizations > c.truth_realizations)) {
             compare::CompareOptions again = c;
             again.models.clear();
-            int need = c.realizations;
+            int need = c.realizations, need_truth = c.truth_realizations;
+            std::vector<std::string> refined_truths;
             for (const compare::ModelMetrics& m : r.models) {
                 if (!m.compared || m.reference || !mean_bounded(m.model, environment)) continue;
                 if (!(m.mean_rel_err_se > kDenseSeBound)) continue;
-                again.models.push_back(m.model);
-                const double ratio = m.mean_rel_err_se / kDenseSeBound;
-                need = std::max(need, static_cast<int>(std::ceil(c.realizations * ratio * ratio *
-                                                                 1.2)));
-            }
-            if (!again.models.empty()) {
-                again.realizations = std::min(o.max_realizations, need);
-                const compare::CompareResult more = compare::run_compare(again);
-                for (const compare::ModelMetrics& m : more.models) {
-                    if (m.reference) continue;
-                    for (compare::ModelMetrics& old_row : r.models)
-                        if (old_row.model == m.model) old_row = m;
-                    refined[m.model] = again.realizations;
+                const compare::ModelMetrics* truth = nullptr;
+                for (const compare::ModelMetrics& t : r.models)
+                    if (t.reference && t.truth == m.truth) truth = &t;
+                const double se_t = truth != nullptr ? truth->mean_luminance_rel_se : 0.0;
+                const double se_m =
+                    std::sqrt(std::max(m.mean_rel_err_se * m.mean_rel_err_se - se_t * se_t, 0.0));
+                const double b = kDenseSeBound / std::sqrt(2.0);
+                double se_t_after = se_t;
+                if (se_t > b && o.max_truth_realizations > c.truth_realizations) {
+                    const int t_need =
+                        std::min(o.max_truth_realizations,
+                                 static_cast<int>(std::ceil(c.truth_realizations * (se_t / b) *
+                                                            (se_t / b) * 1.2)));
+                    need_truth = std::max(need_truth, t_need);
+                    se_t_after = se_t * std::sqrt(double(c.truth_realizations) / t_need);
+                    refined_truths.push_back(m.truth);
                 }
+                const double b_m = std::sqrt(
+                    std::max(kDenseSeBound * kDenseSeBound - se_t_after * se_t_after, b * b / 4));
+                if (se_m > b_m)
+                    need = std::max(need, static_cast<int>(std::ceil(c.realizations * (se_m / b_m) *
+                                                                     (se_m / b_m) * 1.2)));
+                again.models.push_back(m.model);
+            }
+            // Every model compared with a re-run truth is re-run with it.
+            for (const compare::ModelMetrics& m : r.models)
+                if (m.compared && !m.reference &&
+                    std::find(refined_truths.begin(), refined_truths.end(), m.truth) !=
+                        refined_truths.end() &&
+                    std::find(again.models.begin(), again.models.end(), m.model) ==
+                        again.models.end())
+                    again.models.push_back(m.model);
+            again.realizations = std::min(std::max(o.max_realizations, c.realizations), need);
+            again.truth_realizations = need_truth;
+            if (!again.models.empty() && (again.realizations > c.realizations ||
+                                          again.truth_realizations > c.truth_realizations)) {
+                const compare::CompareResult more = compare::run_compare(again);
+                for (const compare::ModelMetrics& m : more.models)
+                    for (compare::ModelMetrics& old_row : r.models)
+                        if (m.reference ? old_row.reference && old_row.truth == m.truth
+                                        : old_row.model == m.model) {
+                            old_row = m;
+                            if (m.reference) {
+                                refined[m.truth] = again.truth_realizations;
+                            } else {
+                                refined[m.model] = again.realizations;
+                            }
+                        }
             }
         }
 
@@ -158,8 +201,9 @@ ValidationReport validate_compare(const CompareValidationOptions& o) {
         if (!refined.empty()) sj["refined_realizations"] = refined;
         text += "\n" + r.to_text();
         for (const auto& [model, n] : refined.items())
-            text += fmt::format("({} re-run with {} realizations: its se was above {:.1f}%)\n",
-                                model, n.get<int>(), 100.0 * kDenseSeBound);
+            text += fmt::format(
+                "({} re-run with {} realizations: a mean error's se was above {:.1f}%)\n", model,
+                n.get<int>(), 100.0 * kDenseSeBound);
         for (size_t i = 0; i < r.models.size(); ++i) {
             nlohmann::json& mj = sj["models"][i];  // to_json keeps the order of r.models
             const compare::ModelMetrics* m = &r.models[i];
@@ -215,9 +259,11 @@ ValidationReport validate_compare(const CompareValidationOptions& o) {
                                  {"realizations", o.realizations},
                                  {"sparse_realizations", o.sparse_realizations},
                                  {"max_realizations", o.max_realizations},
+                                 {"max_truth_realizations", o.max_truth_realizations},
                                  {"spp", o.spp},
                                  {"truth_realizations", o.truth_realizations},
                                  {"frames", o.frames},
+                                 {"flicker_paths", o.flicker_paths},
                                  {"orbit_deg", o.orbit_deg},
                                  {"seed", o.seed}};
     text += fmt::format(

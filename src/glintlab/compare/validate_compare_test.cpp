@@ -69,8 +69,10 @@ TEST(CompareValidation, ReducedSuitePassesWithTheContractChecks) {
 }
 
 // A dense scene's bounded model whose se is above 2.5 % is re-run with more
-// seeds (R (se / 2.5 %)² · 1.2, capped): kneiphof2025 on sphere_city has se
-// ≈ 5 % from 2 seeds, so it is re-run, here with the cap of 4.
+// seeds (R (se_m / b_m)² · 1.2, capped): kneiphof2025 on sphere_city has se
+// ≈ 5 % from 2 seeds, so it is re-run, here with the cap of 4. Where the
+// truth's part of the se is above 2.5 % / sqrt(2) the truth is re-run too
+// (here with its cap of 6), and with it every model compared with it.
 TEST(CompareValidation, DenseModelsWithALargeSeAreRerunWithMoreRealizations) {
     if (std::getenv("GLINTLAB_SANITIZED") != nullptr) GTEST_SKIP() << "the reduced suite covers it";
     CompareValidationOptions o;
@@ -78,7 +80,9 @@ TEST(CompareValidation, DenseModelsWithALargeSeAreRerunWithMoreRealizations) {
     o.realizations = 2;
     o.max_realizations = 4;
     o.truth_realizations = 4;
+    o.max_truth_realizations = 4;  // never
     o.frames = 2;
+    o.flicker_paths = 1;  // the refinement of the mean is the point here
     o.spp = 4;
     o.scenes = {"sphere_city"};
     o.models = {"kneiphof2025"};
@@ -89,6 +93,18 @@ TEST(CompareValidation, DenseModelsWithALargeSeAreRerunWithMoreRealizations) {
     EXPECT_EQ(s["refined_realizations"]["kneiphof2025"], 4);
     o.max_realizations = 0;  // never
     EXPECT_FALSE(validate_compare(o).to_json()["scenes"][0].contains("refined_realizations"));
+    o.truth_realizations = 2;
+    o.max_truth_realizations = 6;
+    const nlohmann::json t = validate_compare(o).to_json()["scenes"][0];
+    ASSERT_TRUE(t.contains("refined_realizations")) << t.dump();
+    const nlohmann::json& refined = t["refined_realizations"];
+    ASSERT_EQ(refined.size(), 2u) << refined.dump();  // the truth, and the model with it
+    for (const auto& [key, n] : refined.items()) EXPECT_EQ(n, key == "kneiphof2025" ? 2 : 6) << key;
+    for (const nlohmann::json& m : t["models"]) {
+        if (m["compared"].get<bool>() && m["model"] == "explicit") {
+            EXPECT_GT(m["mean_luminance_rel_se"].get<double>(), 0.0);
+        }
+    }
 }
 
 TEST(CompareValidation, RejectsUnknownScenesAndSizes) {
