@@ -2,7 +2,7 @@
 // hooks (window.glintlab). docs/WEB.md describes the URL parameters.
 
 import {makeQuad, makeSphere} from './geometry.js';
-import {ExportedModel} from './model.js';
+import {ExportedModel, fresnelDiffers, glintBlurTaps} from './model.js';
 import {Renderer} from './renderer.js';
 
 // The models `glintlab export` can write (the page lists those whose
@@ -292,6 +292,14 @@ class App {
     // them; a URL asking for another value is an error.
     const m = this.state.material;
     for (const [key, fixed] of Object.entries(this.model.fixedMaterial)) {
+      if (key === 'fresnel') {
+        const asked = ['fresnel', 'f0', 'eta', 'k'].filter((k) => this.state.explicit.includes(k));
+        if (fresnelDiffers(m.fresnel, fixed) && asked.length)
+          throw new UrlError(`URL parameter ${asked.join(', ')}: ${name}'s exported tables were ` +
+                             `built for Fresnel ${JSON.stringify(fixed)} (export again for another)`);
+        m.fresnel = JSON.parse(JSON.stringify(fixed));
+        continue;
+      }
       const current = key === 'roughness' ? m.roughness : [m[key]];
       const want = Array.isArray(fixed) ? fixed : [fixed];
       const differs = current.some((v, i) => Math.abs(v - want[i]) > 1e-6 * Math.max(1, Math.abs(want[i])));
@@ -354,7 +362,10 @@ class App {
       : null;
     this.renderer.render({
       camera: s.camera, exposure: s.exposure, environment: env,
-      bindResources: (r, prog) => this.model.bind(r, prog, s),
+      bindResources: (r, prog, part) => this.model.bind(r, prog, s, part),
+      // The glint layer only where the environment lights the model.
+      glintBlurTaps: s.environment.on && this.model.environmentLit
+        ? glintBlurTaps(this.model, s.params) : 1,
     });
     const gl = this.renderer.gl;
     if (!s.continuous) {
@@ -455,6 +466,8 @@ class App {
            (v) => { m.seed = v; this.changed(); });
     ['r', 'g', 'b'].forEach((c, i) => slider(mat, `color ${c}`, {min: 0, max: 1, value: m.color[i]},
                                             (v) => { m.color[i] = v; this.changed(); }));
+    const fresnelFixed = fixed('fresnel');
+    const fresnelTitle = fresnelFixed ? fixedNote : '';
     select(mat, 'fresnel', ['none', 'schlick', 'conductor', 'dielectric'], m.fresnel.type, (v) => {
       m.fresnel = {type: v};
       if (v === 'schlick') m.fresnel.f0 = [0.95, 0.93, 0.88];
@@ -462,18 +475,19 @@ class App {
       if (v === 'conductor') Object.assign(m.fresnel, {eta: [0.155, 0.117, 0.138], k: [4.83, 3.12, 2.15]});
       this.buildControls();
       this.changed();
-    });
+    }, fresnelTitle).disabled = fresnelFixed;
+    const f = {disabled: fresnelFixed, title: fresnelTitle};
     if (m.fresnel.type === 'schlick')
-      ['r', 'g', 'b'].forEach((c, i) => slider(mat, `f0 ${c}`, {min: 0, max: 1, value: m.fresnel.f0[i]},
+      ['r', 'g', 'b'].forEach((c, i) => slider(mat, `f0 ${c}`, {min: 0, max: 1, value: m.fresnel.f0[i], ...f},
                                               (v) => { m.fresnel.f0[i] = v; this.changed(); }));
     if (m.fresnel.type === 'dielectric')
-      slider(mat, 'eta', {min: 1, max: 3, value: m.fresnel.eta},
+      slider(mat, 'eta', {min: 1, max: 3, value: m.fresnel.eta, ...f},
              (v) => { m.fresnel.eta = v; this.changed(); });
     if (m.fresnel.type === 'conductor')
       ['r', 'g', 'b'].forEach((c, i) => {
-        slider(mat, `eta ${c}`, {min: 0.01, max: 5, value: m.fresnel.eta[i], log: true},
+        slider(mat, `eta ${c}`, {min: 0.01, max: 5, value: m.fresnel.eta[i], log: true, ...f},
                (v) => { m.fresnel.eta[i] = v; this.changed(); });
-        slider(mat, `k ${c}`, {min: 0, max: 10, value: m.fresnel.k[i]},
+        slider(mat, `k ${c}`, {min: 0, max: 10, value: m.fresnel.k[i], ...f},
                (v) => { m.fresnel.k[i] = v; this.changed(); });
       });
 
@@ -521,7 +535,7 @@ class App {
       const title = `${p.doc} (${p.range}${p.unit ? ' ' + p.unit : ''})` +
                     (p.baked ? ` — fixed: ${p.baked}` : '');
       const label = p.key + (p.unit ? ` (${p.unit})` : '');
-      const disabled = !!p.baked || !p.uniform;
+      const disabled = !!p.baked || (!p.uniform && !p.pagePass);
       const set = (v) => { s.params[p.key] = v; this.changed(); };
       if (p.type === 'bool') {
         checkbox(box, label, !!value, set, title).disabled = disabled;

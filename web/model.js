@@ -26,15 +26,30 @@ const HOST_PARAMS = {
                 value: (v) => 2 * Math.PI * (1 - Math.cos(v * Math.PI / 180))},
   },
   // Every wang2020 parameter shapes its tables (DPF, quadtree, prefilter,
-  // cone average), exported for the default material; blur and
-  // directional_occlusion are the renderer's post pass and occlusion ray,
-  // which the exported stage does not have.
+  // cone average), exported for the default material. `blur` and
+  // `glint_blur` choose the page's §4.4 glint blur (renderer.js; the page
+  // renders one sample per pixel, so "auto" blurs). Directional occlusion
+  // is the renderer's occlusion ray: the page's one convex or flat shape
+  // never occludes its own mirror directions, so its 9-tap blur of the
+  // visibility is the identity here and the page has none.
   wang2020: Object.fromEntries(
       ['gamma_deg', 'depth', 'dpf_theta', 'dpf_phi', 'prefilter_samples', 'micro', 'prefilter']
           .map((k) => [k, {baked: 'built into the exported tables'}])
-          .concat(['blur', 'directional_occlusion']
-                      .map((k) => [k, {baked: 'a renderer pass, not in the exported shader'}]))),
+          .concat([['directional_occlusion',
+                    {baked: 'the renderer\'s occlusion ray (the page\'s one shape never occludes its mirror directions)'}],
+                   ['blur', {pagePass: true}], ['glint_blur', {pagePass: true}]])),
 };
+
+// Taps of the page's §4.4 glint blur for wang2020 (Wang et al. 2020;
+// docs/MODELS.md wang2020, Post-process): 3 under "auto" (the page renders
+// one sample per pixel) and "as_published", 1 (none) under "none" or with
+// "blur" off. Other models: 1.
+export function glintBlurTaps(model, params) {
+  if (model.name !== 'wang2020') return 1;
+  const value = (key) => params[key] ?? model.parameters.find((p) => p.key === key)?.default;
+  if (value('blur') === false) return 1;
+  return value('glint_blur') === 'none' ? 1 : 3;
+}
 
 // Material inputs a model's export fixes (its tables were built for them):
 // the manifest's resource uniforms of these names.
@@ -62,6 +77,26 @@ function fresnelF0(material) {
 
 const FRESNEL_MODE = {none: 0, schlick: 1, conductor: 2, dielectric: 3};
 
+// The page's Fresnel description of the u_fresnel_* uniforms of a manifest.
+function fresnelOfUniforms(u) {
+  const type = Object.keys(FRESNEL_MODE).find((k) => FRESNEL_MODE[k] === u.u_fresnel_mode);
+  if (!type) throw new Error(`manifest: u_fresnel_mode ${u.u_fresnel_mode} is not 0-3`);
+  const f = {type};
+  if (type === 'schlick') f.f0 = u.u_fresnel_f0.slice();
+  if (type === 'dielectric') f.eta = u.u_fresnel_eta[0];
+  if (type === 'conductor') Object.assign(f, {eta: u.u_fresnel_eta.slice(), k: u.u_fresnel_k.slice()});
+  return f;
+}
+
+// Whether two Fresnel descriptions differ (type, or a value beyond 1e-6).
+export function fresnelDiffers(a, b) {
+  if (a.type !== b.type) return true;
+  const values = (f) => [].concat(f.f0 ?? [], f.eta ?? [], f.k ?? []);
+  const va = values(a), vb = values(b);
+  return va.length !== vb.length ||
+         va.some((v, i) => Math.abs(v - vb[i]) > 1e-6 * Math.max(1, Math.abs(vb[i])));
+}
+
 async function fetchOk(url, what) {
   let response;
   try {
@@ -84,13 +119,14 @@ function parameterTable(manifest, info) {
     const b = bounds.get(p.key) ?? {};
     const h = host[p.key] ?? {};
     // An enum switch without a host mapping cannot be set as a number.
-    if (p.type === 'enum' && !h.value && !h.baked) h.baked = 'an enum switch set at export';
+    if (p.type === 'enum' && !h.value && !h.baked && !h.pagePass)
+      h.baked = 'an enum switch set at export';
     return {
       key: p.key, type: p.type, doc: p.doc, unit: p.unit, range: p.range,
       default: p.default, min: p.min ?? b.min, max: p.max ?? b.max,
       values: p.values ?? b.values, choices: p.choices ?? b.choices,
       uniform: h.baked ? null : h.uniform ?? p.uniform ?? null, value: h.value ?? null,
-      baked: h.baked ?? null,
+      baked: h.baked ?? null, pagePass: !!h.pagePass,
     };
   });
 }
@@ -143,6 +179,9 @@ export class ExportedModel {
       Object.assign(model.constants, r.uniforms ?? {});
       for (const [u, key] of Object.entries(MATERIAL_UNIFORMS))
         if (r.uniforms && u in r.uniforms) model.fixedMaterial[key] = r.uniforms[u];
+      // wang2020's prefiltered table integrates the material's Fresnel.
+      if (r.uniforms && 'u_fresnel_mode' in r.uniforms)
+        model.fixedMaterial.fresnel = fresnelOfUniforms(r.uniforms);
       // The prefiltered radiance's layer 0 (sqrt(alpha) = 0: the map
       // itself at the prefilter's resolution) is the page's background.
       if (r.environment && r.uniform === 'kneiphof2025_radiance_layers')
@@ -177,8 +216,10 @@ export class ExportedModel {
   }
 
   // Sets every uniform of the forward program for `state` (app.js) and
-  // binds the resources; called by Renderer.render before the draw.
-  bind(renderer, prog, state) {
+  // binds the resources; called by Renderer.render before the draw, for
+  // `part` of the lighting: 'all', 'lights' (no environment) or
+  // 'environment' (only it: wang2020's glint layer).
+  bind(renderer, prog, state, part = 'all') {
     const gl = renderer.gl;
     const set = (name, value) => renderer.setUniform(prog, name, value);
     const m = state.material;
@@ -197,11 +238,11 @@ export class ExportedModel {
     // other model the height-correlated Smith G2 (the export's header).
     set('u_glint_g2', this.name === 'chermain2020' ? 1 : 0);
     const l = state.light;
-    set('u_directional_count', l.on ? 1 : 0);
+    set('u_directional_count', l.on && part !== 'environment' ? 1 : 0);
     set('u_directional_direction', normalize3(l.direction));
     set('u_directional_irradiance', [l.irradiance, l.irradiance, l.irradiance]);
     set('u_point_count', 0);
-    const env = state.environment.on && this.environmentLit;
+    const env = state.environment.on && this.environmentLit && part !== 'lights';
     set('u_environment_on', env ? 1 : 0);
     for (const [name, value] of Object.entries(this.constants)) set(name, value);
     if (this.name === 'kneiphof2025') {

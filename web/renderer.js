@@ -83,6 +83,44 @@ void main() {
 }
 `;
 
+// One axis of wang2020's §4.4 glint blur (Wang et al. 2020, "Gaussian
+// Blurring"; the native post pass, glints/wang2020/wang2020_blur.comp.glsl):
+// a normalised Gaussian of 2 r + 1 taps, sigma = taps / 6, borders clamped
+// to the edge. With u_add the source u_base (the frame without the glint
+// layer) is added: the last pass composites.
+const GLINT_BLUR_FRAGMENT = `#version 300 es
+precision highp float;
+out vec4 o_radiance;
+uniform highp sampler2D u_src;
+uniform highp sampler2D u_base;
+uniform float u_taps[16];
+uniform int u_radius;
+uniform ivec2 u_axis;
+uniform bool u_add;
+void main() {
+    ivec2 p = ivec2(gl_FragCoord.xy);
+    ivec2 size = textureSize(u_src, 0);
+    vec3 sum = vec3(0.0);
+    for (int k = -15; k <= 15; ++k) {
+        if (k < -u_radius || k > u_radius) continue;
+        ivec2 q = clamp(p + k * u_axis, ivec2(0), size - 1);
+        sum += u_taps[k + u_radius] * texelFetch(u_src, q, 0).rgb;
+    }
+    vec4 base = u_add ? texelFetch(u_base, p, 0) : vec4(0.0);
+    o_radiance = vec4(base.rgb + sum, base.a);
+}
+`;
+
+// The normalised taps of a Gaussian of `size` taps (odd), sigma = size / 6
+// (wang2020_postprocess.h).
+export function gaussianTaps(size) {
+  const r = (size - 1) / 2, sigma = size / 6;
+  const taps = [];
+  for (let i = -r; i <= r; ++i) taps.push(Math.exp(-0.5 * i * i / (sigma * sigma)));
+  const sum = taps.reduce((a, b) => a + b, 0);
+  return taps.map((t) => t / sum);
+}
+
 // Numbered source lines around the ones a compile log names (ANGLE writes
 // "ERROR: 0:LINE: ...").
 function annotateLog(source, log) {
@@ -114,6 +152,7 @@ export class Renderer {
     this.gpuMs = null;
     this.background = this.program(FULLSCREEN_VERTEX, BACKGROUND_FRAGMENT, 'background');
     this.display = this.program(FULLSCREEN_VERTEX, DISPLAY_FRAGMENT, 'display');
+    this.glintBlur = this.program(FULLSCREEN_VERTEX, GLINT_BLUR_FRAGMENT, 'glint blur');
     this.emptyVao = gl.createVertexArray();
     this.forward = null;
     this.mesh = null;
@@ -266,26 +305,41 @@ export class Renderer {
     this.canvas.width = width;
     this.canvas.height = height;
     if (this.fbo) {
-      gl.deleteFramebuffer(this.fbo);
-      gl.deleteTexture(this.hdr);
+      for (const t of this.targets) {
+        gl.deleteFramebuffer(t.fbo);
+        gl.deleteTexture(t.texture);
+      }
       gl.deleteRenderbuffer(this.depth);
     }
-    this.hdr = gl.createTexture();
-    gl.bindTexture(gl.TEXTURE_2D, this.hdr);
-    gl.texStorage2D(gl.TEXTURE_2D, 1, gl.RGBA32F, width, height);
-    gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_MIN_FILTER, gl.NEAREST);
-    gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_MAG_FILTER, gl.NEAREST);
     this.depth = gl.createRenderbuffer();
     gl.bindRenderbuffer(gl.RENDERBUFFER, this.depth);
     gl.renderbufferStorage(gl.RENDERBUFFER, gl.DEPTH_COMPONENT24, width, height);
-    this.fbo = gl.createFramebuffer();
-    gl.bindFramebuffer(gl.FRAMEBUFFER, this.fbo);
-    gl.framebufferTexture2D(gl.FRAMEBUFFER, gl.COLOR_ATTACHMENT0, gl.TEXTURE_2D, this.hdr, 0);
-    gl.framebufferRenderbuffer(gl.FRAMEBUFFER, gl.DEPTH_ATTACHMENT, gl.RENDERBUFFER, this.depth);
-    const status = gl.checkFramebufferStatus(gl.FRAMEBUFFER);
-    gl.bindFramebuffer(gl.FRAMEBUFFER, null);
-    if (status !== gl.FRAMEBUFFER_COMPLETE)
-      throw new Error(`RGBA32F framebuffer incomplete (0x${status.toString(16)})`);
+    // RGBA32F targets: the frame; wang2020's glint layer (the shapes'
+    // environment glints, drawn with the same depth buffer), its blur along
+    // x, and the composite of the frame and the blurred layer.
+    const target = (withDepth) => {
+      const texture = gl.createTexture();
+      gl.bindTexture(gl.TEXTURE_2D, texture);
+      gl.texStorage2D(gl.TEXTURE_2D, 1, gl.RGBA32F, width, height);
+      gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_MIN_FILTER, gl.NEAREST);
+      gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_MAG_FILTER, gl.NEAREST);
+      const fbo = gl.createFramebuffer();
+      gl.bindFramebuffer(gl.FRAMEBUFFER, fbo);
+      gl.framebufferTexture2D(gl.FRAMEBUFFER, gl.COLOR_ATTACHMENT0, gl.TEXTURE_2D, texture, 0);
+      if (withDepth)
+        gl.framebufferRenderbuffer(gl.FRAMEBUFFER, gl.DEPTH_ATTACHMENT, gl.RENDERBUFFER, this.depth);
+      const status = gl.checkFramebufferStatus(gl.FRAMEBUFFER);
+      gl.bindFramebuffer(gl.FRAMEBUFFER, null);
+      if (status !== gl.FRAMEBUFFER_COMPLETE)
+        throw new Error(`RGBA32F framebuffer incomplete (0x${status.toString(16)})`);
+      return {texture, fbo};
+    };
+    const frame = target(true), layer = target(true), blurX = target(false), composite = target(false);
+    this.targets = [frame, layer, blurX, composite];
+    Object.assign(this, {frame, layer, blurX, composite});
+    this.fbo = frame.fbo;
+    this.hdr = frame.texture;
+    this.output = frame;  // the target the last frame ended in
     this.width = width;
     this.height = height;
   }
@@ -304,9 +358,17 @@ export class Renderer {
   }
 
   // One frame: background (environment or black), the forward pass into the
-  // RGBA32F target, the display pass onto the canvas. `bindResources` binds
-  // the model's textures and sets its uniforms on the forward program.
-  render({camera, exposure, environment, bindResources}) {
+  // RGBA32F target, the display pass onto the canvas. `bindResources(r,
+  // prog, part)` binds the model's textures and sets its uniforms on the
+  // forward program for `part`: 'all' the lights and the environment,
+  // 'lights' without the environment, 'environment' only it.
+  // `glintBlurTaps` > 1 (wang2020 lit by an environment, one sample per
+  // pixel: docs/WEB.md) runs §4.4's glint blur as the native renderer
+  // does: the environment's glints go to a layer of their own, which is
+  // blurred by a `glintBlurTaps`-tap Gaussian and added to the frame.
+  // (`environment` is the background; a model may be lit by an
+  // environment whose map the export left out, as wang2020's tables.)
+  render({camera, exposure, environment, bindResources, glintBlurTaps = 1}) {
     const gl = this.gl;
     this.pollTimer();
     let query = null;
@@ -339,20 +401,56 @@ export class Renderer {
     gl.clearDepth(1);
     gl.clear(gl.DEPTH_BUFFER_BIT);
     const f = this.forward;
-    this.setUniform(f, 'u_view_projection', vp);
-    this.setUniform(f, 'u_eye', camera.eye);
-    bindResources(this, f);
-    gl.useProgram(f.handle);
-    gl.bindVertexArray(this.mesh.vao);
-    gl.drawElements(gl.TRIANGLES, this.mesh.count, gl.UNSIGNED_INT, 0);
-    gl.bindVertexArray(null);
+    const layered = glintBlurTaps > 1;
+    const drawShapes = (part) => {
+      this.setUniform(f, 'u_view_projection', vp);
+      this.setUniform(f, 'u_eye', camera.eye);
+      bindResources(this, f, part);
+      gl.useProgram(f.handle);
+      gl.bindVertexArray(this.mesh.vao);
+      gl.drawElements(gl.TRIANGLES, this.mesh.count, gl.UNSIGNED_INT, 0);
+      gl.bindVertexArray(null);
+    };
+    drawShapes(layered ? 'lights' : 'all');
+    this.output = this.frame;
+    if (layered) {
+      // The glint layer: the environment's glints alone, on black.
+      gl.bindFramebuffer(gl.FRAMEBUFFER, this.layer.fbo);
+      gl.clearColor(0, 0, 0, 0);
+      gl.clear(gl.COLOR_BUFFER_BIT | gl.DEPTH_BUFFER_BIT);
+      drawShapes('environment');
+      gl.disable(gl.DEPTH_TEST);
+      const taps = gaussianTaps(glintBlurTaps);
+      const b = this.glintBlur;
+      this.setUniform(b, 'u_taps', taps.concat(new Array(16 - taps.length).fill(0)));
+      this.setUniform(b, 'u_radius', (taps.length - 1) / 2);
+      this.setUniform(b, 'u_src', 0);
+      this.setUniform(b, 'u_base', 1);
+      const pass = (src, dst, axis, add) => {
+        this.setUniform(b, 'u_axis', axis);
+        this.setUniform(b, 'u_add', add ? 1 : 0);
+        gl.bindFramebuffer(gl.FRAMEBUFFER, dst.fbo);
+        gl.activeTexture(gl.TEXTURE0);
+        gl.bindTexture(gl.TEXTURE_2D, src.texture);
+        gl.activeTexture(gl.TEXTURE1);
+        gl.bindTexture(gl.TEXTURE_2D, this.frame.texture);
+        gl.useProgram(b.handle);
+        gl.bindVertexArray(this.emptyVao);
+        gl.drawArrays(gl.TRIANGLES, 0, 3);
+        gl.bindVertexArray(null);
+      };
+      pass(this.layer, this.blurX, [1, 0], false);
+      pass(this.blurX, this.composite, [0, 1], true);
+      gl.activeTexture(gl.TEXTURE0);
+      this.output = this.composite;
+    }
     gl.bindFramebuffer(gl.FRAMEBUFFER, null);
     gl.disable(gl.DEPTH_TEST);
     gl.viewport(0, 0, this.width, this.height);
     this.setUniform(this.display, 'u_exposure_scale', Math.pow(2, exposure));
     this.setUniform(this.display, 'u_hdr', 0);
     gl.activeTexture(gl.TEXTURE0);
-    gl.bindTexture(gl.TEXTURE_2D, this.hdr);
+    gl.bindTexture(gl.TEXTURE_2D, this.output.texture);
     gl.useProgram(this.display.handle);
     gl.bindVertexArray(this.emptyVao);
     gl.drawArrays(gl.TRIANGLES, 0, 3);
@@ -382,7 +480,7 @@ export class Renderer {
     const gl = this.gl;
     const w = this.width, h = this.height;
     const rgba = new Float32Array(w * h * 4);
-    gl.bindFramebuffer(gl.FRAMEBUFFER, this.fbo);
+    gl.bindFramebuffer(gl.FRAMEBUFFER, this.output.fbo);
     gl.readPixels(0, 0, w, h, gl.RGBA, gl.FLOAT, rgba);
     gl.bindFramebuffer(gl.FRAMEBUFFER, null);
     const out = new Float32Array(w * h * 4);

@@ -366,6 +366,7 @@ constexpr const char* kMaterialsScene = R"({
      "wang2020": {"dpf_theta": 8, "dpf_phi": 16, "depth": 6}},
     {"name": "sparkle", "type": "glint", "model": "wang2020", "ndf": "beckmann",
      "roughness": 0.25, "log_density": 12, "seed": 7,
+     "fresnel": {"type": "schlick", "f0": [0.9, 0.8, 0.7]},
      "wang2020": {"dpf_theta": 8, "dpf_phi": 16, "depth": 6, "gamma_deg": 4}},
     {"name": "paint", "type": "diffuse"},
     {"name": "shiny", "type": "glint", "model": "kneiphof2025", "ndf": "ggx"}
@@ -413,6 +414,10 @@ TEST(Export, Wang2020SceneMaterialTablesAndValues) {
     EXPECT_NEAR(tables.at("u_wang2020_cos_gamma").get<double>(), std::cos(4.0 * M_PI / 180.0),
                 1e-12);
     EXPECT_EQ(tables.at("u_wang2020_dpf_res")[0].get<int>(), 8);
+    // The prefiltered table integrates the material's Fresnel: its values
+    // are the tables' too (a host must not shade them with another).
+    EXPECT_EQ(tables.at("u_fresnel_mode").get<int>(), 1);
+    EXPECT_FLOAT_EQ(tables.at("u_fresnel_f0")[2].get<float>(), 0.7f);
     for (const char* t : {"wang2020.dpf.f32", "wang2020.nodes.u32"}) {
         const std::string a = slurp(dir / "plain" / t), b = slurp(dir / "sparkle" / t);
         EXPECT_FALSE(a.empty()) << t;

@@ -98,11 +98,17 @@ void wang2020_export_material(GlintExportContext& ctx) {
          std::cos(model_tables->material().gamma_deg * 3.14159265358979323846 / 180.0)},
         {"u_glint_alpha", {g.alpha_x, g.alpha_y}},
         {"u_glint_log_density", g.log_density},
-        {"u_glint_seed", g.seed}};
+        {"u_glint_seed", g.seed},
+        // The prefiltered environment table integrates F(i·h) (Eq. 11's M,
+        // docs/MODELS.md wang2020): the material's Fresnel is part of it.
+        {"u_fresnel_mode", static_cast<int>(g.fresnel.mode)},
+        {"u_fresnel_f0", {g.fresnel.f0.x, g.fresnel.f0.y, g.fresnel.f0.z}},
+        {"u_fresnel_eta", {g.fresnel.eta.x, g.fresnel.eta.y, g.fresnel.eta.z}},
+        {"u_fresnel_k", {g.fresnel.k.x, g.fresnel.k.y, g.fresnel.k.z}}};
     cone["note"] = fmt::format(
         "the tables are those of {} (uniforms above): a material with another alpha, "
-        "density, seed or parameters needs its own tables (glintlab export --scene FILE "
-        "--material NAME)",
+        "density, seed, Fresnel or parameters needs its own tables (glintlab export --scene "
+        "FILE --material NAME)",
         ctx.material_name.empty() ? std::string("the default wang2020 material")
                                   : fmt::format("material \"{}\"", ctx.material_name));
 }
