@@ -410,7 +410,8 @@ TEST(GpuCompare, RealTimeModelsRunOnTheGpuAndMatchTheirCpuRows) {
                                   .string();
     auto compare = [&](const std::string& models, int spp, bool gpu) {
         const RunResult r = run(cli() + " compare " + scene + " --models " + models +
-                                " --res 48x48 --realizations 2 --frames 2 --model-extent --spp " +
+                                " --res 48x48 --realizations 2 --frames 2 --flicker-paths 1 "
+                                "--model-extent --spp " +
                                 std::to_string(spp) + (gpu ? " --gpu" : "") +
                                 " --no-cache -q --json -o " + (dir / "out").string());
         EXPECT_EQ(r.status, 0) << r.output;
