@@ -25,10 +25,14 @@ std::string glue_path(unsigned) {
 
 class State final : public GpuModelState {
   public:
+    // The glint blur's kernel is the scene's (every wang2020 material must
+    // agree): once per frame, one sample per pixel.
+    void begin_frame(const GpuFrame& f, unsigned) override {
+        glint_taps_ = wang2020_glint_blur_taps(f.scene, true);
+    }
     void prepare(unsigned program, gl::UniformCache& u, const GlintDesc& desc, const GpuFrame& f,
                  unsigned) override {
         resources_.bind(program, u, desc, f.scene);
-        glint_taps_ = wang2020_glint_blur_taps(f.scene, true);  // one sample per pixel
     }
     // 001 §4.4's blurs of the deferred environment glints, added into the
     // colour target (render_scene's postprocess_glints).
