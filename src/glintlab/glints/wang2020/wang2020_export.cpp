@@ -69,8 +69,9 @@ void wang2020_export_material(GlintExportContext& ctx) {
     }
     nlohmann::json& cone =
         table("cone",
-              model_tables->cone_average() ? vec4s(model_tables->cone_average()->data())
-                                           : std::vector<float>(4, 0.0f),
+              model_tables->particle_radiance_table()
+                  ? vec4s(model_tables->particle_radiance_table()->data())
+                  : std::vector<float>(4, 0.0f),
               4, "RGBA32F", "u_wang2020_cone_texture",
               "environment the particles reflect: point values or cone average L_gamma (micro "
               "per_particle mode; one zero texel "
@@ -81,10 +82,11 @@ void wang2020_export_material(GlintExportContext& ctx) {
         const wang2020::PrefilterResolution& pr = model_tables->prefiltered()->resolution();
         pres = {pr.theta_n, pr.phi_n, pr.theta_o, pr.phi_o};
     }
-    const std::array<int, 2> cres = model_tables->cone_average()
-                                        ? std::array<int, 2>{model_tables->cone_average()->width(),
-                                                             model_tables->cone_average()->height()}
-                                        : std::array<int, 2>{1, 1};
+    const std::array<int, 2> cres =
+        model_tables->particle_radiance_table()
+            ? std::array<int, 2>{model_tables->particle_radiance_table()->width(),
+                                 model_tables->particle_radiance_table()->height()}
+            : std::array<int, 2>{1, 1};
     cone["uniforms"] = {
         {"u_wang2020_dpf_res", {dr.theta_i, dr.theta_o, dr.phi}},
         {"u_wang2020_prefilter_res", pres},

@@ -59,8 +59,8 @@ void Wang2020Resources::bind(unsigned program, UniformCache& u, const GlintDesc&
             nodes.emplace_back(n.first_child, n.count_mask);
         nodes_ = upload(nodes, "quadtree");
         // L_γ exists for "micro": "per_particle" under an environment only.
-        cone_ = model->cone_average() != nullptr
-                    ? upload(model->cone_average()->data(), "cone-averaged environment")
+        cone_ = model->particle_radiance_table() != nullptr
+                    ? upload(model->particle_radiance_table()->data(), "cone-averaged environment")
                     : upload(std::vector<glm::vec4>(1, glm::vec4(0.0f)), "cone-averaged");
         model_ = std::move(model);
     }
@@ -83,10 +83,10 @@ void Wang2020Resources::bind(unsigned program, UniformCache& u, const GlintDesc&
                        static_cast<float>(model_->quadtree().particles()));
     glProgramUniform1f(program, loc("u_wang2020_sigma"), static_cast<float>(model_->sigma_o()));
     glProgramUniform1i(program, loc("u_wang2020_micro"), model_->micro_mode_index());
-    const glm::ivec2 cres =
-        model_->cone_average() != nullptr
-            ? glm::ivec2(model_->cone_average()->width(), model_->cone_average()->height())
-            : glm::ivec2(1);
+    const glm::ivec2 cres = model_->particle_radiance_table() != nullptr
+                                ? glm::ivec2(model_->particle_radiance_table()->width(),
+                                             model_->particle_radiance_table()->height())
+                                : glm::ivec2(1);
     glProgramUniform2i(program, loc("u_wang2020_cone_res"), cres.x, cres.y);
     glProgramUniform1f(program, loc("u_wang2020_cos_gamma"),
                        static_cast<float>(std::cos(model_->material().gamma_deg *

@@ -17,7 +17,7 @@
 #include "glintlab/glints/wang2020/wang2020_tables.glsl"
 // The CPU's arrays (wang2020_gpu.cpp): DpfTable::values(),
 // PrefilterTable::data(), ParticleQuadtree::nodes(),
-// ConeAverageTable (what the micro scale's particles reflect: point values or L_γ).
+// ParticleRadianceTable (what the micro scale's particles reflect: point values or L_γ).
 layout(std430, binding = 1) readonly buffer Wang2020Dpf { float u_wang2020_dpf[]; };
 layout(std430, binding = 2) readonly buffer Wang2020Prefilter { vec4 u_wang2020_prefilter[]; };
 layout(std430, binding = 3) readonly buffer Wang2020Nodes { uvec2 u_wang2020_nodes[]; };

@@ -62,7 +62,7 @@ double brdf_pdf(const glm::dvec3& i, const glm::dvec3& o, double alpha) {
 }
 }  // namespace
 
-ConeAverageTable::ConeAverageTable(const EnvironmentFn& env, double gamma_rad) {
+ParticleRadianceTable::ParticleRadianceTable(const EnvironmentFn& env, double gamma_rad) {
     if (!(gamma_rad > 0.0 && gamma_rad < kHalfPi))
         fail("wang2020: cone half-angle {} rad outside (0, pi/2)", gamma_rad);
     // Output grid: about γ/2 per texel (L_γ is smooth at that scale).
@@ -130,10 +130,10 @@ ConeAverageTable::ConeAverageTable(const EnvironmentFn& env, double gamma_rad) {
     build_sampling_map();
 }
 
-ConeAverageTable ConeAverageTable::point_values(const EnvironmentFn& env, int rows) {
+ParticleRadianceTable ParticleRadianceTable::point_values(const EnvironmentFn& env, int rows) {
     if (rows < 2 || rows > 4096)
         fail("wang2020: point-value table of {} rows outside [2, 4096]", rows);
-    ConeAverageTable t;
+    ParticleRadianceTable t;
     t.height_ = rows;
     t.width_ = 2 * rows;
     t.data_.assign(static_cast<size_t>(t.width_) * t.height_, glm::vec4(0.0f));
@@ -150,7 +150,7 @@ ConeAverageTable ConeAverageTable::point_values(const EnvironmentFn& env, int ro
     return t;
 }
 
-void ConeAverageTable::build_sampling_map() {
+void ParticleRadianceTable::build_sampling_map() {
     // The sampling map, in EnvironmentMap's convention (y up: d = (sinθ sinφ,
     // cosθ, −sinθ cosφ) at u = 0.5 + φ/2π, v = θ/π), at the table's
     // resolution.
@@ -166,7 +166,7 @@ void ConeAverageTable::build_sampling_map() {
     map_ = std::make_shared<const EnvironmentMap>(std::move(image), 1.0f, 0.0f);
 }
 
-double ConeAverageTable::sample(const glm::dvec2& u, glm::dvec3& world_dir) const {
+double ParticleRadianceTable::sample(const glm::dvec2& u, glm::dvec3& world_dir) const {
     glm::vec3 d(0.0f);
     float pdf = 0.0f;
     map_->sample(glm::vec2(u), &d, &pdf);
@@ -174,11 +174,11 @@ double ConeAverageTable::sample(const glm::dvec2& u, glm::dvec3& world_dir) cons
     return static_cast<double>(pdf);
 }
 
-double ConeAverageTable::pdf(const glm::dvec3& world_dir) const {
+double ParticleRadianceTable::pdf(const glm::dvec3& world_dir) const {
     return static_cast<double>(map_->pdf(glm::vec3(world_dir)));
 }
 
-glm::dvec3 ConeAverageTable::lookup(const glm::dvec3& d) const {
+glm::dvec3 ParticleRadianceTable::lookup(const glm::dvec3& d) const {
     if (!std::isfinite(d.x + d.y + d.z)) return glm::dvec3(0.0);
     const double len = glm::length(d);
     if (!(len > 0.0)) return glm::dvec3(0.0);
@@ -226,7 +226,7 @@ glm::dvec3 m_fresnel(const FresnelDesc* fresnel, const glm::dvec3& wi, const glm
 glm::dvec4 PrefilterTable::evaluate(const DpfTable& dpf, double alpha, const EnvironmentFn& env,
                                     const glm::dvec3& n, const glm::dvec3& o, int K,
                                     uint64_t texel_id, const EnvironmentSampler* sampler,
-                                    const FresnelDesc* fresnel, const ConeAverageTable* cone) {
+                                    const FresnelDesc* fresnel, const ParticleRadianceTable* cone) {
     glm::dvec3 t, b;
     tangent_frame(n, t, b);
     auto to_world = [&](const glm::dvec3& v) { return v.x * t + v.y * b + v.z * n; };
@@ -234,7 +234,7 @@ glm::dvec4 PrefilterTable::evaluate(const DpfTable& dpf, double alpha, const Env
     // Effective fraction (cone != null): the moments E[f], E[f²] of one
     // particle's luminance f = lum(L_γ(i) F) M(i, o) over its normal
     // m ~ D(m)(m·n), i.e. ∫ f^k p_b di, from the K BRDF samples and K samples
-    // of L_γ's own distribution p_c (ConeAverageTable::sample), balance
+    // of L_γ's own distribution p_c (ParticleRadianceTable::sample), balance
     // heuristic: weight p_b / (K (p_b + p_c)). A particle whose reflection
     // leaves the hemisphere counts as f = 0.
     double f1 = 0.0, f2 = 0.0;
@@ -336,7 +336,7 @@ glm::dvec4 PrefilterTable::evaluate(const DpfTable& dpf, double alpha, const Env
 PrefilterTable::PrefilterTable(const DpfTable& dpf, double alpha, double /*gamma_rad*/,
                                const EnvironmentFn& env, PrefilterResolution res, int K,
                                const EnvironmentSampler* sampler, const FresnelDesc* fresnel,
-                               const ConeAverageTable* cone)
+                               const ParticleRadianceTable* cone)
     : res_(res) {
     if (res.theta_n < 2 || res.phi_n < 2 || res.theta_o < 2 || res.phi_o < 2)
         fail("wang2020: prefilter resolution {}x{}x{}x{} must be at least 2 everywhere",

@@ -50,23 +50,24 @@ struct EnvironmentSampler {
     std::function<double(const glm::dvec3& dir)> pdf;
 };
 
-// L_γ(d): the environment averaged over the cone of half-angle γ around the
-// world direction d, the radiance a single facet of the per_particle micro
-// mode reflects towards the cone around o (docs/MODELS.md, wang2020). Stored
+// The radiance a particle of the per_particle micro mode reflects towards
+// o (docs/MODELS.md, wang2020; "particle_radiance"): the environment's point
+// values (point_values, the default) or L_γ(d), the environment averaged
+// over the cone of half-angle γ around the world direction d ("cone"). Stored
 // on a lat-long grid (world z polar, φ = atan2(y, x), cell centred) of about
 // γ/2 spacing; each texel is the solid-angle weighted mean of the environment
 // on a fine lat-long grid (≥ 16 samples across the cone's diameter) over the
 // points inside the cone. The GPU uploads data() and reads it with the same
 // bilinear lookup (wang2020_tables.glsl wang2020_cone_lookup).
-class ConeAverageTable {
+class ParticleRadianceTable {
   public:
-    ConeAverageTable(const EnvironmentFn& env, double gamma_rad);
+    ParticleRadianceTable(const EnvironmentFn& env, double gamma_rad);
     // The point values instead of the cone average ("particle_radiance":
     // "point", the default): texel (x, y) = env at its centre, `rows` rows
     // (the caller takes twice the environment map's, so that the bilinear
     // lookup of the resampled grid stays within half a map texel of the
     // map's own bilinear value). Same lookup, sampling and GPU layout.
-    static ConeAverageTable point_values(const EnvironmentFn& env, int rows);
+    static ParticleRadianceTable point_values(const EnvironmentFn& env, int rows);
     glm::dvec3 lookup(const glm::dvec3& world_dir) const;
     // Importance sampling of L_γ itself (a lat-long EnvironmentMap of the
     // table, luminance-proportional): sample returns the world direction's
@@ -82,7 +83,7 @@ class ConeAverageTable {
     const std::vector<glm::vec4>& data() const { return data_; }
 
   private:
-    ConeAverageTable() = default;
+    ParticleRadianceTable() = default;
     void build_sampling_map();  // map_ from data_
     int width_ = 0, height_ = 0;
     std::vector<glm::vec4> data_;
@@ -120,7 +121,8 @@ class PrefilterTable {
     // 1 / (n r). Same samples as L̂o (MIS weights included).
     PrefilterTable(const DpfTable& dpf, double alpha, double gamma_rad, const EnvironmentFn& env,
                    PrefilterResolution res, int K = 64, const EnvironmentSampler* sampler = nullptr,
-                   const FresnelDesc* fresnel = nullptr, const ConeAverageTable* cone = nullptr);
+                   const FresnelDesc* fresnel = nullptr,
+                   const ParticleRadianceTable* cone = nullptr);
 
     // Quadrilinear lookup: rgb = L̂o(n, o) (Eq. 16), w = P̂(n, o) (Eq. 17)
     // or the effective fraction r(n, o) (built with a cone table).
@@ -133,7 +135,7 @@ class PrefilterTable {
                                const glm::dvec3& n_world, const glm::dvec3& o_local, int K,
                                uint64_t texel_id = 0, const EnvironmentSampler* sampler = nullptr,
                                const FresnelDesc* fresnel = nullptr,
-                               const ConeAverageTable* cone = nullptr);
+                               const ParticleRadianceTable* cone = nullptr);
 
     const PrefilterResolution& resolution() const { return res_; }
     size_t memory_bytes() const { return data_.size() * sizeof(glm::vec4); }

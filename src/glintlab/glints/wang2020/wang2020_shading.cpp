@@ -97,11 +97,12 @@ void Wang2020Model::prefilter(const EnvironmentFn& env, const EnvironmentSampler
     cone_ = nullptr;
     if (m_.micro == MicroMode::PerParticle) {
         if (m_.particle_radiance == ParticleRadiance::Cone) {
-            cone_ = std::make_unique<ConeAverageTable>(env, gamma_rad_);
+            cone_ = std::make_unique<ParticleRadianceTable>(env, gamma_rad_);
         } else {
             const int rows =
                 environment_rows > 0 ? std::clamp(2 * environment_rows, 16, 1024) : 1024;
-            cone_ = std::make_unique<ConeAverageTable>(ConeAverageTable::point_values(env, rows));
+            cone_ = std::make_unique<ParticleRadianceTable>(
+                ParticleRadianceTable::point_values(env, rows));
         }
     }
     prefiltered_ =

@@ -131,7 +131,7 @@ class Wang2020Model {
     const PrefilterTable* prefiltered() const { return prefiltered_.get(); }
     // What the particles reflect (PerParticle with an environment only; null
     // otherwise): L_γ or the point values (ParticleRadiance).
-    const ConeAverageTable* cone_average() const { return cone_.get(); }
+    const ParticleRadianceTable* particle_radiance_table() const { return cone_.get(); }
     double sigma_o() const { return sigma_o_; }  // σ(Ωo) = 2π(1 − cos γ)
     // per_particle with ScaleCount::Effective (the prefiltered table's w is
     // then the effective fraction r, not P̂).
@@ -169,7 +169,7 @@ class Wang2020Model {
     DpfTable dpf_;
     ParticleQuadtree tree_;
     std::unique_ptr<PrefilterTable> prefiltered_;
-    std::unique_ptr<ConeAverageTable> cone_;
+    std::unique_ptr<ParticleRadianceTable> cone_;
 };
 
 }  // namespace glintlab::wang2020

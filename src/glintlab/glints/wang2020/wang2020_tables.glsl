@@ -13,7 +13,7 @@
 //   float wang2020_dpf_value(int index);        DpfTable::values()
 //   vec4  wang2020_prefilter_value(int index);  PrefilterTable::data()
 //   uvec2 wang2020_node(int index);             QuadtreeNode {first_child, count_mask}
-//   vec4  wang2020_cone_value(int index);       ConeAverageTable::data() (point
+//   vec4  wang2020_cone_value(int index);       ParticleRadianceTable::data() (point
 //                                               values or L_γ, per_particle)
 // Precision: float instead of the CPU's double; particle tests are done in
 // leaf-local coordinates, where the box edges are exact, so counts agree
@@ -197,7 +197,7 @@ float wang2020_hash_unit(uint a, uint b, uint c, uint d) {
     return float(h >> 8u) * 5.9604644775390625e-8f;  // 2^-24
 }
 
-// ConeAverageTable::lookup: bilinear point value or L_γ at a world direction (cell
+// ParticleRadianceTable::lookup: bilinear point value or L_γ at a world direction (cell
 // centred; clamped in θ from +z, periodic in φ = atan2(y, x)).
 vec3 wang2020_cone_lookup(ivec2 res, vec3 d) {
     float len = length(d);

@@ -32,7 +32,8 @@ uvec2 wang2020_node(int index) {
     return uvec2(n.first_child, n.count_mask);
 }
 vec4 wang2020_cone_value(int index) {
-    return glintlab::wang2020::g_model->cone_average()->data()[static_cast<size_t>(index)];
+    return glintlab::wang2020::g_model->particle_radiance_table()
+        ->data()[static_cast<size_t>(index)];
 }
 #include "glintlab/glints/wang2020/wang2020_tables.glsl"
 GLINTLAB_SHADER_FUNCTIONS_END
@@ -74,8 +75,9 @@ shader::Wang2020Tables tables_of(const Wang2020Model& model) {
     t.sigma = static_cast<float>(model.sigma_o());
     t.alpha = static_cast<float>(model.material().alpha);
     t.micro = model.micro_mode_index();
-    t.cone_res = model.cone_average() != nullptr
-                     ? glm::ivec2(model.cone_average()->width(), model.cone_average()->height())
+    t.cone_res = model.particle_radiance_table() != nullptr
+                     ? glm::ivec2(model.particle_radiance_table()->width(),
+                                  model.particle_radiance_table()->height())
                      : glm::ivec2(1);
     t.cos_gamma = static_cast<float>(std::cos(model.material().gamma_deg * kPi / 180.0));
     const FresnelDesc& f = model.material().fresnel;
