@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
+#include <map>
 
 #include <fmt/format.h>
 #include <fmt/ranges.h>
@@ -47,6 +48,8 @@ constexpr double kMeanBound = 0.05;
 // reflects the draw.
 constexpr double kDenseSeBound = kMeanBound / 2.0;
 constexpr double kFlickerFactor = 2.0;
+// Rounds of the dense scenes' re-runs (below).
+constexpr int kRefineRounds = 3;
 
 std::filesystem::path default_scene_dir() {
     if (const char* env = std::getenv("GLINTLAB_SOURCE_DIR"); env != nullptr && *env != '\0')
@@ -135,11 +138,18 @@ ValidationReport validate_compare(const CompareValidationOptions& o) {
         // b_m = sqrt(bound² - se_t'²) (at most max_realizations). A re-run
         // truth re-runs every model compared with it.
         nlohmann::json refined = nlohmann::json::object();
-        if (dense && (o.max_realizations > c.realizations ||
-                      o.max_truth_realizations > c.truth_realizations)) {
+        // Realizations behind each row now (models by name, truths by key).
+        std::map<std::string, int> now;
+        for (const compare::ModelMetrics& m : r.models)
+            if (m.compared)
+                now[m.reference ? m.truth : m.model] =
+                    m.reference ? c.truth_realizations : c.realizations;
+        // Up to kRefineRounds rounds: each round's need comes from se
+        // estimated with few seeds, and can fall short.
+        for (int round = 0; dense && round < kRefineRounds; ++round) {
             compare::CompareOptions again = c;
             again.models.clear();
-            int need = c.realizations, need_truth = c.truth_realizations;
+            int need = 0, need_truth = 0;
             std::vector<std::string> refined_truths;
             for (const compare::ModelMetrics& m : r.models) {
                 if (!m.compared || m.reference || !mean_bounded(m.model, environment)) continue;
@@ -151,24 +161,28 @@ ValidationReport validate_compare(const CompareValidationOptions& o) {
                 const double se_m =
                     std::sqrt(std::max(m.mean_rel_err_se * m.mean_rel_err_se - se_t * se_t, 0.0));
                 const double b = kDenseSeBound / std::sqrt(2.0);
+                const int t_now = now[m.truth], m_now = now[m.model];
                 double se_t_after = se_t;
-                if (se_t > b && o.max_truth_realizations > c.truth_realizations) {
-                    const int t_need =
-                        std::min(o.max_truth_realizations,
-                                 static_cast<int>(std::ceil(c.truth_realizations * (se_t / b) *
-                                                            (se_t / b) * 1.2)));
+                if (se_t > b && o.max_truth_realizations > t_now) {
+                    const int t_need = std::min(
+                        o.max_truth_realizations,
+                        static_cast<int>(std::ceil(t_now * (se_t / b) * (se_t / b) * 1.2)));
                     need_truth = std::max(need_truth, t_need);
-                    se_t_after = se_t * std::sqrt(double(c.truth_realizations) / t_need);
+                    se_t_after = se_t * std::sqrt(double(t_now) / t_need);
                     refined_truths.push_back(m.truth);
                 }
                 const double b_m = std::sqrt(
                     std::max(kDenseSeBound * kDenseSeBound - se_t_after * se_t_after, b * b / 4));
-                if (se_m > b_m)
-                    need = std::max(need, static_cast<int>(std::ceil(c.realizations * (se_m / b_m) *
-                                                                     (se_m / b_m) * 1.2)));
+                if (se_m > b_m && o.max_realizations > m_now)
+                    need =
+                        std::max(need, std::min(o.max_realizations,
+                                                static_cast<int>(std::ceil(m_now * (se_m / b_m) *
+                                                                           (se_m / b_m) * 1.2))));
                 again.models.push_back(m.model);
             }
-            // Every model compared with a re-run truth is re-run with it.
+            if (need == 0 && need_truth == 0) break;  // conclusive, or at the caps
+            // Every model compared with a re-run truth is re-run with it;
+            // nothing is re-run with fewer realizations than it has.
             for (const compare::ModelMetrics& m : r.models)
                 if (m.compared && !m.reference &&
                     std::find(refined_truths.begin(), refined_truths.end(), m.truth) !=
@@ -176,23 +190,25 @@ ValidationReport validate_compare(const CompareValidationOptions& o) {
                     std::find(again.models.begin(), again.models.end(), m.model) ==
                         again.models.end())
                     again.models.push_back(m.model);
-            again.realizations = std::min(std::max(o.max_realizations, c.realizations), need);
-            again.truth_realizations = need_truth;
-            if (!again.models.empty() && (again.realizations > c.realizations ||
-                                          again.truth_realizations > c.truth_realizations)) {
-                const compare::CompareResult more = compare::run_compare(again);
-                for (const compare::ModelMetrics& m : more.models)
-                    for (compare::ModelMetrics& old_row : r.models)
-                        if (m.reference ? old_row.reference && old_row.truth == m.truth
-                                        : old_row.model == m.model) {
-                            old_row = m;
-                            if (m.reference) {
-                                refined[m.truth] = again.truth_realizations;
-                            } else {
-                                refined[m.model] = again.realizations;
-                            }
-                        }
+            for (const std::string& model : again.models) {
+                need = std::max(need, now[model]);
+                for (const compare::ModelMetrics& m : r.models)
+                    if (!m.reference && m.model == model)
+                        need_truth = std::max(need_truth, now[m.truth]);
             }
+            again.realizations = need;
+            again.truth_realizations = need_truth;
+            const compare::CompareResult more = compare::run_compare(again);
+            for (const compare::ModelMetrics& m : more.models)
+                for (compare::ModelMetrics& old_row : r.models)
+                    if (m.reference ? old_row.reference && old_row.truth == m.truth
+                                    : old_row.model == m.model) {
+                        old_row = m;
+                        const std::string key = m.reference ? m.truth : m.model;
+                        const int n = m.reference ? again.truth_realizations : again.realizations;
+                        if (n > now[key]) refined[key] = n;
+                        now[key] = n;
+                    }
         }
 
         nlohmann::json sj = r.to_json();
