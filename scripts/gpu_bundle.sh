@@ -8,6 +8,14 @@
 #   scripts/gpu_bundle.sh build/release/glintlab BUNDLE_DIR
 #   # on the GPU machine:
 #   LD_LIBRARY_PATH=BUNDLE_DIR/lib BUNDLE_DIR/glintlab bench --gpu ...
+#
+# The target must have the GL vendor-neutral dispatch (libglvnd: libEGL.so.1
+# and friends) beside its driver. A machine with only the NVIDIA driver's own
+# libraries answers "no EGL library found"; unpack Debian's libegl1,
+# libglvnd0, libopengl0, libgl1, libglx0 and libgles2 there
+# (`apt-get download` here, `dpkg -x PKG.deb /` and `ldconfig` there). The
+# benchmarks read environment maps from Blender's path: copy BUNDLE_DIR/world/*
+# to /usr/share/blender/datafiles/studiolights/world/ on the target.
 set -euo pipefail
 bin=${1:?usage: gpu_bundle.sh GLINTLAB_BINARY BUNDLE_DIR}
 out=${2:?usage: gpu_bundle.sh GLINTLAB_BINARY BUNDLE_DIR}
