@@ -246,5 +246,35 @@ TEST(CountingLaws, ClampedGaussianMeanMatchesQuadrature) {
     EXPECT_NEAR(shader::standard_normal_cdf(-1.0f), 0.15865525f, 2e-7f);
 }
 
+// Bounds 6 or more standard deviations away are skipped (their terms are
+// below 1.7e-10 sd): near and on both sides of that cut the fp32 result
+// agrees with the formula in double precision (std::erfc) to fp32 rounding of
+// the mean plus erf_approx's error (1e-7 absolute, times |a| <= 6, plus
+// rounding: 1e-6 sd), so the cut makes no step; a cut placed at 4 or less
+// would miss a term of 8e-6 sd and fail here.
+TEST(CountingLaws, ClampedGaussianMeanIsContinuousAtTheNegligibleTail) {
+    const auto exact = [](double mean, double sd, double lo, double hi) {
+        const double a = (lo - mean) / sd;
+        const double b = (hi - mean) / sd;
+        const auto phi = [](double x) { return std::exp(-0.5 * x * x) / std::sqrt(2.0 * M_PI); };
+        const auto cdf = [](double x) { return 0.5 * std::erfc(-x / std::sqrt(2.0)); };
+        return mean + sd * ((phi(a) + a * cdf(a)) - (phi(b) - b * (1.0 - cdf(b))));
+    };
+    for (float distance : {0.5f, 2.0f, 4.0f, 5.5f, 5.99f, 6.0f, 6.01f, 7.0f}) {
+        for (float sd : {0.1f, 1.0f, 30.0f}) {
+            // The lower bound `distance` sd below the mean; the upper far away.
+            const float mean = 1.0f + distance * sd;
+            EXPECT_NEAR(shader::clamped_gaussian_mean(mean, sd, 1.0f, 1e30f),
+                        exact(mean, sd, 1.0, 1e30), 2e-7 * mean + 1e-6 * sd)
+                << "below: distance " << distance << " sd " << sd;
+            // The upper bound `distance` sd above the mean; the lower far away.
+            const float hi = 1000.0f + distance * sd;
+            EXPECT_NEAR(shader::clamped_gaussian_mean(1000.0f, sd, -1e30f, hi),
+                        exact(1000.0, sd, -1e30, hi), 2e-7 * 1000.0 + 1e-6 * sd)
+                << "above: distance " << distance << " sd " << sd;
+        }
+    }
+}
+
 }  // namespace
 }  // namespace glintlab
