@@ -408,14 +408,10 @@ CompareResult run_compare(const CompareOptions& o) {
         }
         row.seconds = seconds / R;
         row.mean_plane = average(job.realizations);
-        row.mean_luminance = 0.0;
-        for (double m : job.means) row.mean_luminance += m / double(job.means.size());
-        if (job.means.size() > 1 && row.mean_luminance > 0.0) {
-            double ss = 0.0;
-            for (double m : job.means) ss += (m - row.mean_luminance) * (m - row.mean_luminance);
-            const double n = double(job.means.size());
-            row.mean_luminance_rel_se = std::sqrt(ss / (n - 1.0) / n) / row.mean_luminance;
-        }
+        const MeanEstimate mean = mean_with_standard_error(job.means);
+        row.mean_luminance = mean.mean;
+        if (row.mean_luminance > 0.0)
+            row.mean_luminance_rel_se = mean.standard_error / row.mean_luminance;
         row.pixel_variance = mean_pixel_variance(job.realizations, masks[0]);
         const FlickerEstimate f = flicker_over_paths(job.paths, masks);
         row.flicker = f.mean, row.flicker_se = f.standard_error;

@@ -21,8 +21,9 @@ void require_mask(const Plane& p, const Mask& mask, const char* what) {
              p.height);
 }
 
-// Sample mean and variance (R - 1 in the denominator; 0 for one value).
-std::pair<double, double> mean_var(const std::vector<double>& x) {
+}  // namespace
+
+std::pair<double, double> sample_mean_variance(const std::vector<double>& x) {
     if (x.empty()) return {0.0, 0.0};
     double m = 0.0;
     for (double v : x) m += v;
@@ -33,7 +34,10 @@ std::pair<double, double> mean_var(const std::vector<double>& x) {
     return {m, s / double(x.size() - 1)};
 }
 
-}  // namespace
+MeanEstimate mean_with_standard_error(const std::vector<double>& x) {
+    const auto [m, v] = sample_mean_variance(x);
+    return {m, x.size() > 1 ? std::sqrt(v / double(x.size())) : 0.0};
+}
 
 PixelFaults count_pixel_faults(const Image& image) {
     PixelFaults f;
@@ -71,8 +75,8 @@ MeanError mean_relative_error(const std::vector<double>& model_means,
                               const std::vector<double>& truth_means) {
     if (model_means.empty() || truth_means.empty())
         fail("compare: the mean error needs at least one realization of each image");
-    const auto [m, vm] = mean_var(model_means);
-    const auto [g, vg] = mean_var(truth_means);
+    const auto [m, vm] = sample_mean_variance(model_means);
+    const auto [g, vg] = sample_mean_variance(truth_means);
     MeanError e;
     if (!(g > 0.0)) {
         // A black ground truth: no relative error is defined; equal images
@@ -222,14 +226,7 @@ FlickerEstimate flicker_over_paths(const std::vector<std::vector<Plane>>& paths,
     std::vector<double> values;
     values.reserve(paths.size());
     for (const std::vector<Plane>& frames : paths) values.push_back(flicker(frames, masks));
-    FlickerEstimate e;
-    for (double v : values) e.mean += v / double(values.size());
-    if (values.size() > 1) {
-        double ss = 0.0;
-        for (double v : values) ss += (v - e.mean) * (v - e.mean);
-        e.standard_error = std::sqrt(ss / double(values.size() - 1) / double(values.size()));
-    }
-    return e;
+    return mean_with_standard_error(values);
 }
 
 Plane average(const std::vector<Plane>& planes) {

@@ -7,6 +7,7 @@
 #pragma once
 
 #include <cstdint>
+#include <utility>
 #include <vector>
 
 #include "glintlab/core/image.h"
@@ -93,6 +94,18 @@ std::vector<float> pooled_masked_values(const std::vector<Plane>& realizations, 
 // glint statistic without the estimator's noise.
 double sampling_pixel_variance(const Plane& a, const Plane& b, const Mask& mask);
 
+// Sample mean and variance of x (n - 1 in the denominator; variance 0 for
+// one value, both 0 for none).
+std::pair<double, double> sample_mean_variance(const std::vector<double>& x);
+
+// Sample mean of x and its standard error (sample sd / sqrt(n); 0 for fewer
+// than two values).
+struct MeanEstimate {
+    double mean = 0.0;
+    double standard_error = 0.0;
+};
+MeanEstimate mean_with_standard_error(const std::vector<double>& x);
+
 // Temporal flicker of a frame sequence: the mean over consecutive pairs of
 // mean_p |L_{t+1}(p) - L_t(p)| / mean_p (L_t(p) + L_{t+1}(p)) / 2, over the
 // pixels in both frames' masks. 0 for a frozen sequence.
@@ -105,10 +118,7 @@ double flicker(const std::vector<Plane>& frames, const std::vector<Mask>& masks)
 // the sparkle is sparse: a few facets that reflect a bright source carry
 // most of a frame's change, so the flicker of one realization varies by
 // 2-3x between seeds (docs/VALIDATION.md "compare", flicker paths).
-struct FlickerEstimate {
-    double mean = 0.0;
-    double standard_error = 0.0;
-};
+using FlickerEstimate = MeanEstimate;
 FlickerEstimate flicker_over_paths(const std::vector<std::vector<Plane>>& paths,
                                    const std::vector<Mask>& masks);
 

@@ -173,6 +173,20 @@ TEST(CompareMetrics, FlickerOverPathsIsTheMeanWithItsStandardError) {
     EXPECT_THROW(flicker_over_paths({}, {m, m, m}), Error);
 }
 
+// The sample statistics every estimate of the compare tool uses: n - 1 in
+// the variance, sd / sqrt(n) for the standard error, nothing for one value.
+TEST(CompareMetrics, SampleMeanVarianceAndStandardError) {
+    EXPECT_EQ(sample_mean_variance({}), (std::pair<double, double>{0.0, 0.0}));
+    EXPECT_EQ(sample_mean_variance({5.0}), (std::pair<double, double>{5.0, 0.0}));
+    const auto [m, v] = sample_mean_variance({1.0, 2.0, 3.0, 6.0});
+    EXPECT_DOUBLE_EQ(m, 3.0);
+    EXPECT_DOUBLE_EQ(v, 14.0 / 3.0);
+    const MeanEstimate e = mean_with_standard_error({1.0, 2.0, 3.0, 6.0});
+    EXPECT_DOUBLE_EQ(e.mean, 3.0);
+    EXPECT_DOUBLE_EQ(e.standard_error, std::sqrt(14.0 / 3.0 / 4.0));
+    EXPECT_EQ(mean_with_standard_error({5.0}).standard_error, 0.0);
+}
+
 TEST(CompareMetrics, CountsFaultyPixels) {
     Image img(3, 2, glm::vec3(0.5f));
     img.at(0, 0) = glm::vec3(std::numeric_limits<float>::quiet_NaN(), 0.0f, 0.0f);

@@ -71,6 +71,94 @@ bool flicker_bounded(const std::string& model) {
     return m != nullptr && m->gpu && m->id != GlintModelId::Smooth;
 }
 
+// Dense scenes: a bounded model whose se is above kDenseSeBound is
+// re-run with more seeds, the same first seeds, so that its check is
+// conclusive (a sun's or moon's reflection is a rare event for the
+// facets; docs/VALIDATION.md "compare"). The se has two parts, the
+// model's and its truth's (added in quadrature): the truth is re-run
+// with T (se_t / b)² · 1.2 seeds where its part is above b =
+// bound / sqrt(2) (at most max_truth_realizations), then the model
+// with R (se_m / b_m)² · 1.2 where its part is above what remains,
+// b_m = sqrt(bound² - se_t'²) (at most max_realizations). A re-run
+// truth re-runs every model compared with it. The rows of r are replaced
+// in place; the result lists the realizations each re-run row ended with
+// (models by name, truths by key).
+nlohmann::json refine_dense_rows(compare::CompareResult& r, const compare::CompareOptions& c,
+                                 const CompareValidationOptions& o, bool environment) {
+    nlohmann::json refined = nlohmann::json::object();
+    // Realizations behind each row now (models by name, truths by key).
+    std::map<std::string, int> now;
+    for (const compare::ModelMetrics& m : r.models)
+        if (m.compared)
+            now[m.reference ? m.truth : m.model] =
+                m.reference ? c.truth_realizations : c.realizations;
+    // Up to kRefineRounds rounds: each round's need comes from se
+    // estimated with few seeds, and can fall short.
+    for (int round = 0; round < kRefineRounds; ++round) {
+        compare::CompareOptions again = c;
+        again.models.clear();
+        int need = 0, need_truth = 0;
+        std::vector<std::string> refined_truths;
+        for (const compare::ModelMetrics& m : r.models) {
+            if (!m.compared || m.reference || !mean_bounded(m.model, environment)) continue;
+            if (!(m.mean_rel_err_se > kDenseSeBound)) continue;
+            const compare::ModelMetrics* truth = nullptr;
+            for (const compare::ModelMetrics& t : r.models)
+                if (t.reference && t.truth == m.truth) truth = &t;
+            const double se_t = truth != nullptr ? truth->mean_luminance_rel_se : 0.0;
+            const double se_m =
+                std::sqrt(std::max(m.mean_rel_err_se * m.mean_rel_err_se - se_t * se_t, 0.0));
+            const double b = kDenseSeBound / std::sqrt(2.0);
+            const int t_now = now[m.truth], m_now = now[m.model];
+            double se_t_after = se_t;
+            if (se_t > b && o.max_truth_realizations > t_now) {
+                const int t_need =
+                    std::min(o.max_truth_realizations,
+                             static_cast<int>(std::ceil(t_now * (se_t / b) * (se_t / b) * 1.2)));
+                need_truth = std::max(need_truth, t_need);
+                se_t_after = se_t * std::sqrt(double(t_now) / t_need);
+                refined_truths.push_back(m.truth);
+            }
+            const double b_m = std::sqrt(
+                std::max(kDenseSeBound * kDenseSeBound - se_t_after * se_t_after, b * b / 4));
+            if (se_m > b_m && o.max_realizations > m_now)
+                need = std::max(need, std::min(o.max_realizations,
+                                               static_cast<int>(std::ceil(m_now * (se_m / b_m) *
+                                                                          (se_m / b_m) * 1.2))));
+            again.models.push_back(m.model);
+        }
+        if (need == 0 && need_truth == 0) break;  // conclusive, or at the caps
+        // Every model compared with a re-run truth is re-run with it;
+        // nothing is re-run with fewer realizations than it has.
+        for (const compare::ModelMetrics& m : r.models)
+            if (m.compared && !m.reference &&
+                std::find(refined_truths.begin(), refined_truths.end(), m.truth) !=
+                    refined_truths.end() &&
+                std::find(again.models.begin(), again.models.end(), m.model) == again.models.end())
+                again.models.push_back(m.model);
+        for (const std::string& model : again.models) {
+            need = std::max(need, now[model]);
+            for (const compare::ModelMetrics& m : r.models)
+                if (!m.reference && m.model == model)
+                    need_truth = std::max(need_truth, now[m.truth]);
+        }
+        again.realizations = need;
+        again.truth_realizations = need_truth;
+        const compare::CompareResult more = compare::run_compare(again);
+        for (const compare::ModelMetrics& m : more.models)
+            for (compare::ModelMetrics& old_row : r.models)
+                if (m.reference ? old_row.reference && old_row.truth == m.truth
+                                : old_row.model == m.model) {
+                    old_row = m;
+                    const std::string key = m.reference ? m.truth : m.model;
+                    const int n = m.reference ? again.truth_realizations : again.realizations;
+                    if (n > now[key]) refined[key] = n;
+                    now[key] = n;
+                }
+    }
+    return refined;
+}
+
 }  // namespace
 
 std::vector<std::string> compare_scene_names() {
@@ -127,90 +215,8 @@ ValidationReport validate_compare(const CompareValidationOptions& o) {
         c.seed = o.seed;
         c.threads = o.threads;
         compare::CompareResult r = compare::run_compare(c);
-        // Dense scenes: a bounded model whose se is above kDenseSeBound is
-        // re-run with more seeds, the same first seeds, so that its check is
-        // conclusive (a sun's or moon's reflection is a rare event for the
-        // facets; docs/VALIDATION.md "compare"). The se has two parts, the
-        // model's and its truth's (added in quadrature): the truth is re-run
-        // with T (se_t / b)² · 1.2 seeds where its part is above b =
-        // bound / sqrt(2) (at most max_truth_realizations), then the model
-        // with R (se_m / b_m)² · 1.2 where its part is above what remains,
-        // b_m = sqrt(bound² - se_t'²) (at most max_realizations). A re-run
-        // truth re-runs every model compared with it.
-        nlohmann::json refined = nlohmann::json::object();
-        // Realizations behind each row now (models by name, truths by key).
-        std::map<std::string, int> now;
-        for (const compare::ModelMetrics& m : r.models)
-            if (m.compared)
-                now[m.reference ? m.truth : m.model] =
-                    m.reference ? c.truth_realizations : c.realizations;
-        // Up to kRefineRounds rounds: each round's need comes from se
-        // estimated with few seeds, and can fall short.
-        for (int round = 0; dense && round < kRefineRounds; ++round) {
-            compare::CompareOptions again = c;
-            again.models.clear();
-            int need = 0, need_truth = 0;
-            std::vector<std::string> refined_truths;
-            for (const compare::ModelMetrics& m : r.models) {
-                if (!m.compared || m.reference || !mean_bounded(m.model, environment)) continue;
-                if (!(m.mean_rel_err_se > kDenseSeBound)) continue;
-                const compare::ModelMetrics* truth = nullptr;
-                for (const compare::ModelMetrics& t : r.models)
-                    if (t.reference && t.truth == m.truth) truth = &t;
-                const double se_t = truth != nullptr ? truth->mean_luminance_rel_se : 0.0;
-                const double se_m =
-                    std::sqrt(std::max(m.mean_rel_err_se * m.mean_rel_err_se - se_t * se_t, 0.0));
-                const double b = kDenseSeBound / std::sqrt(2.0);
-                const int t_now = now[m.truth], m_now = now[m.model];
-                double se_t_after = se_t;
-                if (se_t > b && o.max_truth_realizations > t_now) {
-                    const int t_need = std::min(
-                        o.max_truth_realizations,
-                        static_cast<int>(std::ceil(t_now * (se_t / b) * (se_t / b) * 1.2)));
-                    need_truth = std::max(need_truth, t_need);
-                    se_t_after = se_t * std::sqrt(double(t_now) / t_need);
-                    refined_truths.push_back(m.truth);
-                }
-                const double b_m = std::sqrt(
-                    std::max(kDenseSeBound * kDenseSeBound - se_t_after * se_t_after, b * b / 4));
-                if (se_m > b_m && o.max_realizations > m_now)
-                    need =
-                        std::max(need, std::min(o.max_realizations,
-                                                static_cast<int>(std::ceil(m_now * (se_m / b_m) *
-                                                                           (se_m / b_m) * 1.2))));
-                again.models.push_back(m.model);
-            }
-            if (need == 0 && need_truth == 0) break;  // conclusive, or at the caps
-            // Every model compared with a re-run truth is re-run with it;
-            // nothing is re-run with fewer realizations than it has.
-            for (const compare::ModelMetrics& m : r.models)
-                if (m.compared && !m.reference &&
-                    std::find(refined_truths.begin(), refined_truths.end(), m.truth) !=
-                        refined_truths.end() &&
-                    std::find(again.models.begin(), again.models.end(), m.model) ==
-                        again.models.end())
-                    again.models.push_back(m.model);
-            for (const std::string& model : again.models) {
-                need = std::max(need, now[model]);
-                for (const compare::ModelMetrics& m : r.models)
-                    if (!m.reference && m.model == model)
-                        need_truth = std::max(need_truth, now[m.truth]);
-            }
-            again.realizations = need;
-            again.truth_realizations = need_truth;
-            const compare::CompareResult more = compare::run_compare(again);
-            for (const compare::ModelMetrics& m : more.models)
-                for (compare::ModelMetrics& old_row : r.models)
-                    if (m.reference ? old_row.reference && old_row.truth == m.truth
-                                    : old_row.model == m.model) {
-                        old_row = m;
-                        const std::string key = m.reference ? m.truth : m.model;
-                        const int n = m.reference ? again.truth_realizations : again.realizations;
-                        if (n > now[key]) refined[key] = n;
-                        now[key] = n;
-                    }
-        }
-
+        const nlohmann::json refined =
+            dense ? refine_dense_rows(r, c, o, environment) : nlohmann::json::object();
         nlohmann::json sj = r.to_json();
         sj["scene"] = name;
         sj["density"] = dense ? "dense" : "sparse";
