@@ -82,6 +82,21 @@ VARIANTS = {
           "                                         density_randomization, levels, p_a, p_b, L_a, L_b,\n"
           "                                         conditional);",
           "        factor = min(1.0f, 1.0f + p_a.x + p_b.x + 1e-30f * float(seed));")]),
+    "k_lobe_onelayer": (
+        "kneiphof2025: the layer fetches read one layer (no blend of two)",
+        [(KNEIPHOF,
+          "    vec4 b = textureLod(layers, vec3(uv.x, uv.y, l1), 0.0f);\n    return mix(a, b, l - l0);",
+          "    return a * (1.0f + 1e-30f * (l - l0 + l1));")]),
+    "k_lobe_nolatlong": (
+        "kneiphof2025: the layer fetches at a lat-long uv without acos / atan (d.xy remapped)",
+        [(KNEIPHOF,
+          "    vec2 uv = kneiphof2025_latlong_uv(dir);\n    float l = clamp",
+          "    vec2 uv = dir.xy * 0.5f + 0.5f;\n    float l = clamp")]),
+    "k_lobe_nofetch": (
+        "kneiphof2025: the lobe's 32 samples read no texture (constant radiance)",
+        [(KNEIPHOF,
+          "    if (!residual) return kneiphof2025_radiance_fetch(dir, level);\n",
+          "    return vec3(0.5f + 1e-30f * (dir.x + level));\n")]),
 }
 
 
