@@ -18,28 +18,45 @@
 #include "glintlab/microfacet/masking.glsl"
 #include "glintlab/microfacet/ndf.glsl"
 
-vec3 sample_vndf_ggx(vec3 wo, float alpha_x, float alpha_y, vec2 u) {
+// What Listing 1 computes from wo alone (sections 1-2 and the squeeze
+// factor of section 3), so that a caller drawing many samples for one wo
+// (kneiphof2025's lobe) does it once; sample_vndf_ggx_in then does the same
+// operations in the same order as sample_vndf_ggx.
+struct VndfGgxFrame {
+    vec3 v;
+    vec3 t1;
+    vec3 t2;
+    float s;
+};
+VndfGgxFrame vndf_ggx_frame(vec3 wo, float alpha_x, float alpha_y) {
+    VndfGgxFrame f;
     // Heitz 2018 Listing 1, section 1: observer direction in the hemisphere
     // configuration (alpha = 1), where visible normals are uniform on the
     // projected hemisphere.
-    vec3 v = normalize(vec3(alpha_x * wo.x, alpha_y * wo.y, wo.z));
+    f.v = normalize(vec3(alpha_x * wo.x, alpha_y * wo.y, wo.z));
     // Section 2: orthonormal basis around v (any when v is the normal).
-    float len2 = v.x * v.x + v.y * v.y;
-    vec3 t1 = len2 > 0.0f ? vec3(-v.y, v.x, 0.0f) / sqrt(len2) : vec3(1.0f, 0.0f, 0.0f);
-    vec3 t2 = cross(v, t1);
+    float len2 = f.v.x * f.v.x + f.v.y * f.v.y;
+    f.t1 = len2 > 0.0f ? vec3(-f.v.y, f.v.x, 0.0f) / sqrt(len2) : vec3(1.0f, 0.0f, 0.0f);
+    f.t2 = cross(f.v, f.t1);
+    f.s = 0.5f * (1.0f + f.v.z);
+    return f;
+}
+vec3 sample_vndf_ggx_in(VndfGgxFrame f, float alpha_x, float alpha_y, vec2 u) {
     // Section 3: uniform point on the unit disk, then squeeze the half of the
     // disk that the visible hemisphere projects to (factor (1 + v.z) / 2).
     float r = sqrt(u.x);
     float phi = TWO_PI * u.y;
     float p1 = r * cos(phi);
     float p2 = r * sin(phi);
-    float s = 0.5f * (1.0f + v.z);
-    p2 = (1.0f - s) * sqrt(max(0.0f, 1.0f - p1 * p1)) + s * p2;
+    p2 = (1.0f - f.s) * sqrt(max(0.0f, 1.0f - p1 * p1)) + f.s * p2;
     // Section 4: lift onto the hemisphere.
-    vec3 nh = p1 * t1 + p2 * t2 + sqrt(max(0.0f, 1.0f - p1 * p1 - p2 * p2)) * v;
+    vec3 nh = p1 * f.t1 + p2 * f.t2 + sqrt(max(0.0f, 1.0f - p1 * p1 - p2 * p2)) * f.v;
     // Section 5: back to the ellipsoid configuration (normals transform with
     // the inverse transpose of the stretch).
     return normalize(vec3(alpha_x * nh.x, alpha_y * nh.y, max(0.0f, nh.z)));
+}
+vec3 sample_vndf_ggx(vec3 wo, float alpha_x, float alpha_y, vec2 u) {
+    return sample_vndf_ggx_in(vndf_ggx_frame(wo, alpha_x, alpha_y), alpha_x, alpha_y, u);
 }
 
 // CDF (unnormalised) of the visible x-slope for alpha = 1 and an observer at

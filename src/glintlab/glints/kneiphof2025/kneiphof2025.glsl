@@ -494,18 +494,24 @@ vec3 kneiphof2025_lobe_radiance_of(vec3 n, vec3 wr, float cos_o, float alpha, bo
     vec3 wo_world = 2.0f * cos_o * n - wr;
     vec3 wo = normalize(vec3(dot(wo_world, t), dot(wo_world, b), max(cos_o, 1e-4f)));
     float roughness = sqrt(alpha);
-    float g1 = G1_Smith(NDF_GGX, wo, alpha, alpha);
+    // What every sample shares, computed once (issue 17: the lobe is
+    // arithmetic-bound on a GPU): G1(wo)'s Lambda, and the visible-normal
+    // sampler's frame. The same operations as G1_Smith, G2_SmithCorrelated
+    // and sample_vndf_ggx, so the values are theirs.
+    float lambda_o = Lambda_Microfacet(NDF_GGX, wo, alpha, alpha);
+    float g1 = 1.0f / (1.0f + lambda_o);
+    VndfGgxFrame frame = vndf_ggx_frame(wo, alpha, alpha);
     vec3 sum = vec3(0.0f);
     float weight = 0.0f;
     for (int j = 0; j < KNEIPHOF2025_LOBE_SAMPLES; ++j) {
         float fj = float(j);
         vec2 u = vec2((fj + 0.5f) / float(KNEIPHOF2025_LOBE_SAMPLES), fract(fj * 0.6180339887f));
-        vec3 h = sample_vndf_ggx(wo, alpha, alpha, u);
+        vec3 h = sample_vndf_ggx_in(frame, alpha, alpha, u);
         float oh = dot(wo, h);
         if (!(oh > 0.0f)) continue;
         vec3 wi = 2.0f * oh * h - wo;
         if (!(wi.z > 0.0f)) continue;
-        float g2 = G2_SmithCorrelated(NDF_GGX, wo, wi, alpha, alpha);
+        float g2 = 1.0f / (1.0f + lambda_o + Lambda_Microfacet(NDF_GGX, wi, alpha, alpha));
         float pdf = g1 * D_Microfacet(NDF_GGX, h, alpha, alpha) / (4.0f * wo.z);
         float omega = 1.0f / (float(KNEIPHOF2025_LOBE_SAMPLES) * max(pdf, 1e-6f));
         float level = min(sqrt(sqrt(omega / (4.0f * PI))), roughness);
