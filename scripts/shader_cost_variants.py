@@ -97,6 +97,27 @@ VARIANTS = {
         [(KNEIPHOF,
           "    if (!residual) return kneiphof2025_radiance_fetch(dir, level);\n",
           "    return vec3(0.5f + 1e-30f * (dir.x + level));\n")]),
+    "d_pcg3d": (
+        "deliot2023: the corner's uniform pair from one pcg3d of (corner, vertex seed) "
+        "instead of the cell hash and two PCG rounds (other random numbers, same law)",
+        [(DELIOT,
+          "vec2 xi = deliot2023_uniform_pair(hash_cell(corner & ivec2(DELIOT2023_LATTICE_MASK), vs));",
+          "uvec3 hh = pcg3d(uvec3(uvec2(corner & ivec2(DELIOT2023_LATTICE_MASK)), vs)); "
+          "vec2 xi = vec2(uint_to_unit_float(hh.x), uint_to_unit_float(hh.y));")]),
+    "k_fastlatlong": (
+        "kneiphof2025: polynomial acos (Abramowitz & Stegun 4.4.45, 7e-5 rad) and atan "
+        "(octant-reduced minimax, 1e-5 rad) in the lat-long mapping",
+        [(KNEIPHOF,
+          "    float theta = acos(clamp(d.y, -1.0f, 1.0f));\n    float phi = atan(d.x, -d.z) - kneiphof2025_env_rotation;",
+          "    float y = clamp(d.y, -1.0f, 1.0f);\n"
+          "    float ay = abs(y);\n"
+          "    float ac = sqrt(1.0f - ay) * (1.5707288f + ay * (-0.2121144f + ay * (0.0742610f - 0.0187293f * ay)));\n"
+          "    float theta = y >= 0.0f ? ac : PI - ac;\n"
+          "    float X = -d.z; float Y = d.x; float ax = abs(X); float ayy = abs(Y);\n"
+          "    float q = min(ax, ayy) / max(max(ax, ayy), 1e-30f); float q2 = q * q;\n"
+          "    float at = q * (0.99997726f + q2 * (-0.33262347f + q2 * (0.19354346f + q2 * (-0.11643287f + q2 * (0.05265332f - 0.01172120f * q2)))));\n"
+          "    if (ayy > ax) at = 1.5707963f - at; if (X < 0.0f) at = PI - at; if (Y < 0.0f) at = -at;\n"
+          "    float phi = at - kneiphof2025_env_rotation;")]),
 }
 
 

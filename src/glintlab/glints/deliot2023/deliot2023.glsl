@@ -215,15 +215,23 @@ Deliot2023Grids deliot2023_select_grids(float lod, float ratio, float angle, boo
     return g;
 }
 
-// The two uniforms of one gated-Gaussian evaluation (§6.3): from a hash of
-// the angular cell, or, when the back end defines
-// GLINTLAB_DELIOT2023_NOISE_TEXTURE, from a precomputed noise texture through
-// its fetch function `vec2 deliot2023_noise_fetch(uint cell_hash)`.
-vec2 deliot2023_uniform_pair(uint cell_hash) {
+// The two uniforms of one gated-Gaussian evaluation (§6.3) of the angular
+// cell `corner` of a vertex whose stream is at `vs`: the first two outputs
+// of one pcg3d (Jarzynski & Olano 2020) of (corner, vs), or, when the back
+// end defines GLINTLAB_DELIOT2023_NOISE_TEXTURE, a precomputed noise texture
+// read through its fetch function `vec2 deliot2023_noise_fetch(uint
+// cell_hash)` at hash_cell(corner, vs). 000 leaves the source of these
+// numbers open (hash or texture). Issue 17: the corners' hashing was the
+// largest part of a GPU frame; pcg3d replaced hash_cell (two xxHash32
+// rounds) and two pcg_hash rounds, which cost 28 % of deliot2023's pass on
+// an H200 against 0.3 % for pcg3d (docs/BENCHMARKS.md); the uniforms'
+// independence is tested in Deliot2023.CornerUniformsAreUniformAndIndependent.
+vec2 deliot2023_corner_uniforms(ivec2 corner, uint vs) {
 #ifdef GLINTLAB_DELIOT2023_NOISE_TEXTURE
-    return deliot2023_noise_fetch(cell_hash);
+    return deliot2023_noise_fetch(hash_cell(corner, vs));
 #else
-    return vec2(uint_to_unit_float(pcg_hash(cell_hash)), uint_to_unit_float(pcg_hash(cell_hash ^ 0x9e3779b9u)));
+    uvec3 h = pcg3d(uvec3(uint(corner.x), uint(corner.y), vs));
+    return vec2(uint_to_unit_float(h.x), uint_to_unit_float(h.y));
 #endif
 }
 
@@ -345,7 +353,7 @@ vec2 deliot2023_grid_counts(ivec3 id, float weight, vec2 uv, vec2 slope, float p
         for (int c = 0; c < 4; ++c) {
             ivec2 corner = ac + ivec2(c & 1, c >> 1);
             float wc = ((c & 1) == 1 ? at.x : 1.0f - at.x) * ((c >> 1) == 1 ? at.y : 1.0f - at.y);
-            vec2 xi = deliot2023_uniform_pair(hash_cell(corner & ivec2(DELIOT2023_LATTICE_MASK), vs));
+            vec2 xi = deliot2023_corner_uniforms(corner & ivec2(DELIOT2023_LATTICE_MASK), vs);
             float b = original_defects ? deliot2023_original_law(N, p, xi.x, xi.y)
                                        : binomial_single_gated_draw(law, xi.x, xi.y);
             count += wc * b;
