@@ -13,7 +13,8 @@ longer matches the source exactly once stops the script: update it with the
 code.
 
 Usage: scripts/shader_cost_variants.py BUILD_DIR OUT_DIR [VARIANT...]
-       (default: full and every variant; --list prints them)
+       (default: full and every variant; --list prints them; --check only
+       verifies that every replacement still matches, as ctest does)
 Then time each binary, e.g.
     OUT/d_nohash bench --gpu --res 1920x1080 --frames 20 --warmup 5 \
         --scene PLANE_25 --model smooth deliot2023 --log-density 12 20 --json
@@ -46,7 +47,7 @@ VARIANTS = {
     "d_nohash": (
         "deliot2023: the corners' uniform pair from a fract() of the corner, not hashed",
         [(DELIOT,
-          "vec2 xi = deliot2023_uniform_pair(hash_cell(corner & ivec2(DELIOT2023_LATTICE_MASK), vs));",
+          "vec2 xi = deliot2023_corner_uniforms(corner & ivec2(DELIOT2023_LATTICE_MASK), vs);",
           "vec2 xi = fract(vec2(corner) * vec2(0.6180339f, 0.7548776f) + float(vs & 255u) * 0.0037f);")]),
     "d_noquantile": (
         "gated laws (deliot2023 corners): a linear stand-in for the normal quantile",
@@ -97,13 +98,6 @@ VARIANTS = {
         [(KNEIPHOF,
           "    if (!residual) return kneiphof2025_radiance_fetch(dir, level);\n",
           "    return vec3(0.5f + 1e-30f * (dir.x + level));\n")]),
-    "d_pcg3d": (
-        "deliot2023: the corner's uniform pair from one pcg3d of (corner, vertex seed) "
-        "instead of the cell hash and two PCG rounds (other random numbers, same law)",
-        [(DELIOT,
-          "vec2 xi = deliot2023_uniform_pair(hash_cell(corner & ivec2(DELIOT2023_LATTICE_MASK), vs));",
-          "uvec3 hh = pcg3d(uvec3(uvec2(corner & ivec2(DELIOT2023_LATTICE_MASK)), vs)); "
-          "vec2 xi = vec2(uint_to_unit_float(hh.x), uint_to_unit_float(hh.y));")]),
     "k_fastlatlong": (
         "kneiphof2025: polynomial acos (Abramowitz & Stegun 4.4.45, 7e-5 rad) and atan "
         "(octant-reduced minimax, 1e-5 rad) in the lat-long mapping",
@@ -133,6 +127,13 @@ def main(argv):
         for name, (what, _) in VARIANTS.items():
             print(f"{name:14s} {what}")
         return 0
+    if "--check" in argv:  # every replacement still matches its source once (ctest)
+        stale = [f"{name}: {os.path.relpath(path, ROOT)}"
+                 for name, (_, edits) in VARIANTS.items() for path, text, _ in edits
+                 if open(path).read().count(text) != 1]
+        for s in stale:
+            print(f"stale variant {s}: update its text with the code", file=sys.stderr)
+        return 1 if stale else 0
     if len(argv) < 2:
         print(__doc__, file=sys.stderr)
         return 2
