@@ -159,6 +159,46 @@ nlohmann::json refine_dense_rows(compare::CompareResult& r, const compare::Compa
     return refined;
 }
 
+// Flicker ratios of the real-time models within o.flicker_refine_se
+// standard errors of a bound are re-measured over o.max_flicker_paths
+// paths (models and their truth re-rendered over the same frames with new
+// paths; the realizations behind the mean checks are untouched). The
+// re-run rows' flicker fields are replaced (their ratio is against the
+// truth's own re-run); the result lists the paths each re-measured model
+// ended with.
+nlohmann::json refine_flicker_rows(compare::CompareResult& r, const compare::CompareOptions& c,
+                                   const CompareValidationOptions& o) {
+    nlohmann::json refined = nlohmann::json::object();
+    if (o.max_flicker_paths <= c.flicker_paths) return refined;
+    compare::CompareOptions again = c;
+    again.models.clear();
+    for (const compare::ModelMetrics& m : r.models) {
+        if (!m.compared || m.reference || !flicker_bounded(m.model)) continue;
+        if (!(m.flicker_ratio_se > 0.0)) continue;  // one path: no se to judge by
+        const double margin = o.flicker_refine_se * m.flicker_ratio_se;
+        if (std::abs(m.flicker_ratio - 1.0 / kFlickerFactor) < margin ||
+            std::abs(m.flicker_ratio - kFlickerFactor) < margin)
+            again.models.push_back(m.model);
+    }
+    if (again.models.empty()) return refined;
+    // Only the paths are wanted: the fewest realizations run_compare takes
+    // (paths beyond them render their own first frame).
+    again.realizations = 2;
+    again.truth_realizations = 2;
+    again.flicker_paths = o.max_flicker_paths;
+    const compare::CompareResult more = compare::run_compare(again);
+    for (const compare::ModelMetrics& m : more.models)
+        for (compare::ModelMetrics& row : r.models)
+            if (!m.reference && !row.reference && row.model == m.model) {
+                row.flicker = m.flicker;
+                row.flicker_se = m.flicker_se;
+                row.flicker_ratio = m.flicker_ratio;
+                row.flicker_ratio_se = m.flicker_ratio_se;
+                refined[m.model] = again.flicker_paths;
+            }
+    return refined;
+}
+
 }  // namespace
 
 std::vector<std::string> compare_scene_names() {
@@ -168,6 +208,14 @@ std::vector<std::string> compare_scene_names() {
 ValidationReport validate_compare(const CompareValidationOptions& o) {
     if (o.size < 8 || o.size > 1024)
         fail("validate compare: size must be in [8, 1024], got {}", o.size);
+    if (o.max_flicker_paths > 256)
+        fail(
+            "validate compare: max_flicker_paths must be at most 256 (compare's --flicker-paths), "
+            "got {}",
+            o.max_flicker_paths);
+    if (!(o.flicker_refine_se >= 0.0) || !std::isfinite(o.flicker_refine_se))
+        fail("validate compare: flicker_refine_se must be a finite number >= 0, got {}",
+             o.flicker_refine_se);
     const std::filesystem::path dir = o.scene_dir.empty() ? default_scene_dir() : o.scene_dir;
     std::vector<std::string> scenes = o.scenes.empty() ? scene_list() : o.scenes;
     for (const std::string& s : scenes)
@@ -217,15 +265,21 @@ ValidationReport validate_compare(const CompareValidationOptions& o) {
         compare::CompareResult r = compare::run_compare(c);
         const nlohmann::json refined =
             dense ? refine_dense_rows(r, c, o, environment) : nlohmann::json::object();
+        const nlohmann::json refined_flicker = refine_flicker_rows(r, c, o);
         nlohmann::json sj = r.to_json();
         sj["scene"] = name;
         sj["density"] = dense ? "dense" : "sparse";
         if (!refined.empty()) sj["refined_realizations"] = refined;
+        if (!refined_flicker.empty()) sj["refined_flicker_paths"] = refined_flicker;
         text += "\n" + r.to_text();
         for (const auto& [model, n] : refined.items())
             text += fmt::format(
                 "({} re-run with {} realizations: a mean error's se was above {:.1f}%)\n", model,
                 n.get<int>(), 100.0 * kDenseSeBound);
+        for (const auto& [model, n] : refined_flicker.items())
+            text += fmt::format(
+                "({} flicker re-measured over {} paths: its ratio was within {} se of a bound)\n",
+                model, n.get<int>(), o.flicker_refine_se);
         for (size_t i = 0; i < r.models.size(); ++i) {
             nlohmann::json& mj = sj["models"][i];  // to_json keeps the order of r.models
             const compare::ModelMetrics* m = &r.models[i];
@@ -286,6 +340,8 @@ ValidationReport validate_compare(const CompareValidationOptions& o) {
                                  {"truth_realizations", o.truth_realizations},
                                  {"frames", o.frames},
                                  {"flicker_paths", o.flicker_paths},
+                                 {"max_flicker_paths", o.max_flicker_paths},
+                                 {"flicker_refine_se", o.flicker_refine_se},
                                  {"orbit_deg", o.orbit_deg},
                                  {"seed", o.seed}};
     text += fmt::format(
