@@ -61,6 +61,12 @@ struct CompareValidationOptions {
 // The compare scenes, by stem, in the suite's order.
 std::vector<std::string> compare_scene_names();
 
+// The standard error a dense scene's mean error needs for a conclusive
+// verdict on the 5 % bound: 2.5 %, or, where the error is within two se of
+// the bound, half its distance to the bound, at least 1 % (rows above it
+// are re-run with more realizations; docs/VALIDATION.md "compare").
+double dense_mean_se_target(double mean_rel_err, double se);
+
 ValidationReport validate_compare(const CompareValidationOptions& options);
 
 }  // namespace glintlab
