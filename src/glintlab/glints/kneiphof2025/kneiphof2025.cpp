@@ -127,8 +127,8 @@ glm::vec3 area_light_radiance(const GlintLightingContext& ctx, const Cone& cone)
     const glm::vec3 L = shader::kneiphof2025_area_light(
         cone.axis, cone.cos_max, cone.radiance, ctx.t, ctx.b, ctx.n, ctx.wo, alpha_of(desc),
         kneiphof2025_f0(desc), desc.color, ctx.footprint, desc.log_density, desc.seed,
-        k.microfacet_roughness, k.screen_space_scale, k.density_randomization,
-        k.conditional_gaussian);
+        k.microfacet_roughness, k.light_sized_area_grid, k.screen_space_scale,
+        k.density_randomization, k.conditional_gaussian);
     t_rng = nullptr;
     return L;
 }
@@ -197,12 +197,18 @@ int kneiphof2025_smooth_mode(const Kneiphof2025Params& p) {
     return shader::KNEIPHOF2025_SMOOTH_SPLIT_SUM;
 }
 
+float kneiphof2025_area_grid_roughness(float cos_max, const Kneiphof2025Params& k) {
+    return shader::kneiphof2025_area_grid_roughness(cos_max, k.microfacet_roughness,
+                                                    k.light_sized_area_grid);
+}
+
 float kneiphof2025_area_factor(glm::vec3 h_center, const Footprint& footprint, float p,
-                               const GlintDesc& desc) {
+                               const GlintDesc& desc, float cos_max) {
     const Kneiphof2025Params& k = params_of(desc);
+    const float grid_r = kneiphof2025_area_grid_roughness(cos_max, k);
     return shader::kneiphof2025_area_factor(h_center, footprint, p, desc.log_density, desc.seed,
-                                            k.microfacet_roughness, k.screen_space_scale,
-                                            k.density_randomization, k.conditional_gaussian);
+                                            grid_r, k.screen_space_scale, k.density_randomization,
+                                            k.conditional_gaussian);
 }
 
 float kneiphof2025_binomial_factor(const Footprint& footprint, float p, const GlintDesc& desc) {

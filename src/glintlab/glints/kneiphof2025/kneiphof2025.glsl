@@ -410,19 +410,42 @@ vec3 kneiphof2025_integrate_cone(vec3 axis, float cos_max, vec3 radiance, vec3 t
     return color * L;
 }
 
+// The angular cell size of an area light's glints (kneiphof2025's
+// "area_grid"). As published it is deliot2023's R, the microfacets' own lobe
+// (003 §8: the lifetime of glints under area lights "can be controlled
+// manually by adjusting the grid resolution with respect to the halfway
+// vector"). "light_size" (default, ours) widens it by the light's half-vector
+// cone, whose radius is tan(rho / 2) in slope units for a light of angular
+// radius rho: an explicit facet stays lit while its normal is inside that
+// cone, so the counts keep their draw while the half vector moves within
+// it (in quadrature with R: a point light keeps R). Each frame's law is
+// unchanged (same p, same uniforms' law); only which half vectors share a
+// draw changes. docs/MODELS.md kneiphof2025, "Angular lifetime".
+float kneiphof2025_area_grid_roughness(float cos_max, float microfacet_roughness,
+                                       bool light_sized_grid) {
+    if (!light_sized_grid) return microfacet_roughness;
+    float c = clamp(cos_max, -1.0f, 1.0f);
+    // tan(acos(c) / 2) = sqrt((1 - c) / (1 + c)), at most 1 (a light over a
+    // hemisphere or more).
+    float t_half = min(sqrt((1.0f - c) / max(1.0f + c, 1e-12f)), 1.0f);
+    return sqrt(microfacet_roughness * microfacet_roughness + t_half * t_half);
+}
+
 // The area light's glint radiance (K = 1, kneiphof2024 / 003 Eq. 6-9, 23):
 // the smooth radiance of the cone times b / (E[N_P] p). Visibility is the
 // caller's (one shadow test towards the axis).
 vec3 kneiphof2025_area_light(vec3 axis, float cos_max, vec3 radiance, vec3 t, vec3 b, vec3 n,
                              vec3 wo, float alpha, vec3 f0, vec3 color, Footprint fp,
                              float log_density, uint seed, float microfacet_roughness,
-                             float screen_space_scale, float density_randomization, bool conditional) {
+                             bool light_sized_grid, float screen_space_scale,
+                             float density_randomization, bool conditional) {
     float p = 0.0f;
     vec3 h_center = vec3(0.0f, 0.0f, 1.0f);
     vec3 L = kneiphof2025_integrate_cone(axis, cos_max, radiance, t, b, n, wo, alpha, f0, color, p,
                                          h_center);
     if ((L.x == 0.0f && L.y == 0.0f && L.z == 0.0f) || h_center.z <= 0.0f) return vec3(0.0f);
-    return L * kneiphof2025_area_factor(h_center, fp, p, log_density, seed, microfacet_roughness,
+    float grid_r = kneiphof2025_area_grid_roughness(cos_max, microfacet_roughness, light_sized_grid);
+    return L * kneiphof2025_area_factor(h_center, fp, p, log_density, seed, grid_r,
                                         screen_space_scale, density_randomization, conditional);
 }
 

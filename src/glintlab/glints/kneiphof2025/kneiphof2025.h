@@ -41,9 +41,14 @@ glm::vec3 kneiphof2025_environment_smooth(const Kneiphof2025Environment& env, gl
 int kneiphof2025_smooth_mode(const Kneiphof2025Params& p);
 
 // One area light of constant radiance (K = 1): the factor b(N_P, p) / (E[N_P] p)
-// for the light's centre half vector h_c (local) and probability p (Eq. 8-9).
+// for the light's centre half vector h_c (local) and probability p (Eq. 8-9);
+// cos_max, the cosine of the light's angular radius, sizes the angular cells
+// ("area_grid"; 1: a point-like light, cells of R).
 float kneiphof2025_area_factor(glm::vec3 h_center, const Footprint& footprint, float p,
-                               const GlintDesc& desc);
+                               const GlintDesc& desc, float cos_max = 1.0f);
+// The angular cell size of that factor (kneiphof2025.glsl
+// kneiphof2025_area_grid_roughness, by the params' "area_grid").
+float kneiphof2025_area_grid_roughness(float cos_max, const Kneiphof2025Params& k);
 
 // The dual-gated (Algorithm 1) K = 1 factor on the grid without h, for the
 // wang2020-style variant and tests.

@@ -93,6 +93,11 @@ GlintModelDescriptor kneiphof2025_descriptor() {
         // Same ranges as deliot2023's block.
         gp::number("microfacet_roughness", &P::microfacet_roughness, 1e-4, 1.0, "",
                    "deliot2023's R for point, directional and sphere lights", GlintParamUi::Log),
+        gp::choice("area_grid", &P::light_sized_area_grid,
+                   {{"light_size", true}, {"as_published", false}},
+                   "angular cell size of sphere lights' and sun cones' glints: R widened by the "
+                   "light's half-vector cone (glints live as long as a facet reflects the "
+                   "light), or R as published"),
         gp::number("screen_space_scale", &P::screen_space_scale, 0.5, 8.0, "px",
                    "deliot2023's minimum glint size in pixels"),
         gp::number("density_randomization", &P::density_randomization, 0.0, 50.0, "",

@@ -108,6 +108,9 @@ void kneiphof2025_export_material(GlintExportContext& ctx) {
         {{"uniform", "u_kneiphof2025_conditional"},
          {"value", k.conditional_gaussian},
          {"from", "gaussian == \"conditional\""}},
+        {{"uniform", "u_kneiphof2025_light_sized_grid"},
+         {"value", k.light_sized_area_grid},
+         {"from", "area_grid == \"light_size\""}},
         {{"uniform", "u_kneiphof2025_gamma_solid_angle"},
          {"value", 2.0 * 3.14159265358979323846 *
                        (1.0 - std::cos(k.gamma_deg * 3.14159265358979323846 / 180.0))},

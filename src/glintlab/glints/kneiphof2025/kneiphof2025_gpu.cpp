@@ -132,6 +132,8 @@ void Kneiphof2025Resources::prepare(unsigned program, UniformCache& u, const Sce
     glProgramUniform1i(program, loc("u_kneiphof2025_conditional"), k.conditional_gaussian ? 1 : 0);
     glProgramUniform1i(program, loc("u_kneiphof2025_smooth"), kneiphof2025_smooth_mode(k));
     glProgramUniform1f(program, loc("u_kneiphof2025_microfacet_roughness"), k.microfacet_roughness);
+    glProgramUniform1i(program, loc("u_kneiphof2025_light_sized_grid"),
+                       k.light_sized_area_grid ? 1 : 0);
     glProgramUniform1f(program, loc("u_kneiphof2025_screen_space_scale"), k.screen_space_scale);
     glProgramUniform1f(program, loc("u_kneiphof2025_density_randomization"),
                        k.density_randomization);

@@ -28,6 +28,7 @@ uniform float u_kneiphof2025_gamma_solid_angle;
 uniform bool u_kneiphof2025_conditional;
 uniform int u_kneiphof2025_smooth;  // KNEIPHOF2025_SMOOTH_*
 uniform float u_kneiphof2025_microfacet_roughness;
+uniform bool u_kneiphof2025_light_sized_grid;  // "area_grid": "light_size"
 uniform float u_kneiphof2025_screen_space_scale;
 uniform float u_kneiphof2025_density_randomization;
 uniform vec3 u_kneiphof2025_f0;             // kneiphof2025_f0(desc)
@@ -67,6 +68,7 @@ vec3 glint_area_light(vec3 axis, float cos_max, vec3 radiance, vec3 t, vec3 b, v
     return kneiphof2025_area_light(axis, cos_max, radiance, t, b, n, wo, kneiphof2025_glue_alpha(),
                                    u_kneiphof2025_f0, color, fp, u_glint_log_density,
                                    u_glint_seed, u_kneiphof2025_microfacet_roughness,
+                                   u_kneiphof2025_light_sized_grid,
                                    u_kneiphof2025_screen_space_scale,
                                    u_kneiphof2025_density_randomization, u_kneiphof2025_conditional);
 }

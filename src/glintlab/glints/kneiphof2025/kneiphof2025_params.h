@@ -36,6 +36,12 @@ struct Kneiphof2025Params {
     // angular grid of point / directional / sphere lights, the minimum glint
     // size in pixels, and the per-cell log-density jitter.
     float microfacet_roughness = 0.025f;
+    // "area_grid": the angular cell size of sphere lights' and sun cones'
+    // glints: "light_size" (default, ours: R widened by the light's
+    // half-vector cone, so glints live as long as an explicit facet stays
+    // in the light's reflection) or "as_published" (R, as for a point light).
+    // kneiphof2025.glsl kneiphof2025_area_grid_roughness; docs/MODELS.md.
+    bool light_sized_area_grid = true;
     float screen_space_scale = 1.5f;
     float density_randomization = 0.0f;
 };
