@@ -63,7 +63,7 @@ std::vector<std::string> compare_scene_names();
 
 // The standard error a dense scene's mean error needs for a conclusive
 // verdict on the 5 % bound: 2.5 %, or, where the error is within two se of
-// the bound, half its distance to the bound, at least 1 % (rows above it
+// the bound, half its distance to the bound, at least 1.5 % (rows above it
 // are re-run with more realizations; docs/VALIDATION.md "compare").
 double dense_mean_se_target(double mean_rel_err, double se);
 

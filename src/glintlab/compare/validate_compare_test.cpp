@@ -71,13 +71,13 @@ TEST(CompareValidation, ReducedSuitePassesWithTheContractChecks) {
 }
 
 // The se a dense verdict needs: 2.5 % where the error is at least two se
-// from the 5 % bound, else half the distance to it, never below 1 %.
+// from the 5 % bound, else half the distance to it, never below 1.5 %.
 TEST(CompareValidation, DenseSeTargetTightensNearTheBound) {
     EXPECT_DOUBLE_EQ(dense_mean_se_target(0.0, 0.02), 0.025);         // 2.5 se from the bound
     EXPECT_DOUBLE_EQ(dense_mean_se_target(-0.12, 0.02), 0.025);       // 3.5 se beyond it
     EXPECT_NEAR(dense_mean_se_target(0.0806, 0.023), 0.0153, 1e-12);  // the 7th run's sunrise
-    EXPECT_NEAR(dense_mean_se_target(-0.02, 0.023), 0.015, 1e-12);    // |err| counts
-    EXPECT_DOUBLE_EQ(dense_mean_se_target(0.049, 0.02), 0.01);        // the floor
+    EXPECT_NEAR(dense_mean_se_target(-0.01, 0.023), 0.02, 1e-12);     // |err| counts
+    EXPECT_DOUBLE_EQ(dense_mean_se_target(0.049, 0.02), 0.015);       // the floor
     EXPECT_DOUBLE_EQ(dense_mean_se_target(0.05, 0.0), 0.025);         // no se: nothing to refine
 }
 
