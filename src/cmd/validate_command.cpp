@@ -1,6 +1,7 @@
 #include <fmt/format.h>
 
 #include "commands.h"
+#include "glintlab/compare/validate_compare.h"
 #include "glintlab/core/error.h"
 #include "glintlab/glints/validation_suites.h"
 #include "glintlab/validate/report.h"
@@ -13,7 +14,8 @@ struct ValidateArgs {
     std::string suite;
     bool json = false;
     int64_t seed = 1;
-    std::vector<std::string> models;  // robustness only: a subset of its models
+    std::vector<std::string> models;  // robustness and compare: a subset of the models
+    std::vector<std::string> scenes;  // compare only: a subset of scenes/compare/
 };
 
 }  // namespace
@@ -30,12 +32,24 @@ void add_validate_command(CLI::App& app, int* status) {
         ->check(CLI::Range(int64_t{0}, int64_t{1} << 40));
     sub->add_option("--models", args->models,
                     "robustness: only these models, each with its full-suite share of the "
-                    "10^7 evaluations (per-model runs add up to the full suite)");
+                    "10^7 evaluations (per-model runs add up to the full suite); compare: only "
+                    "these models (the ground truth is always rendered)");
+    sub->add_option("--scenes", args->scenes,
+                    "compare: only these scenes of scenes/compare/, by stem (e.g. sphere_city)");
     sub->callback([args, status] {
-        if (!args->models.empty() && args->suite != "robustness")
-            fail("validate {}: --models applies to the robustness suite only", args->suite);
+        if (!args->models.empty() && args->suite != "robustness" && args->suite != "compare")
+            fail("validate {}: --models applies to the robustness and compare suites only",
+                 args->suite);
+        if (!args->scenes.empty() && args->suite != "compare")
+            fail("validate {}: --scenes applies to the compare suite only", args->suite);
         ValidationReport report;
-        if (args->models.empty()) {
+        if (args->suite == "compare" && (!args->models.empty() || !args->scenes.empty())) {
+            CompareValidationOptions o;
+            o.seed = static_cast<uint64_t>(args->seed);
+            o.models = args->models;
+            o.scenes = args->scenes;
+            report = validate_compare(o);
+        } else if (args->models.empty()) {
             report = run_validation_suite(args->suite, static_cast<uint64_t>(args->seed));
         } else {
             RobustnessSuiteOptions o;
