@@ -320,6 +320,50 @@ float deliot2023_vertex_trials(float log_trials, float density_randomization, IN
                      DELIOT2023_MAX_LOG_TRIALS));
 }
 
+// The half-vector-free draws of one vertex from its stream `vs`: its trials
+// N (first number) and the offset of its angular grid (Eq. 14; second and
+// third), returned as (N, offset x, offset y); `vs` is left where the
+// corners' uniforms start.
+vec3 deliot2023_vertex_draws(float log_trials, float density_randomization, INOUT(uint) vs) {
+    float N = deliot2023_vertex_trials(log_trials, density_randomization, vs);
+    // Three statements: see the lattice offset (argument order).
+    float angular_offset_x = hash_random(vs);
+    float angular_offset_y = hash_random(vs);
+    return vec3(N, angular_offset_x, angular_offset_y);
+}
+
+// The blended count of one vertex (Eq. 14): the angular grid over the
+// projected half vector `slope` (units of R), offset per vertex so that
+// angular cells do not align across space, its 4 corners' counts from the
+// gated law of (N, p) blended bilinearly. `vs`: the vertex's stream after
+// deliot2023_vertex_draws.
+float deliot2023_vertex_count(float N, vec2 angular_offset, uint vs, vec2 slope, float p,
+                              bool original_defects, bool conditional) {
+    vec2 a = slope + angular_offset;
+    a = mod(a, DELIOT2023_LATTICE_PERIOD);
+    vec2 af = floor(a);
+    ivec2 ac = ivec2(af);
+    vec2 at = clamp(a - af, 0.0f, 1.0f);
+    // The 4 corners share (N, p): the gate's power (and the conditional
+    // law's moments and mean correction) once per vertex.
+    // (if / else: WebGL has no ?: on structs.)
+    SingleGatedLaw law;
+    if (conditional)
+        law = binomial_single_gated_conditional_law(N, p);
+    else
+        law = binomial_single_gated_law(N, p);
+    float count = 0.0f;
+    for (int c = 0; c < 4; ++c) {
+        ivec2 corner = ac + ivec2(c & 1, c >> 1);
+        float wc = ((c & 1) == 1 ? at.x : 1.0f - at.x) * ((c >> 1) == 1 ? at.y : 1.0f - at.y);
+        vec2 xi = deliot2023_corner_uniforms(corner & ivec2(DELIOT2023_LATTICE_MASK), vs);
+        float b = original_defects ? deliot2023_original_law(N, p, xi.x, xi.y)
+                                   : binomial_single_gated_draw(law, xi.x, xi.y);
+        count += wc * b;
+    }
+    return count;
+}
+
 // Counts of one grid (Eq. 14 per simplex vertex), accumulated into
 // acc = (sum of blended counts, sum of blended trials).
 vec2 deliot2023_grid_counts(ivec3 id, float weight, vec2 uv, vec2 slope, float p, float log_density,
@@ -331,37 +375,157 @@ vec2 deliot2023_grid_counts(ivec3 id, float weight, vec2 uv, vec2 slope, float p
         float bv = s.beta[v];
         if (bv <= 0.0f) continue;
         uint vs = s.vertex_seed[v];
-        float N = deliot2023_vertex_trials(s.log_trials, density_randomization, vs);
-        // Eq. 14: angular grid over the projected half vector in units of R,
-        // offset per vertex so that angular cells do not align across space.
-        float angular_offset_x = hash_random(vs);  // sequenced: see the lattice offset
-        float angular_offset_y = hash_random(vs);
-        vec2 a = slope + vec2(angular_offset_x, angular_offset_y);
-        a = mod(a, DELIOT2023_LATTICE_PERIOD);
-        vec2 af = floor(a);
-        ivec2 ac = ivec2(af);
-        vec2 at = clamp(a - af, 0.0f, 1.0f);
-        // The 4 corners share (N, p): the gate's power (and the conditional
-        // law's moments and mean correction) once per vertex.
-        // (if / else: WebGL has no ?: on structs.)
-        SingleGatedLaw law;
-        if (conditional)
-            law = binomial_single_gated_conditional_law(N, p);
-        else
-            law = binomial_single_gated_law(N, p);
-        float count = 0.0f;
-        for (int c = 0; c < 4; ++c) {
-            ivec2 corner = ac + ivec2(c & 1, c >> 1);
-            float wc = ((c & 1) == 1 ? at.x : 1.0f - at.x) * ((c >> 1) == 1 ? at.y : 1.0f - at.y);
-            vec2 xi = deliot2023_corner_uniforms(corner & ivec2(DELIOT2023_LATTICE_MASK), vs);
-            float b = original_defects ? deliot2023_original_law(N, p, xi.x, xi.y)
-                                       : binomial_single_gated_draw(law, xi.x, xi.y);
-            count += wc * b;
-        }
-        acc += bv * vec2(count, N);
+        vec3 d = deliot2023_vertex_draws(s.log_trials, density_randomization, vs);
+        float count = deliot2023_vertex_count(d.x, vec2(d.y, d.z), vs, slope, p, original_defects,
+                                              conditional);
+        acc += bv * vec2(count, d.x);
     }
     return acc;
 }
+
+// The part of D_P that does not depend on the half vector (issue 17): the
+// footprint's 4 grids and, for each, its 3 simplex vertices' barycentric
+// weights, trials, angular offsets and streams. A pixel lit by several
+// lights needs it once: the GPU glue keeps it per footprint
+// (GLINTLAB_DELIOT2023_PIXEL_CACHE), and each light's counts follow from it,
+// the light's p and its slope (deliot2023_counts_of_part). Vertex v of grid
+// i is component i of the v-th vector (vectors, not arrays: see
+// Deliot2023Grids); a vertex of barycentric weight 0, or of a grid of weight
+// 0, holds beta 0 and is skipped, as in deliot2023_grid_counts.
+struct Deliot2023PixelPart {
+    Deliot2023Grids grids;
+    vec4 beta0;
+    vec4 beta1;
+    vec4 beta2;
+    vec4 trials0;
+    vec4 trials1;
+    vec4 trials2;
+    vec4 offset_x0;
+    vec4 offset_x1;
+    vec4 offset_x2;
+    vec4 offset_y0;
+    vec4 offset_y1;
+    vec4 offset_y2;
+    uvec4 stream0;
+    uvec4 stream1;
+    uvec4 stream2;
+};
+
+Deliot2023PixelPart deliot2023_pixel_part(Deliot2023Grids grids, vec2 uv, float log_density,
+                                          uint seed, float density_randomization) {
+    Deliot2023PixelPart px;
+    px.grids = grids;
+    px.beta0 = vec4(0.0f);
+    px.beta1 = vec4(0.0f);
+    px.beta2 = vec4(0.0f);
+    px.trials0 = vec4(0.0f);
+    px.trials1 = vec4(0.0f);
+    px.trials2 = vec4(0.0f);
+    px.offset_x0 = vec4(0.0f);
+    px.offset_x1 = vec4(0.0f);
+    px.offset_x2 = vec4(0.0f);
+    px.offset_y0 = vec4(0.0f);
+    px.offset_y1 = vec4(0.0f);
+    px.offset_y2 = vec4(0.0f);
+    px.stream0 = uvec4(0u);
+    px.stream1 = uvec4(0u);
+    px.stream2 = uvec4(0u);
+    for (int i = 0; i < 4; ++i) {
+        if (grids.weight[i] <= 0.0f) continue;
+        Deliot2023Simplex s =
+            deliot2023_simplex(deliot2023_grid_id(grids, i), grids.weight[i], uv, log_density, seed);
+        uint vs0 = s.vertex_seed[0];
+        uint vs1 = s.vertex_seed[1];
+        uint vs2 = s.vertex_seed[2];
+        if (s.beta[0] > 0.0f) {
+            vec3 d = deliot2023_vertex_draws(s.log_trials, density_randomization, vs0);
+            px.beta0[i] = s.beta[0];
+            px.trials0[i] = d.x;
+            px.offset_x0[i] = d.y;
+            px.offset_y0[i] = d.z;
+            px.stream0[i] = vs0;
+        }
+        if (s.beta[1] > 0.0f) {
+            vec3 d = deliot2023_vertex_draws(s.log_trials, density_randomization, vs1);
+            px.beta1[i] = s.beta[1];
+            px.trials1[i] = d.x;
+            px.offset_x1[i] = d.y;
+            px.offset_y1[i] = d.z;
+            px.stream1[i] = vs1;
+        }
+        if (s.beta[2] > 0.0f) {
+            vec3 d = deliot2023_vertex_draws(s.log_trials, density_randomization, vs2);
+            px.beta2[i] = s.beta[2];
+            px.trials2[i] = d.x;
+            px.offset_x2[i] = d.y;
+            px.offset_y2[i] = d.z;
+            px.stream2[i] = vs2;
+        }
+    }
+    return px;
+}
+
+// The counts of every grid for one half vector, from the pixel's part:
+// (sum of blended counts, sum of blended trials), the same operations in the
+// same order as deliot2023_grid_counts over the 4 grids.
+vec2 deliot2023_counts_of_part(Deliot2023PixelPart px, vec2 slope, float p, bool original_defects,
+                               bool conditional) {
+    vec2 acc = vec2(0.0f);
+    for (int i = 0; i < 4; ++i) {
+        if (px.grids.weight[i] <= 0.0f) continue;
+        vec2 grid = vec2(0.0f);  // one grid's sum first, as deliot2023_grid_counts
+        if (px.beta0[i] > 0.0f)
+            grid += px.beta0[i] * vec2(deliot2023_vertex_count(px.trials0[i],
+                                                               vec2(px.offset_x0[i], px.offset_y0[i]),
+                                                               px.stream0[i], slope, p,
+                                                               original_defects, conditional),
+                                       px.trials0[i]);
+        if (px.beta1[i] > 0.0f)
+            grid += px.beta1[i] * vec2(deliot2023_vertex_count(px.trials1[i],
+                                                               vec2(px.offset_x1[i], px.offset_y1[i]),
+                                                               px.stream1[i], slope, p,
+                                                               original_defects, conditional),
+                                       px.trials1[i]);
+        if (px.beta2[i] > 0.0f)
+            grid += px.beta2[i] * vec2(deliot2023_vertex_count(px.trials2[i],
+                                                               vec2(px.offset_x2[i], px.offset_y2[i]),
+                                                               px.stream2[i], slope, p,
+                                                               original_defects, conditional),
+                                       px.trials2[i]);
+        acc += grid;
+    }
+    return acc;
+}
+
+// The GPU glues' cache of the pixel part (GLINTLAB_DELIOT2023_PIXEL_CACHE;
+// never on the CPU, whose BxDF has no per-pixel state): a fragment of the
+// forward pass evaluates D_P for one footprint under every light, so the
+// lights after the first that need the counts reuse the part. The key is
+// everything the part depends on: the footprint (the grids follow from it
+// and the material's uniforms), the log density, seed and jitter. Lazy, so
+// that pixels whose every light takes the expectation exit never build it.
+#ifdef GLINTLAB_DELIOT2023_PIXEL_CACHE
+Deliot2023PixelPart g_deliot2023_pixel_part;
+Footprint g_deliot2023_pixel_part_fp;
+vec2 g_deliot2023_pixel_part_density;  // (log density, density randomization)
+uint g_deliot2023_pixel_part_seed;
+bool g_deliot2023_pixel_part_valid = false;
+Deliot2023PixelPart deliot2023_cached_pixel_part(Footprint fp, Deliot2023Grids grids,
+                                                 float log_density, uint seed,
+                                                 float density_randomization) {
+    vec2 density = vec2(log_density, density_randomization);
+    if (!g_deliot2023_pixel_part_valid || fp != g_deliot2023_pixel_part_fp ||
+        density != g_deliot2023_pixel_part_density || seed != g_deliot2023_pixel_part_seed) {
+        g_deliot2023_pixel_part =
+            deliot2023_pixel_part(grids, fp.uv, log_density, seed, density_randomization);
+        g_deliot2023_pixel_part_fp = fp;
+        g_deliot2023_pixel_part_density = density;
+        g_deliot2023_pixel_part_seed = seed;
+        g_deliot2023_pixel_part_valid = true;
+    }
+    return g_deliot2023_pixel_part;
+}
+#endif
 
 // The 4 grids of a pixel footprint (§5.1-5.2): ellipse axes, anisotropy
 // ratio and LOD, then deliot2023_select_grids. Shared with kneiphof2025.
@@ -431,13 +595,16 @@ float deliot2023_ndf(vec3 h, Footprint fp, int ndf, float alpha_x, float alpha_y
         return d_h;
 #endif
 
-    vec2 slope = vec2(h.x, h.y) / R;
-    vec2 acc = vec2(0.0f);
-    for (int i = 0; i < 4; ++i) {
-        if (grids.weight[i] <= 0.0f) continue;
-        acc += deliot2023_grid_counts(deliot2023_grid_id(grids, i), grids.weight[i], fp.uv, slope, p, log_density, seed,
-                                      density_randomization, original_defects, conditional);
-    }
+    // The half-vector-free part: once per footprint where the back end keeps
+    // it (GLINTLAB_DELIOT2023_PIXEL_CACHE, the GPU glues), else here.
+#ifdef GLINTLAB_DELIOT2023_PIXEL_CACHE
+    Deliot2023PixelPart px =
+        deliot2023_cached_pixel_part(fp, grids, log_density, seed, density_randomization);
+#else
+    Deliot2023PixelPart px =
+        deliot2023_pixel_part(grids, fp.uv, log_density, seed, density_randomization);
+#endif
+    vec2 acc = deliot2023_counts_of_part(px, vec2(h.x, h.y) / R, p, original_defects, conditional);
     // Eq. 4 with the footprint's trial count: D(n)/R x count/N, E = D(h) (Eq. 5-6).
     // (count/trials first: both reach 1e35 at the largest densities.)
     return acc.y > 0.0f ? d_n / R * (acc.x / acc.y) : d_h;
