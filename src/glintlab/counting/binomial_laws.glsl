@@ -119,9 +119,14 @@ SingleGatedLaw binomial_single_gated_law(float N, float p) {
     law.scale = 1.0f;
     return law;
 }
+// The gate first (issue 17): a closed gate returns 0 without the normal
+// quantile, the same value as evaluating both and selecting; where the gates
+// of a pixel block are closed (sparse footprints, the NDF's tails) the block
+// skips the quantile.
 float binomial_single_gated_draw(SingleGatedLaw law, float xi1, float xi2) {
+    if (!(xi1 < law.p_gate)) return 0.0f;
     float g = law.mean + law.sd * normal_quantile(xi2);
-    return xi1 < law.p_gate ? clamp(g, 1.0f, law.top) * law.scale : 0.0f;
+    return clamp(g, 1.0f, law.top) * law.scale;
 }
 
 // Standard normal CDF from the shared erf (absolute error < 1e-7).
