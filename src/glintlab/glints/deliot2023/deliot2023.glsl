@@ -497,36 +497,6 @@ vec2 deliot2023_counts_of_part(Deliot2023PixelPart px, vec2 slope, float p, bool
     return acc;
 }
 
-// The GPU glues' cache of the pixel part (GLINTLAB_DELIOT2023_PIXEL_CACHE;
-// never on the CPU, whose BxDF has no per-pixel state): a fragment of the
-// forward pass evaluates D_P for one footprint under every light, so the
-// lights after the first that need the counts reuse the part. The key is
-// everything the part depends on: the footprint (the grids follow from it
-// and the material's uniforms), the log density, seed and jitter. Lazy, so
-// that pixels whose every light takes the expectation exit never build it.
-#ifdef GLINTLAB_DELIOT2023_PIXEL_CACHE
-Deliot2023PixelPart g_deliot2023_pixel_part;
-Footprint g_deliot2023_pixel_part_fp;
-vec2 g_deliot2023_pixel_part_density;  // (log density, density randomization)
-uint g_deliot2023_pixel_part_seed;
-bool g_deliot2023_pixel_part_valid = false;
-Deliot2023PixelPart deliot2023_cached_pixel_part(Footprint fp, Deliot2023Grids grids,
-                                                 float log_density, uint seed,
-                                                 float density_randomization) {
-    vec2 density = vec2(log_density, density_randomization);
-    if (!g_deliot2023_pixel_part_valid || fp != g_deliot2023_pixel_part_fp ||
-        density != g_deliot2023_pixel_part_density || seed != g_deliot2023_pixel_part_seed) {
-        g_deliot2023_pixel_part =
-            deliot2023_pixel_part(grids, fp.uv, log_density, seed, density_randomization);
-        g_deliot2023_pixel_part_fp = fp;
-        g_deliot2023_pixel_part_density = density;
-        g_deliot2023_pixel_part_seed = seed;
-        g_deliot2023_pixel_part_valid = true;
-    }
-    return g_deliot2023_pixel_part;
-}
-#endif
-
 // The 4 grids of a pixel footprint (§5.1-5.2): ellipse axes, anisotropy
 // ratio and LOD, then deliot2023_select_grids. Shared with kneiphof2025.
 Deliot2023Grids deliot2023_footprint_grids(Footprint fp, float screen_space_scale, bool original_defects) {
@@ -560,11 +530,12 @@ Deliot2023Grids deliot2023_footprint_grids(Footprint fp, float screen_space_scal
 // Whole 4 x 4 blocks of pixels that exit skip the 48 binomials (llvmpipe and
 // GPUs branch over code no lane runs).
 const float DELIOT2023_MAX_JITTER_Z = 5.3f;  // normal_quantile(1 - 2^-24) = 5.29
-bool deliot2023_expectation_exit(Deliot2023Grids grids, float p, float log_density,
-                                 float density_randomization) {
+// (bound above of the sum of the vertices' trials, bound below of one
+// vertex's trials): the half-vector-free part of the exit test.
+vec2 deliot2023_trial_bounds(Deliot2023Grids grids, float log_density, float density_randomization) {
     float jitter = abs(density_randomization) * DELIOT2023_MAX_JITTER_Z;
-    float most = 0.0f;         // bound above of the sum of the vertices' trials
-    float least = 3.4e38f;     // bound below of one vertex's trials
+    float most = 0.0f;
+    float least = 3.4e38f;
     for (int i = 0; i < 4; ++i) {
         if (grids.weight[i] <= 0.0f) continue;
         float lt = log_density + log(grids.weight[i]) +
@@ -573,8 +544,62 @@ bool deliot2023_expectation_exit(Deliot2023Grids grids, float p, float log_densi
         least = min(least, exp(clamp(lt - jitter, -DELIOT2023_MAX_LOG_TRIALS,
                                      DELIOT2023_MAX_LOG_TRIALS)));
     }
-    return most * p < 5.9604645e-8f || least * p > 2.8147498e14f;  // 2^-24, 2^48
+    return vec2(most, least);
 }
+bool deliot2023_bounds_exit(vec2 bounds, float p) {
+    return bounds.x * p < 5.9604645e-8f || bounds.y * p > 2.8147498e14f;  // 2^-24, 2^48
+}
+bool deliot2023_expectation_exit(Deliot2023Grids grids, float p, float log_density,
+                                 float density_randomization) {
+    return deliot2023_bounds_exit(deliot2023_trial_bounds(grids, log_density, density_randomization), p);
+}
+
+// The GPU glues' cache of the half-vector-free part of D_P
+// (GLINTLAB_DELIOT2023_PIXEL_CACHE; never on the CPU, whose BxDF has no
+// per-pixel state). A fragment of the forward pass evaluates D_P for one
+// footprint under every light, so the footprint's grids and the exit test's
+// trial bounds are built by the first light, and the 12 vertices
+// (deliot2023_pixel_part) by the first light that does not take an
+// expectation exit; the other lights reuse them. The key is everything
+// they depend on: the footprint, the log density, jitter, seed,
+// screen-space scale and defects flag (uniform per draw in the glues).
+#ifdef GLINTLAB_DELIOT2023_PIXEL_CACHE
+Deliot2023PixelPart g_deliot2023_pixel_part;  // grids, then vertices
+vec2 g_deliot2023_trial_bounds;
+Footprint g_deliot2023_cache_fp;
+vec4 g_deliot2023_cache_params;
+uint g_deliot2023_cache_seed;
+bool g_deliot2023_cache_valid = false;
+bool g_deliot2023_cache_vertices_valid = false;
+void deliot2023_cache_footprint(Footprint fp, float log_density, uint seed,
+                                float screen_space_scale, float density_randomization,
+                                bool original_defects) {
+    vec4 params = vec4(log_density, density_randomization, screen_space_scale,
+                       original_defects ? 1.0f : 0.0f);
+    if (g_deliot2023_cache_valid && fp == g_deliot2023_cache_fp &&
+        params == g_deliot2023_cache_params && seed == g_deliot2023_cache_seed)
+        return;
+    g_deliot2023_pixel_part.grids =
+        deliot2023_footprint_grids(fp, screen_space_scale, original_defects);
+    g_deliot2023_trial_bounds =
+        deliot2023_trial_bounds(g_deliot2023_pixel_part.grids, log_density, density_randomization);
+    g_deliot2023_cache_fp = fp;
+    g_deliot2023_cache_params = params;
+    g_deliot2023_cache_seed = seed;
+    g_deliot2023_cache_valid = true;
+    g_deliot2023_cache_vertices_valid = false;
+}
+// After deliot2023_cache_footprint for the same arguments.
+Deliot2023PixelPart deliot2023_cached_pixel_part(vec2 uv, float log_density, uint seed,
+                                                 float density_randomization) {
+    if (!g_deliot2023_cache_vertices_valid) {
+        g_deliot2023_pixel_part = deliot2023_pixel_part(g_deliot2023_pixel_part.grids, uv,
+                                                        log_density, seed, density_randomization);
+        g_deliot2023_cache_vertices_valid = true;
+    }
+    return g_deliot2023_pixel_part;
+}
+#endif
 
 // D_P(h) of Eq. 3-4 for a local half vector h (z = normal) and a uv footprint.
 // ndf, alpha_x, alpha_y: target NDF D; log_density: ln(facets per unit uv area);
@@ -589,18 +614,23 @@ float deliot2023_ndf(vec3 h, Footprint fp, int ndf, float alpha_x, float alpha_y
     float R = microfacet_roughness;
     float p = clamp(R * d_h / d_n, 0.0f, 1.0f);  // Eq. 4 success probability
 
+    // The half-vector-free part (grids, exit bounds, vertices): once per
+    // footprint where the back end keeps it (GLINTLAB_DELIOT2023_PIXEL_CACHE,
+    // the GPU glues), else here.
+#ifdef GLINTLAB_DELIOT2023_PIXEL_CACHE
+    deliot2023_cache_footprint(fp, log_density, seed, screen_space_scale, density_randomization,
+                               original_defects);
+#ifdef GLINTLAB_DELIOT2023_EXPECTATION_EXITS
+    if (!original_defects && deliot2023_bounds_exit(g_deliot2023_trial_bounds, p)) return d_h;
+#endif
+    Deliot2023PixelPart px =
+        deliot2023_cached_pixel_part(fp.uv, log_density, seed, density_randomization);
+#else
     Deliot2023Grids grids = deliot2023_footprint_grids(fp, screen_space_scale, original_defects);
 #ifdef GLINTLAB_DELIOT2023_EXPECTATION_EXITS
     if (!original_defects && deliot2023_expectation_exit(grids, p, log_density, density_randomization))
         return d_h;
 #endif
-
-    // The half-vector-free part: once per footprint where the back end keeps
-    // it (GLINTLAB_DELIOT2023_PIXEL_CACHE, the GPU glues), else here.
-#ifdef GLINTLAB_DELIOT2023_PIXEL_CACHE
-    Deliot2023PixelPart px =
-        deliot2023_cached_pixel_part(fp, grids, log_density, seed, density_randomization);
-#else
     Deliot2023PixelPart px =
         deliot2023_pixel_part(grids, fp.uv, log_density, seed, density_randomization);
 #endif
