@@ -654,7 +654,18 @@ std::shared_ptr<const Kneiphof2025Environment> kneiphof2025_environment_for(
     static std::map<std::tuple<const EnvironmentMap*, int, float>, Entry> cache;
     if (!env) fail("kneiphof2025: environment light without a map");
     std::lock_guard<std::mutex> lock(mutex);
-    Entry& e = cache[{env.get(), levels, black_level}];
+    const auto key = std::make_tuple(env.get(), levels, black_level);
+    // The maps of a freed environment can never be used again (a new map at
+    // its address is told apart by `owner`): drop them, or every scene load
+    // of a long process (compare's realizations, a Python sweep) would keep
+    // its prefiltered maps for good.
+    for (auto it = cache.begin(); it != cache.end();) {
+        if (it->first != key && it->second.owner.expired())
+            it = cache.erase(it);
+        else
+            ++it;
+    }
+    Entry& e = cache[key];
     if (!e.value || e.owner.lock() != env) {
         Kneiphof2025PrefilterOptions o;
         o.levels = levels;

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <map>
 #include <memory>
@@ -56,8 +57,40 @@ std::array<float, 10> fresnel_key(const FresnelDesc& f) {
 // never reuses the old prefiltered tables.
 struct CacheEntry {
     std::weak_ptr<const EnvironmentMap> env;
+    bool has_env = false;
     std::shared_ptr<const Wang2020Model> model;
+    uint64_t last_use = 0;
 };
+
+// The cache keeps the tables of the most recently used materials only:
+// the seed is part of the key (the particles are the seed's), so a sweep
+// over seeds (compare's realizations, a Python sweep) built one set of
+// tables per seed and kept them all — 24 GB after a few hundred
+// realizations of an environment scene (`validate compare` was killed for
+// memory). Renderers hold their model by shared_ptr, so an evicted entry
+// lives on until its last render ends; the bound only costs a rebuild when
+// more materials than this alternate. Entries of a freed map are dropped
+// at once (their tables can never be used again).
+constexpr size_t kMaxCachedModels = 4;
+
+template <class Map>
+void evict_stale_models(Map& cache, const typename Map::key_type& keep) {
+    for (auto it = cache.begin(); it != cache.end();) {
+        if (!(it->first == keep) && it->second.has_env && it->second.env.expired())
+            it = cache.erase(it);
+        else
+            ++it;
+    }
+    while (cache.size() > kMaxCachedModels) {
+        auto oldest = cache.end();
+        for (auto it = cache.begin(); it != cache.end(); ++it)
+            if (!(it->first == keep) &&
+                (oldest == cache.end() || it->second.last_use < oldest->second.last_use))
+                oldest = it;
+        if (oldest == cache.end()) break;
+        cache.erase(oldest);
+    }
+}
 
 std::shared_ptr<const Wang2020Model> model_for(const GlintDesc& desc,
                                                const std::shared_ptr<const EnvironmentMap>& env) {
@@ -81,7 +114,9 @@ std::shared_ptr<const Wang2020Model> model_for(const GlintDesc& desc,
                   fresnel_key(desc.fresnel),
                   env.get()};
     const std::lock_guard lock(mutex);
+    static uint64_t uses = 0;
     CacheEntry& slot = cache[key];
+    slot.last_use = ++uses;
     if (!slot.model || (env && slot.env.expired())) {
         Wang2020Material m;
         // The loader accepts the documented [0.02, 1] as written; the float
@@ -124,8 +159,11 @@ std::shared_ptr<const Wang2020Model> model_for(const GlintDesc& desc,
         }
         slot.model = std::move(model);
         slot.env = env;
+        slot.has_env = env != nullptr;
     }
-    return slot.model;
+    std::shared_ptr<const Wang2020Model> result = slot.model;
+    evict_stale_models(cache, key);  // invalidates `slot`
+    return result;
 }
 
 // AABB of the footprint parallelogram uv + s duvdx + t duvdy, s, t ∈ [-½, ½),

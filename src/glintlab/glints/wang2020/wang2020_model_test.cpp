@@ -1,6 +1,7 @@
 // Scene integration of wang2020: the parameter block is read strictly and the
 // material constraints name the key and range.
 #include <cmath>
+#include <memory>
 #include <string>
 
 #include <gtest/gtest.h>
@@ -122,6 +123,33 @@ TEST(Wang2020Model, DepthIsBoundedByParticlesPerLeafAndNodes) {
     std::get<Wang2020Params>(g.params).depth = 2;
     glint_model(GlintModelId::Wang2020).fit_material(g);
     EXPECT_EQ(std::get<Wang2020Params>(g.params).depth, 8);
+}
+
+// The table cache is bounded: the seed is part of its key, and a sweep over
+// seeds (compare's realizations) used to keep every seed's tables until the
+// process ran out of memory (`validate compare`: 24 GB). A material used
+// again while among the 4 most recent ones is a cache hit (the same tables);
+// one that 4 others have displaced is freed once no render holds it.
+TEST(Wang2020Model, TableCacheKeepsOnlyRecentMaterials) {
+    GlintDesc g;
+    g.log_density = 9.0f;
+    switch_glint_model(g, GlintModelId::Wang2020);
+    auto with_seed = [&](uint32_t seed) {
+        GlintDesc d = g;
+        d.seed = seed;
+        return wang2020_model_for(d, nullptr);
+    };
+    std::weak_ptr<const wang2020::Wang2020Model> first = with_seed(1001);
+    ASSERT_FALSE(first.expired());  // the cache holds it
+    with_seed(1002);
+    EXPECT_EQ(with_seed(1001).get(), first.lock().get());  // a hit, not a rebuild
+    {
+        const auto held = with_seed(1001);  // a render in progress keeps its tables
+        for (uint32_t s = 2000; s < 2010; ++s) with_seed(s);
+        EXPECT_FALSE(first.expired());
+        EXPECT_EQ(held.get(), first.lock().get());
+    }
+    EXPECT_TRUE(first.expired()) << "10 later seeds must have evicted the first";
 }
 
 // The §4.4 blurs in renders: with directional occlusion off (visibility 1,
