@@ -338,10 +338,14 @@ CompareResult run_compare(const CompareOptions& o) {
     const auto realizations_of = [&](const Job& job) {
         return result.models[job.row].reference ? truth_realizations : o.realizations;
     };
-    // The renders of a job, in order: realization r at frame 0 (r < R);
-    // then, per flicker path p, frame 0 of realization p where p >= R (the
-    // others reuse realization p's) and its frames 1..F-1; last, frame 0 of
-    // realization 0 with another sampling seed.
+    // The renders of a job, grouped by realization (one material seed after
+    // another, so that a model's per-seed tables — wang2020's, whose cache
+    // keeps only the most recent materials — are built once per seed):
+    // realization 0 at frame 0, then frame 0 with another sampling seed
+    // (the same material seed), then its path's frames 1..F-1; realization
+    // r < R at frame 0 and, where r is a flicker path, frames 1..F-1; paths
+    // p >= R with all their frames. Every render depends only on its
+    // (realization, frame, resample), so the order changes no result.
     struct Render {
         int realization = 0, frame = 0;
         bool resample = false;
@@ -349,10 +353,12 @@ CompareResult run_compare(const CompareOptions& o) {
     const auto renders_of = [&](const Job& job) {
         const int R = realizations_of(job);
         std::vector<Render> list;
-        for (int r = 0; r < R; ++r) list.push_back({r, 0, false});
-        for (int p = 0; p < o.flicker_paths; ++p)
-            for (int t = p < R ? 1 : 0; t < o.frames; ++t) list.push_back({p, t, false});
-        list.push_back({0, 0, true});
+        for (int r = 0; r < std::max(R, o.flicker_paths); ++r) {
+            if (r < R) list.push_back({r, 0, false});
+            if (r == 0) list.push_back({0, 0, true});
+            if (r < o.flicker_paths)
+                for (int t = r < R ? 1 : 0; t < o.frames; ++t) list.push_back({r, t, false});
+        }
         return list;
     };
     int total = 0;
