@@ -37,13 +37,13 @@ VARIANTS = {
     "d_nogrids": (
         "deliot2023: D(h) returned after the exit test (no grids, vertices or counts)",
         [(DELIOT,
-          "    vec2 slope = vec2(h.x, h.y) / R;\n    vec2 acc = vec2(0.0f);\n",
-          "    return d_h;\n    vec2 slope = vec2(h.x, h.y) / R;\n    vec2 acc = vec2(0.0f);\n")]),
+          "    Deliot2023PixelPart px =\n        deliot2023_cached_pixel_part(",
+          "    return d_h;\n    Deliot2023PixelPart px =\n        deliot2023_cached_pixel_part(")]),
     "d_nocorners": (
         "deliot2023: per vertex N p instead of the 4 corners' draws (hash, law, quantile)",
         [(DELIOT,
-          "        float count = 0.0f;\n        for (int c = 0; c < 4; ++c) {",
-          "        float count = N * p + at.x * 1e-30f;\n        for (int c = 0; c < 0; ++c) {")]),
+          "    float count = 0.0f;\n    for (int c = 0; c < 4; ++c) {",
+          "    float count = N * p + at.x * 1e-30f;\n    for (int c = 0; c < 0; ++c) {")]),
     "d_nohash": (
         "deliot2023: the corners' uniform pair from a fract() of the corner, not hashed",
         [(DELIOT,
