@@ -62,19 +62,20 @@ struct CacheEntry {
     uint64_t last_use = 0;
 };
 
-// The cache keeps the tables of the most recently used materials only:
-// the seed is part of the key (the particles are the seed's), so a sweep
-// over seeds (compare's realizations, a Python sweep) built one set of
-// tables per seed and kept them all — 24 GB after a few hundred
-// realizations of an environment scene (`validate compare` was killed for
-// memory). Renderers hold their model by shared_ptr, so an evicted entry
-// lives on until its last render ends; the bound only costs a rebuild when
-// more materials than this alternate. Entries of a freed map are dropped
-// at once (their tables can never be used again).
+using ModelCache = std::map<Key, CacheEntry>;
+
+// The cache keeps the models of the most recently used materials only: the
+// seed is part of the key (the particles are the seed's), so a sweep over
+// seeds (compare's realizations, a Python sweep) made one model per seed
+// and kept them all — 24 GB after a few hundred realizations of an
+// environment scene (`validate compare` was killed for memory). Renderers
+// hold their model by shared_ptr, so an evicted entry lives on until its
+// last render ends; the bound only costs a rebuild when more materials
+// than this alternate. Entries of a freed map are dropped at once (their
+// tables can never be used again).
 constexpr size_t kMaxCachedModels = 4;
 
-template <class Map>
-void evict_stale_models(Map& cache, const typename Map::key_type& keep) {
+void evict_stale_models(ModelCache& cache, const Key& keep) {
     for (auto it = cache.begin(); it != cache.end();) {
         if (!(it->first == keep) && it->second.has_env && it->second.env.expired())
             it = cache.erase(it);
@@ -92,10 +93,29 @@ void evict_stale_models(Map& cache, const typename Map::key_type& keep) {
     }
 }
 
+// A cached model of the same material and environment with another seed:
+// its tables are the ones this key needs (they never depend on the seed),
+// so only the quadtree is built (Wang2020Model::with_seed). Without it
+// every realization of a compare row rebuilt the prefiltered tables, ~2 s
+// each at 48x48, and `validate compare` spent over 30 min re-running
+// wang2020 on its first scene.
+const Wang2020Model* model_with_other_seed(const ModelCache& cache, const Key& key) {
+    Key unseeded = key;
+    std::get<3>(unseeded) = 0;
+    for (const auto& [k, entry] : cache) {
+        Key other = k;
+        std::get<3>(other) = 0;
+        if (!(other == unseeded) || !entry.model) continue;
+        if (entry.has_env && entry.env.expired()) continue;
+        return entry.model.get();
+    }
+    return nullptr;
+}
+
 std::shared_ptr<const Wang2020Model> model_for(const GlintDesc& desc,
                                                const std::shared_ptr<const EnvironmentMap>& env) {
     static std::mutex mutex;
-    static std::map<Key, CacheEntry> cache;
+    static ModelCache cache;
     const Wang2020Params& p = params_of(desc);
     const Key key{desc.alpha_x,
                   0.0f,
@@ -117,7 +137,15 @@ std::shared_ptr<const Wang2020Model> model_for(const GlintDesc& desc,
     static uint64_t uses = 0;
     CacheEntry& slot = cache[key];
     slot.last_use = ++uses;
-    if (!slot.model || (env && slot.env.expired())) {
+    if (slot.model && env && slot.env.expired()) slot.model = nullptr;
+    if (!slot.model) {
+        if (const Wang2020Model* sibling = model_with_other_seed(cache, key)) {
+            slot.model = sibling->with_seed(desc.seed);
+            slot.env = env;
+            slot.has_env = env != nullptr;
+        }
+    }
+    if (!slot.model) {
         Wang2020Material m;
         // The loader accepts the documented [0.02, 1] as written; the float
         // 0.02f lies 4e-10 below the decimal 0.02 the tables start at.

@@ -8,11 +8,14 @@
 #include <nlohmann/json.hpp>
 
 #include "glintlab/core/error.h"
+#include "glintlab/core/image.h"
 #include "glintlab/glints/model_params.h"
 #include "glintlab/glints/registry.h"
 #include "glintlab/glints/wang2020/wang2020_model.h"
 #include "glintlab/glints/wang2020/wang2020_quadtree.h"
+#include "glintlab/glints/wang2020/wang2020_shading.h"
 #include "glintlab/render/renderer.h"
+#include "glintlab/scene/environment.h"
 #include "glintlab/scene/scene_loader.h"
 
 namespace glintlab {
@@ -150,6 +153,51 @@ TEST(Wang2020Model, TableCacheKeepsOnlyRecentMaterials) {
         EXPECT_EQ(held.get(), first.lock().get());
     }
     EXPECT_TRUE(first.expired()) << "10 later seeds must have evicted the first";
+}
+
+// The tables never depend on the seed (only the quadtree does): another
+// seed of a cached material shares its DPF and prefiltered tables, and
+// shades exactly as a model built from scratch with that seed. Without the
+// sharing every realization of a compare row rebuilt the tables.
+TEST(Wang2020Model, SeedsOfOneMaterialShareItsTables) {
+    Image sky(16, 8, glm::vec3(0.3f, 0.4f, 0.6f));
+    sky.at(5, 2) = glm::vec3(400.0f);  // a small sun: MIS sampling matters
+    const auto env = std::make_shared<const EnvironmentMap>(sky, 1.0f, 0.0f);
+    GlintDesc g;
+    g.log_density = 9.0f;
+    switch_glint_model(g, GlintModelId::Wang2020);
+    auto& p = std::get<Wang2020Params>(g.params);
+    p.dpf_theta = 12, p.dpf_phi = 24, p.prefilter_samples = 8;
+    auto model = [&](uint32_t seed, float alpha) {
+        GlintDesc d = g;
+        d.seed = seed, d.alpha_x = d.alpha_y = alpha;
+        return wang2020_model_for(d, env);
+    };
+    const auto a = model(3001, 0.3f);
+    const auto b = model(3002, 0.3f);
+    ASSERT_NE(a->prefiltered(), nullptr);
+    EXPECT_EQ(a->prefiltered(), b->prefiltered());
+    EXPECT_EQ(&a->dpf(), &b->dpf());
+    EXPECT_EQ(b->material().seed, 3002u);
+    // Displace every model of this material (4 others), then build seed
+    // 3002 again from scratch.
+    for (float alpha : {0.31f, 0.32f, 0.33f, 0.34f}) model(3001, alpha);
+    const auto fresh = model(3002, 0.3f);
+    ASSERT_NE(fresh->prefiltered(), b->prefiltered()) << "expected a rebuild";
+    wang2020::UvBox box{glm::dvec2(0.40), glm::dvec2(0.41), glm::dvec2(0.405)};
+    int differs_from_a = 0;
+    for (int k = 0; k < 64; ++k) {
+        const double t = 0.1 * k;
+        const glm::dvec3 n = glm::normalize(glm::dvec3(std::sin(t), 0.3 * std::cos(t), 1.0));
+        const glm::dvec3 o = glm::normalize(glm::dvec3(0.2, std::cos(0.7 * t), 0.8));
+        box.lo = glm::dvec2(0.01 * k, 0.3), box.hi = box.lo + glm::dvec2(0.03);
+        box.centre = 0.5 * (box.lo + box.hi);
+        const glm::dvec3 lb = b->environment_radiance(box, n, o);
+        const glm::dvec3 lf = fresh->environment_radiance(box, n, o);
+        EXPECT_EQ(lb, lf) << k;
+        differs_from_a += a->environment_radiance(box, n, o) != lb;
+    }
+    EXPECT_GT(differs_from_a, 0) << "the seeds' particles must differ";
 }
 
 // The §4.4 blurs in renders: with directional occlusion off (visibility 1,

@@ -87,28 +87,44 @@ Wang2020Model::Wang2020Model(const Wang2020Material& m)
     : m_(m),
       gamma_rad_(checked_gamma(m)),
       sigma_o_(2.0 * kPi * (1.0 - std::cos(gamma_rad_))),
-      dpf_(timed_extract(m, gamma_rad_, extract_seconds_)),
+      dpf_(std::make_shared<const DpfTable>(timed_extract(m, gamma_rad_, extract_seconds_))),
       tree_(m.particles, m.depth, m.seed) {}
+
+Wang2020Model::Wang2020Model(const Wang2020Model& tables, uint32_t seed)
+    : m_(tables.m_),
+      gamma_rad_(tables.gamma_rad_),
+      sigma_o_(tables.sigma_o_),
+      dpf_(tables.dpf_),
+      tree_(tables.m_.particles, tables.m_.depth, seed),
+      prefiltered_(tables.prefiltered_),
+      cone_(tables.cone_) {
+    m_.seed = seed;
+}
+
+std::shared_ptr<Wang2020Model> Wang2020Model::with_seed(uint32_t seed) const {
+    return std::shared_ptr<Wang2020Model>(new Wang2020Model(*this, seed));
+}
 
 void Wang2020Model::prefilter(const EnvironmentFn& env, const EnvironmentSampler* sampler,
                               int environment_rows) {
     const PrefilterResolution res =
         m_.prefilter_res.value_or(default_prefilter_resolution(m_.alpha));
-    cone_ = nullptr;
+    std::shared_ptr<const ParticleRadianceTable> cone;
     if (m_.micro == MicroMode::PerParticle) {
         if (m_.particle_radiance == ParticleRadiance::Cone) {
-            cone_ = std::make_unique<ParticleRadianceTable>(env, gamma_rad_);
+            cone = std::make_shared<const ParticleRadianceTable>(env, gamma_rad_);
         } else {
             const int rows =
                 environment_rows > 0 ? std::clamp(2 * environment_rows, 16, 1024) : 1024;
-            cone_ = std::make_unique<ParticleRadianceTable>(
+            cone = std::make_shared<const ParticleRadianceTable>(
                 ParticleRadianceTable::point_values(env, rows));
         }
     }
-    prefiltered_ =
-        std::make_unique<PrefilterTable>(dpf_, m_.alpha, gamma_rad_, env, res, m_.prefilter_samples,
-                                         m_.prefilter == PrefilterMode::Mis ? sampler : nullptr,
-                                         &m_.fresnel, effective_scales() ? cone_.get() : nullptr);
+    prefiltered_ = std::make_shared<const PrefilterTable>(
+        *dpf_, m_.alpha, gamma_rad_, env, res, m_.prefilter_samples,
+        m_.prefilter == PrefilterMode::Mis ? sampler : nullptr, &m_.fresnel,
+        effective_scales() ? cone.get() : nullptr);
+    cone_ = std::move(cone);
 }
 
 void Wang2020Model::rebuild_quadtree(uint64_t particles, uint32_t seed) {
@@ -207,7 +223,7 @@ glm::dvec3 Wang2020Model::environment_radiance(const UvBox& A, const glm::dvec3&
 glm::dvec3 Wang2020Model::light_radiance(const UvBox& A, const glm::dvec3& wi, const glm::dvec3& wo,
                                          const glm::dvec3& li, Scale* used) const {
     if (!(wi.z > 0.0) || !(wo.z > 0.0)) return glm::dvec3(0.0);
-    const double p = dpf_.lookup(wi, wo);  // P(i, o, γ), 3-D table (§5)
+    const double p = dpf_->lookup(wi, wo);  // P(i, o, γ), 3-D table (§5)
     const glm::dvec3 m = m_term(wi, wo, m_.alpha) * m_fresnel(&m_.fresnel, wi, wo);  // Eq. 11
     const double a = A.area();
     const double N = static_cast<double>(tree_.particles());

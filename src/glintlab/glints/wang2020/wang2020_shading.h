@@ -116,6 +116,11 @@ class Wang2020Model {
     bool has_environment() const { return prefiltered_ != nullptr; }
     // Spatial tree pass only (§4.5: editing N re-runs just the quadtree).
     void rebuild_quadtree(uint64_t particles, uint32_t seed);
+    // The same material with another seed: its own quadtree (the particles
+    // are the seed's), sharing this model's DPF and prefiltered tables,
+    // which depend on the roughness, γ, Fresnel and environment but never
+    // on the seed (a sweep over seeds builds them once).
+    std::shared_ptr<Wang2020Model> with_seed(uint32_t seed) const;
 
     // Environment radiance towards o (world space, n = world normal).
     glm::dvec3 environment_radiance(const UvBox& A, const glm::dvec3& n_world,
@@ -126,7 +131,7 @@ class Wang2020Model {
                               const glm::dvec3& li, Scale* used = nullptr) const;
 
     const Wang2020Material& material() const { return m_; }
-    const DpfTable& dpf() const { return dpf_; }
+    const DpfTable& dpf() const { return *dpf_; }
     const ParticleQuadtree& quadtree() const { return tree_; }
     const PrefilterTable* prefiltered() const { return prefiltered_.get(); }
     // What the particles reflect (PerParticle with an environment only; null
@@ -166,10 +171,13 @@ class Wang2020Model {
     // Declared before dpf_, whose initialiser writes it (members initialise
     // in declaration order: declared after, its `= 0.0` overwrote the time).
     double extract_seconds_ = 0.0;
-    DpfTable dpf_;
+    // The tables are immutable once built and shared by with_seed.
+    std::shared_ptr<const DpfTable> dpf_;
     ParticleQuadtree tree_;
-    std::unique_ptr<PrefilterTable> prefiltered_;
-    std::unique_ptr<ParticleRadianceTable> cone_;
+    std::shared_ptr<const PrefilterTable> prefiltered_;
+    std::shared_ptr<const ParticleRadianceTable> cone_;
+
+    Wang2020Model(const Wang2020Model& tables, uint32_t seed);
 };
 
 }  // namespace glintlab::wang2020
