@@ -79,8 +79,9 @@ SurfaceHit triangle_hit(const TriangleMesh& m, unsigned prim, float bu, float bv
         const float inv = 1.0f / det;
         h.dpdu = (duv12.y * dp02 - duv02.y * dp12) * inv;
         h.dpdv = (duv02.x * dp12 - duv12.x * dp02) * inv;
-        degenerate = glm::length(glm::cross(h.dpdu, h.dpdv)) == 0.0f ||
-                     !std::isfinite(h.dpdu.x + h.dpdu.y + h.dpdu.z + h.dpdv.x + h.dpdv.y + h.dpdv.z);
+        degenerate =
+            glm::length(glm::cross(h.dpdu, h.dpdv)) == 0.0f ||
+            !std::isfinite(h.dpdu.x + h.dpdu.y + h.dpdu.z + h.dpdv.x + h.dpdv.y + h.dpdv.z);
     }
     if (degenerate) {
         const glm::vec3 a = std::abs(h.ng.x) < 0.9f ? glm::vec3(1, 0, 0) : glm::vec3(0, 0, 1);
@@ -102,8 +103,15 @@ SurfaceHit triangle_hit(const TriangleMesh& m, unsigned prim, float bu, float bv
 
 Accelerator::Accelerator(const Scene& scene) : impl_(std::make_unique<Impl>()) {
     impl_->scene = &scene;
-    impl_->device = rtcNewDevice("threads=1");  // traversal only; we parallelise ourselves
-    if (!impl_->device) fail("cannot create an Embree device (error {})", static_cast<int>(rtcGetDeviceError(nullptr)));
+    // The default configuration: with the TBB tasking system Embree keeps a
+    // process-wide tbb::global_control at the device's thread count, so the
+    // "threads=1" this had since the first renderer capped every TBB loop of
+    // the process (the renderer's tiles, not only Embree's BVH build) at one
+    // thread: CPU renders ran on one core whatever --threads said.
+    impl_->device = rtcNewDevice(nullptr);
+    if (!impl_->device)
+        fail("cannot create an Embree device (error {})",
+             static_cast<int>(rtcGetDeviceError(nullptr)));
     impl_->rtc = rtcNewScene(impl_->device);
     rtcSetSceneFlags(impl_->rtc, RTC_SCENE_FLAG_ROBUST);
     rtcSetSceneBuildQuality(impl_->rtc, RTC_BUILD_QUALITY_HIGH);
@@ -118,14 +126,18 @@ Accelerator::Accelerator(const Scene& scene) : impl_(std::make_unique<Impl>()) {
         } else {
             const auto& m = std::get<TriangleMesh>(shape.geometry);
             g = rtcNewGeometry(impl_->device, RTC_GEOMETRY_TYPE_TRIANGLE);
-            auto* v = static_cast<float*>(rtcSetNewGeometryBuffer(
-                g, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, 3 * sizeof(float), m.positions.size()));
+            auto* v = static_cast<float*>(
+                rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3,
+                                        3 * sizeof(float), m.positions.size()));
             for (size_t k = 0; k < m.positions.size(); ++k)
-                v[3 * k] = m.positions[k].x, v[3 * k + 1] = m.positions[k].y, v[3 * k + 2] = m.positions[k].z;
-            auto* idx = static_cast<unsigned*>(rtcSetNewGeometryBuffer(
-                g, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, 3 * sizeof(unsigned), m.triangles.size()));
+                v[3 * k] = m.positions[k].x, v[3 * k + 1] = m.positions[k].y,
+                      v[3 * k + 2] = m.positions[k].z;
+            auto* idx = static_cast<unsigned*>(
+                rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3,
+                                        3 * sizeof(unsigned), m.triangles.size()));
             for (size_t k = 0; k < m.triangles.size(); ++k)
-                idx[3 * k] = m.triangles[k].x, idx[3 * k + 1] = m.triangles[k].y, idx[3 * k + 2] = m.triangles[k].z;
+                idx[3 * k] = m.triangles[k].x, idx[3 * k + 1] = m.triangles[k].y,
+                        idx[3 * k + 2] = m.triangles[k].z;
         }
         check_device(impl_->device, "creating geometry");
         rtcCommitGeometry(g);
@@ -180,8 +192,8 @@ bool Accelerator::occluded(glm::vec3 origin, glm::vec3 dir, float t_max) const {
 }
 
 glm::vec3 offset_ray_origin(const SurfaceHit& hit, glm::vec3 dir) {
-    const float scale = 1e-4f * std::max(1.0f, std::max({std::abs(hit.p.x), std::abs(hit.p.y),
-                                                           std::abs(hit.p.z)}));
+    const float scale =
+        1e-4f * std::max(1.0f, std::max({std::abs(hit.p.x), std::abs(hit.p.y), std::abs(hit.p.z)}));
     const glm::vec3 n = glm::dot(dir, hit.ng) >= 0.0f ? hit.ng : -hit.ng;
     return hit.p + scale * n;
 }
