@@ -339,8 +339,9 @@ CompareResult run_compare(const CompareOptions& o) {
         return result.models[job.row].reference ? truth_realizations : o.realizations;
     };
     // The renders of a job, grouped by realization (one material seed after
-    // another, so that a model's per-seed tables — wang2020's, whose cache
-    // keeps only the most recent materials — are built once per seed):
+    // another, so that a model's per-seed state — wang2020's particle
+    // quadtree, in a cache that keeps only the most recent seeds — is built
+    // once per seed):
     // realization 0 at frame 0, then frame 0 with another sampling seed
     // (the same material seed), then its path's frames 1..F-1; realization
     // r < R at frame 0 and, where r is a flicker path, frames 1..F-1; paths

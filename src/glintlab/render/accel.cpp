@@ -129,15 +129,19 @@ Accelerator::Accelerator(const Scene& scene) : impl_(std::make_unique<Impl>()) {
             auto* v = static_cast<float*>(
                 rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3,
                                         3 * sizeof(float), m.positions.size()));
-            for (size_t k = 0; k < m.positions.size(); ++k)
-                v[3 * k] = m.positions[k].x, v[3 * k + 1] = m.positions[k].y,
-                      v[3 * k + 2] = m.positions[k].z;
+            for (size_t k = 0; k < m.positions.size(); ++k) {
+                v[3 * k] = m.positions[k].x;
+                v[3 * k + 1] = m.positions[k].y;
+                v[3 * k + 2] = m.positions[k].z;
+            }
             auto* idx = static_cast<unsigned*>(
                 rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3,
                                         3 * sizeof(unsigned), m.triangles.size()));
-            for (size_t k = 0; k < m.triangles.size(); ++k)
-                idx[3 * k] = m.triangles[k].x, idx[3 * k + 1] = m.triangles[k].y,
-                        idx[3 * k + 2] = m.triangles[k].z;
+            for (size_t k = 0; k < m.triangles.size(); ++k) {
+                idx[3 * k] = m.triangles[k].x;
+                idx[3 * k + 1] = m.triangles[k].y;
+                idx[3 * k + 2] = m.triangles[k].z;
+            }
         }
         check_device(impl_->device, "creating geometry");
         rtcCommitGeometry(g);

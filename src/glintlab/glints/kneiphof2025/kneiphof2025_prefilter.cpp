@@ -655,18 +655,19 @@ std::shared_ptr<const Kneiphof2025Environment> kneiphof2025_environment_for(
     if (!env) fail("kneiphof2025: environment light without a map");
     std::lock_guard<std::mutex> lock(mutex);
     const auto key = std::make_tuple(env.get(), levels, black_level);
-    // The maps of a freed environment can never be used again (a new map at
-    // its address is told apart by `owner`): drop them, or every scene load
-    // of a long process (compare's realizations, a Python sweep) would keep
-    // its prefiltered maps for good.
-    for (auto it = cache.begin(); it != cache.end();) {
-        if (it->first != key && it->second.owner.expired())
-            it = cache.erase(it);
-        else
-            ++it;
-    }
     Entry& e = cache[key];
     if (!e.value || e.owner.lock() != env) {
+        // The maps of a freed environment can never be used again (a new map
+        // at its address is told apart by `owner`): drop them, or every scene
+        // load of a long process (compare's realizations, a Python sweep)
+        // would keep its prefiltered maps for good. Only on a miss: this is
+        // called per shading call, and a map is only freed ahead of a new one.
+        for (auto it = cache.begin(); it != cache.end();) {
+            if (it->first != key && it->second.owner.expired())
+                it = cache.erase(it);
+            else
+                ++it;
+        }
         Kneiphof2025PrefilterOptions o;
         o.levels = levels;
         o.black_level = black_level;

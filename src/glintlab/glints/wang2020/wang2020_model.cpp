@@ -138,6 +138,10 @@ std::shared_ptr<const Wang2020Model> model_for(const GlintDesc& desc,
     CacheEntry& slot = cache[key];
     slot.last_use = ++uses;
     if (slot.model && env && slot.env.expired()) slot.model = nullptr;
+    // Called per shading call: a hit is a lookup only; the cache can only
+    // outgrow its bound, or hold a freed map's entry worth dropping, after
+    // a miss.
+    const bool miss = !slot.model;
     if (!slot.model) {
         if (const Wang2020Model* sibling = model_with_other_seed(cache, key)) {
             slot.model = sibling->with_seed(desc.seed);
@@ -190,7 +194,7 @@ std::shared_ptr<const Wang2020Model> model_for(const GlintDesc& desc,
         slot.has_env = env != nullptr;
     }
     std::shared_ptr<const Wang2020Model> result = slot.model;
-    evict_stale_models(cache, key);  // invalidates `slot`
+    if (miss) evict_stale_models(cache, key);  // invalidates `slot`
     return result;
 }
 
