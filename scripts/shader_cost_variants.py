@@ -30,7 +30,6 @@ DELIOT = os.path.join(GLINTS, "deliot2023", "deliot2023.glsl")
 DELIOT_GPU = os.path.join(GLINTS, "deliot2023", "deliot2023_gpu.glsl")
 CHERMAIN = os.path.join(GLINTS, "chermain2020", "chermain2020.glsl")
 KNEIPHOF = os.path.join(GLINTS, "kneiphof2025", "kneiphof2025.glsl")
-LAWS = os.path.join(ROOT, "src", "glintlab", "counting", "binomial_laws.glsl")
 
 # name -> (what it removes, [(file, exact text, replacement)])
 VARIANTS = {
@@ -50,10 +49,10 @@ VARIANTS = {
           "vec2 xi = deliot2023_corner_uniforms(corner & ivec2(DELIOT2023_LATTICE_MASK), vs);",
           "vec2 xi = fract(vec2(corner) * vec2(0.6180339f, 0.7548776f) + float(vs & 255u) * 0.0037f);")]),
     "d_noquantile": (
-        "gated laws (deliot2023 corners): a linear stand-in for the normal quantile",
-        [(LAWS,
-          "    float g = law.mean + law.sd * normal_quantile(xi2);\n",
-          "    float g = law.mean + law.sd * (3.0f * xi2 - 1.5f);\n")]),
+        "deliot2023 corners: a linear stand-in for the gated law's normal quantile",
+        [(DELIOT,
+          "        float g = clamp(law.mean + law.sd * normal_quantile(xi.y), lo, law.top);\n",
+          "        float g = clamp(law.mean + law.sd * (3.0f * xi.y - 1.5f), lo, law.top);\n")]),
     "d_unrollall": (
         "deliot2023: NVIDIA's #pragma optionNV(unroll all) (nothing removed)",
         [(DELIOT_GPU,
@@ -67,9 +66,9 @@ VARIANTS = {
     "c_nocells": (
         "chermain2020: every cell in the ellipse returns the analytic target (no stream, no fetch)",
         [(CHERMAIN,
-          "            vec2 sdf = chermain2020_cell_sdf(ivec2(x, y), level, d, log_density, relative_area,\n"
+          "            vec2 sdf = chermain2020_cell_sdf(cell, level, d, log_density, relative_area,\n"
           "                                             density_randomization, seed, lookup);",
-          "            vec2 sdf = vec2(lookup.target_p22, fract(float(x) * 0.618f));")]),
+          "            vec2 sdf = vec2(lookup.target_p22, fract(float(cell.x) * 0.618f));")]),
     "c_nomarginals": (
         "chermain2020: the marginals' dictionary texel pair computed, not fetched",
         [(CHERMAIN,

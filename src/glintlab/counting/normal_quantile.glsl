@@ -17,30 +17,21 @@ float normal_quantile(float u) {
     float uc = clamp(u, 5.9604645e-8f, 1.0f - 5.9604645e-8f);
     float x = 2.0f * uc - 1.0f;
     float w = -log(4.0f * uc * (1.0f - uc));
-    float p;
-    if (w < 5.0f) {  // |z| below ~2.5 standard deviations
-        w = w - 2.5f;
-        p = 2.81022636e-08f;
-        p = 3.43273939e-07f + p * w;
-        p = -3.5233877e-06f + p * w;
-        p = -4.39150654e-06f + p * w;
-        p = 0.00021858087f + p * w;
-        p = -0.00125372503f + p * w;
-        p = -0.00417768164f + p * w;
-        p = 0.246640727f + p * w;
-        p = 1.50140941f + p * w;
-    } else {  // tails
-        w = sqrt(w) - 3.0f;
-        p = -0.000200214257f;
-        p = 0.000100950558f + p * w;
-        p = 0.00134934322f + p * w;
-        p = -0.00367342844f + p * w;
-        p = 0.00573950773f + p * w;
-        p = -0.0076224613f + p * w;
-        p = 0.00943887047f + p * w;
-        p = 1.00167406f + p * w;
-        p = 2.83297682f + p * w;
-    }
+    // One polynomial, its coefficients selected per lane, instead of an
+    // if/else over the two: the same operations on the same values in each
+    // case, but SIMD back ends that run both sides of a branch for a block of
+    // pixels (llvmpipe) evaluate one polynomial instead of two (issue 17).
+    bool central = w < 5.0f;  // |z| below ~2.5 standard deviations; else the tails
+    float t = central ? w - 2.5f : sqrt(w) - 3.0f;
+    float p = central ? 2.81022636e-08f : -0.000200214257f;
+    p = (central ? 3.43273939e-07f : 0.000100950558f) + p * t;
+    p = (central ? -3.5233877e-06f : 0.00134934322f) + p * t;
+    p = (central ? -4.39150654e-06f : -0.00367342844f) + p * t;
+    p = (central ? 0.00021858087f : 0.00573950773f) + p * t;
+    p = (central ? -0.00125372503f : -0.0076224613f) + p * t;
+    p = (central ? -0.00417768164f : 0.00943887047f) + p * t;
+    p = (central ? 0.246640727f : 1.00167406f) + p * t;
+    p = (central ? 1.50140941f : 2.83297682f) + p * t;
     return 1.41421356f * p * x;
 }
 

@@ -91,6 +91,14 @@ float chermain2020_ndf(glm::vec3 h, const Footprint& footprint, const Chermain20
                                     params.max_anisotropy, params.density_randomization);
 }
 
+glm::vec3 chermain2020_level_sdf(glm::vec2 slope, glm::vec2 uv, glm::vec3 ellipse, int level,
+                                 const Chermain2020Target& target,
+                                 const Chermain2020Params& params) {
+    return shader::chermain2020_level_p22(
+        slope, uv, ellipse, level, shape(), target.alpha_x, target.alpha_y, target.log_density,
+        params.relative_area, params.density_randomization, target.seed, to_shader(params));
+}
+
 float chermain2020_target_ndf(glm::vec3 h, const Chermain2020Target& target) {
     return shader::D_Beckmann(h, target.alpha_x, target.alpha_y);
 }

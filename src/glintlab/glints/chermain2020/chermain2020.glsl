@@ -232,6 +232,46 @@ vec2 chermain2020_cell_sdf(ivec2 cell, int level, Chermain2020Dict d, float log_
     return vec2(mx * my * k.jac, colour_u);
 }
 
+// r^2 of the centre of cell (x, y) in the footprint ellipse (axes `major`,
+// `minor` in cells, major axis at angle (ca, sa), centre `centre`): the cell
+// is in the footprint where r^2 < 1 (Algorithm 2). The one expression of the
+// walk below, so every test of a cell gives the same answer.
+float chermain2020_cell_r2(int x, int y, vec2 centre, float ca, float sa, float major,
+                           float minor) {
+    vec2 p = vec2(float(x) + 0.5f, float(y) + 0.5f) - centre;
+    float a = (p.x * ca + p.y * sa) / major;
+    float b = (-p.x * sa + p.y * ca) / minor;
+    return a * a + b * b;
+}
+
+// The ellipse of one level, for the x range of its rows (Algorithm 2's walk).
+struct Chermain2020Row {
+    // The ellipse in cells: q2 px^2 + q1 px py + q0 py^2 < 1.
+    float q2, q1, q0;
+    vec2 centre;
+    float ca, sa, major, minor;  // the axes, as chermain2020_cell_r2 takes them
+    int x0, x1;                  // the bounding box's columns
+};
+
+// [first, last] column of row y whose cell centres can be in the ellipse:
+// the row's roots, an end moved out by one cell where the loop's own r^2
+// test puts the next cell inside (rounding of the roots); non-finite roots
+// or roots outside the box keep the box's columns.
+ivec2 chermain2020_row_range(Chermain2020Row e, int y) {
+    float py = float(y) + 0.5f - e.centre.y;
+    float half_b = 0.5f * e.q1 * py;
+    float disc = sqrt(max(half_b * half_b - e.q2 * (e.q0 * py * py - 1.0f), 0.0f));
+    float lo = e.centre.x + (-half_b - disc) / e.q2 - 0.5f;
+    float hi = e.centre.x + (-half_b + disc) / e.q2 - 0.5f;
+    int xa = lo > float(e.x0) && lo < float(e.x1) ? int(ceil(lo)) : e.x0;
+    int xb = hi > float(e.x0) && hi < float(e.x1) ? int(floor(hi)) : e.x1;
+    if (xa > e.x0 && chermain2020_cell_r2(xa - 1, y, e.centre, e.ca, e.sa, e.major, e.minor) < 1.0f)
+        --xa;
+    if (xb < e.x1 && chermain2020_cell_r2(xb + 1, y, e.centre, e.ca, e.sa, e.major, e.minor) < 1.0f)
+        ++xb;
+    return ivec2(xa, xb);
+}
+
 // Algorithm 2: sum over the cells of level `level` whose centres fall in the
 // ellipse, weighted by the truncated Gaussian exp(-2 r^2) - exp(-2) and
 // normalised (sum of W_P = 1, Eq. 12). Each cell's SDF is tinted by its
@@ -256,46 +296,65 @@ vec3 chermain2020_level_p22(vec2 slope, vec2 uv, vec3 ellipse, int level, Cherma
     int x1 = int(floor(centre.x + ex));
     int y0 = int(floor(centre.y - ey));
     int y1 = int(floor(centre.y + ey));
-    // Per row, only the cells whose centres can fall in the ellipse: with
-    // p = (px, py) the centre's offset, the ellipse is q2 px^2 + q1 px py +
-    // q0 py^2 < 1; the row's roots, widened by one cell against rounding,
-    // bound x (the r2 test below still decides every cell, so the sums are
-    // those of the whole bounding box, bit for bit, in the same order).
+    // The cells are walked as one flat loop, a cell per step, row after row,
+    // each row over the range of x whose centres can fall in the ellipse:
+    // with p = (px, py) the centre's offset, the ellipse is q2 px^2 + q1 px
+    // py + q0 py^2 < 1, and the row's roots bound x up to rounding, which one
+    // test of the loop's own r^2 at each end settles (non-finite roots keep
+    // the bounding box). The r^2 < 1 test still decides every cell, so the
+    // sums are those of the whole bounding box, bit for bit, in the same
+    // order. Why flat (issue 17): SIMD back ends such as llvmpipe run a
+    // block of pixels through the loop until its last pixel is done, so a
+    // loop over rows with one over each row's cells costs, per row, the
+    // widest row of the block; one loop costs the block's largest number
+    // of cells (and empty rows). The cell under the footprint's centre, the
+    // fallback of footprints that hold no cell centre, is one more step of
+    // the same loop, taken only by the pixels that need it.
     float im2 = 1.0f / (major * major);
     float in2 = 1.0f / (minor * minor);
-    float q2 = ca * ca * im2 + sa * sa * in2;
-    float q1 = 2.0f * ca * sa * (im2 - in2);
-    float q0 = sa * sa * im2 + ca * ca * in2;
+    Chermain2020Row row;
+    row.q2 = ca * ca * im2 + sa * sa * in2;
+    row.q1 = 2.0f * ca * sa * (im2 - in2);
+    row.q0 = sa * sa * im2 + ca * ca * in2;
+    row.centre = centre;
+    row.ca = ca;
+    row.sa = sa;
+    row.major = major;
+    row.minor = minor;
+    row.x0 = x0;
+    row.x1 = x1;
     Chermain2020Lookup lookup = chermain2020_lookup(slope, d, alpha_x, alpha_y);
     vec3 sum_p = vec3(0.0f);
     float sum_w = 0.0f;
-    for (int y = y0; y <= y1; ++y) {
-        float py = float(y) + 0.5f - centre.y;
-        float half_b = 0.5f * q1 * py;
-        float disc = sqrt(max(half_b * half_b - q2 * (q0 * py * py - 1.0f), 0.0f));
-        float lo = centre.x + (-half_b - disc) / q2 - 0.5f;
-        float hi = centre.x + (-half_b + disc) / q2 - 0.5f;
-        // Bounds outside (x0, x1), infinite or NaN (degenerate axes) keep the box.
-        int xa = lo > float(x0) && lo < float(x1) ? max(x0, int(floor(lo)) - 1) : x0;
-        int xb = hi > float(x0) && hi < float(x1) ? min(x1, int(floor(hi)) + 1) : x1;
-        for (int x = xa; x <= xb; ++x) {
-            vec2 p = vec2(float(x) + 0.5f, float(y) + 0.5f) - centre;
-            float a = (p.x * ca + p.y * sa) / major;
-            float b = (-p.x * sa + p.y * ca) / minor;
-            float r2 = a * a + b * b;
-            if (r2 >= 1.0f) continue;
-            float w = exp(-2.0f * r2) - 0.13533528f;  // exp(-2)
-            vec2 sdf = chermain2020_cell_sdf(ivec2(x, y), level, d, log_density, relative_area,
+    int y = y0;
+    ivec2 range = chermain2020_row_range(row, y);
+    int x = range.x;
+    bool under_centre = false;  // the fallback step
+    while (true) {
+        float r2 = chermain2020_cell_r2(x, y, centre, ca, sa, major, minor);
+        bool in_ellipse = x <= range.y && r2 < 1.0f;
+        if (in_ellipse || under_centre) {
+            ivec2 cell = under_centre ? ivec2(floor(centre)) : ivec2(x, y);
+            float w = under_centre ? 1.0f : exp(-2.0f * r2) - 0.13533528f;  // exp(-2)
+            vec2 sdf = chermain2020_cell_sdf(cell, level, d, log_density, relative_area,
                                              density_randomization, seed, lookup);
             if (sdf.x > 0.0f) sum_p += (w * sdf.x) * chermain2020_colour(sdf.y, colours);
             sum_w += w;
         }
+        if (under_centre) break;
+        ++x;
+        if (x > range.y) {  // the next row
+            ++y;
+            range = chermain2020_row_range(row, y);
+            x = range.x;
+        }
+        if (y > y1) {
+            if (sum_w > 0.0f) break;
+            under_centre = true;  // no cell centre in the footprint (only at level 0)
+        }
     }
-    if (sum_w > 0.0f) return sum_p / sum_w;
-    // Footprint smaller than a cell (only at level 0): the cell under its centre.
-    vec2 sdf = chermain2020_cell_sdf(ivec2(floor(centre)), level, d, log_density, relative_area,
-                                     density_randomization, seed, lookup);
-    return sdf.x * chermain2020_colour(sdf.y, colours);
+    // The fallback's weight 1 returns its SDF as it is.
+    return sum_p / sum_w;
 }
 
 // RGB D_P(h) of Eq. 13 over the footprint (Algorithm 1) with coloured glints,

@@ -54,6 +54,14 @@ float chermain2020_cell_p22(const Chermain2020CellInfo& cell, glm::vec2 slope,
 glm::vec2 chermain2020_dict_slope(const Chermain2020CellInfo& cell, glm::vec2 slope,
                                   const Chermain2020Target& target);
 
+// Algorithm 2 at one hierarchy level: the weighted, normalised sum of the
+// cells' SDFs (RGB with the colour table) over the ellipse (major, minor,
+// angle of the major axis; uv units) around uv, at `slope`. The walk inside
+// chermain2020_ndf, exposed for tests.
+glm::vec3 chermain2020_level_sdf(glm::vec2 slope, glm::vec2 uv, glm::vec3 ellipse, int level,
+                                 const Chermain2020Target& target,
+                                 const Chermain2020Params& params);
+
 // The material's D_P: desc.params must hold Chermain2020Params.
 float chermain2020_footprint_ndf(glm::vec3 h, const Footprint& footprint, const GlintDesc& desc);
 glm::vec3 chermain2020_footprint_ndf_rgb(glm::vec3 h, const Footprint& footprint,

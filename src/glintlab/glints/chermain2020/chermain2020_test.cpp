@@ -86,6 +86,90 @@ TEST(Chermain2020, CoherentIndexingKeepsParentChoices) {
     EXPECT_GE(differing_siblings, 198);
 }
 
+// Algorithm 2 as written: every cell of the ellipse's bounding box, the
+// r^2 < 1 test, the truncated Gaussian weight, the eager cell evaluation;
+// the cell under the centre where no cell centre is inside. The
+// expressions are those of chermain2020.glsl, so the sums agree bit for bit
+// with its walk (which visits only the rows' ranges, lazily).
+float level_sdf_by_box_scan(glm::vec2 slope, glm::vec2 uv, glm::vec3 ellipse, int level,
+                            const Chermain2020Target& t, const Chermain2020Params& p, int n_levels,
+                            bool& fell_back) {
+    const float scale = std::exp2(static_cast<float>(n_levels - 1 - level));
+    const glm::vec2 centre = uv * scale;
+    const float major = ellipse.x * scale, minor = ellipse.y * scale;
+    const float ca = std::cos(ellipse.z), sa = std::sin(ellipse.z);
+    const float ex = std::min(std::sqrt(major * major * ca * ca + minor * minor * sa * sa), 32.0f);
+    const float ey = std::min(std::sqrt(major * major * sa * sa + minor * minor * ca * ca), 32.0f);
+    const int x0 = static_cast<int>(std::floor(centre.x - ex));
+    const int x1 = static_cast<int>(std::floor(centre.x + ex));
+    const int y0 = static_cast<int>(std::floor(centre.y - ey));
+    const int y1 = static_cast<int>(std::floor(centre.y + ey));
+    float sum_p = 0.0f, sum_w = 0.0f;
+    for (int y = y0; y <= y1; ++y)
+        for (int x = x0; x <= x1; ++x) {
+            const glm::vec2 q =
+                glm::vec2(static_cast<float>(x) + 0.5f, static_cast<float>(y) + 0.5f) - centre;
+            const float a = (q.x * ca + q.y * sa) / major;
+            const float b = (-q.x * sa + q.y * ca) / minor;
+            const float r2 = a * a + b * b;
+            if (r2 >= 1.0f) continue;
+            const float w = std::exp(-2.0f * r2) - 0.13533528f;
+            const float p22 =
+                chermain2020_cell_p22(chermain2020_cell({x, y}, level, t, p), slope, t);
+            if (p22 > 0.0f) sum_p += w * p22;
+            sum_w += w;
+        }
+    fell_back = !(sum_w > 0.0f);
+    if (!fell_back) return sum_p / sum_w;
+    const glm::ivec2 under(static_cast<int>(std::floor(centre.x)),
+                           static_cast<int>(std::floor(centre.y)));
+    return chermain2020_cell_p22(chermain2020_cell(under, level, t, p), slope, t);
+}
+
+TEST(Chermain2020, WalkMatchesTheBoundingBoxScan) {
+    // The GPU-cost walk of Algorithm 2 (row ranges from the ellipse's roots,
+    // one flat loop, the fallback cell as its last step; docs/MODELS.md
+    // "GPU cost") must visit the same cells in the same order as the scan of
+    // the whole bounding box: same sums, bit for bit, for ellipses from
+    // below a cell (the fallback) to the 64-cell cap, every orientation and
+    // anisotropies up to 64 (beyond the clamp, which the walk does not rely
+    // on), with density randomisation and the relative-area test on.
+    Chermain2020Target t;
+    t.log_density = 20.0f;
+    t.alpha_x = 0.4f;
+    t.alpha_y = 0.3f;
+    t.seed = 77;
+    Chermain2020Params p;
+    p.relative_area = 0.8f;
+    p.density_randomization = 2.0f;
+    const int n_levels = 16;  // the default dictionary's
+    Pcg32 rng(5, 9);
+    int fell_back = 0, non_zero = 0;
+    for (int k = 0; k < 3000; ++k) {
+        const int level = static_cast<int>(rng.next_uint(10));
+        const float cell = std::exp2(static_cast<float>(level - (n_levels - 1)));  // uv size
+        const float major_cells = std::exp2(-3.0f + 9.0f * rng.next_float());      // 1/8 .. 64
+        const float aniso = std::exp2(6.0f * rng.next_float());                    // 1 .. 64
+        const glm::vec3 ellipse(major_cells * cell, major_cells / aniso * cell,
+                                (rng.next_float() - 0.5f) * 3.14159265f);
+        const glm::vec2 uv(4.0f * rng.next_float(), 4.0f * rng.next_float());
+        // Slopes within the target's lobe, where most cells are non-zero.
+        const glm::vec2 slope(0.8f * (rng.next_float() - 0.5f), 0.6f * (rng.next_float() - 0.5f));
+        bool fb = false;
+        const float expected = level_sdf_by_box_scan(slope, uv, ellipse, level, t, p, n_levels, fb);
+        const glm::vec3 walked = chermain2020_level_sdf(slope, uv, ellipse, level, t, p);
+        ASSERT_EQ(walked.x, expected)
+            << "k " << k << " level " << level << " major " << major_cells << " aniso " << aniso;
+        EXPECT_EQ(walked.y, expected);
+        fell_back += fb;
+        non_zero += expected > 0.0f;
+    }
+    // The cases the walk must get right occur: footprints below a cell
+    // (major < 1/2 cell: ~10 % of draws) and sums with non-zero cells.
+    EXPECT_GE(fell_back, 100);
+    EXPECT_GE(non_zero, 1000);
+}
+
 TEST(Chermain2020, RelativeAreaScalesTheMean) {
     // E[D_P] = beta D (Alg. 3 line 4 keeps a cell with probability beta).
     // ~20 cells per footprint: relative std-dev of one footprint's D_P is

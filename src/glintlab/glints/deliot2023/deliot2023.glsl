@@ -352,13 +352,30 @@ float deliot2023_vertex_count(float N, vec2 angular_offset, uint vs, vec2 slope,
         law = binomial_single_gated_conditional_law(N, p);
     else
         law = binomial_single_gated_law(N, p);
+    // The shipped law (deliot2023_original_law) in the same terms: its gate,
+    // the Gaussian of the N - 1 other trials clamped to [0, N], floored
+    // after the gate's success. Both laws draw their Gaussian from one normal
+    // quantile of the corner's second uniform, so a corner evaluates one
+    // quantile, not one per law (issue 17: SIMD back ends such as llvmpipe
+    // run both sides of the choice for a block of pixels); the operations on
+    // the values are those of deliot2023_original_law and
+    // binomial_single_gated_draw, so the counts are the same bit for bit.
+    float lo = 1.0f;
+    if (original_defects) {
+        float rest = max(N - 1.0f, 0.0f);
+        law.p_gate = 1.0f - pow_one_minus_naive(p, N);
+        law.mean = rest * p;
+        law.sd = sqrt(max(rest * p * (1.0f - p), 0.0f));
+        law.top = N;
+        lo = 0.0f;
+    }
     float count = 0.0f;
     for (int c = 0; c < 4; ++c) {
         ivec2 corner = ac + ivec2(c & 1, c >> 1);
         float wc = ((c & 1) == 1 ? at.x : 1.0f - at.x) * ((c >> 1) == 1 ? at.y : 1.0f - at.y);
         vec2 xi = deliot2023_corner_uniforms(corner & ivec2(DELIOT2023_LATTICE_MASK), vs);
-        float b = original_defects ? deliot2023_original_law(N, p, xi.x, xi.y)
-                                   : binomial_single_gated_draw(law, xi.x, xi.y);
+        float g = clamp(law.mean + law.sd * normal_quantile(xi.y), lo, law.top);
+        float b = xi.x < law.p_gate ? (original_defects ? floor(1.0f + g) : g * law.scale) : 0.0f;
         count += wc * b;
     }
     return count;
