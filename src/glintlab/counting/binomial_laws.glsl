@@ -44,9 +44,13 @@ float pow_one_minus_stable(float p, float N) {
     return N > 0.0f ? pow_unit(max(1.0f - c * p, 0.0f), N / c) : 1.0f;
 }
 
+// A Gaussian deviate N(mean, variance) from the standard normal deviate z.
+float gaussian_from_standard(float mean, float variance, float z) {
+    return mean + sqrt(max(variance, 0.0f)) * z;
+}
 // A Gaussian deviate N(mean, variance) from one uniform number.
 float gaussian_deviate(float mean, float variance, float xi) {
-    return mean + sqrt(max(variance, 0.0f)) * normal_quantile(xi);
+    return gaussian_from_standard(mean, variance, normal_quantile(xi));
 }
 
 // Law 2: the plain Gaussian approximation with the binomial's first two
@@ -213,30 +217,7 @@ float binomial_single_gated(float N, float p, float xi1, float xi2) {
 // mixture of the neighbouring integer laws (003 Fig. 4), so they need not.
 // `integer_gaussian` rounds the Gaussian part so that integer N gives integer
 // counts (the multinomial needs this for its counts to sum to N exactly).
-vec2 binomial_dual_gated(float N, float p, float xi1, float xi2, bool integer_gaussian) {
-    float n = max(N, 0.0f);
-    float n2 = max(2.0f, n);                                   // line 2
-    float c = stable_pow_scale(p);                             // line 3
-    float w_many = clamp(n - 1.0f, 0.0f, 1.0f);
-    float p_all_pos = w_many * pow_unit(p, n2);                // line 5
-    float p_all_neg = w_many * pow_unit(max(1.0f - c * p, 0.0f), n2 / c);  // line 6
-    float w_one = max(0.0f, 1.0f - abs(1.0f - n));
-    float p_one_pos = w_one * p;                               // line 7
-    float p_one_neg = w_one * (1.0f - p);                      // line 8
-    float b_all_pos = xi1 < p_all_pos ? 1.0f : 0.0f;           // line 10
-    float b_pos = xi1 < p_all_pos + p_one_pos ? 1.0f : 0.0f;   // line 11
-    float b_all_neg = 1.0f - p_all_neg <= xi1 ? 1.0f : 0.0f;   // line 12
-    float b_neg = 1.0f - p_all_neg - p_one_neg <= xi1 ? 1.0f : 0.0f;  // line 13
-    float b_gauss = (n > 1.0f ? 1.0f : 0.0f) * (1.0f - b_pos) * (1.0f - b_neg);  // line 14
-    float mean = 1.0f + (n2 - 2.0f) * p;                       // line 16
-    float variance = (n2 - 2.0f) * p * (1.0f - p);             // line 17
-    float g = gaussian_deviate(mean, variance, xi2);
-    if (integer_gaussian) g = floor(g + 0.5f);
-    g = clamp(g, 1.0f, n2 - 1.0f);                             // line 18
-    float g_bar = n2 - g;                                      // line 19
-    return vec2(b_all_pos * (n2 - 1.0f) + b_pos + b_gauss * g,            // line 21
-                b_all_neg * (n2 - 1.0f) + b_neg + b_gauss * g_bar);       // line 22
-}
+// (binomial_dual_gated_law below, with the conditional form of Law 6b.)
 
 // The interior case of b(n, p) exactly: the k in [1, n - 1] with
 // P(k | 1 <= k <= n - 1) = C(n, k) p^k (1 - p)^(n - k) / z, by inverting its CDF
@@ -267,7 +248,7 @@ float binomial_interior_inverse(float n, float p, float pow_pos, float pow_neg, 
 // the interior moments below then take their factored form.
 const float BINOMIAL_MAX_SQUARED_TRIALS = 1e18f;
 
-// A Gaussian deviate with the moments of the interior case of b(n, p) (see
+// The moments of the interior case of b(n, p) (see
 // Law 6b below) for n > BINOMIAL_MAX_SQUARED_TRIALS, where the expanded
 // E[n^2] - E[n]^2 overflows (inf - inf = NaN from log density ~44 on). With
 // A = p^n, B = (1 - p)^n and z = 1 - A - B:
@@ -276,17 +257,17 @@ const float BINOMIAL_MAX_SQUARED_TRIALS = 1e18f;
 // each product ordered so that a factor that underflows to 0 (A or B, for
 // any n here) multiplies before the other grows: every term is finite.
 // Where z < 1e-6 (n p or n (1 - p) tiny; the Gaussian case then has
-// probability z) the deviate is the mean.
-float binomial_interior_gaussian_large(float n, float p, float pow_pos, float pow_neg, float z,
-                                       float xi) {
+// probability z) the deviate is the mean: its variance is returned as 0
+// (mean + 0 z is the mean exactly). Returns (mean, variance).
+vec2 binomial_interior_moments_large(float n, float p, float pow_pos, float pow_neg, float z) {
     float mean = clamp(n * (p - pow_pos) / z, 1.0f, n - 1.0f);
-    if (!(z >= 1e-6f)) return mean;
+    if (!(z >= 1e-6f)) return vec2(mean, 0.0f);
     float na = n * pow_pos;
     float nb = n * pow_neg;
     float np = n * p;
     float nq2 = n * (1.0f - p) * (1.0f - p);
     float variance = np * (1.0f - p) / z + (na * nb - na * nq2 - np * (np * pow_neg)) / (z * z);
-    return gaussian_deviate(mean, min(max(variance, 0.0f), 1e36f), xi);
+    return vec2(mean, min(max(variance, 0.0f), 1e36f));
 }
 
 // Law 6b (an extension, not in 003; used by kneiphof2025's "conditional"
@@ -308,42 +289,64 @@ float binomial_interior_gaussian_large(float n, float p, float pow_pos, float po
 //    (Kneiphof2025.ConditionalLawIsUnbiased).
 // Gating is unchanged. Non-integer N keeps Algorithm 1's interpolated gates;
 // kneiphof2025 rounds N stochastically first (kneiphof2025.glsl).
-vec2 binomial_dual_gated_conditional(float N, float p, float xi1, float xi2, bool integer_gaussian) {
+//
+// Both laws in one function (Law 6 where !conditional, Law 6b where
+// conditional): the gates are the same, and the Gaussian's mean and
+// variance are chosen before the one normal quantile the Gaussian needs
+// (issue 17: SIMD back ends such as llvmpipe run every side of a branch
+// for a block of pixels, so callers that chose between the two laws, and
+// the laws' own cases, paid for every quantile and power of each). The
+// operations on the values are those of each law as written, so the counts
+// are the same bit for bit (DualGatedLaw.BothLawsAsWritten).
+vec2 binomial_dual_gated_law(float N, float p, float xi1, float xi2, bool integer_gaussian,
+                             bool conditional) {
     float n = max(N, 0.0f);
-    float n2 = max(2.0f, n);
-    float c = stable_pow_scale(p);
+    float n2 = max(2.0f, n);                                   // line 2
+    float c = stable_pow_scale(p);                             // line 3
     float w_many = clamp(n - 1.0f, 0.0f, 1.0f);
     float pow_pos = pow_unit(p, n2);
     float pow_neg = pow_unit(max(1.0f - c * p, 0.0f), n2 / c);
-    float p_all_pos = w_many * pow_pos;
-    float p_all_neg = w_many * pow_neg;
+    float p_all_pos = w_many * pow_pos;                        // line 5
+    float p_all_neg = w_many * pow_neg;                        // line 6
     float w_one = max(0.0f, 1.0f - abs(1.0f - n));
-    float p_one_pos = w_one * p;
-    float p_one_neg = w_one * (1.0f - p);
-    float b_all_pos = xi1 < p_all_pos ? 1.0f : 0.0f;
-    float b_pos = xi1 < p_all_pos + p_one_pos ? 1.0f : 0.0f;
-    float b_all_neg = 1.0f - p_all_neg <= xi1 ? 1.0f : 0.0f;
-    float b_neg = 1.0f - p_all_neg - p_one_neg <= xi1 ? 1.0f : 0.0f;
-    float b_gauss = (n > 1.0f ? 1.0f : 0.0f) * (1.0f - b_pos) * (1.0f - b_neg);
+    float p_one_pos = w_one * p;                               // line 7
+    float p_one_neg = w_one * (1.0f - p);                      // line 8
+    float b_all_pos = xi1 < p_all_pos ? 1.0f : 0.0f;           // line 10
+    float b_pos = xi1 < p_all_pos + p_one_pos ? 1.0f : 0.0f;   // line 11
+    float b_all_neg = 1.0f - p_all_neg <= xi1 ? 1.0f : 0.0f;   // line 12
+    float b_neg = 1.0f - p_all_neg - p_one_neg <= xi1 ? 1.0f : 0.0f;  // line 13
+    float b_gauss = (n > 1.0f ? 1.0f : 0.0f) * (1.0f - b_pos) * (1.0f - b_neg);  // line 14
     float z = max(1.0f - pow_pos - pow_neg, 1e-30f);
     float g;
-    if (integer_gaussian && n == floor(n) && n2 * min(p, 1.0f - p) <= 16.0f) {
+    if (conditional && integer_gaussian && n == floor(n) && n2 * min(p, 1.0f - p) <= 16.0f) {
         g = b_gauss > 0.0f ? binomial_interior_inverse(n2, p, pow_pos, pow_neg, z, xi2) : 1.0f;
-    } else if (n2 <= BINOMIAL_MAX_SQUARED_TRIALS) {
-        float mean = (n2 * p - n2 * pow_pos) / z;
-        float second = (n2 * p * (1.0f - p) + n2 * n2 * p * p - n2 * n2 * pow_pos) / z;
-        mean = clamp(mean, 1.0f, n2 - 1.0f);
-        float variance = max(second - mean * mean, 0.0f);
-        g = gaussian_deviate(mean, variance, xi2);
-        if (integer_gaussian) g = floor(g + 0.5f);
     } else {
-        g = binomial_interior_gaussian_large(n2, p, pow_pos, pow_neg, z, xi2);
+        // Algorithm 1 (lines 16-17): one known positive and one known negative, N - 2 free.
+        float mean = 1.0f + (n2 - 2.0f) * p;
+        float variance = (n2 - 2.0f) * p * (1.0f - p);
+        if (conditional && n2 <= BINOMIAL_MAX_SQUARED_TRIALS) {
+            float m = (n2 * p - n2 * pow_pos) / z;
+            float second = (n2 * p * (1.0f - p) + n2 * n2 * p * p - n2 * n2 * pow_pos) / z;
+            mean = clamp(m, 1.0f, n2 - 1.0f);
+            variance = max(second - mean * mean, 0.0f);
+        } else if (conditional) {
+            vec2 moments = binomial_interior_moments_large(n2, p, pow_pos, pow_neg, z);
+            mean = moments.x;
+            variance = moments.y;
+        }
+        g = gaussian_from_standard(mean, variance, normal_quantile(xi2));
         if (integer_gaussian) g = floor(g + 0.5f);
     }
-    g = clamp(g, 1.0f, n2 - 1.0f);
-    float g_bar = n2 - g;
-    return vec2(b_all_pos * (n2 - 1.0f) + b_pos + b_gauss * g,
-                b_all_neg * (n2 - 1.0f) + b_neg + b_gauss * g_bar);
+    g = clamp(g, 1.0f, n2 - 1.0f);                             // line 18
+    float g_bar = n2 - g;                                      // line 19
+    return vec2(b_all_pos * (n2 - 1.0f) + b_pos + b_gauss * g,            // line 21
+                b_all_neg * (n2 - 1.0f) + b_neg + b_gauss * g_bar);       // line 22
+}
+vec2 binomial_dual_gated(float N, float p, float xi1, float xi2, bool integer_gaussian) {
+    return binomial_dual_gated_law(N, p, xi1, xi2, integer_gaussian, false);
+}
+vec2 binomial_dual_gated_conditional(float N, float p, float xi1, float xi2, bool integer_gaussian) {
+    return binomial_dual_gated_law(N, p, xi1, xi2, integer_gaussian, true);
 }
 
 #endif

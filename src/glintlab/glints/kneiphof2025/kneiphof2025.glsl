@@ -211,18 +211,16 @@ float kneiphof2025_weighted_multinomial_scaled(float N, float scale, int levels,
         float q = rest_k > 0.0f ? clamp(kneiphof2025_level(p_a, p_b, k) / rest_k, 0.0f, 1.0f) : 0.0f;
         float xi1 = hash_random(vs);
         float xi2 = hash_random(vs);
-        vec2 c;
-        if (!conditional) {
-            c = binomial_dual_gated(remaining, q, xi1, xi2, true);
-        } else if (q > 0.5f) {
-            float q_rest = rest_k > 0.0f
-                               ? clamp(kneiphof2025_level(rest_a, rest_b, k + 1) / rest_k, 0.0f, 1.0f)
-                               : 0.0f;
-            c = binomial_dual_gated_conditional(remaining, q_rest, xi1, xi2, true);
-            c = vec2(c.y, c.x);
-        } else {
-            c = binomial_dual_gated_conditional(remaining, q, xi1, xi2, true);
-        }
+        // One law evaluation whichever case (issue 17: a SIMD back end runs
+        // every side of a branch for a block of pixels): the complement's
+        // probability where the conditional law draws the complement.
+        bool complement = conditional && q > 0.5f;
+        float q_rest = rest_k > 0.0f
+                           ? clamp(kneiphof2025_level(rest_a, rest_b, k + 1) / rest_k, 0.0f, 1.0f)
+                           : 0.0f;
+        vec2 c = binomial_dual_gated_law(remaining, complement ? q_rest : q, xi1, xi2, true,
+                                         conditional);
+        if (complement) c = vec2(c.y, c.x);
         value += kneiphof2025_level(L_a, L_b, k) * (c.x * scale);
         remaining = c.y;
     }
@@ -333,8 +331,7 @@ float kneiphof2025_binomial_factor_no_h(Footprint fp, float p, float log_density
             float n_trials = conditional ? floor(N + hash_random(vs)) : N;
             float xi1 = hash_random(vs);
             float xi2 = hash_random(vs);
-            vec2 c = conditional ? binomial_dual_gated_conditional(n_trials, p, xi1, xi2, true)
-                                 : binomial_dual_gated(N, p, xi1, xi2, false);
+            vec2 c = binomial_dual_gated_law(n_trials, p, xi1, xi2, conditional, conditional);
             acc += bv * vec2(c.x, N);
         }
     }
