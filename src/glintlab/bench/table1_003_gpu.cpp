@@ -36,12 +36,16 @@ nlohmann::json table1_003_scene_json(const std::string& scene, const std::string
     if (!known(table1_003_scene_names(), scene))
         fail("bench --table 003: unknown scene \"{}\" (known: {})", scene,
              fmt::join(table1_003_scene_names(), ", "));
-    // kneiphof2025_k8_as_published (not a default column): K = 8 with 003's
-    // split sum as the smooth term, for the cost of the default "lobe_sun".
-    const bool as_published = model == "kneiphof2025_k8_as_published";
+    // kneiphof2025_k4_as_published and kneiphof2025_k8_as_published (not
+    // default columns): K = 4 or 8 with 003's split sum as the smooth term,
+    // for the cost of the default "lobe_sun".
+    const bool as_published =
+        model == "kneiphof2025_k4_as_published" || model == "kneiphof2025_k8_as_published";
     if (!known(table1_003_model_names(), model) && !as_published)
-        fail("bench --table 003: unknown model \"{}\" (known: {}, kneiphof2025_k8_as_published)",
-             model, fmt::join(table1_003_model_names(), ", "));
+        fail(
+            "bench --table 003: unknown model \"{}\" (known: {}, kneiphof2025_k4_as_published, "
+            "kneiphof2025_k8_as_published)",
+            model, fmt::join(table1_003_model_names(), ", "));
     nlohmann::json j;
     j["film"] = {{"width", width}, {"height", height}};
     j["render"] = {{"integrator", "direct"}, {"spp", 1}, {"seed", 1}};
@@ -61,7 +65,8 @@ nlohmann::json table1_003_scene_json(const std::string& scene, const std::string
         if (model == "wang2020_style")
             m["kneiphof2025"] = {{"variant", "wang2020_style"}, {"levels", 4}};
         else if (as_published)
-            m["kneiphof2025"] = {{"levels", 8}, {"smooth", "as_published"}};
+            m["kneiphof2025"] = {{"levels", model == "kneiphof2025_k4_as_published" ? 4 : 8},
+                                 {"smooth", "as_published"}};
         else
             m["kneiphof2025"] = {{"levels", model == "kneiphof2025_k4" ? 4 : 8}};
     }

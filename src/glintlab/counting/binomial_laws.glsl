@@ -112,17 +112,7 @@ struct SingleGatedLaw {
     float top;     // max(N, 1)
     float scale;   // 1 here; the conditional form's mean correction (Law 5b)
 };
-SingleGatedLaw binomial_single_gated_law(float N, float p) {
-    float n = max(N, 0.0f);
-    float rest = max(n - 1.0f, 0.0f);
-    SingleGatedLaw law;
-    law.p_gate = min(n * p, 1.0f - pow_one_minus_stable(p, n));
-    law.mean = 1.0f + rest * p;
-    law.sd = sqrt(max(rest * p * (1.0f - p), 0.0f));
-    law.top = max(n, 1.0f);
-    law.scale = 1.0f;
-    return law;
-}
+// (binomial_single_gated_law: below, with its conditional form.)
 // The gate first (issue 17): a closed gate returns 0 without the normal
 // quantile, the same value as evaluating both and selecting; where the gates
 // of a pixel block are closed (sparse footprints, the NDF's tails) the block
@@ -184,23 +174,40 @@ float clamped_gaussian_mean(float mean, float sd, float lo, float hi) {
 // (CountingLaws.ConditionalSingleGatedIsUnbiased); the variance is the
 // conditional one up to the clamp and the factor. Same draw as Law 5
 // (binomial_single_gated_draw): the extra cost is per (N, p), not per count.
-SingleGatedLaw binomial_single_gated_conditional_law(float N, float p) {
+//
+// Law 5 and Law 5b in one function: the gate (its power) is the same, the
+// Gaussian's mean, sd and scale are chosen after it (issue 17: SIMD back
+// ends such as llvmpipe run both sides of a caller's choice between two law
+// functions, so every vertex paid for two gate powers). The operations on
+// the values are those of each law as written
+// (SingleGatedLaw.BothFormsAsWritten).
+SingleGatedLaw binomial_single_gated_law_of(float N, float p, bool conditional) {
     float n = max(N, 0.0f);
     float np = n * p;
     SingleGatedLaw law;
     law.p_gate = min(np, 1.0f - pow_one_minus_stable(p, n));
     law.top = max(n, 1.0f);
-    if (!(law.p_gate > 0.0f)) {
+    // Law 5 (003 Eq. 23): one success, N - 1 free trials.
+    float rest = max(n - 1.0f, 0.0f);
+    law.mean = 1.0f + rest * p;
+    law.sd = sqrt(max(rest * p * (1.0f - p), 0.0f));
+    law.scale = 1.0f;
+    if (conditional && law.p_gate > 0.0f) {
+        float mu = clamp(np / law.p_gate, 1.0f, law.top);
+        law.mean = mu;
+        law.sd = sqrt(max(mu * ((1.0f - p) - (mu - np)), 0.0f));
+        law.scale = mu / clamped_gaussian_mean(mu, law.sd, 1.0f, law.top);
+    } else if (conditional) {
         law.mean = 1.0f;
         law.sd = 0.0f;
-        law.scale = 1.0f;
-        return law;
     }
-    float mu = clamp(np / law.p_gate, 1.0f, law.top);
-    law.mean = mu;
-    law.sd = sqrt(max(mu * ((1.0f - p) - (mu - np)), 0.0f));
-    law.scale = mu / clamped_gaussian_mean(mu, law.sd, 1.0f, law.top);
     return law;
+}
+SingleGatedLaw binomial_single_gated_law(float N, float p) {
+    return binomial_single_gated_law_of(N, p, false);
+}
+SingleGatedLaw binomial_single_gated_conditional_law(float N, float p) {
+    return binomial_single_gated_law_of(N, p, true);
 }
 float binomial_single_gated_conditional(float N, float p, float xi1, float xi2) {
     return binomial_single_gated_draw(binomial_single_gated_conditional_law(N, p), xi1, xi2);
@@ -297,7 +304,7 @@ vec2 binomial_interior_moments_large(float n, float p, float pow_pos, float pow_
 // for a block of pixels, so callers that chose between the two laws, and
 // the laws' own cases, paid for every quantile and power of each). The
 // operations on the values are those of each law as written, so the counts
-// are the same bit for bit (DualGatedLaw.BothLawsAsWritten).
+// are the same bit for bit (DualGatedLaw.BothLawsAsWritten, laws_as_written_test.cpp).
 vec2 binomial_dual_gated_law(float N, float p, float xi1, float xi2, bool integer_gaussian,
                              bool conditional) {
     float n = max(N, 0.0f);

@@ -346,12 +346,7 @@ float deliot2023_vertex_count(float N, vec2 angular_offset, uint vs, vec2 slope,
     vec2 at = clamp(a - af, 0.0f, 1.0f);
     // The 4 corners share (N, p): the gate's power (and the conditional
     // law's moments and mean correction) once per vertex.
-    // (if / else: WebGL has no ?: on structs.)
-    SingleGatedLaw law;
-    if (conditional)
-        law = binomial_single_gated_conditional_law(N, p);
-    else
-        law = binomial_single_gated_law(N, p);
+    SingleGatedLaw law = binomial_single_gated_law_of(N, p, conditional);
     // The shipped law (deliot2023_original_law) in the same terms: its gate,
     // the Gaussian of the N - 1 other trials clamped to [0, N], floored
     // after the gate's success. Both laws draw their Gaussian from one normal

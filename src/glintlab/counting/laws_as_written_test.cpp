@@ -1,10 +1,11 @@
-// binomial_dual_gated_law evaluates Algorithm 1 of Kneiphof & Klein 2025
-// (003) and its conditional form (Law 6b) in one function with one normal
-// quantile (issue 17). This checks that the counts are, bit for bit, those
-// of the two laws as they were written before as separate functions (the
-// references below, kept verbatim apart from their names), over N from
-// below one trial to past the n^2 overflow bound, p from 1e-12 to 1, and
-// both integer settings.
+// The gated laws of counting/binomial_laws.glsl evaluate each law and its
+// conditional form in one function (issue 17: one normal quantile, one gate
+// power): binomial_dual_gated_law (Algorithm 1 of Kneiphof & Klein 2025,
+// 003, and Law 6b) and binomial_single_gated_law_of (003 Eq. 23 and Law
+// 5b). These tests check that the results are, bit for bit, those of the
+// laws as they were written before as separate functions (the references
+// below, kept verbatim apart from their names), over N from below one
+// trial to past the n^2 overflow bound, p from 1e-12 to 1.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -15,7 +16,38 @@
 GLINTLAB_SHADER_FUNCTIONS_BEGIN
 #include "glintlab/counting/binomial_laws.glsl"
 
-// The published law, Algorithm 1 (003), as a separate function.
+// The laws as separate functions.
+SingleGatedLaw single_gated_law_as_written(float N, float p) {
+    float n = max(N, 0.0f);
+    float rest = max(n - 1.0f, 0.0f);
+    SingleGatedLaw law;
+    law.p_gate = min(n * p, 1.0f - pow_one_minus_stable(p, n));
+    law.mean = 1.0f + rest * p;
+    law.sd = sqrt(max(rest * p * (1.0f - p), 0.0f));
+    law.top = max(n, 1.0f);
+    law.scale = 1.0f;
+    return law;
+}
+
+SingleGatedLaw single_gated_conditional_law_as_written(float N, float p) {
+    float n = max(N, 0.0f);
+    float np = n * p;
+    SingleGatedLaw law;
+    law.p_gate = min(np, 1.0f - pow_one_minus_stable(p, n));
+    law.top = max(n, 1.0f);
+    if (!(law.p_gate > 0.0f)) {
+        law.mean = 1.0f;
+        law.sd = 0.0f;
+        law.scale = 1.0f;
+        return law;
+    }
+    float mu = clamp(np / law.p_gate, 1.0f, law.top);
+    law.mean = mu;
+    law.sd = sqrt(max(mu * ((1.0f - p) - (mu - np)), 0.0f));
+    law.scale = mu / clamped_gaussian_mean(mu, law.sd, 1.0f, law.top);
+    return law;
+}
+
 vec2 dual_gated_as_written(float N, float p, float xi1, float xi2, bool integer_gaussian) {
     float n = max(N, 0.0f);
     float n2 = max(2.0f, n);
@@ -153,6 +185,29 @@ TEST(DualGatedLaw, LargeNMeanOnlyCaseAsWritten) {
         mean_only += expected.x > 0.0f && expected.y > 0.0f;
     }
     EXPECT_GE(mean_only, 1000);
+}
+
+TEST(SingleGatedLaw, BothFormsAsWritten) {
+    Pcg32 rng(31, 5);
+    int conditional_cases = 0;
+    for (int k = 0; k < 200000; ++k) {
+        const float N = k % 97 == 0 ? 0.0f : std::pow(10.0f, -3.0f + 24.0f * rng.next_float());
+        const float p = k % 89 == 0 ? 0.0f : std::pow(10.0f, -12.0f * rng.next_float());
+        const SingleGatedLaw a = single_gated_law_as_written(N, p);
+        const SingleGatedLaw b = single_gated_conditional_law_as_written(N, p);
+        const SingleGatedLaw a2 = binomial_single_gated_law_of(N, p, false);
+        const SingleGatedLaw b2 = binomial_single_gated_law_of(N, p, true);
+        for (const auto& [got, want] : {std::pair{a2, a}, std::pair{b2, b}}) {
+            ASSERT_EQ(got.p_gate, want.p_gate) << "N " << N << " p " << p;
+            ASSERT_EQ(got.mean, want.mean) << "N " << N << " p " << p;
+            ASSERT_EQ(got.sd, want.sd) << "N " << N << " p " << p;
+            ASSERT_EQ(got.top, want.top) << "N " << N << " p " << p;
+            ASSERT_EQ(got.scale, want.scale) << "N " << N << " p " << p;
+        }
+        conditional_cases += b.scale != 1.0f;
+    }
+    // The conditional form's mean correction was compared where it acts.
+    EXPECT_GE(conditional_cases, 10000);
 }
 
 }  // namespace
