@@ -51,8 +51,8 @@ VARIANTS = {
     "d_noquantile": (
         "deliot2023 corners: a linear stand-in for the gated law's normal quantile",
         [(DELIOT,
-          "        float g = clamp(law.mean + law.sd * normal_quantile(xi.y), lo, law.top);\n",
-          "        float g = clamp(law.mean + law.sd * (3.0f * xi.y - 1.5f), lo, law.top);\n")]),
+          "            float g = clamp(law.mean + law.sd * normal_quantile(xi.y), lo, law.top);\n",
+          "            float g = clamp(law.mean + law.sd * (3.0f * xi.y - 1.5f), lo, law.top);\n")]),
     "d_unrollall": (
         "deliot2023: NVIDIA's #pragma optionNV(unroll all) (nothing removed)",
         [(DELIOT_GPU,

@@ -369,8 +369,13 @@ float deliot2023_vertex_count(float N, vec2 angular_offset, uint vs, vec2 slope,
         ivec2 corner = ac + ivec2(c & 1, c >> 1);
         float wc = ((c & 1) == 1 ? at.x : 1.0f - at.x) * ((c >> 1) == 1 ? at.y : 1.0f - at.y);
         vec2 xi = deliot2023_corner_uniforms(corner & ivec2(DELIOT2023_LATTICE_MASK), vs);
-        float g = clamp(law.mean + law.sd * normal_quantile(xi.y), lo, law.top);
-        float b = xi.x < law.p_gate ? (original_defects ? floor(1.0f + g) : g * law.scale) : 0.0f;
+        // The gate first: a closed gate skips the quantile where the back end
+        // branches (the CPU: -16 % of a deliot2023 render, docs/BENCHMARKS.md).
+        float b = 0.0f;
+        if (xi.x < law.p_gate) {
+            float g = clamp(law.mean + law.sd * normal_quantile(xi.y), lo, law.top);
+            b = original_defects ? floor(1.0f + g) : g * law.scale;
+        }
         count += wc * b;
     }
     return count;
@@ -539,8 +544,10 @@ Deliot2023Grids deliot2023_footprint_grids(Footprint fp, float screen_space_scal
 //  (b) every vertex's N p > 2^48: every gate passes (P(>=1) = 1 in fp32) and
 //      each count is N p within 5.3 sqrt(N p (1 - p)) / (N p) < 3.2e-7
 //      relative, so D_P = D(n) / R x count / trials is D(h) to a few ulps.
-// Whole 4 x 4 blocks of pixels that exit skip the 48 binomials (llvmpipe and
-// GPUs branch over code no lane runs).
+// Whole blocks of pixels that exit skip the 48 binomials: GPUs branch over
+// code no lane runs; llvmpipe runs the straight-line code of both sides of a
+// branch, but leaves a loop after one masked pass when no lane is in it, and
+// the binomials sit in the loop over the 4 grids.
 const float DELIOT2023_MAX_JITTER_Z = 5.3f;  // normal_quantile(1 - 2^-24) = 5.29
 // (bound above of the sum of the vertices' trials, bound below of one
 // vertex's trials): the half-vector-free part of the exit test.
