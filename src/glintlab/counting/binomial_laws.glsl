@@ -176,11 +176,11 @@ float clamped_gaussian_mean(float mean, float sd, float lo, float hi) {
 // (binomial_single_gated_draw): the extra cost is per (N, p), not per count.
 //
 // Law 5 and Law 5b in one function: the gate (its power) is the same, the
-// Gaussian's mean, sd and scale are chosen after it (issue 17: SIMD back
-// ends such as llvmpipe run both sides of a caller's choice between two law
-// functions, so every vertex paid for two gate powers). The operations on
-// the values are those of each law as written
-// (SingleGatedLaw.BothFormsAsWritten).
+// Gaussian's mean, sd and scale are chosen after it, so a caller choosing
+// between the laws does not evaluate both (SIMD back ends such as llvmpipe
+// run both sides of such a choice; per vertex in deliot2023, where it made
+// no measurable difference). The operations on the values are those of
+// each law as written (SingleGatedLaw.BothFormsAsWritten).
 SingleGatedLaw binomial_single_gated_law_of(float N, float p, bool conditional) {
     float n = max(N, 0.0f);
     float np = n * p;
