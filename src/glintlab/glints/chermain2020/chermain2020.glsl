@@ -232,32 +232,32 @@ vec2 chermain2020_cell_sdf(ivec2 cell, int level, Chermain2020Dict d, float log_
     return vec2(mx * my * k.jac, colour_u);
 }
 
-// r^2 of the centre of cell (x, y) in the footprint ellipse (axes `major`,
-// `minor` in cells, major axis at angle (ca, sa), centre `centre`): the cell
-// is in the footprint where r^2 < 1 (Algorithm 2). The one expression of the
-// walk below, so every test of a cell gives the same answer.
-float chermain2020_cell_r2(int x, int y, vec2 centre, float ca, float sa, float major,
-                           float minor) {
-    vec2 p = vec2(float(x) + 0.5f, float(y) + 0.5f) - centre;
-    float a = (p.x * ca + p.y * sa) / major;
-    float b = (-p.x * sa + p.y * ca) / minor;
+// The footprint ellipse of one level in cell units (Algorithm 2's walk).
+struct Chermain2020Ellipse {
+    vec2 centre;
+    float ca, sa;        // cos and sin of the major axis' angle
+    float major, minor;  // semi-axes
+    // The same ellipse as a quadratic form: q2 px^2 + q1 px py + q0 py^2 < 1
+    // for the offset p from the centre.
+    float q2, q1, q0;
+    int x0, x1;  // the bounding box's columns
+};
+
+// r^2 of the centre of cell (x, y) in the ellipse: the cell is in the
+// footprint where r^2 < 1 (Algorithm 2). The one expression of the walk
+// below, so every test of a cell gives the same answer.
+float chermain2020_cell_r2(Chermain2020Ellipse e, int x, int y) {
+    vec2 p = vec2(float(x) + 0.5f, float(y) + 0.5f) - e.centre;
+    float a = (p.x * e.ca + p.y * e.sa) / e.major;
+    float b = (-p.x * e.sa + p.y * e.ca) / e.minor;
     return a * a + b * b;
 }
-
-// The ellipse of one level, for the x range of its rows (Algorithm 2's walk).
-struct Chermain2020Row {
-    // The ellipse in cells: q2 px^2 + q1 px py + q0 py^2 < 1.
-    float q2, q1, q0;
-    vec2 centre;
-    float ca, sa, major, minor;  // the axes, as chermain2020_cell_r2 takes them
-    int x0, x1;                  // the bounding box's columns
-};
 
 // [first, last] column of row y whose cell centres can be in the ellipse:
 // the row's roots, an end moved out by one cell where the loop's own r^2
 // test puts the next cell inside (rounding of the roots); non-finite roots
 // or roots outside the box keep the box's columns.
-ivec2 chermain2020_row_range(Chermain2020Row e, int y) {
+ivec2 chermain2020_row_range(Chermain2020Ellipse e, int y) {
     float py = float(y) + 0.5f - e.centre.y;
     float half_b = 0.5f * e.q1 * py;
     float disc = sqrt(max(half_b * half_b - e.q2 * (e.q0 * py * py - 1.0f), 0.0f));
@@ -265,10 +265,8 @@ ivec2 chermain2020_row_range(Chermain2020Row e, int y) {
     float hi = e.centre.x + (-half_b + disc) / e.q2 - 0.5f;
     int xa = lo > float(e.x0) && lo < float(e.x1) ? int(ceil(lo)) : e.x0;
     int xb = hi > float(e.x0) && hi < float(e.x1) ? int(floor(hi)) : e.x1;
-    if (xa > e.x0 && chermain2020_cell_r2(xa - 1, y, e.centre, e.ca, e.sa, e.major, e.minor) < 1.0f)
-        --xa;
-    if (xb < e.x1 && chermain2020_cell_r2(xb + 1, y, e.centre, e.ca, e.sa, e.major, e.minor) < 1.0f)
-        ++xb;
+    if (xa > e.x0 && chermain2020_cell_r2(e, xa - 1, y) < 1.0f) --xa;
+    if (xb < e.x1 && chermain2020_cell_r2(e, xb + 1, y) < 1.0f) ++xb;
     return ivec2(xa, xb);
 }
 
@@ -312,26 +310,26 @@ vec3 chermain2020_level_p22(vec2 slope, vec2 uv, vec3 ellipse, int level, Cherma
     // the same loop, taken only by the pixels that need it.
     float im2 = 1.0f / (major * major);
     float in2 = 1.0f / (minor * minor);
-    Chermain2020Row row;
-    row.q2 = ca * ca * im2 + sa * sa * in2;
-    row.q1 = 2.0f * ca * sa * (im2 - in2);
-    row.q0 = sa * sa * im2 + ca * ca * in2;
-    row.centre = centre;
-    row.ca = ca;
-    row.sa = sa;
-    row.major = major;
-    row.minor = minor;
-    row.x0 = x0;
-    row.x1 = x1;
+    Chermain2020Ellipse e;
+    e.centre = centre;
+    e.ca = ca;
+    e.sa = sa;
+    e.major = major;
+    e.minor = minor;
+    e.q2 = ca * ca * im2 + sa * sa * in2;
+    e.q1 = 2.0f * ca * sa * (im2 - in2);
+    e.q0 = sa * sa * im2 + ca * ca * in2;
+    e.x0 = x0;
+    e.x1 = x1;
     Chermain2020Lookup lookup = chermain2020_lookup(slope, d, alpha_x, alpha_y);
     vec3 sum_p = vec3(0.0f);
     float sum_w = 0.0f;
     int y = y0;
-    ivec2 range = chermain2020_row_range(row, y);
+    ivec2 range = chermain2020_row_range(e, y);
     int x = range.x;
     bool under_centre = false;  // the fallback step
     while (true) {
-        float r2 = chermain2020_cell_r2(x, y, centre, ca, sa, major, minor);
+        float r2 = chermain2020_cell_r2(e, x, y);
         bool in_ellipse = x <= range.y && r2 < 1.0f;
         if (in_ellipse || under_centre) {
             ivec2 cell = under_centre ? ivec2(floor(centre)) : ivec2(x, y);
@@ -345,7 +343,7 @@ vec3 chermain2020_level_p22(vec2 slope, vec2 uv, vec3 ellipse, int level, Cherma
         ++x;
         if (x > range.y) {  // the next row
             ++y;
-            range = chermain2020_row_range(row, y);
+            range = chermain2020_row_range(e, y);
             x = range.x;
         }
         if (y > y1) {

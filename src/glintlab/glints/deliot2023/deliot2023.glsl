@@ -235,16 +235,6 @@ vec2 deliot2023_corner_uniforms(ivec2 corner, uint vs) {
 #endif
 }
 
-// The original HLSL's gated Gaussian (Eq. 16-18 as shipped): naive fp32
-// (1 - p)^N, the gate 1 - (1 - p)^N also for N < 1, and the Gaussian for the
-// N - 1 remaining trials clamped to N instead of N - 1.
-float deliot2023_original_law(float N, float p, float xi0, float xi1) {
-    float p_any = 1.0f - pow_one_minus_naive(p, N);  // Eq. 16
-    float rest = max(N - 1.0f, 0.0f);               // Eq. 17
-    float g = clamp(gaussian_deviate(rest * p, rest * p * (1.0f - p), xi1), 0.0f, N);
-    return xi0 < p_any ? floor(1.0f + g) : 0.0f;  // Eq. 18, gate passes with probability P>=1
-}
-
 // The spatial part of one grid (§6.2), shared with kneiphof2025 (003 §3.3:
 // the same grid, without the half-vector dimension under image-based
 // lighting): the 3 simplex vertices around uv, as their cell seeds and
@@ -347,14 +337,16 @@ float deliot2023_vertex_count(float N, vec2 angular_offset, uint vs, vec2 slope,
     // The 4 corners share (N, p): the gate's power (and the conditional
     // law's moments and mean correction) once per vertex.
     SingleGatedLaw law = binomial_single_gated_law_of(N, p, conditional);
-    // The shipped law (deliot2023_original_law) in the same terms: its gate,
-    // the Gaussian of the N - 1 other trials clamped to [0, N], floored
-    // after the gate's success. Both laws draw their Gaussian from one normal
-    // quantile of the corner's second uniform, so a corner evaluates one
-    // quantile, not one per law (issue 17: SIMD back ends such as llvmpipe
-    // run both sides of the choice for a block of pixels); the operations on
-    // the values are those of deliot2023_original_law and
-    // binomial_single_gated_draw, so the counts are the same bit for bit.
+    // The original HLSL's gated Gaussian (Eq. 16-18 as shipped) in the same
+    // terms: the gate 1 - (1 - p)^N with the naive fp32 power (Eq. 16), also
+    // for N < 1, and the Gaussian of the N - 1 other trials (Eq. 17) clamped
+    // to [0, N] instead of N - 1, floored after the gate's success (Eq. 18).
+    // Both laws draw their Gaussian from one normal quantile of the corner's
+    // second uniform, so a corner evaluates one quantile, not one per law
+    // (issue 17: SIMD back ends such as llvmpipe run both sides of a choice
+    // between two law functions for a block of pixels); the counts are bit
+    // for bit those of the laws as written
+    // (Deliot2023CornerLaw.OneQuantilePerCornerGivesTheLawsCounts).
     float lo = 1.0f;
     if (original_defects) {
         float rest = max(N - 1.0f, 0.0f);

@@ -1,7 +1,7 @@
 // deliot2023_vertex_count draws its 4 corners' counts with one normal
 // quantile per corner for every law (issue 17: a SIMD back end ran the
 // shipped law and the fixed one side by side). This checks that the counts
-// are, bit for bit, those of the laws as written: deliot2023_original_law
+// are, bit for bit, those of the laws as written: the shipped law below
 // for `original_defects`, binomial_single_gated_draw of the single-gated
 // (003 Eq. 23) or conditional law otherwise, blended as Eq. 14 blends them.
 #include <gtest/gtest.h>
@@ -13,6 +13,17 @@
 
 GLINTLAB_SHADER_FUNCTIONS_BEGIN
 #include "glintlab/glints/deliot2023/deliot2023.glsl"
+
+// The original HLSL's gated Gaussian (000 Eq. 16-18 as shipped), as the
+// shader wrote it as a function of its own before issue 17: naive fp32
+// (1 - p)^N, the gate 1 - (1 - p)^N also for N < 1, and the Gaussian for the
+// N - 1 remaining trials clamped to N instead of N - 1.
+float deliot2023_original_law(float N, float p, float xi0, float xi1) {
+    float p_any = 1.0f - pow_one_minus_naive(p, N);  // Eq. 16
+    float rest = max(N - 1.0f, 0.0f);                // Eq. 17
+    float g = clamp(gaussian_deviate(rest * p, rest * p * (1.0f - p), xi1), 0.0f, N);
+    return xi0 < p_any ? floor(1.0f + g) : 0.0f;  // Eq. 18
+}
 GLINTLAB_SHADER_FUNCTIONS_END
 
 namespace glintlab {
