@@ -14,8 +14,10 @@
 
 #include "glintlab/core/error.h"
 #include "glintlab/core/image.h"
+#include "glintlab/core/memory_limit.h"
 #include "glintlab/glints/glint_bxdf.h"
 #include "glintlab/glints/registry.h"
+#include "glintlab/render/render_memory.h"
 #include "glintlab/render/renderer.h"
 #include "glintlab/scene/scene_loader.h"
 #if GLINTLAB_WITH_GL
@@ -100,6 +102,12 @@ py::array_t<float> render(const Scene& parsed, bool gpu, std::optional<int> spp,
         scene.camera.width = *width, scene.camera.height = *height;
     }
     if (threads < 0 || threads > 1024) throw py::value_error("threads: must be in [0, 1024]");
+    // The CLI's memory check (its --memory-limit; by default the machine's
+    // available memory): a 16384² render must fail here, not grow to gigabytes.
+    require_memory(estimate_render_memory(scene, gpu), "render of " + scene.file.string() + " at " +
+                                                           std::to_string(scene.camera.width) +
+                                                           "x" +
+                                                           std::to_string(scene.camera.height));
     Image image;
     if (gpu) {
 #if GLINTLAB_WITH_GL

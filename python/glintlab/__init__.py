@@ -10,6 +10,7 @@ path, allowed range); other library errors as `Error`.
 import copy
 import json
 import os
+import re
 
 import numpy as np
 
@@ -57,7 +58,12 @@ def _pointer_tokens(pointer):
         raise OverrideError(f"override {pointer!r}: a JSON pointer starts with '/' (RFC 6901)")
     if pointer == "":
         return []
-    return [t.replace("~1", "/").replace("~0", "~") for t in pointer[1:].split("/")]
+    tokens = pointer[1:].split("/")
+    for t in tokens:
+        if re.search(r"~(?![01])", t):
+            raise OverrideError(f"override {pointer!r}: '~' must be followed by 0 or 1 "
+                                f"(RFC 6901: ~0 is '~', ~1 is '/')")
+    return [t.replace("~1", "/").replace("~0", "~") for t in tokens]
 
 
 def _array_index(pointer, prefix, token, size, allow_end):
@@ -79,6 +85,9 @@ def apply_overrides(document, overrides):
     parent must exist; the last token may name a new object key (the strict
     loader then checks it) or, in an array, an existing index or "-"
     (append). Raises OverrideError naming the pointer otherwise."""
+    if overrides is not None and not isinstance(overrides, dict):
+        raise TypeError(f"overrides: expected a dict {{JSON pointer: value}}, got "
+                        f"{type(overrides).__name__}")
     for pointer, value in (overrides or {}).items():
         tokens = _pointer_tokens(pointer)
         if not tokens:
@@ -154,8 +163,17 @@ def _resolution(res):
         if not sep or not w.isdigit() or not h.isdigit():
             raise ValueError(f"res: expected 'WxH' or (W, H), got {res!r}")
         return int(w), int(h)
-    w, h = res
-    return int(w), int(h)
+    try:
+        w, h = res
+    except (TypeError, ValueError):
+        raise ValueError(f"res: expected 'WxH' or (W, H), got {res!r}") from None
+    sides = []
+    for side in (w, h):
+        # Integers only (16.5 used to be truncated to 16 without a word).
+        if isinstance(side, bool) or not isinstance(side, (int, np.integer)):
+            raise ValueError(f"res: expected integer sides in [1, 16384], got {res!r}")
+        sides.append(int(side))
+    return tuple(sides)
 
 
 def models():
@@ -187,10 +205,26 @@ def _material_scene(material):
     }
 
 
+def _directions(name, v):
+    """(N, 3) float32 directions; each row finite with a length a float can
+    normalise (zero, NaN, Inf and denormal rows used to give NaN silently)."""
+    a = np.atleast_2d(np.asarray(v, dtype=np.float32))
+    if a.ndim != 2 or a.shape[1] != 3:
+        raise ValueError(f"{name}: expected an array of shape (N, 3), got {a.shape}")
+    with np.errstate(all="ignore"):
+        length = np.sqrt(np.sum(a.astype(np.float64) ** 2, axis=1))
+    bad = np.flatnonzero(~(np.isfinite(a).all(axis=1) & (length >= 1e-6)))
+    if bad.size:
+        i = int(bad[0])
+        raise ValueError(f"{name}: row {i} = {a[i].tolist()} is not a direction (finite, with "
+                         f"length >= 1e-6); {bad.size} such row(s)")
+    return a
+
+
 def _eval(material, wo, wi, footprint, ndf, file):
     scene = _glintlab.parse_scene(json.dumps(_material_scene(material)), file)
-    wo = np.atleast_2d(np.asarray(wo, dtype=np.float32))
-    wi = np.atleast_2d(np.asarray(wi, dtype=np.float32))
+    wo = _directions("wo", wo)
+    wi = _directions("wi", wi)
     fp = {}
     if footprint is not None:
         n = wo.shape[0]
@@ -199,6 +233,13 @@ def _eval(material, wo, wi, footprint, ndf, file):
                 raise ValueError(f"footprint: missing {key!r} (needs uv, duvdx, duvdy)")
             a = np.asarray(footprint[key], dtype=np.float32)
             fp[key] = np.broadcast_to(a, (n, 2)).copy() if a.ndim == 1 else a
+            bad = np.flatnonzero(~np.isfinite(np.atleast_2d(fp[key])).all(axis=1))
+            if bad.size:
+                raise ValueError(f"footprint {key}: row {int(bad[0])} is not finite")
+        # The scene format's uv range (mesh uvs): beyond it no texture or
+        # glint grid has a fractional part left to index.
+        if np.abs(fp["uv"]).max(initial=0.0) > 1e6:
+            raise ValueError("footprint uv: components must lie in [-1e6, 1e6]")
     return _glintlab.eval_glint(scene, 0, wo, wi, ndf=ndf, **fp)
 
 

@@ -136,8 +136,10 @@ def sweep(base_scene, axes, metrics=None, client=None, seed=1, reference=None, r
       into its reference render, e.g. {"model": "explicit"}: each distinct
       reference is rendered once, with the seed of its own values.
     seed: base seed; each point renders with point_seed(seed, values).
-    client: None (a LocalCluster of `n_workers` processes on 127.0.0.1,
-      closed afterwards), a distributed.Client, a scheduler address
+    client: None (a LocalCluster of `n_workers` worker threads in this
+      process, closed afterwards: renders release the GIL, and no process
+      is spawned, so a script without `if __name__ == "__main__":` works),
+      a distributed.Client (e.g. of a process cluster), a scheduler address
       ("tcp://host:8786") or "serial" (this process, no Dask).
     output: a directory for sweep.csv (+ sweep.parquet when pyarrow or
       fastparquet is importable) and one PNG per metric and axis.
@@ -206,8 +208,12 @@ def sweep(base_scene, axes, metrics=None, client=None, seed=1, reference=None, r
         results = _Serial().run(tasks)
     elif client is None:
         from distributed import Client, LocalCluster
-        with LocalCluster(n_workers=n_workers, threads_per_worker=1, processes=True,
-                          host="127.0.0.1", dashboard_address=None) as cluster, \
+        # Threads, not processes: a process cluster spawns interpreters that
+        # re-run the user's script, and one without a main guard then starts
+        # a cluster in every worker (it hung for 15 minutes). Renders release
+        # the GIL, so the threads render in parallel.
+        with LocalCluster(n_workers=n_workers, threads_per_worker=1, processes=False,
+                          dashboard_address=None) as cluster, \
                 Client(cluster) as own:
             results = _run_dask(own, tasks, row_keys)
     elif isinstance(client, str):

@@ -182,3 +182,39 @@ def test_image_roundtrip(tmp_path):
         glintlab.write_image(tmp_path / "b.exr", np.zeros((4, 4)))
     with pytest.raises(glintlab.Error, match="missing.exr"):
         glintlab.read_image(tmp_path / "missing.exr")
+
+
+def test_bad_arguments_are_clear_errors(tiny_scene):
+    """Each of these was accepted or failed obscurely: a list of overrides
+    (AttributeError), a fractional resolution (truncated), the pointer escape
+    ~2 (the CLI rejects it), a film past the memory limit (grew to 5.5 GB)."""
+    with pytest.raises(TypeError, match=r"overrides: expected a dict"):
+        glintlab.render(tiny_scene, overrides=[("/film/width", 8)])
+    with pytest.raises(ValueError, match=r"res: expected integer sides"):
+        glintlab.render(tiny_scene, res=(16.5, 16))
+    with pytest.raises(ValueError, match=r"res: expected"):
+        glintlab.render(tiny_scene, res=16)
+    assert glintlab.render(tiny_scene, res=(np.int64(8), 6)).shape == (6, 8, 3)
+    with pytest.raises(glintlab.OverrideError, match=r"'~' must be followed by 0 or 1"):
+        glintlab.render(tiny_scene, overrides={"/materials/0/a~2b": 1})
+    with pytest.raises(glintlab.Error, match=r"memory limit"):
+        glintlab.render(tiny_scene, res=(16384, 16384))
+
+
+def test_eval_rejects_directions_and_footprints_that_are_not(tiny_scene):
+    """Zero, NaN, Inf and denormal directions gave NaN without a word; a NaN
+    footprint uv gave zirr2016 171.95 where a valid one gives 0."""
+    mat = dict(tiny_scene["materials"][0])
+    good = np.array([[0.0, 0.0, 1.0]])
+    for bad in ([0.0, 0.0, 0.0], [math.nan, 0.0, 1.0], [math.inf, 0.0, 1.0], [1e-40, 0.0, 0.0]):
+        with pytest.raises(ValueError, match=r"wi: row 0 .* is not a direction"):
+            glintlab.eval_brdf(mat, good, np.array([bad]))
+        with pytest.raises(ValueError, match=r"wo: row 0"):
+            glintlab.eval_ndf(mat, np.array([bad]), good)
+    fp = {"uv": [math.nan, 0.5], "duvdx": [1e-3, 0], "duvdy": [0, 1e-3]}
+    for model in ("zirr2016", "deliot2023", "explicit"):
+        with pytest.raises(ValueError, match=r"footprint uv: row 0 is not finite"):
+            glintlab.eval_brdf(dict(mat, model=model), good, good, footprint=fp)
+    with pytest.raises(ValueError, match=r"footprint uv: components must lie in"):
+        glintlab.eval_brdf(mat, good, good, footprint=dict(fp, uv=[1e16, 0.5]))
+    assert np.isfinite(glintlab.eval_brdf(mat, good, good, footprint=dict(fp, uv=[0.5, 0.5]))).all()

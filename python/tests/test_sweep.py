@@ -101,3 +101,21 @@ def test_bad_axes_are_rejected_before_any_task(tiny_scene):
         glintlab.sweep(tiny_scene, {"/materials/2/log_density": [1]}, client="serial")
     with pytest.raises(ValueError, match="reference"):
         glintlab.sweep(tiny_scene, {"model": ["smooth"]}, metrics=["rel_error"], client="serial")
+
+
+def test_script_without_main_guard_finishes(tiny_scene, tmp_path):
+    """A user's first script: glintlab.sweep at module level with the default
+    client. With a process cluster every spawned worker re-ran the script (no
+    `if __name__ == "__main__":`) and the sweep hung; the default cluster is
+    one of threads, so the script ends with the table."""
+    scene = tmp_path / "tiny.json"
+    scene.write_text(json.dumps(tiny_scene))
+    script = tmp_path / "first_sweep.py"
+    script.write_text(
+        "import glintlab\n"
+        f"table = glintlab.sweep({str(scene)!r}, {{'/materials/0/log_density': [8, 12]}})\n"
+        "print('ROWS', len(table))\n")
+    done = subprocess.run([sys.executable, str(script)], capture_output=True, text=True,
+                          timeout=300, env=os.environ.copy(), cwd=tmp_path)
+    assert done.returncode == 0, done.stderr[-2000:]
+    assert "ROWS 2" in done.stdout

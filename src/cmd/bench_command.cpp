@@ -35,7 +35,7 @@ void add_bench_command(CLI::App& app, int* status) {
                   "and frame, same mean; not the model's default)");
     sub->add_option("--log-density", o->log_densities,
                     "ln N values of the sweep (default 8 12 16 20; wang2020 needs <= 19.4)")
-        ->check(CLI::Range(0.0f, 40.0f));
+        ->check(FiniteRange(0.0, 40.0));
     sub->add_option("--warmup", o->gpu_warmup, "GPU: untimed frames before the timed ones")
         ->check(CLI::Range(0, 1000));
     sub->add_option("--table", o->table,

@@ -302,6 +302,17 @@ TEST(Cli, MemoryLimitRefusesTooBigRenders) {
     r = run_cli("render " + scene.string() + " -o " + out.string() + " --memory-limit lots");
     EXPECT_EQ(r.status, 1) << r.output;
     EXPECT_NE(r.output.find("--memory-limit"), std::string::npos) << r.output;
+    // An empty size was taken as "no limit given".
+    r = run_cli("render " + scene.string() + " -o " + out.string() + " --memory-limit ''");
+    EXPECT_NE(r.status, 0) << r.output;
+    EXPECT_NE(r.output.find("--memory-limit"), std::string::npos) << r.output;
+    EXPECT_FALSE(fs::exists(out));
+    // NaN passed CLI::Range (every comparison with NaN is false).
+    for (const char* option : {"--exposure nan", "--exposure inf"}) {
+        r = run_cli("render " + scene.string() + " -o " + out.string() + " " + option);
+        EXPECT_NE(r.status, 0) << option << r.output;
+        EXPECT_NE(r.output.find("not a finite number in [-20"), std::string::npos) << r.output;
+    }
     ::setenv("GLINTLAB_MEMORY_LIMIT", "2K", 1);
     r = run_cli("render " + scene.string() + " -o " + out.string() + " -q");
     ::unsetenv("GLINTLAB_MEMORY_LIMIT");

@@ -2,12 +2,28 @@
 // CLI11 app by its own file.
 #pragma once
 
+#include <cmath>
 #include <filesystem>
 #include <string>
 
 #include <CLI/CLI.hpp>
 
 namespace glintlab::cmd {
+
+// A number in [min, max]. CLI::Range lets NaN through (every comparison
+// with NaN is false: `view --exposure nan` failed only at the end), so
+// floating-point options use this instead.
+inline CLI::Validator FiniteRange(double min, double max) {
+    return CLI::Validator(
+        [min, max](std::string& text) -> std::string {
+            double x = 0.0;
+            if (!CLI::detail::lexical_cast(text, x) || !std::isfinite(x) || x < min || x > max)
+                return "value " + text + " not a finite number in [" + CLI::detail::to_string(min) +
+                       ", " + CLI::detail::to_string(max) + "]";
+            return "";
+        },
+        "FLOAT in [" + CLI::detail::to_string(min) + " - " + CLI::detail::to_string(max) + "]");
+}
 
 // Each returns the process exit status through *status once run.
 void add_render_command(CLI::App& app, int* status);

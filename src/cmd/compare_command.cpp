@@ -118,7 +118,7 @@ void add_compare_command(CLI::App& app, int* status) {
         ->check(CLI::Range(1, 256));
     sub->add_option("--orbit", o.orbit_deg,
                     "Degrees the camera orbits its target over the flicker path")
-        ->check(CLI::Range(1e-3, 90.0));
+        ->check(FiniteRange(1e-3, 90.0));
     sub->add_flag("!--model-extent", o.match_facet_extent,
                   "Keep every model's default facet extent (microfacet_roughness, gamma_deg) "
                   "instead of matching it to the ground truth's reflection cone "

@@ -23,10 +23,10 @@ void add_dict_command(CLI::App& app, int* status) {
         ->check(CLI::Range(1, 4096))
         ->capture_default_str();
     sub->add_option("--alpha", args->p.alpha_dict, "alpha_dict, Beckmann roughness of the target")
-        ->check(CLI::Range(0.01f, 2.0f))
+        ->check(FiniteRange(0.01, 2.0))
         ->capture_default_str();
     sub->add_option("--lobe-sigma", args->p.lobe_sigma, "std-dev of each Gaussian lobe, <= alpha/2")
-        ->check(CLI::Range(1e-4f, 1.0f))
+        ->check(FiniteRange(1e-4, 1.0))
         ->capture_default_str();
     sub->add_option("--samples", args->p.table_size, "samples per 1-D table")
         ->check(CLI::Range(4, 4096))

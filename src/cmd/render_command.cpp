@@ -132,6 +132,10 @@ int run_render(const RenderArgs& a) {
     if (!a.gpu)
         for (const std::string& advice : sampling_advice(scene))
             fmt::print(stderr, "warning: {}\n", advice);
+    if (a.gpu && (a.spp || !a.integrator.empty()))
+        fmt::print(stderr,
+                   "warning: --gpu shades one sample at each pixel centre with direct lighting; "
+                   "--spp and --integrator apply to CPU renders only and are ignored\n");
     require_memory(
         estimate_render_memory(scene, a.gpu),
         fmt::format("render of {} at {}x{}", a.scene, scene.camera.width, scene.camera.height));
@@ -160,11 +164,13 @@ int run_render(const RenderArgs& a) {
     const std::filesystem::path& png = out.png;
     write_png(preview, png, scene.film.exposure);
     if (!a.quiet)
-        fmt::print("rendered {} ({}x{}, {} spp, {}) in {:.2f} s -> {}, {}\n", a.scene,
-                   scene.camera.width, scene.camera.height, scene.render.spp,
-                   a.gpu                                                         ? "OpenGL forward"
-                   : scene.render.integrator == RenderSettings::Integrator::Path ? "path"
-                                                                                 : "direct",
+        fmt::print("rendered {} ({}x{}, {}) in {:.2f} s -> {}, {}\n", a.scene, scene.camera.width,
+                   scene.camera.height,
+                   a.gpu ? std::string("OpenGL forward, 1 sample per pixel")
+                         : fmt::format("{} spp, {}", scene.render.spp,
+                                       scene.render.integrator == RenderSettings::Integrator::Path
+                                           ? "path"
+                                           : "direct"),
                    seconds, exr.string(), png.string());
     return 0;
 }
@@ -192,11 +198,14 @@ void add_render_command(CLI::App& app, int* status) {
     sub->add_option("--integrator", args->integrator, "direct or path (overrides the scene)")
         ->check(CLI::IsMember({"direct", "path"}));
     sub->add_option("--exposure", args->exposure, "PNG exposure in stops (overrides the scene)")
-        ->check(CLI::Range(-20.0f, 20.0f));
+        ->check(FiniteRange(-20.0, 20.0));
     sub->add_option("--memory-limit", args->memory_limit,
                     "Refuse renders estimated to need more memory than this (bytes, or with a "
                     "suffix K, M, G, T; default GLINTLAB_MEMORY_LIMIT, else 8G or 3/4 of the "
-                    "physical memory)");
+                    "physical memory)")
+        ->check(CLI::Validator(
+            [](std::string& s) { return s.empty() ? std::string("an empty size") : std::string(); },
+            "SIZE"));
     sub->add_flag("--no-cache", args->no_cache,
                   "Neither read nor write the on-disk table cache (also GLINTLAB_NO_CACHE=1; "
                   "README \"Table cache\")");

@@ -1,4 +1,5 @@
 #include <charconv>
+#include <filesystem>
 #include <optional>
 #include <string>
 #include <vector>
@@ -42,7 +43,7 @@ void add_view_command(CLI::App& app, int* status) {
                     "(layout tests)");
     sub->add_option("--res", a->res, "Window size WxH (overrides the scene's film)");
     sub->add_option("--exposure", a->exposure, "Exposure in stops (overrides the scene)")
-        ->check(CLI::Range(-20.0f, 20.0f));
+        ->check(FiniteRange(-20.0, 20.0));
     sub->add_flag("--no-ui", a->no_ui, "Hide the Dear ImGui panel");
     sub->add_option("--gpu-option", a->gpu_options,
                     "Turn on a GPU option of the scene's glint models at start: OPTION or "
@@ -66,6 +67,11 @@ void add_view_command(CLI::App& app, int* status) {
             scene.camera.width = w, scene.camera.height = h;
         }
         if (a->exposure) scene.film.exposure = *a->exposure;
+        // Screenshots are PNG; any other name got PNG bytes under it.
+        for (const std::string* s : {&a->screenshot, &a->window_screenshot})
+            if (!s->empty() && std::filesystem::path(*s).extension() != ".png")
+                fail("{}: {}: screenshots are written as PNG; give a .png file name",
+                     s == &a->screenshot ? "--screenshot" : "--window-screenshot", *s);
         if (!a->window_screenshot.empty() && a->frames == 0)
             fail("--window-screenshot needs --frames N (taken after frame N)");
         if (!a->panel_report.empty() && a->frames == 0)

@@ -444,9 +444,11 @@ CompareResult run_compare(const CompareOptions& o) {
         row.structure_variance_ratio =
             ratio(std::max(row.pixel_variance - row.sampling_variance, 0.0),
                   std::max(t.pixel_variance - t.sampling_variance, 0.0));
-        row.wasserstein = ratio(wasserstein1(pooled_masked_values(model.realizations, masks[0]),
-                                             pooled_masked_values(truth.realizations, masks[0])),
-                                t.mean_luminance);
+        // A distance relative to the truth's mean: 0 when the pooled values
+        // agree, black images included (ratio's 0/0 = 1 is for variances).
+        const double w = wasserstein1(pooled_masked_values(model.realizations, masks[0]),
+                                      pooled_masked_values(truth.realizations, masks[0]));
+        row.wasserstein = w == 0.0 ? 0.0 : ratio(w, t.mean_luminance);
         row.flicker_ratio = ratio(row.flicker, t.flicker);
         if (row.flicker > 0.0 && t.flicker > 0.0)
             row.flicker_ratio_se = row.flicker_ratio * std::hypot(row.flicker_se / row.flicker,

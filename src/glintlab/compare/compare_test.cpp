@@ -54,6 +54,19 @@ compare::ModelMetrics deliot2023_row(const std::filesystem::path& scene) {
     return row != nullptr ? *row : compare::ModelMetrics{};
 }
 
+// Two identical black images are at Wasserstein distance 0 (it read 1.0:
+// 0 / 0 fell to the variance ratios' convention).
+TEST(Compare, BlackImagesAreAtDistanceZero) {
+    const std::filesystem::path path = write_scene("compare_black.json", "deliot2023", nullptr);
+    nlohmann::json scene = nlohmann::json::parse(std::ifstream(path));
+    scene["lights"][0]["intensity"] = 0.0;
+    scene["lights"][1]["irradiance"] = 0.0;
+    std::ofstream(path, std::ios::trunc) << scene.dump(1);
+    const auto row = deliot2023_row(path);
+    EXPECT_EQ(row.mean_luminance, 0.0);
+    EXPECT_EQ(row.wasserstein, 0.0);
+}
+
 // The scene's own model is rendered with the scene's parameters, not its
 // defaults: deliot2023 with the default microfacet_roughness given
 // explicitly renders the same images as without the block, and with the

@@ -99,7 +99,18 @@ std::optional<std::vector<unsigned char>> disk_cache_load(std::string_view name,
     if (!disk_cache_enabled()) return std::nullopt;
     const std::filesystem::path file = disk_cache_file(name, key);
     std::error_code ec;
-    if (!std::filesystem::exists(file, ec)) return std::nullopt;
+    const auto status = std::filesystem::status(file, ec);
+    if (!std::filesystem::exists(status)) return std::nullopt;
+    // Opening a FIFO or a device blocks (or reads forever): only a regular
+    // file is read; anything else is a miss, and the store that follows
+    // replaces the entry (rename) or warns when it cannot.
+    if (!std::filesystem::is_regular_file(status)) {
+        warn(
+            fmt::format("table cache entry {} is not a regular file; it is ignored and the table "
+                        "rebuilt",
+                        file.string()));
+        return std::nullopt;
+    }
     std::ifstream in(file, std::ios::binary);
     Header h{};
     std::vector<unsigned char> payload;

@@ -3,6 +3,7 @@
 
 #include <gtest/gtest.h>
 
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <cstdlib>
@@ -68,6 +69,31 @@ TEST_F(DiskCacheTest, CorruptOrTruncatedFilesAreRejectedAndRemoved) {
         EXPECT_FALSE(disk_cache_load("t", 7).has_value()) << kind;
         EXPECT_FALSE(std::filesystem::exists(file)) << kind;
     }
+}
+
+// A FIFO at an entry's path used to block the load forever (an open for
+// reading waits for a writer); a directory there was "corrupt". Either is a
+// miss with a warning; the store then replaces the FIFO (rename) and fails
+// with a warning on the directory, and nothing blocks.
+TEST_F(DiskCacheTest, NonRegularEntriesAreMissesNotBlocks) {
+    const auto fifo = disk_cache_file("t", 5);
+    std::filesystem::create_directories(fifo.parent_path());
+    ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
+    ::testing::internal::CaptureStderr();
+    EXPECT_FALSE(disk_cache_load("t", 5).has_value());
+    const std::string err = ::testing::internal::GetCapturedStderr();
+    EXPECT_NE(err.find("not a regular file"), std::string::npos) << err;
+    ASSERT_TRUE(disk_cache_store("t", 5, payload()));
+    EXPECT_TRUE(std::filesystem::is_regular_file(fifo));
+    EXPECT_EQ(disk_cache_load("t", 5), payload());
+
+    const auto dir = disk_cache_file("t", 6);
+    std::filesystem::create_directory(dir);
+    ::testing::internal::CaptureStderr();
+    EXPECT_FALSE(disk_cache_load("t", 6).has_value());
+    EXPECT_FALSE(disk_cache_store("t", 6, payload()));
+    (void)::testing::internal::GetCapturedStderr();
+    EXPECT_TRUE(std::filesystem::is_directory(dir));
 }
 
 TEST_F(DiskCacheTest, DisabledByEnvironmentOrFlag) {

@@ -11,6 +11,7 @@
 #include "glintlab/core/error.h"
 #include "glintlab/core/image_formats.h"
 #include "glintlab/core/memory_limit.h"
+#include "glintlab/core/regular_file.h"
 
 namespace glintlab {
 
@@ -79,9 +80,8 @@ Image read_image(const std::filesystem::path& path) {
         fail("{}: unknown image extension '{}' (allowed: .exr, .hdr, .png, .jpg, .jpeg)",
              path.string(), ext);
     std::error_code ec;
-    if (!std::filesystem::exists(path, ec)) fail("{}: image file does not exist", path.string());
-    if (!std::filesystem::is_regular_file(path, ec))
-        fail("{}: image path is not a regular file", path.string());
+    if (const std::string problem = regular_file_problem(path); !problem.empty())
+        fail("{}: the image file {}", path.string(), problem);
     if (std::filesystem::file_size(path, ec) == 0) fail("{}: image file is empty", path.string());
 
     Image image;

@@ -1,11 +1,13 @@
 #include "glintlab/core/json_reader.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
 #include "glintlab/core/error.h"
+#include "glintlab/core/regular_file.h"
 
 namespace glintlab {
 namespace {
@@ -18,6 +20,12 @@ std::string range_text(double min, double max) {
 std::string range_text(const NumberRange& r) {
     const std::string t = r.text();
     return t.front() == '[' || t.front() == '(' ? "in " + t : t;
+}
+
+// A key as an error message shows it: a megabyte-long key is cut, not echoed.
+std::string shown_key(std::string_view key) {
+    if (key.size() <= 64) return std::string(key);
+    return fmt::format("{}... ({} bytes)", key.substr(0, 48), key.size());
 }
 
 std::string brief(const nlohmann::json& v) {
@@ -38,6 +46,9 @@ class PathTracker {
         switch (e) {
             case E::object_start:
             case E::array_start:
+                if (frames_.size() >= kMaxJsonNesting)
+                    fail("{}: {}: arrays and objects nested deeper than {} levels", file_, path(),
+                         kMaxJsonNesting);
                 frames_.push_back(Frame{e == E::array_start, 0, {}, {}});
                 break;
             case E::key: {
@@ -45,7 +56,7 @@ class PathTracker {
                 f.key = parsed.get<std::string>();
                 if (!f.keys.insert(f.key).second)
                     fail("{}: {}: duplicate key \"{}\" (each key may appear once per object)",
-                         file_, path(), f.key);
+                         file_, path(), shown_key(f.key));
                 break;
             }
             case E::object_end:
@@ -63,7 +74,10 @@ class PathTracker {
     // The path of the value being parsed now ("/" for the root).
     std::string path() const {
         std::string p;
-        for (const Frame& f : frames_) p += f.is_array ? fmt::format("/{}", f.index) : "/" + f.key;
+        for (const Frame& f : frames_) {
+            p += '/';
+            p += f.is_array ? fmt::format("{}", f.index) : shown_key(f.key);
+        }
         return p.empty() ? "/" : p;
     }
 
@@ -104,6 +118,28 @@ std::string NumberRange::text() const {
     if (lo) return fmt::format("{} {:.6g}", min_open ? ">" : ">=", min);
     if (hi) return fmt::format("{} {:.6g}", max_open ? "<" : "<=", max);
     return "finite";
+}
+
+size_t json_nesting_depth(std::string_view text) {
+    size_t depth = 0, deepest = 0;
+    bool in_string = false, escaped = false;
+    for (const char c : text) {
+        if (in_string) {
+            if (escaped)
+                escaped = false;
+            else if (c == '\\')
+                escaped = true;
+            else if (c == '"')
+                in_string = false;
+        } else if (c == '"') {
+            in_string = true;
+        } else if (c == '[' || c == '{') {
+            deepest = std::max(deepest, ++depth);
+        } else if ((c == ']' || c == '}') && depth > 0) {
+            --depth;
+        }
+    }
+    return deepest;
 }
 
 nlohmann::json parse_json(std::istream& in, const std::string& file) {
@@ -297,9 +333,9 @@ std::filesystem::path JsonObject::file_path(std::string_view key) {
     const std::string name = required_string(key);
     std::filesystem::path p(name);
     if (p.is_relative()) p = std::filesystem::path(file_).parent_path() / p;
-    std::error_code ec;
-    if (!std::filesystem::is_regular_file(p, ec))
-        error(key, fmt::format("file not found: {}", p.string()));
+    if (const std::string problem = regular_file_problem(p); !problem.empty())
+        error(key, problem == "does not exist" ? fmt::format("file not found: {}", p.string())
+                                               : fmt::format("{} {}", p.string(), problem));
     return p;
 }
 
@@ -330,8 +366,9 @@ void JsonObject::finish() const {
     for (const auto& [k, _] : value_.items())
         if (!read_.contains(k)) unknown.push_back(k);
     if (unknown.empty()) return;
-    fail("{}: {}: unknown key \"{}\" (known keys here: {})", file_, key_path(unknown.front()),
-         unknown.front(), fmt::join(read_, ", "));
+    const std::string key = shown_key(unknown.front());
+    fail("{}: {}: unknown key \"{}\" (known keys here: {})", file_, key_path(key), key,
+         fmt::join(read_, ", "));
 }
 
 }  // namespace glintlab

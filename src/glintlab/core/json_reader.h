@@ -15,6 +15,8 @@
 #include <glm/glm.hpp>
 #include <nlohmann/json.hpp>
 
+#include "glintlab/core/json_depth.h"
+
 namespace glintlab {
 
 // An allowed interval of numbers. Bounds are the documented decimals and are

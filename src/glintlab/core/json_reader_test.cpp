@@ -38,6 +38,42 @@ TEST(JsonReader, NumberBeyondDoubleNamesFileAndPath) {
     EXPECT_NE(syntax.find("f.json: invalid JSON"), std::string::npos) << syntax;
 }
 
+// Nesting 100 000 deep used to overflow the stack when an error message
+// dumped the value; it is refused while parsing, naming the path, at one
+// level past kMaxJsonNesting, and accepted at that depth.
+TEST(JsonReader, DeepNestingIsAnErrorNotACrash) {
+    const auto nested = [](size_t depth) {
+        return R"({"film": {"width": )" + std::string(depth, '[') + std::string(depth, ']') + "}}";
+    };
+    const std::string e = parse_error(nested(100000));
+    EXPECT_NE(e.find("f.json: /film/width/0/0/0"), std::string::npos) << e.substr(0, 200);
+    EXPECT_NE(e.find("nested deeper than 256 levels"), std::string::npos) << e.substr(0, 200);
+    EXPECT_EQ(parse_error(nested(kMaxJsonNesting - 2)), "");  // the root and "film" are 2 levels
+    EXPECT_NE(parse_error(nested(kMaxJsonNesting - 1)), "");
+    EXPECT_EQ(json_nesting_depth(nested(100000)), 100002u);
+    EXPECT_EQ(json_nesting_depth(R"({"a": "[[[{{{\"[", "b": [[1]]})"), 3u);
+}
+
+// A megabyte-long unknown or duplicate key is cut in the message, not echoed.
+TEST(JsonReader, LongKeysAreCutInMessages) {
+    const std::string key(1 << 20, 'k');
+    const std::string dup = parse_error("{\"" + key + "\": 1, \"" + key + "\": 2}");
+    EXPECT_NE(dup.find("duplicate key"), std::string::npos);
+    EXPECT_LT(dup.size(), 400u);
+    const nlohmann::json j = {{key, 1}, {"known", 2}};
+    JsonObject o(j, "/m", "f.json");
+    o.number("known", 0.0, 0.0, 10.0);
+    try {
+        o.finish();
+        ADD_FAILURE() << "unknown key accepted";
+    } catch (const Error& err) {
+        const std::string m = err.what();
+        EXPECT_LT(m.size(), 400u);
+        EXPECT_NE(m.find("(1048576 bytes)"), std::string::npos) << m;
+        EXPECT_NE(m.find("known keys here: known"), std::string::npos) << m;
+    }
+}
+
 std::string number_error(double x, const NumberRange& r) {
     const nlohmann::json j = {{"v", x}};
     JsonObject o(j, "/m", "f.json");

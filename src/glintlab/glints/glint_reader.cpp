@@ -20,6 +20,7 @@ GlintModelId read_glint_model_name(JsonObject& material) {
 void read_glint_params(const GlintModelDescriptor& model, JsonObject& block, GlintDesc& desc) {
     desc.params = model.default_params();
     for (const GlintParam& p : model.params) {
+        block.ignore(p.key);  // known even when absent: an unknown key's error lists it
         if (!block.has(p.key)) continue;
         GlintParamValue value;
         switch (p.type) {
@@ -31,12 +32,12 @@ void read_glint_params(const GlintModelDescriptor& model, JsonObject& block, Gli
             case GlintParamType::Integer: {
                 const nlohmann::json& v = *block.raw(p.key);
                 if (!v.is_number_integer())
-                    block.error(p.key, fmt::format("expected an integer {}, got {}",
-                                                   p.range_text(), v.dump()));
+                    block.error(p.key, fmt::format("expected an integer {}, got {}", p.range_text(),
+                                                   v.dump()));
                 const auto x = v.get<int64_t>();
                 if (x < p.min || x > p.max || !p.accepts(static_cast<int>(x)))
-                    block.error(p.key, fmt::format("value {} out of range: allowed {}", x,
-                                                   p.range_text()));
+                    block.error(
+                        p.key, fmt::format("value {} out of range: allowed {}", x, p.range_text()));
                 value = static_cast<int>(x);
                 break;
             }
@@ -68,6 +69,7 @@ void read_glint_model_blocks(JsonObject& material, GlintDesc& desc) {
     // Every known model may keep its block (switching models is one word);
     // only the active one is read, the others are checked to be objects.
     for (const GlintModelDescriptor& m : glint_models()) {
+        material.ignore(m.name);
         if (!material.has(m.name)) continue;
         auto block = material.object(m.name);
         if (m.id == model.id) read_glint_params(model, *block, desc);

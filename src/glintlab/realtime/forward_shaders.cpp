@@ -33,9 +33,9 @@ AssembledShader forward_fragment_shader(const ProgramKey& key) {
     std::string text = fmt::format(
         "#define GLINTLAB_POINT_LIGHTS {}\n#define GLINTLAB_DIRECTIONAL_LIGHTS {}\n"
         "#define GLINTLAB_ENVIRONMENT {}\n#define GLINTLAB_ENV_SPECULAR_SAMPLES {}\n"
-        "#define GLINTLAB_ENV_DIFFUSE_SAMPLES {}\n",
+        "#define GLINTLAB_ENV_DIFFUSE_SAMPLES {}\n#define GLINTLAB_ENV_SUN_SAMPLES {}\n",
         key.point_lights, key.directional_lights, key.environment ? 1 : 0,
-        kEnvironmentSpecularSamples, kEnvironmentDiffuseSamples);
+        kEnvironmentSpecularSamples, kEnvironmentDiffuseSamples, kEnvironmentSunSamples);
     text += glint_model_glsl(key.model, key.model_options);
     text += "#include \"glintlab/realtime/shaders/forward.frag.glsl\"\n";
     return assemble_shader(text, true);

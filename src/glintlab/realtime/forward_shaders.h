@@ -31,13 +31,17 @@ inline constexpr int kShadowUnit = 1;  // depth-compare 2D array, one layer per 
 inline constexpr int kShadowMapSize = 2048;
 inline constexpr int kPointShadowUnit = 2;  // depth-compare cube array, one cube per point light
 inline constexpr int kPointShadowSize = 1024;
+inline constexpr int kEnvironmentResidualUnit = 3;  // the map without its sun (environment_sun.h)
 
 // Environment lighting (Krivanek & Colbert 2008, filtered importance
 // sampling): a fixed Hammersley set of samples per pixel, the same for every
-// pixel (no noise), each reading the mipmapped environment at the level whose
-// texel solid angle matches the sample's share of the sphere.
+// pixel (no noise), each reading the environment without its sun, mipmapped
+// by solid angle (scene/environment_mips.h), at the level whose texel solid
+// angle matches the sample's share of the sphere; the sun, when the map has
+// one (scene/environment_sun.h), as kEnvironmentSunSamples directions in it.
 inline constexpr int kEnvironmentSpecularSamples = 48;
 inline constexpr int kEnvironmentDiffuseSamples = 64;
+inline constexpr int kEnvironmentSunSamples = 16;
 
 AssembledShader forward_vertex_shader();
 AssembledShader shadow_vertex_shader();  // depth-only pass of the shadow maps

@@ -94,6 +94,17 @@ TEST(GpuCli, RenderGpuWritesExrAndPng) {
     EXPECT_EQ(exr.width, 96);
     EXPECT_EQ(exr.height, 80);
     EXPECT_TRUE(std::filesystem::exists(dir / "out.png"));
+    // The summary said "64 spp" for --gpu --spp 64: the GPU shades one sample
+    // per pixel, which it now says, and it warns that --spp is ignored.
+    const RunResult spp = run(cli() + " render --gpu --spp 64 " + (dir / "s.json").string() +
+                              " -o " + (dir / "out.exr").string());
+    ASSERT_EQ(spp.status, 0) << spp.output;
+    EXPECT_NE(spp.output.find("--spp and --integrator apply to CPU renders only"),
+              std::string::npos)
+        << spp.output;
+    EXPECT_NE(spp.output.find("OpenGL forward, 1 sample per pixel"), std::string::npos)
+        << spp.output;
+    EXPECT_EQ(spp.output.find("64 spp"), std::string::npos) << spp.output;
 }
 
 // The EGL device platform (the NVIDIA path) on whatever devices EGL lists:

@@ -23,6 +23,8 @@
 #include "glintlab/realtime/forward_shaders.h"
 #include "glintlab/realtime/glint_programs.h"
 #include "glintlab/realtime/gpu_geometry.h"
+#include "glintlab/scene/environment_mips.h"
+#include "glintlab/scene/environment_sun.h"
 
 namespace glintlab {
 namespace {
@@ -111,6 +113,10 @@ struct GpuRenderer::Impl {
     std::vector<GpuShape> shapes;
     glm::vec4 bounds{0.0f};
     gl::Texture environment;
+    // The map without its sun when it has one (else the lobe reads
+    // `environment`), and the sun's sample directions and powers.
+    gl::Texture environment_residual;
+    std::vector<glm::vec3> sun_directions, sun_powers;
     float environment_scale = 1.0f, environment_rotation = 0.0f;
     int environment_width = 0, environment_height = 0;
     std::map<gl::ProgramKey, gl::Program> programs;
@@ -455,6 +461,29 @@ struct GpuRenderer::Impl {
     }
 };
 
+namespace {
+
+// A lat-long map as a texture with its full mip chain, solid-angle weighted
+// (scene/environment_mips.h): filtered importance samples read coarser
+// levels for wider samples.
+gl::Texture upload_latlong(const Image& image) {
+    gl::Texture t = gl::make_texture(GL_TEXTURE_2D);
+    const std::vector<Image> mips = latlong_mip_chain(image);
+    glTextureStorage2D(t.get(), static_cast<GLsizei>(mips.size()), GL_RGB32F, image.width,
+                       image.height);
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+    for (size_t level = 0; level < mips.size(); ++level)
+        glTextureSubImage2D(t.get(), static_cast<GLint>(level), 0, 0, mips[level].width,
+                            mips[level].height, GL_RGB, GL_FLOAT, mips[level].pixels.data());
+    glTextureParameteri(t.get(), GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
+    glTextureParameteri(t.get(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    glTextureParameteri(t.get(), GL_TEXTURE_WRAP_S, GL_REPEAT);
+    glTextureParameteri(t.get(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    return t;
+}
+
+}  // namespace
+
 GpuRenderer::GpuRenderer(const Scene& scene) : impl_(std::make_unique<Impl>()) {
     require_gl45("OpenGL renderer");
     Impl& r = *impl_;
@@ -471,20 +500,13 @@ GpuRenderer::GpuRenderer(const Scene& scene) : impl_(std::make_unique<Impl>()) {
         if (image.width < 1 || image.height < 1 || image.pixels.empty())
             fail("{}: OpenGL renderer: the environment map {} is empty", scene.file.string(),
                  env.file.string());
-        r.environment = gl::make_texture(GL_TEXTURE_2D);
-        // Full mip chain: the filtered importance sampling of the forward
-        // shader reads coarser levels for wider samples.
-        const int levels =
-            1 + static_cast<int>(std::floor(std::log2(std::max(image.width, image.height))));
-        glTextureStorage2D(r.environment.get(), levels, GL_RGB32F, image.width, image.height);
-        glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
-        glTextureSubImage2D(r.environment.get(), 0, 0, 0, image.width, image.height, GL_RGB,
-                            GL_FLOAT, image.pixels.data());
-        glGenerateTextureMipmap(r.environment.get());
-        glTextureParameteri(r.environment.get(), GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
-        glTextureParameteri(r.environment.get(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-        glTextureParameteri(r.environment.get(), GL_TEXTURE_WRAP_S, GL_REPEAT);
-        glTextureParameteri(r.environment.get(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+        r.environment = upload_latlong(image);
+        EnvironmentSunSplit sun = split_environment_sun(image, gl::kEnvironmentSunSamples);
+        if (!sun.directions.empty()) {
+            r.environment_residual = upload_latlong(sun.residual);
+            r.sun_directions = std::move(sun.directions);
+            r.sun_powers = std::move(sun.powers);
+        }
         r.environment_width = image.width;
         r.environment_height = image.height;
         r.environment_scale = env.map->scale();
@@ -644,6 +666,17 @@ void GpuRenderer::render(const Scene& scene) {
             glProgramUniform2f(p, loc("u_environment_size"),
                                static_cast<float>(r.environment_width),
                                static_cast<float>(r.environment_height));
+            const auto suns = static_cast<GLsizei>(r.sun_directions.size());
+            glProgramUniform1i(p, loc("u_environment_sun_count"), suns);
+            if (suns > 0) {
+                glProgramUniform3fv(p, loc("u_environment_sun_direction"), suns,
+                                    glm::value_ptr(r.sun_directions[0]));
+                glProgramUniform3fv(p, loc("u_environment_sun_power"), suns,
+                                    glm::value_ptr(r.sun_powers[0]));
+            }
+            glBindTextureUnit(gl::kEnvironmentResidualUnit, r.environment_residual
+                                                                ? r.environment_residual.get()
+                                                                : r.environment.get());
         }
         r.set_lights(p, scene);
         const bool deferred =

@@ -4,9 +4,11 @@
 
 #include <cmath>
 #include <cstring>
+#include <string>
 
 #include <glm/gtc/constants.hpp>
 
+#include "glintlab/core/error.h"
 #include "glintlab/render/renderer.h"
 #include "glintlab/scene/scene_loader.h"
 
@@ -71,6 +73,27 @@ TEST_P(Analytic, DiffuseQuadUnderDirectionalLight) {
     const Image img = render_scene(parse_scene(j, "t.json"), {0, true});
     const double expected = e * std::cos(theta) * albedo / glm::pi<double>();
     for (const glm::vec3& p : img.pixels) ASSERT_NEAR(p.x, expected, 1e-5 * expected * 10);
+    // The same light spread over cones down to the smallest allowed: cones
+    // below ~1.5e-7 sr had cos θmax = 1 in float and lit nothing. A direction
+    // δ ≤ √(Ω/π) off the axis changes cos θ by at most tan θ δ + δ²/2
+    // relative (1.03e-3 at 1e-5 sr); 1e-5 for float rounding.
+    for (const double omega : {1e-5, 1.4e-7, 1e-9, 1e-12}) {
+        SCOPED_TRACE(omega);
+        j["lights"][0]["solid_angle_sr"] = omega;
+        const Image cone = render_scene(parse_scene(j, "t.json"), {0, true});
+        const double delta = std::sqrt(omega / glm::pi<double>());
+        const double tolerance = std::tan(theta) * delta + 0.5 * delta * delta + 1e-5;
+        for (const glm::vec3& p : cone.pixels) ASSERT_NEAR(p.x, expected, tolerance * expected);
+    }
+    j["lights"][0]["solid_angle_sr"] = 1e-13;
+    try {
+        parse_scene(j, "t.json");
+        ADD_FAILURE() << "a cone of 1e-13 sr was accepted";
+    } catch (const Error& err) {
+        EXPECT_NE(std::string(err.what()).find("0 (a delta light) or [1e-12, 1]"),
+                  std::string::npos)
+            << err.what();
+    }
 }
 
 TEST_P(Analytic, DiffuseQuadUnderPointLightFollowsInverseSquare) {
@@ -111,6 +134,14 @@ TEST_P(Analytic, SphereLightAboveDiffuseQuad) {
     const Stats s = box_stats(img, 0);
     const double expected = albedo * radiance * (r / d) * (r / d);
     EXPECT_NEAR(s.mean, expected, 5.0 * s.stderr_mean + 1e-3 * expected);
+    // A sphere 1e4 radii away (sin²θmax = 1e-8: cos θmax rounds to 1 in float)
+    // lights the quad as its cap says.
+    const float far_r = 0.01f, far_d = 100.0f, far_l = 1e8f;
+    j["lights"] = {
+        {{"type", "sphere"}, {"center", {0, far_d, 0}}, {"radius", far_r}, {"radiance", far_l}}};
+    const Stats far = box_stats(render_scene(parse_scene(j, "t.json"), {0, true}), 0);
+    const double far_expected = albedo * far_l * (far_r / far_d) * (far_r / far_d);
+    EXPECT_NEAR(far.mean, far_expected, 5.0 * far.stderr_mean + 1e-3 * far_expected);
 }
 
 INSTANTIATE_TEST_SUITE_P(Integrators, Analytic, ::testing::Values("direct", "path"));

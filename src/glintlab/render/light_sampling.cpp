@@ -5,12 +5,21 @@
 
 #include <glm/gtc/constants.hpp>
 
+#include "glintlab/core/cone.h"
+
 namespace glintlab {
 namespace {
 
 constexpr float kInfinity = std::numeric_limits<float>::infinity();
 
-float cone_pdf(float cos_max) { return 1.0f / (glm::two_pi<float>() * (1.0f - cos_max)); }
+float cone_pdf(float one_minus_cos_max) {
+    return 1.0f / (glm::two_pi<float>() * one_minus_cos_max);
+}
+
+// 1 − cos θmax of the cone a sphere subtends from distance² dc2.
+float sphere_one_minus_cos_max(float r2, float dc2) {
+    return one_minus_cos_from_sin2(r2 / dc2);
+}
 
 }  // namespace
 
@@ -22,9 +31,10 @@ void orthonormal_basis(glm::vec3 n, glm::vec3* t, glm::vec3* b) {
     *b = glm::vec3(c, sign + n.y * n.y * a, -n.y);
 }
 
-glm::vec3 sample_uniform_cone(glm::vec2 u, float cos_max) {
-    const float cos_theta = (1.0f - u.x) + u.x * cos_max;
-    const float sin_theta = std::sqrt(std::max(0.0f, 1.0f - cos_theta * cos_theta));
+glm::vec3 sample_uniform_cone(glm::vec2 u, float one_minus_cos_max) {
+    const float one_minus_cos = u.x * one_minus_cos_max;
+    const float cos_theta = 1.0f - one_minus_cos;
+    const float sin_theta = std::sqrt(std::max(0.0f, one_minus_cos * (2.0f - one_minus_cos)));
     const float phi = u.y * glm::two_pi<float>();
     return {std::cos(phi) * sin_theta, std::sin(phi) * sin_theta, cos_theta};
 }
@@ -53,10 +63,10 @@ std::optional<LightSample> sample_light(const Light& light, glm::vec3 p, glm::ve
         }
         glm::vec3 t, b;
         orthonormal_basis(l->direction, &t, &b);
-        const glm::vec3 c = sample_uniform_cone(u, l->cos_max);
+        const glm::vec3 c = sample_uniform_cone(u, l->one_minus_cos_max);
         s.wi = glm::normalize(c.x * t + c.y * b + c.z * l->direction);
         s.radiance = l->radiance;
-        s.pdf = cone_pdf(l->cos_max);
+        s.pdf = cone_pdf(l->one_minus_cos_max);
         return s;
     }
     if (const auto* l = std::get_if<SphereLight>(&light)) {
@@ -66,18 +76,17 @@ std::optional<LightSample> sample_light(const Light& light, glm::vec3 p, glm::ve
         if (dc2 <= r2) return std::nullopt;  // inside the light: no direct contribution sampled
         const float dc = std::sqrt(dc2);
         const glm::vec3 axis = to_center / dc;
-        const float sin2_max = r2 / dc2;
-        const float cos_max = std::sqrt(std::max(0.0f, 1.0f - sin2_max));
+        const float one_minus_cos_max = sphere_one_minus_cos_max(r2, dc2);
         glm::vec3 t, b;
         orthonormal_basis(axis, &t, &b);
-        const glm::vec3 c = sample_uniform_cone(u, cos_max);
+        const glm::vec3 c = sample_uniform_cone(u, one_minus_cos_max);
         s.wi = glm::normalize(c.x * t + c.y * b + c.z * axis);
         // Distance to the near intersection with the sphere along wi.
         const float proj = glm::dot(to_center, s.wi);
         const float disc = std::max(0.0f, r2 - (dc2 - proj * proj));
         s.distance = proj - std::sqrt(disc);
         s.radiance = l->radiance;
-        s.pdf = cone_pdf(cos_max);
+        s.pdf = cone_pdf(one_minus_cos_max);
         return s;
     }
     const auto& env = std::get<EnvironmentLight>(light);
@@ -90,15 +99,18 @@ std::optional<LightSample> sample_light(const Light& light, glm::vec3 p, glm::ve
 float light_pdf(const Light& light, glm::vec3 p, glm::vec3 wi) {
     if (const auto* l = std::get_if<DirectionalLight>(&light)) {
         if (l->solid_angle <= 0.0f) return 0.0f;
-        return glm::dot(wi, l->direction) >= l->cos_max ? cone_pdf(l->cos_max) : 0.0f;
+        return inside_cone(wi, l->direction, l->one_minus_cos_max) ? cone_pdf(l->one_minus_cos_max)
+                                                                   : 0.0f;
     }
     if (const auto* l = std::get_if<SphereLight>(&light)) {
         const glm::vec3 to_center = l->center - p;
         const float dc2 = glm::dot(to_center, to_center);
         const float r2 = l->radius * l->radius;
         if (dc2 <= r2) return 0.0f;
-        const float cos_max = std::sqrt(std::max(0.0f, 1.0f - r2 / dc2));
-        return glm::dot(wi, to_center) >= cos_max * std::sqrt(dc2) ? cone_pdf(cos_max) : 0.0f;
+        const float one_minus_cos_max = sphere_one_minus_cos_max(r2, dc2);
+        return inside_cone(wi, to_center / std::sqrt(dc2), one_minus_cos_max)
+                   ? cone_pdf(one_minus_cos_max)
+                   : 0.0f;
     }
     if (const auto* l = std::get_if<EnvironmentLight>(&light)) return l->map->pdf(wi);
     return 0.0f;
@@ -106,7 +118,8 @@ float light_pdf(const Light& light, glm::vec3 p, glm::vec3 wi) {
 
 glm::vec3 escaped_radiance(const Light& light, glm::vec3 dir) {
     if (const auto* l = std::get_if<DirectionalLight>(&light)) {
-        if (l->solid_angle > 0.0f && glm::dot(dir, l->direction) >= l->cos_max) return l->radiance;
+        if (l->solid_angle > 0.0f && inside_cone(dir, l->direction, l->one_minus_cos_max))
+            return l->radiance;
         return glm::vec3(0.0f);
     }
     if (const auto* l = std::get_if<EnvironmentLight>(&light)) return l->map->eval(dir);

@@ -27,8 +27,9 @@ float light_pdf(const Light& light, glm::vec3 p, glm::vec3 wi);
 // Radiance of distant lights (environment, directional cones) seen along an escaping ray.
 glm::vec3 escaped_radiance(const Light& light, glm::vec3 dir);
 
-// Uniform direction in the cone of half-angle acos(cos_max) around z.
-glm::vec3 sample_uniform_cone(glm::vec2 u, float cos_max);
+// Uniform direction in the cone around z with 1 − cos θmax = one_minus_cos_max
+// (core/cone.h: exact for cones below ~1.5e-7 sr).
+glm::vec3 sample_uniform_cone(glm::vec2 u, float one_minus_cos_max);
 // Orthonormal basis (t, b, n) with n given (Duff et al. 2017).
 void orthonormal_basis(glm::vec3 n, glm::vec3* t, glm::vec3* b);
 

@@ -27,6 +27,8 @@
 #include <nlohmann/json.hpp>
 
 #include "glintlab/core/error.h"
+#include "glintlab/core/json_depth.h"
+#include "glintlab/core/regular_file.h"
 #include "glintlab/scene/draco_header.h"
 #include "glintlab/scene/transform.h"
 
@@ -494,16 +496,21 @@ void put32(std::string& bytes, uint32_t v) {
 // reader takes the indices from the decoded Draco faces. Returns the
 // rewritten file, or nothing when the file has no Draco primitive with
 // indices (or is malformed: then tinygltf reports the problem).
+// The JSON text of a glTF file; of a GLB, its JSON chunk (12-byte header,
+// then the chunk's length, "JSON", text). Empty when the GLB is malformed
+// (tinygltf then reports the problem).
+std::string_view gltf_json_text(const std::string& file, bool binary) {
+    if (!binary) return file;
+    if (file.size() < 20 || get32(file, 16) != 0x4E4F534Au) return {};
+    const size_t json_length = get32(file, 12);
+    if (json_length > file.size() - 20) return {};
+    return std::string_view(file.data() + 20, json_length);
+}
+
 std::optional<std::string> strip_draco_indices(const std::string& file, bool binary) {
-    // GLB: 12-byte header, then the JSON chunk (length, "JSON", text).
-    size_t json_begin = 0, json_length = file.size();
-    if (binary) {
-        if (file.size() < 20 || get32(file, 16) != 0x4E4F534Au) return std::nullopt;
-        json_begin = 20;
-        json_length = get32(file, 12);
-        if (json_length > file.size() - json_begin) return std::nullopt;
-    }
-    const std::string_view text(file.data() + json_begin, json_length);
+    const std::string_view text = gltf_json_text(file, binary);
+    if (binary && text.empty()) return std::nullopt;
+    const size_t json_begin = binary ? 20 : 0, json_length = text.size();
     if (text.find(kDracoExtension) == std::string_view::npos) return std::nullopt;
     nlohmann::json doc = nlohmann::json::parse(text, nullptr, /*allow_exceptions=*/false);
     if (doc.is_discarded() || !doc.is_object() || !doc.contains("meshes") ||
@@ -541,8 +548,8 @@ std::optional<std::string> strip_draco_indices(const std::string& file, bool bin
 
 TriangleMesh load_gltf(const std::filesystem::path& path) {
     const std::string name = path.string();
-    std::error_code ec;
-    if (!std::filesystem::is_regular_file(path, ec)) fail("{}: glTF file not found", name);
+    if (const std::string problem = regular_file_problem(path); !problem.empty())
+        fail("{}: the glTF file {}", name, problem);
 
     std::string file;
     {
@@ -557,6 +564,13 @@ TriangleMesh load_gltf_bytes(const std::string& file, const std::string& name,
                              const std::filesystem::path& base_dir) {
     // Binary glTF starts with the magic "glTF" (glTF 2.0 §4.4.3.1).
     const bool binary = file.size() >= 4 && std::memcmp(file.data(), "glTF", 4) == 0;
+
+    // tinygltf walks its JSON recursively (extras, extensions): a deep
+    // nesting would overflow the stack, so it is refused before parsing.
+    if (const size_t depth = json_nesting_depth(gltf_json_text(file, binary));
+        depth > kMaxJsonNesting)
+        fail("{}: glTF JSON nests arrays and objects {} levels deep (at most {} are read)", name,
+             depth, kMaxJsonNesting);
 
     tinygltf::TinyGLTF loader;
     loader.SetImageLoader(skip_image, nullptr);

@@ -5,6 +5,7 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <memory>
 #include <string>
 #include <vector>
@@ -600,8 +601,43 @@ TEST_F(MeshGltf, DracoAndExtensionErrors) {
     EXPECT_EQ(load_gltf(write_gltf("clearcoat.gltf", required)).triangles.size(), 2u);
 }
 
+// extras nested 20 000 deep crashed inside tinygltf's recursive JSON walk
+// (from the CLI, and the Python interpreter with it); the loader refuses
+// the nesting before tinygltf parses, for .gltf and for a GLB's JSON chunk.
+TEST_F(MeshGltf, DeepExtrasAreAnErrorNotACrash) {
+    Asset a = quad_asset(kU16);
+    add_hierarchy(a, false);
+    for (const char* name : {"deep.gltf", "deep.glb"}) {
+        SCOPED_TRACE(name);
+        const bool binary = std::string_view(name).ends_with(".glb");
+        a.doc["extras"] = "DEEP";
+        const std::filesystem::path file = binary ? write_glb(name, a) : write_gltf(name, a);
+        std::string bytes;
+        {
+            std::ifstream in(file, std::ios::binary);
+            bytes.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+        }
+        const size_t at = bytes.find("\"DEEP\"");
+        ASSERT_NE(at, std::string::npos);
+        std::string deep = std::string(20000, '[') + std::string(20000, ']');
+        if (binary) deep += std::string((4 - (deep.size() - 6) % 4) % 4, ' ');
+        bytes.replace(at, 6, deep);
+        if (binary) {  // the GLB's total and JSON chunk lengths grow by the same amount
+            const auto grow = static_cast<uint32_t>(deep.size() - 6);
+            for (size_t offset : {size_t(8), size_t(12)}) {
+                uint32_t v;
+                std::memcpy(&v, bytes.data() + offset, 4);
+                v += grow;
+                std::memcpy(bytes.data() + offset, &v, 4);
+            }
+        }
+        std::ofstream(file, std::ios::binary | std::ios::trunc) << bytes;
+        expect_error(file, "20001 levels deep (at most 256 are read)");
+    }
+}
+
 TEST_F(MeshGltf, Errors) {
-    expect_error(dir_ / "missing.gltf", "not found");
+    expect_error(dir_ / "missing.gltf", "the glTF file does not exist");
     {
         std::ofstream(dir_ / "garbage.gltf") << "this is { not json";
         expect_error(dir_ / "garbage.gltf", "cannot parse");

@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include <fmt/format.h>
+
 #include "glintlab/core/error.h"
 
 namespace glintlab {
@@ -13,6 +15,12 @@ bool all_finite(glm::vec3 v) {
 }
 bool all_finite(glm::vec2 v) {
     return std::isfinite(v.x) && std::isfinite(v.y);
+}
+template <int N>
+bool within(glm::vec<N, float> v, float bound) {
+    for (int k = 0; k < N; ++k)
+        if (!(std::abs(v[k]) <= bound)) return false;
+    return true;
 }
 
 }  // namespace
@@ -33,12 +41,22 @@ void TriangleMesh::validate(std::string_view what) const {
                 fail("{}: triangle {} has vertex index {} out of range [0, {})", what, t, tri[k],
                      n);
     }
-    for (size_t i = 0; i < n; ++i)
+    for (size_t i = 0; i < n; ++i) {
         if (!all_finite(positions[i])) fail("{}: position {} is not finite", what, i);
+        if (!within(positions[i], kMaxMeshCoordinate))
+            fail(
+                "{}: position {} = ({:g}, {:g}, {:g}) out of range: coordinates must lie in "
+                "[-1e6, 1e6]",
+                what, i, positions[i].x, positions[i].y, positions[i].z);
+    }
     for (size_t i = 0; i < normals.size(); ++i)
         if (!all_finite(normals[i])) fail("{}: normal {} is not finite", what, i);
-    for (size_t i = 0; i < uvs.size(); ++i)
+    for (size_t i = 0; i < uvs.size(); ++i) {
         if (!all_finite(uvs[i])) fail("{}: uv {} is not finite", what, i);
+        if (!within(uvs[i], kMaxMeshCoordinate))
+            fail("{}: uv {} = ({:g}, {:g}) out of range: uvs must lie in [-1e6, 1e6]", what, i,
+                 uvs[i].x, uvs[i].y);
+    }
 }
 
 void append_mesh(TriangleMesh& dst, const TriangleMesh& src) {

@@ -9,6 +9,12 @@
 
 namespace glintlab {
 
+// The scene format's coordinate range, for mesh positions and uvs too: in
+// single precision a coordinate of 1e10 leaves no room for ray offsets (it
+// rendered black), and a uv of 1e16 has no fractional part for a texture or
+// a glint grid to index.
+inline constexpr float kMaxMeshCoordinate = 1e6f;
+
 // Winding convention: a triangle (a, b, c) is counter-clockwise seen from the
 // side its outward/front normal points to, i.e. the geometric normal
 // cross(b - a, c - a) agrees with the shading normals.
@@ -23,8 +29,8 @@ struct TriangleMesh {
 
     // Throws glintlab::Error naming `what` (typically the file or the scene
     // key the mesh came from) unless: there is at least one triangle, every
-    // index is in range, normals/uvs are empty or one per position, and every
-    // value is finite.
+    // index is in range, normals/uvs are empty or one per position, every
+    // value is finite, and positions and uvs lie in ±kMaxMeshCoordinate.
     void validate(std::string_view what) const;
 };
 

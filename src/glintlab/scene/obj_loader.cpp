@@ -1,12 +1,18 @@
 #include "glintlab/scene/obj_loader.h"
 
 #include <array>
+#include <charconv>
+#include <cmath>
+#include <fstream>
+#include <iterator>
 #include <map>
+#include <string_view>
 #include <system_error>
 
 #include <tiny_obj_loader.h>
 
 #include "glintlab/core/error.h"
+#include "glintlab/core/regular_file.h"
 
 namespace glintlab {
 
@@ -23,6 +29,56 @@ glm::vec<Dim, float> fetch(const std::vector<tinyobj::real_t>& values, int index
     glm::vec<Dim, float> v;
     for (int k = 0; k < Dim; ++k) v[k] = static_cast<float>(values[index * Dim + k]);
     return v;
+}
+
+// tinyobj reads "nan", "abc" and an empty field as 0 and "1,5" as 1 without
+// a word, so the numbers of every v, vt and vn line are checked first: each
+// field a complete finite decimal number, as many fields as the statement
+// takes (v: 3, 4 with w or 6 with a colour; vt: 1 to 3; vn: 3).
+void check_obj_numbers(std::string_view text, const std::string& name) {
+    size_t line_number = 0;
+    while (!text.empty()) {
+        ++line_number;
+        const size_t eol = text.find('\n');
+        std::string_view line = text.substr(0, eol);
+        text = eol == std::string_view::npos ? std::string_view() : text.substr(eol + 1);
+        const auto is_space = [](char c) { return c == ' ' || c == '\t' || c == '\r'; };
+        const auto next_field = [&]() {
+            while (!line.empty() && is_space(line.front())) line.remove_prefix(1);
+            size_t end = 0;
+            while (end < line.size() && !is_space(line[end])) ++end;
+            const std::string_view field = line.substr(0, end);
+            line.remove_prefix(end);
+            return field;
+        };
+        const std::string_view statement = next_field();
+        size_t min_fields = 0, max_fields = 0;
+        if (statement == "v")
+            min_fields = 3, max_fields = 6;
+        else if (statement == "vt")
+            min_fields = 1, max_fields = 3;
+        else if (statement == "vn")
+            min_fields = 3, max_fields = 3;
+        else
+            continue;
+        size_t count = 0;
+        for (std::string_view field = next_field(); !field.empty(); field = next_field()) {
+            if (field.front() == '#') break;
+            ++count;
+            std::string_view digits = field;
+            if (digits.front() == '+') digits.remove_prefix(1);
+            double x = 0.0;
+            const auto [end, ec] = std::from_chars(digits.data(), digits.data() + digits.size(), x);
+            if (ec != std::errc() || end != digits.data() + digits.size() || !std::isfinite(x))
+                fail("{}:{}: {} field {} \"{}\" is not a finite decimal number", name, line_number,
+                     statement, count, field.substr(0, 40));
+        }
+        if (count < min_fields || count > max_fields || (statement == "v" && count == 5))
+            fail("{}:{}: {} has {} numbers (allowed: {})", name, line_number, statement, count,
+                 statement == "v"    ? "3, 4 or 6"
+                 : statement == "vt" ? "1 to 3"
+                                     : "3");
+    }
 }
 
 tinyobj::ObjReaderConfig reader_config() {
@@ -93,15 +149,19 @@ TriangleMesh mesh_from_reader(const tinyobj::ObjReader& reader, const std::strin
 
 TriangleMesh load_obj(const std::filesystem::path& path) {
     const std::string name = path.string();
-    std::error_code ec;
-    if (!std::filesystem::is_regular_file(path, ec)) fail("{}: OBJ file not found", name);
-    tinyobj::ObjReader reader;
-    if (!reader.ParseFromFile(name, reader_config()))
-        fail("{}: cannot parse OBJ: {}", name, reader.Error());
-    return mesh_from_reader(reader, name);
+    if (const std::string problem = regular_file_problem(path); !problem.empty())
+        fail("{}: the OBJ file {}", name, problem);
+    std::string text;
+    {
+        std::ifstream in(path, std::ios::binary);
+        if (!in) fail("{}: cannot open OBJ file", name);
+        text.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+    }
+    return load_obj_text(text, name);
 }
 
 TriangleMesh load_obj_text(const std::string& text, const std::string& name) {
+    check_obj_numbers(text, name);
     tinyobj::ObjReader reader;
     if (!reader.ParseFromString(text, std::string(), reader_config()))
         fail("{}: cannot parse OBJ: {}", name, reader.Error());

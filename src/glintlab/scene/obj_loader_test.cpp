@@ -97,15 +97,52 @@ TEST_F(MeshObj, PolygonsTriangulatedShapesMergedAndVerticesDeindexed) {
 }
 
 TEST_F(MeshObj, Errors) {
-    expect_error(dir_ / "missing.obj", "not found");
+    expect_error(dir_ / "missing.obj", "the OBJ file does not exist");
+    // A directory or a device is named as what it is (it read "not found").
+    fs::create_directories(dir_ / "dir.obj");
+    expect_error(dir_ / "dir.obj", "the OBJ file is a directory");
     expect_error(write("bad_index.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 7\n"),
                  "vertex index 7 out of range");
     expect_error(write("bad_uv.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nf 1/1 2/5 3/1\n"),
                  "texcoord index 5 out of range");
     expect_error(write("points.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\n"), "no triangles");
     expect_error(write("nan.obj", "v 0 0 0\nv 1e999 0 0\nv 0 1 0\nf 1 2 3\n"),
-                 "position 1 is not finite");
+                 "nan.obj:2: v field 1 \"1e999\" is not a finite decimal number");
     expect_error(write("line_face.obj", "v 0 0 0\nv 1 0 0\nf 1 2\n"), "no triangles");
+}
+
+// tinyobj read these as 0 (or "1,5" as 1) without a word; each is now an
+// error naming the file, the line and the field.
+TEST_F(MeshObj, NumbersAreReadStrictly) {
+    const std::string tri = "v 1 0 0\nv 0 1 0\nvt 0 0\nvt 1 0\nvt 0 1\nf 1/1 2/2 3/3\n";
+    const struct {
+        const char* first_line;
+        const char* message;
+    } cases[] = {
+        {"v nan 0 0", "f.obj:1: v field 1 \"nan\" is not a finite decimal number"},
+        {"v inf 0 0", "f.obj:1: v field 1 \"inf\" is not a finite decimal number"},
+        {"v 0 abc 0", "f.obj:1: v field 2 \"abc\" is not a finite decimal number"},
+        {"v 1,5 0 0", "f.obj:1: v field 1 \"1,5\" is not a finite decimal number"},
+        {"v 0 0", "f.obj:1: v has 2 numbers (allowed: 3, 4 or 6)"},
+        {"v 0 0 0 1 1", "f.obj:1: v has 5 numbers"},
+        {"vt nan 0", "f.obj:1: vt field 1 \"nan\" is not a finite decimal number"},
+        {"vn 0 0", "f.obj:1: vn has 2 numbers (allowed: 3)"},
+        {"v 1e10 0 0", "position 0 = (1e+10, 0, 0) out of range"},
+        {"v 0 0 0\nvt 1e16 0", "uv 0 = (1e+16, 0) out of range"},
+    };
+    for (const auto& c : cases) {
+        SCOPED_TRACE(c.first_line);
+        expect_error(
+            write("f.obj", std::string(c.first_line) + "\n" +
+                               (std::string(c.first_line).starts_with("v ") ? "" : "v 0 0 0\n") +
+                               tri),
+            c.message);
+    }
+    // Valid forms stay valid: signs, exponents, w, colours, comments, CRLF.
+    const TriangleMesh m =
+        load_obj(write("ok.obj", "v +0.5e0 -0 0 1 # w\r\nv 1 0 0 0.5 0.5 0.5\nv 0 1 0\nf 1 2 3\n"));
+    EXPECT_EQ(m.triangles.size(), 1u);
+    EXPECT_EQ(m.positions[0].x, 0.5f);
 }
 
 }  // namespace

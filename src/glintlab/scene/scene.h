@@ -61,6 +61,7 @@ struct DirectionalLight {
     glm::vec3 irradiance{1.0f};             // W/m² on a surface facing the light
     float solid_angle = 0.0f;               // sr; 0 = delta light
     float cos_max = 1.0f;                   // cone half-angle cosine, 1 − Ω/2π
+    float one_minus_cos_max = 0.0f;         // Ω/2π, exact where cos_max rounds to 1 (core/cone.h)
     glm::vec3 radiance{0.0f};               // E / (π sin²θmax) when Ω > 0
 };
 

@@ -5,22 +5,21 @@
 
 #include "glintlab/core/error.h"
 #include "glintlab/core/json_reader.h"
+#include "glintlab/core/regular_file.h"
 #include "glintlab/scene/scene_loader.h"
 
 namespace glintlab {
 
 void set_glint_model(nlohmann::json& document, std::string_view model) {
     int switched = 0;
-    if (document.is_object() && document.contains("materials") &&
-        document["materials"].is_array())
+    if (document.is_object() && document.contains("materials") && document["materials"].is_array())
         for (nlohmann::json& m : document["materials"])
             if (m.is_object() && m.value("type", "") == "glint") {
                 m["model"] = std::string(model);
                 ++switched;
             }
     if (switched == 0)
-        fail("--model {}: the scene has no glint material (\"type\": \"glint\") to switch",
-             model);
+        fail("--model {}: the scene has no glint material (\"type\": \"glint\") to switch", model);
 }
 
 void apply_override(nlohmann::json& document, std::string_view pointer,
@@ -79,6 +78,8 @@ void apply_override_assignment(nlohmann::json& document, std::string_view assign
 }
 
 Scene load_scene(const std::filesystem::path& file, const SceneEdits& edits) {
+    if (const std::string problem = regular_file_problem(file); !problem.empty())
+        fail("{}: cannot read the scene file: it {}", file.string(), problem);
     std::ifstream in(file);
     if (!in) fail("{}: cannot open scene file", file.string());
     nlohmann::json document = parse_json(in, file.string());

@@ -12,6 +12,7 @@
 #include "glintlab/core/image.h"
 #include "glintlab/core/json_reader.h"
 #include "glintlab/core/memory_limit.h"
+#include "glintlab/core/regular_file.h"
 #include "glintlab/glints/glint_reader.h"
 #include "glintlab/scene/environment_file.h"
 #include "glintlab/scene/gltf_loader.h"
@@ -207,7 +208,17 @@ TriangleMesh read_heightfield(JsonObject& o) {
     require_grid_memory(o, "heightfield of resolution", s.resolution, s.resolution, 4);
     if (o.has("file")) {
         // Height image: luminance in [0, 1] mapped to [-1, 1], bilinear.
-        auto image = std::make_shared<Image>(read_image(o.file_path("file")));
+        const std::filesystem::path file = o.file_path("file");
+        auto image = std::make_shared<Image>(read_image(file));
+        // Outside [0, 1] the mapping leaves the documented [-1, 1] × amplitude
+        // (an HDR image of 1e30 made the geometry vanish): an error, naming
+        // the first pixel outside.
+        for (int y = 0; y < image->height; ++y)
+            for (int x = 0; x < image->width; ++x)
+                if (const float l = luminance(image->at(x, y)); !(l >= 0.0f && l <= 1.0f))
+                    o.error("file", fmt::format("{}: height image luminance {:g} at pixel ({}, {}) "
+                                                "out of range: heights must lie in [0, 1]",
+                                                file.string(), l, x, y));
         return make_heightfield(s, [image](glm::vec2 uv) {
             const int w = image->width, h = image->height;
             const float fx = std::clamp(uv.x, 0.0f, 1.0f) * static_cast<float>(w - 1);
@@ -340,9 +351,17 @@ void read_light(JsonObject& o, Scene& scene) {
         l.direction = glm::normalize(d);
         l.irradiance = o.color("irradiance", l.irradiance, 0.0f, 1e9f);
         l.solid_angle = static_cast<float>(o.number("solid_angle_sr", 0.0, 0.0, 1.0));
+        // Below 1e-12 sr the cone's radiance E / Ω (up to 1e9 / 1e-12) and its
+        // products with sharp BSDFs would leave single precision.
+        if (l.solid_angle > 0.0f && l.solid_angle < 1e-12f)
+            o.error("solid_angle_sr",
+                    fmt::format("value {:g} out of range: allowed 0 (a delta light) or [1e-12, 1]",
+                                l.solid_angle));
         if (l.solid_angle > 0.0f) {
-            l.cos_max = 1.0f - l.solid_angle / (2.0f * glm::pi<float>());
-            const float sin2 = 1.0f - l.cos_max * l.cos_max;
+            l.one_minus_cos_max = l.solid_angle / (2.0f * glm::pi<float>());
+            l.cos_max = 1.0f - l.one_minus_cos_max;
+            // sin² = (1 − cos)(1 + cos), exact for the smallest cones.
+            const float sin2 = l.one_minus_cos_max * (2.0f - l.one_minus_cos_max);
             // Uniform radiance over the cone giving irradiance E at normal
             // incidence: E = L·π sin²θmax.
             l.radiance = l.irradiance / (glm::pi<float>() * sin2);
@@ -485,6 +504,8 @@ Scene parse_scene(const nlohmann::json& document, const std::filesystem::path& f
 }
 
 Scene load_scene(const std::filesystem::path& file) {
+    if (const std::string problem = regular_file_problem(file); !problem.empty())
+        fail("{}: cannot read the scene file: it {}", file.string(), problem);
     std::ifstream in(file);
     if (!in) fail("{}: cannot open scene file", file.string());
     const nlohmann::json document = parse_json(in, file.string());

@@ -5,7 +5,10 @@
 #include <filesystem>
 #include <fstream>
 
+#include <unistd.h>
+
 #include "glintlab/core/error.h"
+#include "glintlab/core/image.h"
 #include "glintlab/core/memory_limit.h"
 #include "glintlab/scene/scene_loader.h"
 
@@ -104,6 +107,12 @@ TEST(SceneLoader, MalformedScenesGiveClearErrors) {
         {"missing environment file",
          [](auto& j) { j["lights"][0] = {{"type", "environment"}, {"file", "nope.exr"}}; },
          {"/lights/0/file", "file not found"}},
+        {"environment file is a directory",
+         [](auto& j) { j["lights"][0] = {{"type", "environment"}, {"file", "/tmp"}}; },
+         {"/lights/0/file", "/tmp is a directory"}},
+        {"environment file is a device",
+         [](auto& j) { j["lights"][0] = {{"type", "environment"}, {"file", "/dev/zero"}}; },
+         {"/lights/0/file", "/dev/zero is a device, FIFO or socket, not a regular file"}},
         {"environment without source",
          [](auto& j) { j["lights"][0] = {{"type", "environment"}}; },
          {"/lights/0/file", "exactly one"}},
@@ -217,6 +226,36 @@ TEST(SceneLoader, GridMeshesAboveTheMemoryLimitAreRejectedBeforeBuilding) {
     j["shapes"][0] = {{"type", "heightfield"}, {"resolution", 8}, {"material", "floor"}};
     EXPECT_EQ(error_of(j), "<no error>");
     set_memory_limit(std::nullopt);
+}
+
+// A height image outside [0, 1] (an EXR of 1e30, a negative texel) was
+// accepted and the geometry vanished: the error names the scene, the key, the
+// image and the pixel.
+TEST(SceneLoader, HeightImageOutsideTheUnitRangeIsAnError) {
+    const auto dir =
+        std::filesystem::temp_directory_path() / ("glintlab_heights_" + std::to_string(::getpid()));
+    std::filesystem::create_directories(dir);
+    Image img(4, 4);
+    for (auto& p : img.pixels) p = glm::vec3(0.5f);
+    write_exr(img, dir / "ok.exr");
+    img.at(2, 1) = glm::vec3(1e30f);
+    write_exr(img, dir / "huge.exr");
+    img.at(2, 1) = glm::vec3(-0.25f);
+    write_exr(img, dir / "negative.exr");
+    nlohmann::json j = valid_scene();
+    j["shapes"][0] = {{"type", "heightfield"}, {"resolution", 8}, {"material", "floor"}};
+    j["shapes"][0]["file"] = (dir / "ok.exr").string();
+    EXPECT_EQ(error_of(j), "<no error>");
+    for (const char* name : {"huge.exr", "negative.exr"}) {
+        j["shapes"][0]["file"] = (dir / name).string();
+        const std::string m = error_of(j);
+        EXPECT_NE(m.find("bad.json: /shapes/0/file: "), std::string::npos) << m;
+        EXPECT_NE(m.find(std::string(name) + ": height image luminance"), std::string::npos) << m;
+        EXPECT_NE(m.find("at pixel (2, 1) out of range: heights must lie in [0, 1]"),
+                  std::string::npos)
+            << m;
+    }
+    std::filesystem::remove_all(dir);
 }
 
 }  // namespace

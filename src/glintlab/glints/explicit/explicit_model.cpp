@@ -5,6 +5,7 @@
 #include <numbers>
 #include <variant>
 
+#include "glintlab/core/cone.h"
 #include "glintlab/core/error.h"
 #include "glintlab/glints/glint_bxdf.h"
 #include "glintlab/glints/glint_lighting.h"
@@ -23,7 +24,7 @@ const ExplicitParams& params_of(const GlintDesc& desc) {
 // A cone of directions (world space) with uniform radiance.
 struct Cone {
     glm::vec3 axis;
-    float cos_max;
+    float one_minus_cos_max;  // core/cone.h
     glm::vec3 radiance;
 };
 
@@ -40,7 +41,7 @@ glm::vec3 cone_radiance(const GlintLightingContext& ctx, const Cone& cone) {
     for_each_explicit_facet(field, fp, [&](const ExplicitFacet& f) {
         glm::vec3 r;
         const float w = explicit_facet_weight(field, ctx.wo, f.m, r);
-        if (w <= 0.0f || glm::dot(r, axis) < cone.cos_max) return;
+        if (w <= 0.0f || !inside_cone(r, axis, cone.one_minus_cos_max)) return;
         sum += glm::dvec3(w * bxdf.fresnel(glm::dot(ctx.wo, f.m)));
     });
     if (sum == glm::dvec3(0.0)) return glm::vec3(0.0f);
@@ -112,16 +113,17 @@ glm::vec3 explicit_light_radiance(const GlintLightingContext& ctx, int light) {
         if (ctx.visible && !ctx.visible(axis, (dist - s->radius) * (1.0f - 1e-4f)))
             return glm::vec3(0.0f);
         const float sin_max = s->radius / dist;
-        return cone_radiance(
-            ctx, {axis, std::sqrt(std::max(0.0f, 1.0f - sin_max * sin_max)), s->radiance});
+        return cone_radiance(ctx, {axis, one_minus_cos_from_sin2(sin_max * sin_max), s->radiance});
     }
     const float gamma = explicit_gamma_rad(desc);
     const float sigma = float(explicit_cone_solid_angle(gamma));
+    const float gamma_one_minus_cos = 2.0f * std::sin(0.5f * gamma) * std::sin(0.5f * gamma);
     if (const auto* dl = std::get_if<DirectionalLight>(&l)) {
         const glm::vec3 axis = glm::normalize(dl->direction);
         if (ctx.visible && !ctx.visible(axis, inf)) return glm::vec3(0.0f);
-        if (dl->solid_angle > 0.0f) return cone_radiance(ctx, {axis, dl->cos_max, dl->radiance});
-        return cone_radiance(ctx, {axis, std::cos(gamma), dl->irradiance / sigma});
+        if (dl->solid_angle > 0.0f)
+            return cone_radiance(ctx, {axis, dl->one_minus_cos_max, dl->radiance});
+        return cone_radiance(ctx, {axis, gamma_one_minus_cos, dl->irradiance / sigma});
     }
     if (const auto* pl = std::get_if<PointLight>(&l)) {
         const glm::vec3 d = pl->position - ctx.p;
@@ -130,7 +132,7 @@ glm::vec3 explicit_light_radiance(const GlintLightingContext& ctx, int light) {
         const float dist = std::sqrt(dist2);
         const glm::vec3 axis = d / dist;
         if (ctx.visible && !ctx.visible(axis, dist * (1.0f - 1e-4f))) return glm::vec3(0.0f);
-        return cone_radiance(ctx, {axis, std::cos(gamma), pl->intensity / (dist2 * sigma)});
+        return cone_radiance(ctx, {axis, gamma_one_minus_cos, pl->intensity / (dist2 * sigma)});
     }
     return glm::vec3(0.0f);
 }

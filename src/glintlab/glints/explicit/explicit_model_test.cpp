@@ -138,6 +138,7 @@ TEST(ExplicitModel, DeltaAndConeLightsMatchTheSmoothBrdfOverTheCone) {
     DirectionalLight sun = delta;
     sun.solid_angle = float(sigma);
     sun.cos_max = std::cos(gamma);
+    sun.one_minus_cos_max = 2.0f * std::sin(0.5f * gamma) * std::sin(0.5f * gamma);
     sun.radiance = glm::vec3(float(3.0 / sigma));
     // Reserved: no reallocation moves (GCC 12 -O2 with ASan warns falsely
     // -Wmaybe-uninitialized inside std::variant's move of EnvironmentLight).

@@ -384,6 +384,15 @@ TEST(ExplicitInput, BadInputIsAClearError) {
         EXPECT_NE(std::string(e.what()).find("max_facets_per_footprint"), std::string::npos);
     }
     EXPECT_THROW(for_each_explicit_facet(field, square({NAN, 0.5f}, 0.01f), noop), Error);
+    // At uv ~1e16 a tile step of 1 did not move a double: the walk never ended.
+    try {
+        for_each_explicit_facet(field, square({1e16f, 0.5f}, 0.01f), noop);
+        FAIL() << "no error at uv 1e16";
+    } catch (const Error& e) {
+        EXPECT_NE(std::string(e.what()).find("must stay below 1e+09"), std::string::npos)
+            << e.what();
+    }
+    EXPECT_NO_THROW(for_each_explicit_facet(field, square({-1e6f, 1e6f}, 1e-3f), noop));
     // Degenerate footprints hold no facets.
     EXPECT_EQ(
         for_each_explicit_facet(field, Footprint{{0.5f, 0.5f}, {0.1f, 0.0f}, {0.2f, 0.0f}}, noop),

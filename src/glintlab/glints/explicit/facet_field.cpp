@@ -236,6 +236,16 @@ uint64_t for_each_explicit_facet(const ExplicitFacetField& field, const Footprin
     Parallelogram q;
     if (!q.prepare(c, e1, e2) || n == 0) return 0;
     const glm::dvec2 lo = c - q.half, hi = c + q.half;
+    // Tiles are walked one integer step at a time: beyond 2^53 a step of 1
+    // does not change a double (the walk looped forever at uv ~1e16), and
+    // far below that a tile's facets lose their sub-tile precision.
+    constexpr double kMaxTileCoordinate = 1e9;
+    if (!(std::max({std::abs(lo.x), std::abs(lo.y), std::abs(hi.x), std::abs(hi.y)}) <
+          kMaxTileCoordinate))
+        fail(
+            "explicit: the pixel footprint around uv = ({:.6g}, {:.6g}) reaches beyond the facet "
+            "field's range: |u| and |v| must stay below {:.0e}",
+            c.x, c.y, kMaxTileCoordinate);
     const double x0 = std::floor(lo.x), x1 = std::floor(hi.x);
     const double y0 = std::floor(lo.y), y1 = std::floor(hi.y);
     // The tiles each row of tiles [ty, ty + 1] needs: those the

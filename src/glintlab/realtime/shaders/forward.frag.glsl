@@ -6,6 +6,7 @@
 //     #define GLINTLAB_ENVIRONMENT 0|1
 //     #define GLINTLAB_ENV_SPECULAR_SAMPLES N  (filtered importance sampling)
 //     #define GLINTLAB_ENV_DIFFUSE_SAMPLES N
+//     #define GLINTLAB_ENV_SUN_SAMPLES N       (directions in the map's sun)
 //     #include "<the model's GPU glue, glints/**/*_gpu.glsl>"
 //     #include "glintlab/realtime/shaders/forward.frag.glsl"
 // The glue defines glint_ndf (material.glsl's D_P) and optionally
@@ -85,9 +86,16 @@ uniform vec3 u_directional_radiance[GLINTLAB_DIRECTIONAL_LIGHTS];
 
 #if GLINTLAB_ENVIRONMENT
 layout(binding = 0) uniform sampler2D u_environment;  // lat-long, full mip chain
+// The same map without its sun (scene/environment_sun.h), read by the lobe's
+// samples; the sun is u_environment_sun_count directions (the map's frame)
+// each carrying a power (radiance × solid angle).
+layout(binding = 3) uniform sampler2D u_environment_residual;
 uniform float u_environment_scale;
 uniform float u_environment_rotation;  // radians about +y
 uniform vec2 u_environment_size;       // texels of level 0
+uniform int u_environment_sun_count;   // 0 (no sun) or GLINTLAB_ENV_SUN_SAMPLES
+uniform vec3 u_environment_sun_direction[GLINTLAB_ENV_SUN_SAMPLES];
+uniform vec3 u_environment_sun_power[GLINTLAB_ENV_SUN_SAMPLES];
 
 // scene/environment.cpp direction_to_uv.
 vec2 environment_uv(vec3 d) {
@@ -98,13 +106,48 @@ vec2 environment_uv(vec3 d) {
 }
 
 // Radiance from world direction d, prefiltered over the solid angle
-// `omega` of a sample (Krivanek & Colbert 2008 Eq. 13: lod = 0.5 log2(omega /
-// omega_texel) + 1, omega_texel = 2 pi^2 sin(theta) / (W H) for lat-long).
-vec3 environment_radiance(vec3 d, float omega) {
+// `omega` of a sample (Krivanek & Colbert 2008: the filter covers the
+// sample's share of the sphere). The footprint is a square of side sqrt(omega)
+// on the sphere, which in the lat-long map is sqrt(omega)/pi tall and
+// 1/sin(theta) times wider in texels: the level is the one whose texels are
+// as tall as the footprint, and up to kEnvironmentTaps taps spread along the
+// row cover its width (a coarser level beyond, only within a few degrees of
+// a pole). One isotropic level from the footprint's area blurred across rows
+// near a pole (maps with a bright zenith read 10 % dark); one from its
+// height alone aliased along rows (petals). textureGrad's anisotropic
+// filtering would do the same, but Mesa llvmpipe's returns stripes.
+const int kEnvironmentTaps = 8;
+vec3 environment_filtered(sampler2D map, vec3 d, float omega) {
     vec2 uv = environment_uv(d);
-    float texel = 2.0f * PI * PI * max(sin(uv.y * PI), 1e-4f) / (u_environment_size.x * u_environment_size.y);
-    float lod = max(0.5f * log2(omega / texel) + 1.0f, 0.0f);
-    return u_environment_scale * textureLod(u_environment, uv, lod).rgb;
+    float side = sqrt(omega);
+    float lod = max(log2(side * u_environment_size.y * INV_PI), 0.0f);
+    // The footprint's width over a texel's width at that level.
+    float du = side * INV_TWO_PI / max(sin(uv.y * PI), 1e-4f);
+    float ratio = du * u_environment_size.x / exp2(lod);
+    int taps = int(clamp(ceil(ratio), 1.0f, float(kEnvironmentTaps)));
+    lod += max(log2(ratio / float(kEnvironmentTaps)), 0.0f);
+    du = min(du, 1.0f);
+    vec3 sum = vec3(0.0f);
+    for (int i = 0; i < taps; ++i) {
+        float u = uv.x + du * ((float(i) + 0.5f) / float(taps) - 0.5f);
+        sum += textureLod(map, vec2(u, uv.y), lod).rgb;
+    }
+    return u_environment_scale * sum / float(taps);
+}
+vec3 environment_radiance(vec3 d, float omega) {
+    return environment_filtered(u_environment, d, omega);
+}
+// The same for the map without its sun (the lobe's samples).
+vec3 environment_residual_radiance(vec3 d, float omega) {
+    return environment_filtered(u_environment_residual, d, omega);
+}
+
+// World direction of sun sample k: the map's frame turned by the rotation
+// about +y (scene/environment.cpp uv_to_direction: phi_world = phi_map + r).
+vec3 environment_sun_direction(int k) {
+    vec3 m = u_environment_sun_direction[k];
+    float c = cos(u_environment_rotation), s = sin(u_environment_rotation);
+    return vec3(m.x * c - m.z * s, m.y, m.z * c + m.x * s);
 }
 
 vec2 hammersley(int i, int n) {
@@ -248,7 +291,14 @@ vec3 environment_lighting(SurfaceMaterial mat, vec3 wo, vec3 t, vec3 b, vec3 n, 
         if (!(p_mix > 0.0f)) continue;
         vec3 f = eval_bsdf(mat, wo, wi, fp);
         vec3 world = wi.x * t + wi.y * b + wi.z * n;
-        sum += f * wi.z / p_mix * environment_radiance(world, 1.0f / p_mix);
+        sum += f * wi.z / p_mix * environment_residual_radiance(world, 1.0f / p_mix);
+    }
+    // The sun: a quadrature of its disc, sum_k f(wi_k) cos(theta_k) Phi_k.
+    for (int k = 0; k < u_environment_sun_count; ++k) {
+        vec3 d = environment_sun_direction(k);
+        vec3 wi = vec3(dot(d, t), dot(d, b), dot(d, n));
+        if (wi.z <= 0.0f) continue;
+        sum += eval_bsdf(mat, wo, wi, fp) * wi.z * (u_environment_scale * u_environment_sun_power[k]);
     }
     return sum;
 }
