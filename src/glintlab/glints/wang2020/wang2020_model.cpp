@@ -112,6 +112,25 @@ const Wang2020Model* model_with_other_seed(const ModelCache& cache, const Key& k
     return nullptr;
 }
 
+// A cached model of the same material built for any live environment map:
+// lights other than the environment read no prefiltered table, so it serves
+// them. Without this a scene's environment and its other lights kept two
+// entries per material, and four materials (the robustness suite's) thrashed
+// the bounded cache: a quadtree rebuilt per evaluation, the suite's wang2020
+// share past 7 minutes instead of about 2.
+CacheEntry* entry_with_any_environment(ModelCache& cache, const Key& key) {
+    Key bare = key;
+    std::get<15>(bare) = nullptr;
+    for (auto& [k, entry] : cache) {
+        Key other = k;
+        std::get<15>(other) = nullptr;
+        if (!(other == bare) || !entry.model) continue;
+        if (entry.has_env && entry.env.expired()) continue;
+        return &entry;
+    }
+    return nullptr;
+}
+
 std::shared_ptr<const Wang2020Model> model_for(const GlintDesc& desc,
                                                const std::shared_ptr<const EnvironmentMap>& env) {
     static std::mutex mutex;
@@ -135,6 +154,11 @@ std::shared_ptr<const Wang2020Model> model_for(const GlintDesc& desc,
                   env.get()};
     const std::lock_guard lock(mutex);
     static uint64_t uses = 0;
+    if (!env)
+        if (CacheEntry* any = entry_with_any_environment(cache, key)) {
+            any->last_use = ++uses;
+            return any->model;
+        }
     CacheEntry& slot = cache[key];
     slot.last_use = ++uses;
     if (slot.model && env && slot.env.expired()) slot.model = nullptr;

@@ -200,6 +200,34 @@ TEST(Wang2020Model, SeedsOfOneMaterialShareItsTables) {
     EXPECT_GT(differs_from_a, 0) << "the seeds' particles must differ";
 }
 
+// Four materials lit by an environment and by another light: a light other
+// than the environment is served by the material's environment model, so
+// the cache holds four models and alternating calls are hits. With one
+// entry per (material, map or none) the eight entries thrashed the 4-model
+// cache: `validate robustness` rebuilt a quadtree per evaluation.
+TEST(Wang2020Model, OtherLightsShareTheEnvironmentModel) {
+    const auto env =
+        std::make_shared<const EnvironmentMap>(Image(16, 8, glm::vec3(0.5f)), 1.0f, 0.0f);
+    GlintDesc g;
+    g.log_density = 9.0f;
+    switch_glint_model(g, GlintModelId::Wang2020);
+    auto& p = std::get<Wang2020Params>(g.params);
+    p.dpf_theta = 8, p.dpf_phi = 16, p.prefilter_samples = 1;
+    std::vector<GlintDesc> materials;
+    for (const float alpha : {0.2f, 0.4f, 0.6f, 0.8f}) {
+        GlintDesc d = g;
+        d.alpha_x = d.alpha_y = alpha;
+        materials.push_back(d);
+    }
+    std::vector<const wang2020::Wang2020Model*> first;
+    for (const GlintDesc& d : materials) first.push_back(wang2020_model_for(d, env).get());
+    for (int round = 0; round < 3; ++round)
+        for (size_t i = 0; i < materials.size(); ++i) {
+            EXPECT_EQ(wang2020_model_for(materials[i], nullptr).get(), first[i]) << i;
+            EXPECT_EQ(wang2020_model_for(materials[i], env).get(), first[i]) << i;
+        }
+}
+
 // The §4.4 blurs in renders: with directional occlusion off (visibility 1,
 // δ = 1) and "glint_blur": "as_published" the pass is G3 * rgb, a normalised
 // kernel, so the image mean is unchanged while the sphere stays clear of the
