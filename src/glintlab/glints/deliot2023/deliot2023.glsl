@@ -524,15 +524,18 @@ Deliot2023Grids deliot2023_footprint_grids(Footprint fp, float screen_space_scal
 // Early exits of the GPU glue (issue 17), compiled in where the back end
 // defines GLINTLAB_DELIOT2023_EXPECTATION_EXITS (the GPU glues; the CPU
 // keeps the plain evaluation, so its renders are unchanged): D_P is replaced
-// by its expectation D(h) (Eq. 5-6) where the counts cannot tell otherwise
-// within fp32, from bounds on the 12 vertices' trials of the 4 grids (the
+// by the value the counts take but with a probability below fp32's
+// resolution, from bounds on the 12 vertices' trials of the 4 grids (the
 // density jitter z of deliot2023_vertex_trials is at most
 // DELIOT2023_MAX_JITTER_Z in magnitude, normal_quantile clamping its argument
 // to [2^-24, 1 - 2^-24]):
 //  (a) sum of the vertices' N p < 2^-24: every gate probability min(N p, .)
 //      is below the 2^-24 resolution of the gate's uniform, so the counts are
-//      all 0 except with probability <= 48 x 2^-24 ~ 3e-6 per pixel (the
-//      NDF's tail); D(h) keeps the mean, where 0 would drop the tail's mass;
+//      all 0 except with probability <= 48 x 2^-24 ~ 3e-6 per pixel: D_P = 0,
+//      as the CPU draws it. (It once returned the mean D(h): at densities
+//      below one facet per unit uv area, where this exit covers the whole
+//      highlight, the GPU drew a smooth highlight where the CPU, drawing the
+//      counts, had black with at most a rare glint.)
 //  (b) every vertex's N p > 2^48: every gate passes (P(>=1) = 1 in fp32) and
 //      each count is N p within 5.3 sqrt(N p (1 - p)) / (N p) < 3.2e-7
 //      relative, so D_P = D(n) / R x count / trials is D(h) to a few ulps.
@@ -557,12 +560,22 @@ vec2 deliot2023_trial_bounds(Deliot2023Grids grids, float log_density, float den
     }
     return vec2(most, least);
 }
-bool deliot2023_bounds_exit(vec2 bounds, float p) {
-    return bounds.x * p < 5.9604645e-8f || bounds.y * p > 2.8147498e14f;  // 2^-24, 2^48
+// 0: no exit; 1: exit (a), D_P = 0; 2: exit (b), D_P = D(h).
+const int DELIOT2023_NO_EXIT = 0;
+const int DELIOT2023_EXIT_ZERO = 1;
+const int DELIOT2023_EXIT_MEAN = 2;
+int deliot2023_bounds_exit(vec2 bounds, float p) {
+    if (bounds.x * p < 5.9604645e-8f) return DELIOT2023_EXIT_ZERO;  // 2^-24
+    if (bounds.y * p > 2.8147498e14f) return DELIOT2023_EXIT_MEAN;  // 2^48
+    return DELIOT2023_NO_EXIT;
 }
-bool deliot2023_expectation_exit(Deliot2023Grids grids, float p, float log_density,
-                                 float density_randomization) {
+int deliot2023_expectation_exit(Deliot2023Grids grids, float p, float log_density,
+                                float density_randomization) {
     return deliot2023_bounds_exit(deliot2023_trial_bounds(grids, log_density, density_randomization), p);
+}
+// D_P at an exit.
+float deliot2023_exit_value(int exit_kind, float d_h) {
+    return exit_kind == DELIOT2023_EXIT_MEAN ? d_h : 0.0f;
 }
 
 // The GPU glues' cache of the half-vector-free part of D_P
@@ -632,15 +645,19 @@ float deliot2023_ndf(vec3 h, Footprint fp, int ndf, float alpha_x, float alpha_y
     deliot2023_cache_footprint(fp, log_density, seed, screen_space_scale, density_randomization,
                                original_defects);
 #ifdef GLINTLAB_DELIOT2023_EXPECTATION_EXITS
-    if (!original_defects && deliot2023_bounds_exit(g_deliot2023_trial_bounds, p)) return d_h;
+    int exit_kind = original_defects ? DELIOT2023_NO_EXIT
+                                     : deliot2023_bounds_exit(g_deliot2023_trial_bounds, p);
+    if (exit_kind != DELIOT2023_NO_EXIT) return deliot2023_exit_value(exit_kind, d_h);
 #endif
     Deliot2023PixelPart px =
         deliot2023_cached_pixel_part(fp.uv, log_density, seed, density_randomization);
 #else
     Deliot2023Grids grids = deliot2023_footprint_grids(fp, screen_space_scale, original_defects);
 #ifdef GLINTLAB_DELIOT2023_EXPECTATION_EXITS
-    if (!original_defects && deliot2023_expectation_exit(grids, p, log_density, density_randomization))
-        return d_h;
+    int exit_kind = original_defects
+                        ? DELIOT2023_NO_EXIT
+                        : deliot2023_expectation_exit(grids, p, log_density, density_randomization);
+    if (exit_kind != DELIOT2023_NO_EXIT) return deliot2023_exit_value(exit_kind, d_h);
 #endif
     Deliot2023PixelPart px =
         deliot2023_pixel_part(grids, fp.uv, log_density, seed, density_randomization);
@@ -674,7 +691,8 @@ float deliot2023_ndf_stochastic(vec3 h, Footprint fp, int ndf, float alpha_x, fl
     float p = clamp(R * d_h / d_n, 0.0f, 1.0f);
     Deliot2023Grids grids = deliot2023_footprint_grids(fp, screen_space_scale, false);
 #ifdef GLINTLAB_DELIOT2023_EXPECTATION_EXITS
-    if (deliot2023_expectation_exit(grids, p, log_density, density_randomization)) return d_h;
+    int exit_kind = deliot2023_expectation_exit(grids, p, log_density, density_randomization);
+    if (exit_kind != DELIOT2023_NO_EXIT) return deliot2023_exit_value(exit_kind, d_h);
 #endif
     // Inverse CDF over the weights; rounding that leaves u above their sum
     // picks the last grid of positive weight.

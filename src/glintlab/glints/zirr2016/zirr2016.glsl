@@ -141,12 +141,13 @@ float zirr2016_ndf(vec3 h, Footprint fp, int ndf, float alpha_x, float alpha_y, 
                             ZIRR2016_MAX_LOG_TRIALS));
 
 #ifdef GLINTLAB_ZIRR2016_EXPECTATION_EXIT
-    // GPU glue (issue 17): where the footprint's 2 x 4 x steps angular cells
-    // hold fewer than 2^-24 expected successes in all (each cell N p, Eq. 15's
-    // Bernoulli regime, whose mean is exactly N p), every count is 0 but with
-    // a probability below 2^-24 in exact arithmetic: D_P is replaced by its
-    // mean D(h), and the march is skipped. The CPU evaluates in full.
-    if (8.0f * float(steps) * max(n_bottom, n_top) * p < 5.9604645e-8f) return d_h;
+    // GPU glue: where the footprint's 2 x 4 x steps angular cells hold fewer
+    // than 2^-24 expected successes in all (each cell N p, Eq. 15's Bernoulli
+    // regime), every count is 0 but with a probability below 2^-24: D_P = 0,
+    // as the CPU draws it, and the march is skipped. (Returning the mean D(h)
+    // drew a smooth highlight below one facet per unit uv area, where the
+    // CPU's counts are black.)
+    if (8.0f * float(steps) * max(n_bottom, n_top) * p < 5.9604645e-8f) return 0.0f;
 #endif
 
     vec2 slope = vec2(h.x, h.y) / R;
