@@ -19,6 +19,7 @@
 #include "glintlab/glints/registry.h"
 #include "glintlab/render/render_memory.h"
 #include "glintlab/render/renderer.h"
+#include "glintlab/scene/scene_edits.h"
 #include "glintlab/scene/scene_loader.h"
 #if GLINTLAB_WITH_GL
 #include "glintlab/realtime/gpu_renderer.h"
@@ -241,6 +242,15 @@ PYBIND11_MODULE(_glintlab, m) {
                    "x" + std::to_string(s.camera.height) + ">";
         });
 
+    m.def(
+        "set_glint_model",
+        [](const std::string& text, const std::string& model) {
+            nlohmann::json document = nlohmann::json::parse(text);
+            set_glint_model(document, model);
+            return document.dump();
+        },
+        py::arg("text"), py::arg("model"),
+        "scene_edits.h set_glint_model on a JSON text: the model set and fitted");
     m.def("parse_scene", &parse, py::arg("text"), py::arg("file"),
           "Parses a JSON text strictly; raises SceneError naming the file and JSON path");
     m.def("render", &render, py::arg("scene"), py::arg("gpu") = false, py::arg("spp") = py::none(),

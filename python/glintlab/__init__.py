@@ -121,13 +121,17 @@ def apply_overrides(document, overrides):
 
 
 def set_model(document, model):
-    """Sets `model` on every glint material of `document` (in place)."""
+    """Sets `model` on every glint material of `document` (in place) and
+    fits what the model requires, as `glintlab render --model` and the
+    viewer do (kneiphof2025 needs GGX, wang2020 Beckmann, ...; each change
+    is noted on stderr)."""
     names = [m["name"] for m in models()]
     if model not in names:
         raise SceneError(f"model: unknown glint model \"{model}\" (known: {', '.join(names)})")
-    for material in document.get("materials", []):
-        if isinstance(material, dict) and material.get("type") == "glint":
-            material["model"] = model
+    materials = document.get("materials", [])
+    if any(isinstance(m, dict) and m.get("type") == "glint" for m in materials):
+        switched = json.loads(_glintlab.set_glint_model(json.dumps({"materials": materials}), model))
+        materials[:] = switched["materials"]
     return document
 
 

@@ -218,3 +218,12 @@ def test_eval_rejects_directions_and_footprints_that_are_not(tiny_scene):
     with pytest.raises(ValueError, match=r"footprint uv: components must lie in"):
         glintlab.eval_brdf(mat, good, good, footprint=dict(fp, uv=[1e16, 0.5]))
     assert np.isfinite(glintlab.eval_brdf(mat, good, good, footprint=dict(fp, uv=[0.5, 0.5]))).all()
+
+
+def test_model_switch_fits_what_the_model_requires(tiny_scene):
+    """kneiphof2025 needs GGX: switching a Beckmann material used to fail in
+    the loader; it is fitted as the CLI's --model and the viewer do."""
+    assert tiny_scene["materials"][0]["ndf"] == "beckmann"
+    doc = glintlab.set_model(json.loads(json.dumps(tiny_scene)), "kneiphof2025")
+    assert doc["materials"][0]["ndf"] == "ggx"
+    assert glintlab.render(tiny_scene, model="kneiphof2025", res=(8, 8)).shape == (8, 8, 3)

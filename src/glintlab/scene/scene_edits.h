@@ -15,8 +15,10 @@
 
 namespace glintlab {
 
-// Sets "model" of every glint material (materials of other types keep theirs);
-// an error when the scene has no glint material to switch.
+// Sets "model" of every glint material (materials of other types keep theirs)
+// and fits what the model requires (its fit_material: kneiphof2025 needs GGX,
+// wang2020 Beckmann and ln N in [0, 19.4], ...), noting each change on
+// stderr; an error when the scene has no glint material to switch.
 void set_glint_model(nlohmann::json& document, std::string_view model);
 
 // Sets the value at a JSON pointer (RFC 6901). The pointer's parent must
