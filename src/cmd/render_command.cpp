@@ -121,6 +121,21 @@ int run_render(const RenderArgs& a) {
     }
 
     Scene scene = load_scene(a.scene, a.edits);
+    // -o must not name the scene's own files (its environment map, or the
+    // scene file itself): the render would overwrite its input.
+    {
+        std::vector<std::filesystem::path> inputs{a.scene};
+        for (const Light& light : scene.lights)
+            if (const auto* env = std::get_if<EnvironmentLight>(&light); env && !env->file.empty())
+                inputs.push_back(env->file);
+        for (const std::filesystem::path& output : {out.exr, out.png})
+            for (const std::filesystem::path& input : inputs) {
+                std::error_code ec;
+                if (std::filesystem::equivalent(output, input, ec))
+                    fail("-o {}: the output {} is the scene's input {}; choose another path",
+                         a.output, output.string(), input.string());
+            }
+    }
     if (a.spp) scene.render.spp = *a.spp;
     if (a.seed) scene.render.seed = static_cast<uint64_t>(*a.seed);
     if (!a.integrator.empty())
@@ -160,9 +175,10 @@ int run_render(const RenderArgs& a) {
     require_finite_image(scene, image, fmt::format("render of {}", a.scene));
     const bool bloom = scene.film.bloom.strength > 0.0f;
     const Image preview = bloom ? apply_bloom(image, scene.film.bloom) : image;
-    write_exr(scene.film.bloom_exr ? preview : image, exr);
     const std::filesystem::path& png = out.png;
-    write_png(preview, png, scene.film.exposure);
+    // Both or neither: a failed PNG once left the EXR behind.
+    write_images({{scene.film.bloom_exr ? &preview : &image, exr},
+                  {&preview, png, scene.film.exposure}});
     if (!a.quiet)
         fmt::print("rendered {} ({}x{}, {}) in {:.2f} s -> {}, {}\n", a.scene, scene.camera.width,
                    scene.camera.height,

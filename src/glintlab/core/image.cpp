@@ -1,12 +1,16 @@
 #include "glintlab/core/image.h"
 
 #include <algorithm>
+#include <atomic>
 #include <cctype>
 #include <cmath>
 #include <fstream>
 #include <iterator>
 #include <limits>
 #include <string>
+
+#include <fmt/format.h>
+#include <unistd.h>
 
 #include "glintlab/core/error.h"
 #include "glintlab/core/image_formats.h"
@@ -98,34 +102,72 @@ Image read_image(const std::filesystem::path& path) {
     return image;
 }
 
+void write_images(const std::vector<ImageOutput>& outputs) {
+    // Every output is written to a temporary file beside it, and only once
+    // all are complete are they renamed over their paths: a full disk or a
+    // failed write leaves no truncated file and no half of a set (an EXR
+    // without its PNG); a rename within a directory is atomic.
+    struct Staged {
+        std::filesystem::path temp;
+        bool done = false;
+        ~Staged() {
+            std::error_code ec;
+            if (!done && !temp.empty()) std::filesystem::remove(temp, ec);
+        }
+    };
+    static std::atomic<uint64_t> counter{0};
+    std::vector<Staged> staged(outputs.size());
+    for (size_t i = 0; i < outputs.size(); ++i) {
+        const ImageOutput& o = outputs[i];
+        const std::string ext = lower_extension(o.path);
+        if (ext != ".exr" && ext != ".hdr" && ext != ".png")
+            fail("{}: unknown output image extension '{}' (allowed: .exr, .hdr, .png)",
+                 o.path.string(), ext);
+        if (ext == ".png" && !std::isfinite(o.exposure_stops))
+            fail("{}: exposure {} stops is not finite", o.path.string(), o.exposure_stops);
+        check_writable(*o.image, o.path);
+        // Checked before anything is written, so that the renames below
+        // cannot fail half-way through the set.
+        std::error_code ec;
+        if (std::filesystem::exists(o.path, ec) && !std::filesystem::is_regular_file(o.path, ec))
+            fail("{}: cannot write the image: the path {}", o.path.string(),
+                 regular_file_problem(o.path));
+        staged[i].temp = o.path.parent_path() / fmt::format(".{}.{}.{}.tmp", o.path.filename().string(),
+                                                             ::getpid(), counter++);
+        if (ext == ".exr")
+            image_formats::write_exr_zip_float(*o.image, staged[i].temp, o.path);
+        else if (ext == ".hdr")
+            image_formats::write_radiance_hdr(*o.image, staged[i].temp, o.path);
+        else
+            image_formats::write_png_8bit(*o.image, staged[i].temp, o.path, o.exposure_stops);
+    }
+    for (size_t i = 0; i < outputs.size(); ++i) {
+        std::error_code ec;
+        std::filesystem::rename(staged[i].temp, outputs[i].path, ec);
+        if (ec)
+            fail("{}: cannot replace the file with the written image: {}",
+                 outputs[i].path.string(), ec.message());
+        staged[i].done = true;
+    }
+}
+
 void write_exr(const Image& image, const std::filesystem::path& path) {
-    check_writable(image, path);
-    image_formats::write_exr_zip_float(image, path);
+    if (lower_extension(path) != ".exr") fail("{}: write_exr needs a .exr path", path.string());
+    write_images({{&image, path}});
 }
 
 void write_png(const Image& image, const std::filesystem::path& path, float exposure_stops) {
-    if (!std::isfinite(exposure_stops))
-        fail("{}: exposure {} stops is not finite", path.string(), exposure_stops);
-    check_writable(image, path);
-    image_formats::write_png_8bit(image, path, exposure_stops);
+    if (lower_extension(path) != ".png") fail("{}: write_png needs a .png path", path.string());
+    write_images({{&image, path, exposure_stops}});
 }
 
 void write_hdr(const Image& image, const std::filesystem::path& path) {
-    check_writable(image, path);
-    image_formats::write_radiance_hdr(image, path);
+    if (lower_extension(path) != ".hdr") fail("{}: write_hdr needs a .hdr path", path.string());
+    write_images({{&image, path}});
 }
 
 void write_image(const Image& image, const std::filesystem::path& path, float exposure_stops) {
-    const std::string ext = lower_extension(path);
-    if (ext == ".exr")
-        write_exr(image, path);
-    else if (ext == ".hdr")
-        write_hdr(image, path);
-    else if (ext == ".png")
-        write_png(image, path, exposure_stops);
-    else
-        fail("{}: unknown output image extension '{}' (allowed: .exr, .hdr, .png)", path.string(),
-             ext);
+    write_images({{&image, path, exposure_stops}});
 }
 
 namespace image_formats {

@@ -52,4 +52,15 @@ void write_hdr(const Image& image, const std::filesystem::path& path);
 void write_image(const Image& image, const std::filesystem::path& path,
                  float exposure_stops = 0.0f);
 
+// Several outputs written together (as write_image each): each to a temporary
+// file beside its path, then all renamed over their paths, so a failure (a
+// full disk, an unwritable file) leaves every path as it was. Every writer
+// above goes through it.
+struct ImageOutput {
+    const Image* image;
+    std::filesystem::path path;
+    float exposure_stops = 0.0f;
+};
+void write_images(const std::vector<ImageOutput>& outputs);
+
 }  // namespace glintlab

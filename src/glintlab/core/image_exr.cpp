@@ -299,7 +299,8 @@ Image read_exr(const std::filesystem::path& path) {
     }
 }
 
-void write_exr_zip_float(const Image& image, const std::filesystem::path& path) {
+void write_exr_zip_float(const Image& image, const std::filesystem::path& file,
+                         const std::filesystem::path& name) {
     try {
         Imf::Header header(image.width, image.height);
         header.compression() = Imf::ZIP_COMPRESSION;
@@ -313,11 +314,11 @@ void write_exr_zip_float(const Image& image, const std::filesystem::path& path) 
                          Imf::Slice(Imf::FLOAT, base + c * sizeof(float), sizeof(glm::vec3),
                                     sizeof(glm::vec3) * size_t(image.width)));
         }
-        Imf::OutputFile file(path.c_str(), header);
-        file.setFrameBuffer(frame);
-        file.writePixels(image.height);
+        Imf::OutputFile out(file.c_str(), header);
+        out.setFrameBuffer(frame);
+        out.writePixels(image.height);
     } catch (const std::exception& e) {
-        fail("{}: cannot write OpenEXR file: {}", path.string(), e.what());
+        fail("{}: cannot write OpenEXR file: {}", name.string(), e.what());
     }
 }
 

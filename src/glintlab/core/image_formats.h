@@ -22,7 +22,10 @@ void require_image_memory(const std::filesystem::path& path, const char* what, i
 
 // OpenEXR (image_exr.cpp).
 Image read_exr(const std::filesystem::path& path);
-void write_exr_zip_float(const Image& image, const std::filesystem::path& path);
+// Writers: `file` is written, `name` is the path messages give (the output
+// the file is staged for, image.cpp).
+void write_exr_zip_float(const Image& image, const std::filesystem::path& file,
+                         const std::filesystem::path& name);
 
 // The whole file (read_image has checked it exists and is not empty).
 std::string read_file_bytes(const std::filesystem::path& path);
@@ -31,8 +34,10 @@ std::string read_file_bytes(const std::filesystem::path& path);
 Image read_radiance_hdr(const std::filesystem::path& path);
 // PNG through stb, JPEG through read_jpeg, told apart by their signatures.
 Image read_srgb_8bit_or_16bit(const std::filesystem::path& path);
-void write_png_8bit(const Image& image, const std::filesystem::path& path, float exposure_stops);
-void write_radiance_hdr(const Image& image, const std::filesystem::path& path);
+void write_png_8bit(const Image& image, const std::filesystem::path& file,
+                    const std::filesystem::path& name, float exposure_stops);
+void write_radiance_hdr(const Image& image, const std::filesystem::path& file,
+                        const std::filesystem::path& name);
 
 // JPEG through libjpeg-turbo (image_jpeg.cpp): `bytes` is the file at `path`.
 Image read_jpeg(const std::string& bytes, const std::filesystem::path& path);

@@ -15,6 +15,7 @@
 #include <cctype>
 #include <cmath>
 #include <cstdint>
+#include <fstream>
 #include <memory>
 #include <string>
 #include <string_view>
@@ -257,7 +258,28 @@ Image read_srgb_8bit_or_16bit(const std::filesystem::path& path) {
     return image;
 }
 
-void write_png_8bit(const Image& image, const std::filesystem::path& path, float exposure_stops) {
+namespace {
+
+void append_to_string(void* context, void* data, int size) {
+    static_cast<std::string*>(context)->append(static_cast<const char*>(data), size_t(size));
+}
+
+// stbi_write_png/hdr ignore fwrite's errors (a full disk left a truncated
+// file and success): the encoded bytes are written here and checked.
+void write_bytes(const std::string& bytes, const std::filesystem::path& file,
+                 const std::filesystem::path& name, const char* format) {
+    std::ofstream out(file, std::ios::binary | std::ios::trunc);
+    out.write(bytes.data(), std::streamsize(bytes.size()));
+    out.close();
+    if (!out)
+        fail("{}: cannot write {} file (is the directory writable and the disk not full?)",
+             name.string(), format);
+}
+
+}  // namespace
+
+void write_png_8bit(const Image& image, const std::filesystem::path& file,
+                    const std::filesystem::path& name, float exposure_stops) {
     const float scale = std::exp2(exposure_stops);
     std::vector<uint8_t> bytes(3 * image.pixels.size());
     for (size_t i = 0; i < image.pixels.size(); ++i) {
@@ -266,21 +288,23 @@ void write_png_8bit(const Image& image, const std::filesystem::path& path, float
             bytes[3 * i + size_t(c)] = uint8_t(std::lround(encoded * 255.0f));
         }
     }
-    if (!stbi_write_png(path.string().c_str(), image.width, image.height, 3, bytes.data(),
-                        3 * image.width))
-        fail("{}: cannot write PNG file (is the directory writable and the disk not full?)",
-             path.string());
+    std::string encoded;
+    if (!stbi_write_png_to_func(append_to_string, &encoded, image.width, image.height, 3,
+                                bytes.data(), 3 * image.width))
+        fail("{}: cannot encode PNG", name.string());
+    write_bytes(encoded, file, name, "PNG");
 }
 
-void write_radiance_hdr(const Image& image, const std::filesystem::path& path) {
+void write_radiance_hdr(const Image& image, const std::filesystem::path& file,
+                        const std::filesystem::path& name) {
     std::vector<float> rgb(3 * image.pixels.size());
     for (size_t i = 0; i < image.pixels.size(); ++i)
         for (int c = 0; c < 3; ++c) rgb[3 * i + size_t(c)] = std::max(image.pixels[i][c], 0.0f);
-    if (!stbi_write_hdr(path.string().c_str(), image.width, image.height, 3, rgb.data()))
-        fail(
-            "{}: cannot write Radiance .hdr file (is the directory writable and the disk not "
-            "full?)",
-            path.string());
+    std::string encoded;
+    if (!stbi_write_hdr_to_func(append_to_string, &encoded, image.width, image.height, 3,
+                                rgb.data()))
+        fail("{}: cannot encode Radiance .hdr", name.string());
+    write_bytes(encoded, file, name, "Radiance .hdr");
 }
 
 }  // namespace glintlab::image_formats

@@ -6,6 +6,7 @@
 #include <stb/stb_image_write.h>
 
 #include <cmath>
+#include <csignal>
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
@@ -22,6 +23,7 @@
 
 // After the standard headers: jpeglib.h needs FILE and size_t declared.
 #include <jpeglib.h>
+#include <sys/resource.h>
 
 #include "glintlab/core/error.h"
 #include "glintlab/core/image_test_util.h"
@@ -583,6 +585,48 @@ TEST(ImageErrors, WritersRefuseMissingDirectoryAndNonFinitePixels) {
     }
     expect_error([&] { write_image(good, dir / "c.bmp"); }, {"c.bmp", "unknown", ".png"});
     expect_error([&] { write_image(Image(), dir / "d.exr"); }, {"d.exr", "empty"});
+}
+
+// A full disk (here a file-size limit, SIGXFSZ ignored) left a truncated
+// EXR, and stb's PNG writer reported success on a failed fwrite; a failed
+// PNG left the EXR of the same render behind. Now a failed set changes no
+// file: the old contents stay, and no temporary file is left.
+TEST(ImageErrors, FailedWritesLeaveEveryFileAsItWas) {
+    ScratchDir dir;
+    const Image old_image(4, 4, glm::vec3(0.25f));
+    write_image(old_image, dir / "x.exr");
+    write_image(old_image, dir / "x.png");
+    Image big(256, 256);
+    for (size_t i = 0; i < big.pixels.size(); ++i)
+        big.pixels[i] = glm::vec3(float(i % 251) / 251.0f, float(i % 241) / 241.0f, 0.5f);
+    const auto count_files = [&] {
+        int n = 0;
+        for (const auto& e : std::filesystem::directory_iterator(dir / "")) n += e.is_regular_file();
+        return n;
+    };
+    {
+        struct rlimit saved{};
+        ::getrlimit(RLIMIT_FSIZE, &saved);
+        const auto previous = std::signal(SIGXFSZ, SIG_IGN);
+        struct rlimit small = saved;
+        small.rlim_cur = 4096;  // both encoded images are larger
+        ::setrlimit(RLIMIT_FSIZE, &small);
+        for (const char* name : {"x.exr", "x.png", "x.hdr"})
+            EXPECT_THROW(write_image(big, dir / name), Error) << name;
+        const Image other(4, 4, glm::vec3(0.75f));  // small: its own write succeeds
+        EXPECT_THROW(write_images({{&other, dir / "x.exr"}, {&big, dir / "x.png"}}), Error);
+        ::setrlimit(RLIMIT_FSIZE, &saved);
+        std::signal(SIGXFSZ, previous);
+    }
+    EXPECT_EQ(count_files(), 2);
+    EXPECT_EQ(read_image(dir / "x.exr").pixels, old_image.pixels);
+    EXPECT_NEAR(read_image(dir / "x.png").pixels[0].x, 0.25f, 0.01f);
+    // A directory where an output goes: refused before anything is written.
+    std::filesystem::create_directory(dir / "d.png");
+    expect_error([&] { write_images({{&big, dir / "new.exr"}, {&big, dir / "d.png"}}); },
+                 {"d.png", "is a directory"});
+    EXPECT_FALSE(std::filesystem::exists(dir / "new.exr"));
+    EXPECT_EQ(count_files(), 2);
 }
 
 }  // namespace
