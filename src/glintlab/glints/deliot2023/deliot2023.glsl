@@ -228,7 +228,16 @@ Deliot2023Grids deliot2023_select_grids(float lod, float ratio, float angle, boo
 // independence is tested in Deliot2023.CornerUniformsAreUniformAndIndependent.
 vec2 deliot2023_corner_uniforms(ivec2 corner, uint vs) {
 #ifdef GLINTLAB_DELIOT2023_NOISE_TEXTURE
-    return deliot2023_noise_fetch(hash_cell(corner, vs));
+    // The texture holds 4096 pairs: their empirical CDF misses N p by a
+    // relative few / sqrt(4096 p) at the small gate probabilities that decide
+    // sparse glints (renders were 3.5-5 % dark). Each cell's pair is rotated
+    // (Cranley-Patterson) by offsets from its hash: the 20 bits the texel
+    // index leaves unused, and the whole hash remixed, so that every uniform
+    // is uniform over cells whatever the table holds.
+    uint c = hash_cell(corner, vs);
+    vec2 offset = vec2(float(c >> 12u), float((c * 0x9E3779B9u) >> 12u)) * (1.0f / 1048576.0f);
+    vec2 u = deliot2023_noise_fetch(c) + offset;
+    return u - floor(u);
 #else
     uvec3 h = pcg3d(uvec3(uint(corner.x), uint(corner.y), vs));
     return vec2(uint_to_unit_float(h.x), uint_to_unit_float(h.y));
