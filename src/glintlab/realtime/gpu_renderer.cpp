@@ -322,11 +322,17 @@ struct GpuRenderer::Impl {
 
     void resize(int w, int h) {
         if (w == width && h == height && fbo) return;
-        GLint max_size = 0;
-        glGetIntegerv(GL_MAX_RENDERBUFFER_SIZE, &max_size);
+        GLint max_renderbuffer = 0, max_texture = 0;
+        glGetIntegerv(GL_MAX_RENDERBUFFER_SIZE, &max_renderbuffer);
+        glGetIntegerv(GL_MAX_TEXTURE_SIZE, &max_texture);
+        const GLint max_size = std::min(max_renderbuffer, max_texture);
         if (w < 1 || h < 1 || w > max_size || h > max_size)
-            fail("OpenGL renderer: resolution {}x{} outside [1, {}] (GL_MAX_RENDERBUFFER_SIZE)", w,
-                 h, max_size);
+            fail(
+                "OpenGL renderer: resolution {}x{} outside [1, {}] (this driver's "
+                "GL_MAX_TEXTURE_SIZE and GL_MAX_RENDERBUFFER_SIZE)",
+                w, h, max_size);
+        while (glGetError() != GL_NO_ERROR) {
+        }
         color = gl::make_texture(GL_TEXTURE_2D);
         glTextureStorage2D(color.get(), 1, GL_RGBA32F, w, h);
         glTextureParameteri(color.get(), GL_TEXTURE_MIN_FILTER, GL_NEAREST);
@@ -337,10 +343,24 @@ struct GpuRenderer::Impl {
         fbo = gl::make_framebuffer();
         glNamedFramebufferTexture(fbo.get(), GL_COLOR_ATTACHMENT0, color.get(), 0);
         glNamedFramebufferTexture(fbo.get(), GL_DEPTH_ATTACHMENT, depth.get(), 0);
+        // A driver that cannot allocate the targets (16384² is 4 GiB of
+        // RGBA32F and 1 GiB of depth) reports GL_OUT_OF_MEMORY here and an
+        // incomplete attachment below: both name the size and the cure.
+        const double gib = double(w) * double(h) * (16.0 + 4.0) / double(1u << 30);
+        if (glGetError() == GL_OUT_OF_MEMORY)
+            fail(
+                "OpenGL renderer: out of GPU memory for the {}x{} colour (RGBA32F) and depth "
+                "targets ({:.2f} GiB); lower the resolution (--res)",
+                w, h, gib);
         const GLenum status = glCheckNamedFramebufferStatus(fbo.get(), GL_FRAMEBUFFER);
         if (status != GL_FRAMEBUFFER_COMPLETE)
-            fail("OpenGL renderer: RGBA32F + depth framebuffer incomplete (status 0x{:x})",
-                 static_cast<unsigned>(status));
+            fail(
+                "OpenGL renderer: the {}x{} colour (RGBA32F) and depth targets ({:.2f} GiB) could "
+                "not be made a framebuffer (status 0x{:x}{}); lower the resolution (--res)",
+                w, h, gib, static_cast<unsigned>(status),
+                status == GL_FRAMEBUFFER_INCOMPLETE_ATTACHMENT
+                    ? ", incomplete attachment: usually out of GPU memory"
+                    : "");
         width = w;
         height = h;
     }
