@@ -14,6 +14,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "glintlab/core/image.h"
+
 namespace {
 
 struct RunResult {
@@ -102,6 +104,11 @@ TEST(CompareCli, WritesTheFilesAndTheJsonTable) {
           "smooth_diff.png", "smooth_diff_blur.png", "kneiphof2025.png"})
         EXPECT_TRUE(std::filesystem::exists(out / f)) << f;
     EXPECT_FALSE(std::filesystem::exists(out / "zirr2016.png"));
+    // The difference images carry their colour legend (bar and labels) under
+    // the enlarged image: 24 px wide, enlarged 6x to 144 x 144, + 22 rows.
+    const glintlab::Image diff = glintlab::read_image(out / "smooth_diff.png");
+    EXPECT_EQ(diff.width, 144);
+    EXPECT_EQ(diff.height, 144 + 22);
     std::ifstream csv(out / "metrics.csv");
     std::string header;
     std::getline(csv, header);

@@ -69,6 +69,30 @@ Image false_colour(const std::vector<float>& t, int w, int h) {
     return img;
 }
 
+// A false-colour difference image, enlarged (nearest) to at least 128
+// pixels wide, over its legend: the colour bar from -1 to +1 and what its
+// ends and centre mean.
+Image false_colour_with_legend(const std::vector<float>& t, int w, int h, const std::string& low,
+                               const std::string& high) {
+    const Image img = false_colour(t, w, h);
+    const int zoom = std::max(1, (128 + w - 1) / w);
+    const int cw = w * zoom, bar = 8, text = 12;
+    Image out(cw, h * zoom + 2 + bar + text, glm::vec3(0.0f));
+    for (int y = 0; y < h * zoom; ++y)
+        for (int x = 0; x < cw; ++x) out.at(x, y) = img.at(x / zoom, y / zoom);
+    for (int x = 0; x < cw; ++x) {
+        const glm::vec3 c = diverging(2.0f * (float(x) + 0.5f) / float(cw) - 1.0f);
+        for (int y = 0; y < bar; ++y)
+            out.at(x, h * zoom + 2 + y) =
+                glm::vec3(srgb_decode(c.x), srgb_decode(c.y), srgb_decode(c.z));
+    }
+    const int ty = h * zoom + 2 + bar + 2;
+    draw_text(out, 0, ty, low, 1);
+    draw_text(out, cw / 2 - 3, ty, "0", 1);
+    draw_text(out, std::max(0, cw - 6 * int(high.size())), ty, high, 1);
+    return out;
+}
+
 std::string signed_percent(double x) {
     return std::isfinite(x) ? fmt::format("{:+.1f}%", 100.0 * x) : std::string("n/a");
 }
@@ -232,15 +256,31 @@ void write_compare_outputs(const CompareResult& result, const std::filesystem::p
             d[i] = result.mask[i]
                        ? float((m.mean_plane.values[i] - t->mean_plane.values[i]) / (2.0 * mean))
                        : 0.0f;
-        write_png(false_colour(d, w, h), dir / (m.model + "_diff.png"));
+        // d = (model - truth) / (2 x the truth's image mean): +-1 is +-2 means.
+        write_png(false_colour_with_legend(d, w, h, "-2x mean", "+2x mean"),
+                  dir / (m.model + "_diff.png"));
         const Plane bm = gaussian_blur(m.mean_plane, result.blur_sigma_px);
         const Plane bt = gaussian_blur(t->mean_plane, result.blur_sigma_px);
         for (size_t i = 0; i < d.size(); ++i)
             d[i] = result.mask[i] && bt.values[i] > 0.0f
                        ? float((bm.values[i] - bt.values[i]) / bt.values[i] / 0.5)
                        : 0.0f;
-        write_png(false_colour(d, w, h), dir / (m.model + "_diff_blur.png"));
+        write_png(false_colour_with_legend(d, w, h, "-50%", "+50%"),
+                  dir / (m.model + "_diff_blur.png"));
     }
+
+    // The truths' numbers (1, 2, ... in row order), as the file names count them.
+    int truths = 0;
+    for (const ModelMetrics& m : result.models) truths += m.reference && m.compared;
+    auto truth_number = [&](const ModelMetrics& m) {
+        if (!m.reference) return 0;
+        int n = 0;
+        for (const ModelMetrics& o : result.models) {
+            n += o.reference;
+            if (&o == &m) return n;
+        }
+        return 0;
+    };
 
     // The grid: each image upscaled (nearest) to at least 128 pixels wide,
     // three label lines under it.
@@ -261,14 +301,31 @@ void write_compare_outputs(const CompareResult& result, const std::filesystem::p
                     glm::vec3(std::isfinite(c.x) ? c.x : 0.0f, std::isfinite(c.y) ? c.y : 0.0f,
                               std::isfinite(c.z) ? c.z : 0.0f);
             }
-        draw_text(grid, x0, y0 + ch + 2, m.model + (m.backend == "gpu" ? " (gpu)" : ""),
+        // Several truths (one per NDF or facet extent) are told apart by
+        // number and by the models each is the truth of.
+        const int number = truth_number(m);
+        const std::string tag = truths > 1 && number > 0 ? fmt::format(" #{}", number) : "";
+        draw_text(grid, x0, y0 + ch + 2, m.model + (m.backend == "gpu" ? " (gpu)" : "") + tag,
                   text_scale);
         draw_text(grid, x0, y0 + ch + 2 + line, fmt::format("{:.3g} s", m.seconds), text_scale);
-        draw_text(grid, x0, y0 + ch + 2 + 2 * line,
-                  m.reference ? std::string("ground truth")
-                              : fmt::format("err {}  blur {:.2f}", signed_percent(m.mean_rel_err),
-                                            m.blurred_rel_rmse),
-                  text_scale);
+        std::string third;
+        if (m.reference) {
+            third = "truth of";
+            for (const ModelMetrics& o : result.models)
+                if (!o.reference && o.compared && o.truth == m.truth) third += " " + o.model;
+        } else {
+            third = fmt::format("err {}  blur {:.2f}", signed_percent(m.mean_rel_err),
+                                m.blurred_rel_rmse);
+            if (truths > 1) {
+                for (const ModelMetrics& o : result.models)
+                    if (o.reference && o.truth == m.truth)
+                        third += fmt::format(" vs #{}", truth_number(o));
+            }
+        }
+        // stb_easy_font's glyphs are about 6 px wide: cut what the tile cannot hold.
+        const size_t room = size_t(std::max(1, cw / 6));
+        if (third.size() > room) third = third.substr(0, room - 2) + "..";
+        draw_text(grid, x0, y0 + ch + 2 + 2 * line, third, text_scale);
     }
     write_png(grid, dir / "grid.png");
 }
