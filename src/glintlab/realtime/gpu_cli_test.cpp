@@ -328,7 +328,9 @@ TEST(GpuViewer, PanelFitsTheWindowUnderXvfb) {
     GLINTLAB_REQUIRE_GL();
     const std::filesystem::path scene =
         std::filesystem::path(GLINTLAB_SOURCE_DIR) / "scenes" / "sphere.json";
-    for (const auto& [w, h] : {std::pair{1024, 768}, std::pair{1920, 1080}}) {
+    // 384 x 384: the example scenes' own window size, where the panel is 130 px
+    // wide and stacks every widget under its label.
+    for (const auto& [w, h] : {std::pair{384, 384}, std::pair{1024, 768}, std::pair{1920, 1080}}) {
         SCOPED_TRACE(std::to_string(w) + "x" + std::to_string(h));
         testing::ScratchDir dir;
         RunResult viewer;

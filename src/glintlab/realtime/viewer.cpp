@@ -113,10 +113,15 @@ void text(const std::string& s) {
 // The label to give the next widget, `widget_w` wide: its own where it fits
 // right of the widget; otherwise the label is drawn as a wrapped line above
 // and the widget, given the full row, gets a hidden one ("##label").
+// In a panel narrower than kSideBySideMinWidth (a small window: 35 % of
+// 384 px is 130 px) every widget is stacked under its label at full width:
+// side by side, a combo showed "beckn" for beckmann and a colour "2 2 1".
+constexpr float kSideBySideMinWidth = 260.0f;
 std::string fit_label(const std::string& label, float widget_w) {
     const float need = widget_w + ImGui::GetStyle().ItemInnerSpacing.x +
                        ImGui::CalcTextSize(label.c_str(), nullptr, true).x;
-    if (need <= ImGui::GetContentRegionAvail().x) return label;
+    const float avail = ImGui::GetContentRegionAvail().x;
+    if (need <= avail && avail >= kSideBySideMinWidth) return label;
     text(label);
     ImGui::SetNextItemWidth(-FLT_MIN);
     return "##" + label;
@@ -161,7 +166,7 @@ void model_switcher(GlintDesc& g) {
             if (info.id == g.model_id) current = static_cast<int>(models.size());
             models.push_back(&info);
         }
-    if (ImGui::BeginCombo("model",
+    if (ImGui::BeginCombo(fit_label("model").c_str(),
                           std::string(models[static_cast<size_t>(current)]->name).c_str())) {
         for (size_t i = 0; i < models.size(); ++i)
             if (ImGui::Selectable(std::string(models[i]->name).c_str(),
@@ -178,20 +183,20 @@ void material_panel(MaterialDesc& m) {
         const bool diffuse_part =
             m.type == MaterialDesc::Type::Diffuse || m.type == MaterialDesc::Type::Plastic;
         if (diffuse_part) {
-            ImGui::ColorEdit3("albedo", &m.albedo.x);
+            ImGui::ColorEdit3(fit_label("albedo").c_str(), &m.albedo.x);
             note("albedo");
         }
         if (m.type == MaterialDesc::Type::Diffuse) return;
         int ndf = m.ndf == NdfType::GGX ? 1 : 0;
-        if (ImGui::Combo("ndf", &ndf, "beckmann\0ggx\0"))
+        if (ImGui::Combo(fit_label("ndf").c_str(), &ndf, "beckmann\0ggx\0"))
             m.ndf = ndf == 1 ? NdfType::GGX : NdfType::Beckmann;
         note("ndf");
         slider("alpha x", &m.alpha_x, 1e-3f, 1.0f, true);
         slider("alpha y", &m.alpha_y, 1e-3f, 1.0f, true);
         if (m.type == MaterialDesc::Type::Conductor) {
-            ImGui::DragFloat3("eta", &m.eta.x, 0.01f, 0.01f, 10.0f);
+            ImGui::DragFloat3(fit_label("eta").c_str(), &m.eta.x, 0.01f, 0.01f, 10.0f);
             note("eta");
-            ImGui::DragFloat3("k", &m.k.x, 0.01f, 0.0f, 20.0f);
+            ImGui::DragFloat3(fit_label("k").c_str(), &m.k.x, 0.01f, 0.0f, 20.0f);
             note("k");
         } else {
             slider("eta", &m.eta.x, 1.0f, 3.0f);
@@ -207,7 +212,7 @@ void material_panel(MaterialDesc& m) {
     if (model.fit_material != nullptr) model.fit_material(probe);
     if (probe.ndf != g.ndf) {
         int ndf = g.ndf == NdfType::GGX ? 1 : 0;
-        if (ImGui::Combo("ndf", &ndf, "beckmann\0ggx\0"))
+        if (ImGui::Combo(fit_label("ndf").c_str(), &ndf, "beckmann\0ggx\0"))
             g.ndf = ndf == 1 ? NdfType::GGX : NdfType::Beckmann;
         note("ndf");
     }
@@ -217,26 +222,26 @@ void material_panel(MaterialDesc& m) {
     int seed = static_cast<int>(g.seed & 0x7fffffffu);
     if (ImGui::InputInt("seed", &seed)) g.seed = static_cast<uint32_t>(std::max(seed, 0));
     note("seed");
-    ImGui::ColorEdit3("colour", &g.color.x);
+    ImGui::ColorEdit3(fit_label("colour").c_str(), &g.color.x);
     note("colour");
     int fresnel = static_cast<int>(g.fresnel.mode);
-    if (ImGui::Combo("fresnel", &fresnel, "none\0schlick\0conductor\0dielectric\0"))
+    if (ImGui::Combo(fit_label("fresnel").c_str(), &fresnel, "none\0schlick\0conductor\0dielectric\0"))
         g.fresnel.mode = static_cast<FresnelDesc::Mode>(fresnel);
     note("fresnel");
     if (g.fresnel.mode == FresnelDesc::Mode::Schlick) {
-        ImGui::ColorEdit3("F0", &g.fresnel.f0.x);
+        ImGui::ColorEdit3(fit_label("F0").c_str(), &g.fresnel.f0.x);
         note("F0");
     }
     if (g.fresnel.mode == FresnelDesc::Mode::Conductor) {
-        ImGui::DragFloat3("eta", &g.fresnel.eta.x, 0.01f, 0.01f, 10.0f);
+        ImGui::DragFloat3(fit_label("eta").c_str(), &g.fresnel.eta.x, 0.01f, 0.01f, 10.0f);
         note("eta");
-        ImGui::DragFloat3("k", &g.fresnel.k.x, 0.01f, 0.0f, 20.0f);
+        ImGui::DragFloat3(fit_label("k").c_str(), &g.fresnel.k.x, 0.01f, 0.0f, 20.0f);
         note("k");
     }
     if (g.fresnel.mode == FresnelDesc::Mode::Dielectric) {
         slider("eta", &g.fresnel.eta.x, 1.0f, 3.0f);
         // The diffuse base lies under the dielectric coat (glint_bxdf.h).
-        ImGui::ColorEdit3("base albedo", &g.base_albedo.x);
+        ImGui::ColorEdit3(fit_label("base albedo").c_str(), &g.base_albedo.x);
         note("base albedo");
     } else {
         g.base_albedo = glm::vec3(0.0f);  // the loader's rule: no coat, no base
@@ -310,7 +315,7 @@ void material_panel(MaterialDesc& m) {
         note(c.key);
         for (int i = 0; i < *c.count; ++i) {
             const std::string key = fmt::format("{} {}", c.key, i);
-            ImGui::ColorEdit3(key.c_str(), &c.colours[i].x);
+            ImGui::ColorEdit3(fit_label(key).c_str(), &c.colours[i].x);
             note(key);
         }
     }
@@ -512,7 +517,7 @@ void run_viewer(Scene scene, const ViewerOptions& options) {
                 selected_material =
                     std::clamp(selected_material, 0, static_cast<int>(scene.materials.size()) - 1);
                 if (scene.materials.size() > 1) {
-                    ImGui::SliderInt("material", &selected_material, 0,
+                    ImGui::SliderInt(fit_label("material").c_str(), &selected_material, 0,
                                      static_cast<int>(scene.materials.size()) - 1);
                     note("material");
                 }
@@ -535,7 +540,8 @@ void run_viewer(Scene scene, const ViewerOptions& options) {
                         for (const GpuModelOption& o : hooks->options) {
                             const std::string label(o.name);
                             bool on = renderer.model_option(model, o.name);
-                            if (ImGui::Checkbox(label.c_str(), &on))
+                            if (ImGui::Checkbox(fit_label(label, ImGui::GetFrameHeight()).c_str(),
+                                                &on))
                                 renderer.set_model_option(model, o.name, on);
                             if (ImGui::IsItemHovered())
                                 ImGui::SetTooltip("%s", std::string(o.description).c_str());
@@ -550,19 +556,19 @@ void run_viewer(Scene scene, const ViewerOptions& options) {
                     ImGui::PushID(static_cast<int>(i));
                     text(light_label(scene.lights[i], i));
                     if (auto* l = std::get_if<PointLight>(&scene.lights[i])) {
-                        ImGui::DragFloat3("position", &l->position.x, 0.01f);
+                        ImGui::DragFloat3(fit_label("position").c_str(), &l->position.x, 0.01f);
                         note("position");
-                        ImGui::DragFloat3("intensity W/sr", &l->intensity.x, 0.01f, 0.0f, 1e6f);
+                        ImGui::DragFloat3(fit_label("intensity W/sr").c_str(), &l->intensity.x, 0.01f, 0.0f, 1e6f);
                         note("intensity W/sr");
                     } else if (auto* l = std::get_if<DirectionalLight>(&scene.lights[i])) {
-                        if (ImGui::DragFloat3("direction", &l->direction.x, 0.01f, -1.0f, 1.0f) &&
+                        if (ImGui::DragFloat3(fit_label("direction").c_str(), &l->direction.x, 0.01f, -1.0f, 1.0f) &&
                             glm::dot(l->direction, l->direction) > 1e-8f)
                             l->direction = glm::normalize(l->direction);
                         note("direction");
-                        ImGui::DragFloat3("irradiance W/m2", &l->irradiance.x, 0.01f, 0.0f, 1e6f);
+                        ImGui::DragFloat3(fit_label("irradiance W/m2").c_str(), &l->irradiance.x, 0.01f, 0.0f, 1e6f);
                         note("irradiance W/m2");
                     } else if (auto* l = std::get_if<SphereLight>(&scene.lights[i])) {
-                        ImGui::DragFloat3("radiance", &l->radiance.x, 0.01f, 0.0f, 1e6f);
+                        ImGui::DragFloat3(fit_label("radiance").c_str(), &l->radiance.x, 0.01f, 0.0f, 1e6f);
                         note("radiance");
                     }
                     ImGui::PopID();
@@ -577,7 +583,8 @@ void run_viewer(Scene scene, const ViewerOptions& options) {
                 }
             }
             if (ImGui::CollapsingHeader("View")) {
-                if (ImGui::Checkbox("shadows", &shadows)) renderer.set_shadows(shadows);
+                if (ImGui::Checkbox(fit_label("shadows", ImGui::GetFrameHeight()).c_str(), &shadows))
+                    renderer.set_shadows(shadows);
                 note("shadows");
                 slider("exposure (stops)", &scene.film.exposure, -10.0f, 10.0f);
                 text("bloom");
