@@ -367,6 +367,8 @@ void JsonObject::finish() const {
         if (!read_.contains(k)) unknown.push_back(k);
     if (unknown.empty()) return;
     const std::string key = shown_key(unknown.front());
+    if (read_.empty())
+        fail("{}: {}: unknown key \"{}\" (this object takes no keys)", file_, key_path(key), key);
     fail("{}: {}: unknown key \"{}\" (known keys here: {})", file_, key_path(key), key,
          fmt::join(read_, ", "));
 }

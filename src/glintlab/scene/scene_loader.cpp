@@ -35,6 +35,7 @@ const NumberRange kEtaRange{1.0, 4.0, true, false, true};
 const std::vector<std::string> kNdfNames = {"beckmann", "ggx"};
 
 NdfType read_ndf(JsonObject& o, NdfType fallback) {
+    o.ignore("ndf");  // known even when absent: an unknown key's error lists it
     if (!o.has("ndf")) return fallback;
     return o.string("ndf", "", kNdfNames) == "ggx" ? NdfType::GGX : NdfType::Beckmann;
 }

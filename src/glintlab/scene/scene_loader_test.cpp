@@ -68,6 +68,20 @@ TEST(SceneLoader, MalformedScenesGiveClearErrors) {
          {"bad.json", "/lightz", "unknown key"}},
         {"unknown material key", [](auto& j) { j["materials"][0]["colour"] = 1; },
          {"/materials/0/colour", "unknown key", "albedo"}},
+        // The glint material's list names ndf and the model blocks (it
+        // omitted both), and a model block's lists its parameters (it was
+        // empty).
+        {"unknown glint material key", [](auto& j) { j["materials"][1]["colr"] = 1; },
+         {"/materials/1/colr", "unknown key", "ndf", "deliot2023", "wang2020"}},
+        {"unknown model block key",
+         [](auto& j) { j["materials"][1]["smooth"] = {{"nope", 1}}; },
+         {"/materials/1/smooth/nope", "unknown key", "this object takes no keys"}},
+        {"unknown deliot2023 key",
+         [](auto& j) {
+             j["materials"][1]["model"] = "deliot2023";
+             j["materials"][1]["deliot2023"] = {{"nope", 1}};
+         },
+         {"/materials/1/deliot2023/nope", "microfacet_roughness", "screen_space_scale"}},
         {"albedo out of range", [](auto& j) { j["materials"][0]["albedo"] = {0.5, 1.5, 0.5}; },
          {"/materials/0/albedo", "component 1", "[0, 1]"}},
         {"albedo wrong type", [](auto& j) { j["materials"][0]["albedo"] = "grey"; },
