@@ -158,6 +158,26 @@ TEST(GpuCli, BenchGpuWang2020ReportsItsPasses) {
     EXPECT_NE(bad.output.find("19.4"), std::string::npos) << bad.output;
 }
 
+// view's options are checked before any window opens (no display needed):
+// a screenshot named .exr got PNG bytes, and --exposure nan failed only when
+// the window closed.
+TEST(GpuCli, ViewOptionsAreCheckedFirst) {
+    testing::ScratchDir dir;
+    std::ofstream(dir / "s.json") << small_scene().dump();
+    const std::string scene = (dir / "s.json").string();
+    RunResult r = run(cli() + " view " + scene + " --frames 1 --screenshot " +
+                      (dir / "x.exr").string());
+    EXPECT_EQ(r.status, 1) << r.output;
+    EXPECT_NE(r.output.find("--screenshot: " + (dir / "x.exr").string() +
+                            ": screenshots are written as PNG"),
+              std::string::npos)
+        << r.output;
+    EXPECT_FALSE(std::filesystem::exists(dir / "x.exr"));
+    r = run(cli() + " view " + scene + " --exposure nan");
+    EXPECT_NE(r.status, 0) << r.output;
+    EXPECT_NE(r.output.find("not a finite number"), std::string::npos) << r.output;
+}
+
 TEST(GpuCli, MissingEnvironmentMapIsAClearError) {
     testing::ScratchDir dir;
     nlohmann::json s = small_scene();
