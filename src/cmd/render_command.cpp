@@ -177,8 +177,8 @@ int run_render(const RenderArgs& a) {
     const Image preview = bloom ? apply_bloom(image, scene.film.bloom) : image;
     const std::filesystem::path& png = out.png;
     // Both or neither: a failed PNG once left the EXR behind.
-    write_images({{scene.film.bloom_exr ? &preview : &image, exr},
-                  {&preview, png, scene.film.exposure}});
+    write_images(
+        {{scene.film.bloom_exr ? &preview : &image, exr}, {&preview, png, scene.film.exposure}});
     if (!a.quiet)
         fmt::print("rendered {} ({}x{}, {}) in {:.2f} s -> {}, {}\n", a.scene, scene.camera.width,
                    scene.camera.height,

@@ -132,8 +132,9 @@ void write_images(const std::vector<ImageOutput>& outputs) {
         if (std::filesystem::exists(o.path, ec) && !std::filesystem::is_regular_file(o.path, ec))
             fail("{}: cannot write the image: the path {}", o.path.string(),
                  regular_file_problem(o.path));
-        staged[i].temp = o.path.parent_path() / fmt::format(".{}.{}.{}.tmp", o.path.filename().string(),
-                                                             ::getpid(), counter++);
+        staged[i].temp =
+            o.path.parent_path() /
+            fmt::format(".{}.{}.{}.tmp", o.path.filename().string(), ::getpid(), counter++);
         if (ext == ".exr")
             image_formats::write_exr_zip_float(*o.image, staged[i].temp, o.path);
         else if (ext == ".hdr")
@@ -145,8 +146,8 @@ void write_images(const std::vector<ImageOutput>& outputs) {
         std::error_code ec;
         std::filesystem::rename(staged[i].temp, outputs[i].path, ec);
         if (ec)
-            fail("{}: cannot replace the file with the written image: {}",
-                 outputs[i].path.string(), ec.message());
+            fail("{}: cannot replace the file with the written image: {}", outputs[i].path.string(),
+                 ec.message());
         staged[i].done = true;
     }
 }

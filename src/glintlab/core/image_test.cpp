@@ -601,11 +601,12 @@ TEST(ImageErrors, FailedWritesLeaveEveryFileAsItWas) {
         big.pixels[i] = glm::vec3(float(i % 251) / 251.0f, float(i % 241) / 241.0f, 0.5f);
     const auto count_files = [&] {
         int n = 0;
-        for (const auto& e : std::filesystem::directory_iterator(dir / "")) n += e.is_regular_file();
+        for (const auto& e : std::filesystem::directory_iterator(dir / ""))
+            n += e.is_regular_file();
         return n;
     };
     {
-        struct rlimit saved{};
+        struct rlimit saved {};
         ::getrlimit(RLIMIT_FSIZE, &saved);
         const auto previous = std::signal(SIGXFSZ, SIG_IGN);
         struct rlimit small = saved;
@@ -623,8 +624,11 @@ TEST(ImageErrors, FailedWritesLeaveEveryFileAsItWas) {
     EXPECT_NEAR(read_image(dir / "x.png").pixels[0].x, 0.25f, 0.01f);
     // A directory where an output goes: refused before anything is written.
     std::filesystem::create_directory(dir / "d.png");
-    expect_error([&] { write_images({{&big, dir / "new.exr"}, {&big, dir / "d.png"}}); },
-                 {"d.png", "is a directory"});
+    expect_error(
+        [&] {
+            write_images({{&big, dir / "new.exr"}, {&big, dir / "d.png"}});
+        },
+        {"d.png", "is a directory"});
     EXPECT_FALSE(std::filesystem::exists(dir / "new.exr"));
     EXPECT_EQ(count_files(), 2);
 }

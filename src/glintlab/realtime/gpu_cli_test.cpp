@@ -165,8 +165,8 @@ TEST(GpuCli, ViewOptionsAreCheckedFirst) {
     testing::ScratchDir dir;
     std::ofstream(dir / "s.json") << small_scene().dump();
     const std::string scene = (dir / "s.json").string();
-    RunResult r = run(cli() + " view " + scene + " --frames 1 --screenshot " +
-                      (dir / "x.exr").string());
+    RunResult r =
+        run(cli() + " view " + scene + " --frames 1 --screenshot " + (dir / "x.exr").string());
     EXPECT_EQ(r.status, 1) << r.output;
     EXPECT_NE(r.output.find("--screenshot: " + (dir / "x.exr").string() +
                             ": screenshots are written as PNG"),

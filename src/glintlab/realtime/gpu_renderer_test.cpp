@@ -278,8 +278,8 @@ INSTANTIATE_TEST_SUITE_P(Materials, GpuEnvironment,
 // 0.7 %; limits 10 % on the mean and 30 % (+2 pixels) on the glint count.
 TEST(GpuRenderer, SparseGlintsMatchTheCpu) {
     GLINTLAB_REQUIRE_GL();
-    nlohmann::json base =
-        nlohmann::json::parse(std::ifstream(std::string(GLINTLAB_SOURCE_DIR) + "/scenes/plane_25.json"));
+    nlohmann::json base = nlohmann::json::parse(
+        std::ifstream(std::string(GLINTLAB_SOURCE_DIR) + "/scenes/plane_25.json"));
     base["film"]["width"] = 160, base["film"]["height"] = 90;
     base["render"]["spp"] = 1;
     for (const char* model : {"deliot2023", "zirr2016", "kneiphof2025"})

@@ -225,7 +225,8 @@ void material_panel(MaterialDesc& m) {
     ImGui::ColorEdit3(fit_label("colour").c_str(), &g.color.x);
     note("colour");
     int fresnel = static_cast<int>(g.fresnel.mode);
-    if (ImGui::Combo(fit_label("fresnel").c_str(), &fresnel, "none\0schlick\0conductor\0dielectric\0"))
+    if (ImGui::Combo(fit_label("fresnel").c_str(), &fresnel,
+                     "none\0schlick\0conductor\0dielectric\0"))
         g.fresnel.mode = static_cast<FresnelDesc::Mode>(fresnel);
     note("fresnel");
     if (g.fresnel.mode == FresnelDesc::Mode::Schlick) {
@@ -558,17 +559,21 @@ void run_viewer(Scene scene, const ViewerOptions& options) {
                     if (auto* l = std::get_if<PointLight>(&scene.lights[i])) {
                         ImGui::DragFloat3(fit_label("position").c_str(), &l->position.x, 0.01f);
                         note("position");
-                        ImGui::DragFloat3(fit_label("intensity W/sr").c_str(), &l->intensity.x, 0.01f, 0.0f, 1e6f);
+                        ImGui::DragFloat3(fit_label("intensity W/sr").c_str(), &l->intensity.x,
+                                          0.01f, 0.0f, 1e6f);
                         note("intensity W/sr");
                     } else if (auto* l = std::get_if<DirectionalLight>(&scene.lights[i])) {
-                        if (ImGui::DragFloat3(fit_label("direction").c_str(), &l->direction.x, 0.01f, -1.0f, 1.0f) &&
+                        if (ImGui::DragFloat3(fit_label("direction").c_str(), &l->direction.x,
+                                              0.01f, -1.0f, 1.0f) &&
                             glm::dot(l->direction, l->direction) > 1e-8f)
                             l->direction = glm::normalize(l->direction);
                         note("direction");
-                        ImGui::DragFloat3(fit_label("irradiance W/m2").c_str(), &l->irradiance.x, 0.01f, 0.0f, 1e6f);
+                        ImGui::DragFloat3(fit_label("irradiance W/m2").c_str(), &l->irradiance.x,
+                                          0.01f, 0.0f, 1e6f);
                         note("irradiance W/m2");
                     } else if (auto* l = std::get_if<SphereLight>(&scene.lights[i])) {
-                        ImGui::DragFloat3(fit_label("radiance").c_str(), &l->radiance.x, 0.01f, 0.0f, 1e6f);
+                        ImGui::DragFloat3(fit_label("radiance").c_str(), &l->radiance.x, 0.01f,
+                                          0.0f, 1e6f);
                         note("radiance");
                     }
                     ImGui::PopID();
@@ -583,7 +588,8 @@ void run_viewer(Scene scene, const ViewerOptions& options) {
                 }
             }
             if (ImGui::CollapsingHeader("View")) {
-                if (ImGui::Checkbox(fit_label("shadows", ImGui::GetFrameHeight()).c_str(), &shadows))
+                if (ImGui::Checkbox(fit_label("shadows", ImGui::GetFrameHeight()).c_str(),
+                                    &shadows))
                     renderer.set_shadows(shadows);
                 note("shadows");
                 slider("exposure (stops)", &scene.film.exposure, -10.0f, 10.0f);

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 #include "glintlab/core/error.h"
 #include "glintlab/core/json_reader.h"
@@ -29,6 +30,29 @@ TEST(Deliot2023, ConvergesToSmoothNdfAtHighDensity) {
     }
 }
 
+// Mean and standard error of D_P / D(h) at h = n over 40 000 footprints of
+// 0.01 x 0.01 uv at random positions and seeds drawn from `rng`, D_P given
+// by `ndf(h, footprint, target)`.
+template <class Ndf>
+std::pair<double, double> ratio_mean_and_se(Ndf ndf, float log_density, Pcg32 rng) {
+    Deliot2023Target t;
+    t.log_density = log_density;
+    const glm::vec3 h(0.0f, 0.0f, 1.0f);
+    const double d_h = deliot2023_target_ndf(h, t);
+    double sum = 0.0, sum2 = 0.0;
+    const int n = 40000;
+    for (int i = 0; i < n; ++i) {
+        t.seed = rng.next_uint();
+        const Footprint fp{glm::vec2(rng.next_float(), rng.next_float()) * 100.0f,
+                           glm::vec2(0.01f, 0.0f), glm::vec2(0.0f, 0.01f)};
+        const double r = ndf(h, fp, t) / d_h;
+        sum += r;
+        sum2 += r * r;
+    }
+    const double mean = sum / n;
+    return std::pair{mean, std::sqrt(std::max(sum2 / n - mean * mean, 0.0) / n)};
+}
+
 // The default "conditional" law (binomial_laws.glsl Law 5b) keeps E[D_P] =
 // D(h) at every density, not only at high density: 0.01 x 0.01 uv footprints
 // at random positions and seeds, h = n (p = R = 0.025), ln density 10-16
@@ -38,23 +62,11 @@ TEST(Deliot2023, ConvergesToSmoothNdfAtHighDensity) {
 // is > 4.5 se high at ln 12 and 14, so the test separates the two.
 TEST(Deliot2023, ConditionalLawIsUnbiasedAtLowDensity) {
     auto mean_and_se = [](const Deliot2023Params& p, float log_density) {
-        Deliot2023Target t;
-        t.log_density = log_density;
-        Pcg32 rng(17u, static_cast<uint64_t>(log_density * 100.0f));
-        const glm::vec3 h(0.0f, 0.0f, 1.0f);
-        const double d_h = deliot2023_target_ndf(h, t);
-        double sum = 0.0, sum2 = 0.0;
-        const int n = 40000;
-        for (int i = 0; i < n; ++i) {
-            t.seed = rng.next_uint();
-            const Footprint fp{glm::vec2(rng.next_float(), rng.next_float()) * 100.0f,
-                               glm::vec2(0.01f, 0.0f), glm::vec2(0.0f, 0.01f)};
-            const double r = deliot2023_ndf(h, fp, t, p) / d_h;
-            sum += r;
-            sum2 += r * r;
-        }
-        const double mean = sum / n;
-        return std::pair{mean, std::sqrt(std::max(sum2 / n - mean * mean, 0.0) / n)};
+        return ratio_mean_and_se(
+            [&p](glm::vec3 h, const Footprint& fp, const Deliot2023Target& t) {
+                return deliot2023_ndf(h, fp, t, p);
+            },
+            log_density, Pcg32(17u, static_cast<uint64_t>(log_density * 100.0f)));
     };
     Deliot2023Params conditional, single_gated;
     single_gated.conditional_gaussian = false;
@@ -101,22 +113,11 @@ TEST(Deliot2023, NoiseTableVariantConverges) {
 TEST(Deliot2023, NoiseTableVariantIsUnbiasedAtLowDensity) {
     const Deliot2023Params p;
     for (const float ln : {11.0f, 12.0f, 13.0f}) {
-        Deliot2023Target t;
-        t.log_density = ln;
-        Pcg32 rng(23u, static_cast<uint64_t>(ln * 10.0f));
-        const glm::vec3 h(0.0f, 0.0f, 1.0f);
-        const double d_h = deliot2023_target_ndf(h, t);
-        double sum = 0.0, sum2 = 0.0;
-        const int n = 40000;
-        for (int i = 0; i < n; ++i) {
-            t.seed = rng.next_uint();
-            const Footprint fp{glm::vec2(rng.next_float(), rng.next_float()) * 100.0f,
-                               glm::vec2(0.01f, 0.0f), glm::vec2(0.0f, 0.01f)};
-            const double r = deliot2023_ndf_noise_table(h, fp, t, p) / d_h;
-            sum += r, sum2 += r * r;
-        }
-        const double mean = sum / n;
-        const double se = std::sqrt(std::max(sum2 / n - mean * mean, 0.0) / n);
+        const auto [mean, se] = ratio_mean_and_se(
+            [&p](glm::vec3 h, const Footprint& fp, const Deliot2023Target& t) {
+                return deliot2023_ndf_noise_table(h, fp, t, p);
+            },
+            ln, Pcg32(23u, static_cast<uint64_t>(ln * 10.0f)));
         EXPECT_LE(std::abs(mean - 1.0), 4.5 * se + 2e-3) << "ln " << ln << " se " << se;
         RecordProperty("noise_table_mean_ln" + std::to_string(int(ln)), std::to_string(mean));
     }
