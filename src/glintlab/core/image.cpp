@@ -76,6 +76,13 @@ void check_writable(const Image& image, const std::filesystem::path& path) {
 
 }  // namespace
 
+void read_image_checks(const std::filesystem::path& path) {
+    std::error_code ec;
+    if (const std::string problem = regular_file_problem(path); !problem.empty())
+        fail("{}: the image file {}", path.string(), problem);
+    if (std::filesystem::file_size(path, ec) == 0) fail("{}: image file is empty", path.string());
+}
+
 Image read_image(const std::filesystem::path& path) {
     const std::string ext = lower_extension(path);
     const bool known =
@@ -83,10 +90,7 @@ Image read_image(const std::filesystem::path& path) {
     if (!known)
         fail("{}: unknown image extension '{}' (allowed: .exr, .hdr, .png, .jpg, .jpeg)",
              path.string(), ext);
-    std::error_code ec;
-    if (const std::string problem = regular_file_problem(path); !problem.empty())
-        fail("{}: the image file {}", path.string(), problem);
-    if (std::filesystem::file_size(path, ec) == 0) fail("{}: image file is empty", path.string());
+    read_image_checks(path);
 
     Image image;
     if (ext == ".exr")

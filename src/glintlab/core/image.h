@@ -41,6 +41,9 @@ float srgb_decode(float encoded);
 // Throws glintlab::Error naming the file for a missing, unreadable or empty
 // file, an unknown extension, or a NaN/Inf pixel (with its coordinates).
 Image read_image(const std::filesystem::path& path);
+// The checks read_image makes before decoding: the path names a readable,
+// regular, non-empty file (errors name it).
+void read_image_checks(const std::filesystem::path& path);
 
 // Float32 RGB, ZIP compression.
 void write_exr(const Image& image, const std::filesystem::path& path);

@@ -8,6 +8,7 @@
 #include <string>
 
 #include "glintlab/core/image.h"
+#include "glintlab/core/texture_image.h"
 
 namespace glintlab::image_formats {
 
@@ -34,6 +35,9 @@ std::string read_file_bytes(const std::filesystem::path& path);
 Image read_radiance_hdr(const std::filesystem::path& path);
 // PNG through stb, JPEG through read_jpeg, told apart by their signatures.
 Image read_srgb_8bit_or_16bit(const std::filesystem::path& path);
+// PNG (8 or 16 bits, 1-4 channels) or JPEG as stored codes / maximum code,
+// RGBA (texture_image.h).
+TextureImage read_png_or_jpeg_codes(const std::filesystem::path& path);
 void write_png_8bit(const Image& image, const std::filesystem::path& file,
                     const std::filesystem::path& name, float exposure_stops);
 void write_radiance_hdr(const Image& image, const std::filesystem::path& file,

@@ -258,6 +258,56 @@ Image read_srgb_8bit_or_16bit(const std::filesystem::path& path) {
     return image;
 }
 
+TextureImage read_png_or_jpeg_codes(const std::filesystem::path& path) {
+    static constexpr std::string_view kPng("\x89PNG\r\n\x1a\n", 8);
+    static constexpr std::string_view kJpeg("\xff\xd8\xff", 3);
+    const std::string file_bytes = read_file_bytes(path);
+    TextureImage t;
+    t.codes = true;
+    if (file_bytes.starts_with(kJpeg)) {
+        // libjpeg-turbo's reader decodes sRGB exactly; encoding again gives
+        // the 8-bit codes back to within float rounding (JPEG has no alpha).
+        const Image image = read_jpeg(file_bytes, path);
+        t.width = image.width, t.height = image.height;
+        t.texels.reserve(image.pixels.size());
+        for (const glm::vec3& p : image.pixels)
+            t.texels.emplace_back(std::clamp(srgb_encode(p.x), 0.0f, 1.0f),
+                                  std::clamp(srgb_encode(p.y), 0.0f, 1.0f),
+                                  std::clamp(srgb_encode(p.z), 0.0f, 1.0f), 1.0f);
+        return t;
+    }
+    if (!file_bytes.starts_with(kPng))
+        fail(
+            "{}: cannot read PNG/JPEG file: it has neither the PNG signature nor the JPEG "
+            "start-of-image marker (stb's other formats are not read)",
+            path.string());
+    const std::string bytes = png_bytes_for_stb(file_bytes, path);
+    const auto* p = reinterpret_cast<const stbi_uc*>(bytes.data());
+    const int size = static_cast<int>(bytes.size());
+    int w = 0, h = 0, channels_in_file = 0;
+    // 4 x 16 bits a pixel for stb, 16 bytes for the texels.
+    if (stbi_info_from_memory(p, size, &w, &h, &channels_in_file))
+        require_image_memory(path, "PNG texture", w, h, 24);
+    auto fill = [&](const auto* data, float max_code) {
+        t.width = w, t.height = h;
+        t.texels.resize(size_t(w) * size_t(h));
+        for (size_t i = 0; i < t.texels.size(); ++i)
+            for (int c = 0; c < 4; ++c) t.texels[i][c] = float(data[4 * i + size_t(c)]) / max_code;
+    };
+    if (stbi_is_16_bit_from_memory(p, size)) {
+        std::unique_ptr<stbi_us, StbFree> data(
+            stbi_load_16_from_memory(p, size, &w, &h, &channels_in_file, 4));
+        if (!data) fail_decode(path, "16-bit PNG");
+        fill(data.get(), 65535.0f);
+    } else {
+        std::unique_ptr<stbi_uc, StbFree> data(
+            stbi_load_from_memory(p, size, &w, &h, &channels_in_file, 4));
+        if (!data) fail_decode(path, "PNG");
+        fill(data.get(), 255.0f);
+    }
+    return t;
+}
+
 namespace {
 
 void append_to_string(void* context, void* data, int size) {

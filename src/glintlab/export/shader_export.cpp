@@ -415,7 +415,10 @@ const MaterialDesc& select_material(const Scene& scene, const std::string& name,
     };
     if (name.empty()) {
         for (const MaterialDesc& m : scene.materials)
-            if (m.type == MaterialDesc::Type::Glint && m.glint.model_id == model.id) return m;
+            if (m.type == MaterialDesc::Type::Glint && m.glint.model_id == model.id) {
+                require_untextured(m, scene.file, "export");
+                return m;
+            }
         fail("export: scene \"{}\" has no glint material of model \"{}\" (materials: {})", file,
              model.name, listed(all));
     }
@@ -432,6 +435,7 @@ const MaterialDesc& select_material(const Scene& scene, const std::string& name,
                 "materials of model \"{}\": {})",
                 name, file, glint_model(m.glint.model_id).name, model.name, model.name,
                 listed(of_model));
+        require_untextured(m, scene.file, "export");
         return m;
     }
     fail("export: scene \"{}\" has no material \"{}\" (materials: {})", file, name, listed(all));

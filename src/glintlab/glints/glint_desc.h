@@ -6,9 +6,11 @@
 #pragma once
 
 #include <cstdint>
+#include <memory>
 
 #include <glm/glm.hpp>
 
+#include "glintlab/core/texture_input.h"
 #include "glintlab/glints/model_list.h"
 #include "glintlab/glints/model_params.h"
 #include "glintlab/microfacet/bxdfs.h"
@@ -45,6 +47,17 @@ struct FresnelDesc {
     glm::vec3 k{0.0f};
 };
 
+// The glint parameters read from textures (docs/MODELS.md, "Textured
+// parameters"), each mip-mapped in the quantity a footprint averages: the
+// density N = e^{ln N} (facets per unit uv area: a footprint's expected
+// count is its integral), α² (slope variance), linear RGB. Null: the
+// parameter is the material's number.
+struct GlintTextures {
+    std::shared_ptr<const TextureInput> density;
+    std::shared_ptr<const TextureInput> alpha_x_sq, alpha_y_sq;
+    std::shared_ptr<const TextureInput> color, base_albedo;
+};
+
 struct GlintDesc {
     GlintModelId model_id = GlintModelId::Smooth;
     NdfType ndf = NdfType::Beckmann;
@@ -58,6 +71,10 @@ struct GlintDesc {
     glm::vec3 base_albedo{0.0f};
     bool has_base() const { return base_albedo != glm::vec3(0.0f); }
     uint32_t seed = 0;
+    // Textured parameters (null: none). The renderers resolve them at each
+    // hit (glint_textures.h) into the numbers above; the ground truth
+    // `explicit` also reads them per facet.
+    std::shared_ptr<const GlintTextures> textures;
     // The active model's parameters, as read through its descriptor's
     // parameter table. (The block as written in the scene file is not kept:
     // nothing needs it once it is read, and a second copy could disagree.)

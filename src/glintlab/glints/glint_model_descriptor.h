@@ -163,6 +163,13 @@ struct GlintModelDescriptor {
     // Optional: for a model whose facets' extent the method fixes (no
     // parameter), the explicit cone half-angle (radians) of the same extent.
     double (*facet_cone)(const GlintDesc& desc) = nullptr;
+    // Which shared parameters may come from a texture (docs/MODELS.md,
+    // "Textured parameters"): colour and base_albedo always; the density and
+    // the roughness where the model evaluates them per hit. A model that
+    // precomputes from them per material says why not (the loader's error
+    // quotes it).
+    bool textured_density = true, textured_roughness = true;
+    std::string untextured_reason;
     GlintValidationSuite validation;  // name empty: no suite
     // Set (set_export): `glintlab export` writes the model (its GPU back end).
     std::optional<GlintModelExport> shader_export;

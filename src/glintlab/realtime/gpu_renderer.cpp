@@ -505,6 +505,8 @@ gl::Texture upload_latlong(const Image& image) {
 }  // namespace
 
 GpuRenderer::GpuRenderer(const Scene& scene) : impl_(std::make_unique<Impl>()) {
+    for (const MaterialDesc& m : scene.materials)
+        require_untextured(m, scene.file, "the OpenGL renderer (render --gpu, view)");
     require_gl45("OpenGL renderer");
     Impl& r = *impl_;
     const int segments = sphere_segments(scene);

@@ -88,7 +88,8 @@ glm::vec3 own_light_radiance(const IntegratorContext& ctx, const OwnLights& own,
                              const Footprint& footprint, Pcg32& rng, GlintPostSample* post) {
     GlintLightingContext lc;
     lc.scene = &ctx.scene;
-    lc.desc = own.desc;
+    // The description resolved at this hit (textured colour, base).
+    lc.desc = bsdf.glint_desc() ? bsdf.glint_desc() : own.desc;
     lc.p = hit.p;
     lc.t = bsdf.frame().t;
     lc.b = bsdf.frame().b;

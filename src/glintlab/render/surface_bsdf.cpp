@@ -1,7 +1,9 @@
 #include "glintlab/render/surface_bsdf.h"
 
+#include <algorithm>
 #include <cmath>
 
+#include "glintlab/glints/glint_textures.h"
 #include "glintlab/render/light_sampling.h"
 
 namespace glintlab {
@@ -45,33 +47,48 @@ SurfaceBsdf make_surface_bsdf(const MaterialDesc& m, const SurfaceHit& hit, glm:
         frame.n = -frame.n;
         frame.b = -frame.b;  // keeps (t, b, n) right-handed
     }
+    glm::vec3 albedo = m.albedo;
+    float alpha_x = m.alpha_x, alpha_y = m.alpha_y;
+    if (m.textures) {
+        const MaterialTextures& t = *m.textures;
+        if (t.albedo) {
+            const glm::vec3 v = t.albedo->lookup(hit.uv, footprint);
+            albedo = t.albedo->texture->channels() == 1 ? glm::vec3(v.x) : v;
+        }
+        // Conductors and dielectrics take α in [0, 1] (0: a mirror).
+        if (t.alpha_x_sq)
+            alpha_x = std::sqrt(std::max(t.alpha_x_sq->lookup(hit.uv, footprint).x, 0.0f));
+        if (t.alpha_y_sq)
+            alpha_y = std::sqrt(std::max(t.alpha_y_sq->lookup(hit.uv, footprint).x, 0.0f));
+    }
     switch (m.type) {
         case MaterialDesc::Type::Diffuse: {
             DiffuseBxdf b;
-            b.albedo = m.albedo;
+            b.albedo = albedo;
             return SurfaceBsdf(frame, Bxdf(b));
         }
         case MaterialDesc::Type::Conductor: {
             ConductorBxdf b;
-            b.dist = distribution(m.ndf, m.alpha_x, m.alpha_y);
+            b.dist = distribution(m.ndf, alpha_x, alpha_y);
             b.eta = m.eta;
             b.k = m.k;
             return SurfaceBsdf(frame, Bxdf(b));
         }
         case MaterialDesc::Type::Dielectric: {
             DielectricBxdf b;
-            b.dist = distribution(m.ndf, m.alpha_x, m.alpha_y);
+            b.dist = distribution(m.ndf, alpha_x, alpha_y);
             b.eta = m.eta.x;
             return SurfaceBsdf(frame, Bxdf(b));
         }
         case MaterialDesc::Type::Plastic: {
             PlasticBxdf b;
-            b.diffuse = m.albedo;
-            b.dist = distribution(m.ndf, m.alpha_x, m.alpha_y);
+            b.diffuse = albedo;
+            b.dist = distribution(m.ndf, alpha_x, alpha_y);
             b.eta = m.eta.x;
             return SurfaceBsdf(frame, Bxdf(b));
         }
-        case MaterialDesc::Type::Glint: break;
+        case MaterialDesc::Type::Glint:
+            break;
     }
     GlintBxdf g;
     g.desc = &m.glint;
@@ -79,6 +96,10 @@ SurfaceBsdf make_surface_bsdf(const MaterialDesc& m, const SurfaceHit& hit, glm:
         g.has_footprint = true;
         g.footprint = *footprint;
     }
+    if (m.glint.textures)
+        return SurfaceBsdf(
+            frame, g,
+            std::make_shared<const GlintDesc>(resolve_glint_textures(m.glint, hit.uv, footprint)));
     return SurfaceBsdf(frame, g);
 }
 

@@ -1,5 +1,7 @@
 #include "glintlab/scene/scene.h"
 
+#include "glintlab/core/error.h"
+
 namespace glintlab {
 
 const char* material_type_name(MaterialDesc::Type type) {
@@ -16,6 +18,35 @@ const char* material_type_name(MaterialDesc::Type type) {
             return "glint";
     }
     return "unknown";
+}
+
+std::string textured_keys(const MaterialDesc& m) {
+    std::string keys;
+    auto add = [&](bool on, const char* key) {
+        if (on) keys += keys.empty() ? key : std::string(", ") + key;
+    };
+    if (m.textures) {
+        add(m.textures->albedo != nullptr, "albedo");
+        add(m.textures->alpha_x_sq || m.textures->alpha_y_sq, "roughness");
+    }
+    if (m.glint.textures) {
+        const GlintTextures& t = *m.glint.textures;
+        add(t.alpha_x_sq || t.alpha_y_sq, "roughness");
+        add(t.density != nullptr, "log_density");
+        add(t.color != nullptr, "color");
+        add(t.base_albedo != nullptr, "base_albedo");
+    }
+    return keys;
+}
+
+void require_untextured(const MaterialDesc& m, const std::filesystem::path& file,
+                        const char* path) {
+    if (!m.textured()) return;
+    fail(
+        "{}: material \"{}\" reads {} from a texture: textured parameters render on the CPU "
+        "(glintlab render without --gpu, compare, Python); {} takes numbers only for now "
+        "(docs/SCENE_FORMAT.md, \"Textures\")",
+        file.string(), m.name, textured_keys(m), path);
 }
 
 }  // namespace glintlab

@@ -20,6 +20,13 @@
 
 namespace glintlab {
 
+// The non-glint material parameters read from textures (scene/texture_reader.h):
+// albedo as linear RGB, the roughness as α². Null: the number.
+struct MaterialTextures {
+    std::shared_ptr<const TextureInput> albedo;
+    std::shared_ptr<const TextureInput> alpha_x_sq, alpha_y_sq;
+};
+
 struct MaterialDesc {
     enum class Type { Diffuse, Conductor, Dielectric, Plastic, Glint };
     std::string name;
@@ -29,12 +36,20 @@ struct MaterialDesc {
     float alpha_x = 0.2f, alpha_y = 0.2f;
     glm::vec3 eta{1.5f};  // Conductor: complex IOR; Dielectric/Plastic: eta.x
     glm::vec3 k{0.0f};
-    GlintDesc glint;  // Glint
-    bool needs_uv() const { return type == Type::Glint; }
+    GlintDesc glint;                                   // Glint
+    std::shared_ptr<const MaterialTextures> textures;  // null: no textured parameter
+    bool needs_uv() const { return type == Type::Glint || textures != nullptr; }
+    // Any parameter, of the glint block too, read from a texture.
+    bool textured() const { return textures != nullptr || glint.textures != nullptr; }
 };
 
 // The scene format's name of a material type ("diffuse", "glint", ...).
 const char* material_type_name(MaterialDesc::Type type);
+// The keys of `m` read from textures ("roughness, log_density"); empty: none.
+std::string textured_keys(const MaterialDesc& m);
+// Throws naming the file, the material and its textured keys when `m` reads
+// a parameter from a texture: `path` ("the OpenGL renderer") takes numbers only.
+void require_untextured(const MaterialDesc& m, const std::filesystem::path& file, const char* path);
 
 struct SphereGeometry {
     glm::vec3 center{0.0f};

@@ -14,11 +14,13 @@
 #include "glintlab/core/memory_limit.h"
 #include "glintlab/core/regular_file.h"
 #include "glintlab/glints/glint_reader.h"
+#include "glintlab/glints/registry.h"
 #include "glintlab/scene/environment_file.h"
 #include "glintlab/scene/gltf_loader.h"
 #include "glintlab/scene/obj_loader.h"
 #include "glintlab/scene/shapes.h"
 #include "glintlab/scene/shapes_heightfield.h"
+#include "glintlab/scene/texture_reader.h"
 #include "glintlab/scene/transform.h"
 #include "glintlab/scene/uv_projection.h"
 
@@ -46,6 +48,55 @@ void read_roughness(JsonObject& o, double min, float* ax, float* ay) {
     const glm::vec2 a = o.vec2("roughness", glm::vec2(*ax, *ay), min, 1.0f);
     *ax = a.x;
     *ay = a.y;
+}
+
+// "roughness" where it may be a texture: a number, [αx, αy] (each a number
+// or a texture form) or one texture form (isotropic). Textures hold α²
+// (TextureParameter::Filtered::Square), clamped below to `min` with a
+// warning (an 8-bit map's 0).
+void read_roughness_or_textures(JsonObject& o, double min, float* ax, float* ay,
+                                std::shared_ptr<const TextureInput>* tx,
+                                std::shared_ptr<const TextureInput>* ty, TextureFileCache& files) {
+    TextureParameter p;
+    p.min = min, p.max = 1.0, p.clamp_below = true;
+    p.filtered = TextureParameter::Filtered::Square;
+    if (is_texture_form(o, "roughness")) {
+        *tx = *ty = read_texture_input(o, "roughness", p, files);
+        return;
+    }
+    const nlohmann::json* v = o.has("roughness") ? o.raw("roughness") : nullptr;
+    if (v && v->is_array() && v->size() == 2 && ((*v)[0].is_object() || (*v)[1].is_object())) {
+        float* a[2] = {ax, ay};
+        std::shared_ptr<const TextureInput>* t[2] = {tx, ty};
+        for (int i = 0; i < 2; ++i) {
+            const std::string where = fmt::format("{}/roughness/{}", o.path(), i);
+            const nlohmann::json& e = (*v)[size_t(i)];
+            if (e.is_object()) {
+                JsonObject block(e, where, o.file());
+                *t[i] = read_texture_block(block, p, files);
+            } else if (e.is_number() && e.get<double>() >= min && e.get<double>() <= 1.0) {
+                *a[i] = e.get<float>();
+            } else {
+                fail("{}: {}: expected a number in [{:g}, 1] or a texture object, got {}", o.file(),
+                     where, min, e.dump());
+            }
+        }
+        return;
+    }
+    read_roughness(o, min, ax, ay);
+}
+
+// A colour parameter that may be a texture form.
+glm::vec3 read_colour_or_texture(JsonObject& o, std::string_view key, glm::vec3 fallback,
+                                 std::shared_ptr<const TextureInput>* texture,
+                                 TextureFileCache& files) {
+    if (is_texture_form(o, key)) {
+        TextureParameter p;
+        p.colour = true;
+        *texture = read_texture_input(o, key, p, files);
+        return fallback;
+    }
+    return o.color(key, fallback, 0.0f, 1.0f);
 }
 
 struct MetalPreset {
@@ -101,54 +152,80 @@ FresnelDesc read_fresnel(JsonObject& parent) {
     return f;
 }
 
-GlintDesc read_glint(JsonObject& o) {
+GlintDesc read_glint(JsonObject& o, TextureFileCache& files) {
     GlintDesc g;
+    GlintTextures t;
     g.model_id = read_glint_model_name(o);
     g.ndf = read_ndf(o, NdfType::Beckmann);
-    read_roughness(o, 1e-3, &g.alpha_x, &g.alpha_y);
-    g.log_density = static_cast<float>(o.number("log_density", 20.0, -20.0, 60.0));
+    read_roughness_or_textures(o, 1e-3, &g.alpha_x, &g.alpha_y, &t.alpha_x_sq, &t.alpha_y_sq,
+                               files);
+    if (is_texture_form(o, "log_density")) {
+        TextureParameter p;
+        p.min = -20.0, p.max = 60.0;
+        p.filtered = TextureParameter::Filtered::Exp;
+        t.density = read_texture_input(o, "log_density", p, files);
+    } else {
+        g.log_density = static_cast<float>(o.number("log_density", 20.0, -20.0, 60.0));
+    }
     g.fresnel = read_fresnel(o);
-    g.color = o.color("color", glm::vec3(1.0f), 0.0f, 1.0f);
-    g.base_albedo = o.color("base_albedo", glm::vec3(0.0f), 0.0f, 1.0f);
-    if (g.has_base() && g.fresnel.mode != FresnelDesc::Mode::Dielectric)
+    g.color = read_colour_or_texture(o, "color", glm::vec3(1.0f), &t.color, files);
+    g.base_albedo =
+        read_colour_or_texture(o, "base_albedo", glm::vec3(0.0f), &t.base_albedo, files);
+    if ((g.has_base() || t.base_albedo) && g.fresnel.mode != FresnelDesc::Mode::Dielectric)
         o.error("base_albedo",
                 "a diffuse base lies under a dielectric coating: it needs \"fresnel\": "
                 "{\"type\": \"dielectric\", \"eta\": ...} (the coating's interface)");
     g.seed = static_cast<uint32_t>(o.number("seed", 0.0, 0.0, 4294967295.0));
+    // Before the model's own checks, which read the numbers a texture replaces.
+    const GlintModelDescriptor& model = glint_model(g.model_id);
+    auto refuse = [&](const char* key) {
+        o.error(key, fmt::format("model {} cannot take \"{}\" from a texture: {} (give a number)",
+                                 model.name, key, model.untextured_reason));
+    };
+    if (t.density && !model.textured_density) refuse("log_density");
+    if ((t.alpha_x_sq || t.alpha_y_sq) && !model.textured_roughness) refuse("roughness");
     read_glint_model_blocks(o, g);  // the model's block, through its descriptor
+    if (t.density || t.alpha_x_sq || t.alpha_y_sq || t.color || t.base_albedo)
+        g.textures = std::make_shared<const GlintTextures>(std::move(t));
     return g;
 }
 
-MaterialDesc read_material(JsonObject& o) {
+MaterialDesc read_material(JsonObject& o, TextureFileCache& files) {
+    MaterialTextures t;
     MaterialDesc m;
     m.name = o.required_string("name");
     const std::string type =
         o.required_string("type", {"diffuse", "conductor", "dielectric", "plastic", "glint"});
     if (type == "diffuse") {
         m.type = MaterialDesc::Type::Diffuse;
-        m.albedo = o.color("albedo", m.albedo, 0.0f, 1.0f);
+        m.albedo = read_colour_or_texture(o, "albedo", m.albedo, &t.albedo, files);
     } else if (type == "conductor") {
         m.type = MaterialDesc::Type::Conductor;
         m.ndf = read_ndf(o, NdfType::GGX);
-        read_roughness(o, 0.0f, &m.alpha_x, &m.alpha_y);
+        read_roughness_or_textures(o, 0.0, &m.alpha_x, &m.alpha_y, &t.alpha_x_sq, &t.alpha_y_sq,
+                                   files);
         m.eta = glm::vec3(0.2f), m.k = glm::vec3(3.9f);
         read_conductor_ior(o, &m.eta, &m.k);
     } else if (type == "dielectric") {
         m.type = MaterialDesc::Type::Dielectric;
         m.ndf = read_ndf(o, NdfType::GGX);
-        read_roughness(o, 0.0f, &m.alpha_x, &m.alpha_y);
+        read_roughness_or_textures(o, 0.0, &m.alpha_x, &m.alpha_y, &t.alpha_x_sq, &t.alpha_y_sq,
+                                   files);
         m.eta = glm::vec3(static_cast<float>(o.number("eta", 1.5, kEtaRange)));
     } else if (type == "plastic") {
         m.type = MaterialDesc::Type::Plastic;
-        m.albedo = o.color("albedo", m.albedo, 0.0f, 1.0f);
+        m.albedo = read_colour_or_texture(o, "albedo", m.albedo, &t.albedo, files);
         m.ndf = read_ndf(o, NdfType::GGX);
-        read_roughness(o, 0.0f, &m.alpha_x, &m.alpha_y);
+        read_roughness_or_textures(o, 0.0, &m.alpha_x, &m.alpha_y, &t.alpha_x_sq, &t.alpha_y_sq,
+                                   files);
         m.eta = glm::vec3(static_cast<float>(o.number("eta", 1.5, kEtaRange)));
     } else {
         m.type = MaterialDesc::Type::Glint;
-        m.glint = read_glint(o);
+        m.glint = read_glint(o, files);
     }
     o.finish();
+    if (t.albedo || t.alpha_x_sq || t.alpha_y_sq)
+        m.textures = std::make_shared<const MaterialTextures>(std::move(t));
     return m;
 }
 
@@ -487,8 +564,9 @@ Scene parse_scene(const nlohmann::json& document, const std::filesystem::path& f
         render->finish();
     }
     LoadContext ctx{{}, &scene};
+    TextureFileCache texture_files;
     for (JsonObject& m : root.object_array("materials")) {
-        MaterialDesc desc = read_material(m);
+        MaterialDesc desc = read_material(m, texture_files);
         if (ctx.material_index.contains(desc.name))
             m.error("name", fmt::format("duplicate material name \"{}\"", desc.name));
         ctx.material_index[desc.name] = static_cast<int>(scene.materials.size());

@@ -74,7 +74,17 @@ float explicit_footprint_ndf(const ExplicitFacetField& field, const Footprint& f
     h = glm::normalize(h);
     const double cos_ih = glm::dot(wi, h);
     if (h.z <= 0.0f || cos_ih <= 0.0) return 0.0f;
-    const double count = double(explicit_count(field, fp, wo, wi, gamma_rad));
+    // With a density map each facet counts by its area (ExplicitFacet::weight).
+    double count = 0.0;
+    if (field.textures && field.textures->density) {
+        const float cos_gamma = std::cos(gamma_rad);
+        for_each_explicit_facet(field, fp, [&](const ExplicitFacet& f) {
+            if (glm::dot(wo, f.m) > 0.0f && glm::dot(mirror(wo, f.m), wi) >= cos_gamma)
+                count += f.weight;
+        });
+    } else {
+        count = double(explicit_count(field, fp, wo, wi, gamma_rad));
+    }
     const double n = double(explicit_facets_per_tile(field));
     // 002 Eq. 5-6 with the projected-area density's 1/(h·n) (explicit.h).
     return float(4.0 * cos_ih * count /
@@ -139,7 +149,7 @@ glm::vec3 explicit_environment_radiance(const ExplicitFacetField& field, const F
         if (w <= 0.0f) return;
         glm::vec3 L = env(r);
         if (fresnel) L *= fresnel(glm::dot(wo, f.m));
-        sum += glm::dvec3(w * L);
+        sum += glm::dvec3(w * f.weight * L);
     });
     // 003 Eq. 5: normalised by the expected count E[N_P] = N a(A).
     const double n = double(explicit_facets_per_tile(field));

@@ -39,6 +39,7 @@
 #include <glm/glm.hpp>
 
 #include "glintlab/core/footprint.h"
+#include "glintlab/glints/glint_desc.h"
 #include "glintlab/microfacet/bxdfs.h"
 
 namespace glintlab {
@@ -55,11 +56,22 @@ struct ExplicitFacetField {
     // Above the budget: enumerate one part of the footprint
     // (explicit_enumerated_footprint) instead of failing.
     bool subsample_over_budget = false;
+    // Textured parameters (docs/MODELS.md, "Textured parameters"): with a
+    // density map the field is generated at N_field = ⌈max N⌉ (log_density
+    // = ln N_field) and each facet is kept with probability N(uv)/N_field, a
+    // hash of its leaf and index deciding (so the 4 draws of every facet,
+    // and every untextured render, stay as they were); with a roughness map
+    // each facet's normal is drawn with α(uv) = sqrt(α²) bilinear in the
+    // finest level. Null: none.
+    const GlintTextures* textures = nullptr;
 };
 
 struct ExplicitFacet {
     glm::vec2 uv;  // position (including the footprint's tile offset)
     glm::vec3 m;   // unit normal, local frame (z = n)
+    // N_field / N(uv): the facet's area relative to the field's nominal
+    // 1/N_field (1 without a density map); the estimators weigh by it.
+    float weight = 1.0f;
 };
 
 // N = round(e^log_density): the exact number of facets in every unit uv tile.

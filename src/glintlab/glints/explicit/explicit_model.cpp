@@ -1,5 +1,6 @@
 #include "glintlab/glints/explicit/explicit_model.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <numbers>
@@ -42,7 +43,7 @@ glm::vec3 cone_radiance(const GlintLightingContext& ctx, const Cone& cone) {
         glm::vec3 r;
         const float w = explicit_facet_weight(field, ctx.wo, f.m, r);
         if (w <= 0.0f || !inside_cone(r, axis, cone.one_minus_cos_max)) return;
-        sum += glm::dvec3(w * bxdf.fresnel(glm::dot(ctx.wo, f.m)));
+        sum += glm::dvec3(w * f.weight * bxdf.fresnel(glm::dot(ctx.wo, f.m)));
     });
     if (sum == glm::dvec3(0.0)) return glm::vec3(0.0f);
     const double n = double(explicit_facets_per_tile(field));
@@ -60,6 +61,14 @@ ExplicitFacetField explicit_field(const GlintDesc& desc) {
     f.seed = desc.seed;
     f.max_facets_per_footprint = params_of(desc).max_facets_per_footprint;
     f.subsample_over_budget = params_of(desc).subsample_over_budget;
+    if (desc.textures) {
+        f.textures = desc.textures.get();
+        if (const auto& density = desc.textures->density) {
+            // Generated at the map's largest density, thinned per facet.
+            const double n_max = std::max(1.0, std::ceil(double(density->texture->max_value().x)));
+            f.log_density = std::log(n_max);
+        }
+    }
     return f;
 }
 

@@ -10,6 +10,7 @@
 #include "glintlab/core/rng.h"
 #include "glintlab/glints/explicit/binomial_half.h"
 #include "glintlab/glints/explicit/explicit.h"
+#include "glintlab/glints/glint_textures.h"
 
 namespace glintlab {
 namespace {
@@ -30,6 +31,7 @@ constexpr double kMaxTiles = 4096.0;
 // Stream salts: split draws and leaf contents use independent streams.
 constexpr uint64_t kSplitSalt = 0x5bd1e9955bd1e995ULL;
 constexpr uint64_t kLeafSalt = 0xc2b2ae3d27d4eb4fULL;
+constexpr uint64_t kThinSalt = 0x165667b19e3779f9ULL;
 
 // Unique id of quadtree node (depth, ix, iy): ix, iy < 2^24.
 uint64_t node_key(int depth, uint32_t ix, uint32_t iy) {
@@ -109,6 +111,7 @@ struct Walker {
     glm::dvec2 tile;  // offset added to reported positions
     int depth;
     const std::function<void(const ExplicitFacet&)>& visit;
+    double n_field = 0.0;  // facets per tile (the density map's thinning)
     uint64_t visited = 0;
 
     void node(int level, uint32_t ix, uint32_t iy, int64_t n) {
@@ -142,7 +145,21 @@ struct Walker {
             if (!q.contains(p)) continue;
             ExplicitFacet f;
             f.uv = glm::vec2(p + tile);
-            f.m = sample_explicit_normal(field.ndf, field.alpha_x, field.alpha_y, u1, u2);
+            float ax = field.alpha_x, ay = field.alpha_y;
+            if (const GlintTextures* t = field.textures) {
+                if (t->density) {
+                    const double density = double(t->density->at(f.uv).x);
+                    const uint64_t h =
+                        mix_bits(node_key(depth, ix, iy) ^
+                                 mix_bits(uint64_t(k) ^ (uint64_t(field.seed) << 32) ^ kThinSalt));
+                    const double keep = double(h >> 11) * 0x1.0p-53;
+                    if (!(keep * n_field < density)) continue;
+                    f.weight = float(n_field / density);
+                }
+                if (t->alpha_x_sq) ax = alpha_from_squared(t->alpha_x_sq->at(f.uv).x);
+                if (t->alpha_y_sq) ay = alpha_from_squared(t->alpha_y_sq->at(f.uv).x);
+            }
+            f.m = sample_explicit_normal(field.ndf, ax, ay, u1, u2);
             visit(f);
             ++visited;
         }
@@ -282,7 +299,7 @@ uint64_t for_each_explicit_facet(const ExplicitFacetField& field, const Footprin
             const glm::dvec2 tile(tx, ty);
             Parallelogram local = q;
             local.c = c - tile;
-            Walker w{field, local, tile, depth, visit};
+            Walker w{field, local, tile, depth, visit, double(n)};
             w.node(0, 0, 0, static_cast<int64_t>(n));
             visited += w.visited;
         }

@@ -103,6 +103,10 @@ GlintModelDescriptor kneiphof2025_descriptor() {
         gp::number("density_randomization", &P::density_randomization, 0.0, 50.0, "",
                    "deliot2023's std-dev of the per-cell jitter of ln(density)"),
     };
+    d.textured_density = d.textured_roughness = false;
+    d.untextured_reason =
+        "its prefiltered environment and smooth term (003 §4) are computed for one roughness and "
+        "one density per material";
     d.check = check_kneiphof2025;
     d.fit_material = fit_kneiphof2025;
     d.shades_light = GLINTLAB_SHADES_LIGHT_HOOK(kneiphof2025_shades_light);

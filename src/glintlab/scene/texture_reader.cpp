@@ -1,0 +1,153 @@
+#include "glintlab/scene/texture_reader.h"
+
+#include <cmath>
+#include <numbers>
+
+#include <fmt/format.h>
+
+#include "glintlab/core/error.h"
+#include "glintlab/core/image.h"
+
+namespace glintlab {
+namespace {
+
+const std::vector<std::string> kChannels = {"r", "g", "b", "a", "rgb", "luminance"};
+const std::vector<std::string> kWraps = {"repeat", "clamp", "mirror"};
+
+std::shared_ptr<const TextureImage> load(const std::filesystem::path& path,
+                                         TextureFileCache& files) {
+    auto it = files.find(path);
+    if (it != files.end()) return it->second;
+    auto image = std::make_shared<const TextureImage>(read_texture_image(path));
+    files.emplace(path, image);
+    return image;
+}
+
+TextureUvTransform read_uv_transform(JsonObject& parent) {
+    TextureUvTransform t;
+    auto block = parent.object("uv_transform");
+    if (!block) return t;
+    JsonObject& o = *block;
+    if (o.has("scale")) {
+        const nlohmann::json* s = o.raw("scale");
+        t.scale = s->is_number() ? glm::vec2(float(o.number("scale", 1.0, -1e6, 1e6)))
+                                 : o.vec2("scale", glm::vec2(1.0f), -1e6, 1e6);
+        if (t.scale.x == 0.0f || t.scale.y == 0.0f)
+            o.error("scale", "uv scale factors must be non-zero (in [-1e6, 1e6])");
+    }
+    t.offset = o.vec2("offset", glm::vec2(0.0f), -1e6, 1e6);
+    t.rotation_rad = float(o.number("rotation_deg", 0.0, -360.0, 360.0) * std::numbers::pi / 180.0);
+    o.finish();
+    return t;
+}
+
+}  // namespace
+
+bool is_texture_form(JsonObject& o, std::string_view key) {
+    if (!o.has(key)) return false;
+    const nlohmann::json* v = o.raw(key);
+    o.ignore(key);
+    return v->is_object();
+}
+
+std::shared_ptr<const TextureInput> read_texture_block(JsonObject& b, const TextureParameter& p,
+                                                       TextureFileCache& files) {
+    const std::filesystem::path file = b.file_path("texture");
+    const std::shared_ptr<const TextureImage> image = load(file, files);
+    const std::string where = fmt::format("{} ({})", b.path(), file.string());
+
+    if (!b.has("channel") && !p.colour && !image->grey())
+        b.error("channel", fmt::format("{} has colour texels: say which channel holds the value, "
+                                       "\"channel\": \"r\", \"g\", \"b\", \"a\" or \"luminance\"",
+                                       file.string()));
+    const std::string channel = b.string("channel", p.colour ? "rgb" : "r", kChannels);
+    if (channel == "rgb" && !p.colour)
+        b.error("channel",
+                "\"rgb\" needs a colour parameter; this one takes a single value: \"r\", \"g\", "
+                "\"b\", \"a\" or \"luminance\"");
+    // glTF's convention: colour textures are sRGB-encoded, data (roughness,
+    // density) linear; EXR and HDR texels are linear values.
+    const std::string colorspace =
+        b.string("colorspace", image->codes && p.colour ? "srgb" : "linear", {"srgb", "linear"});
+    if (b.has("colorspace")) {
+        if (colorspace == "srgb" && !image->codes)
+            b.error("colorspace",
+                    fmt::format("{} holds linear values (EXR/HDR): \"srgb\" applies to the codes "
+                                "of PNG and JPEG files only",
+                                file.string()));
+    }
+    const double scale = b.number("scale", 1.0, -1e6, 1e6);
+    const double offset = b.number("offset", 0.0, -1e6, 1e6);
+    const std::string wrap_name = b.string("wrap", "repeat", kWraps);
+    const TextureWrap wrap = wrap_name == "clamp"    ? TextureWrap::Clamp
+                             : wrap_name == "mirror" ? TextureWrap::Mirror
+                                                     : TextureWrap::Repeat;
+    auto input = std::make_shared<TextureInput>();
+    input->transform = read_uv_transform(b);
+    input->source = file.string();
+    b.finish();
+
+    const bool srgb = colorspace == "srgb";
+    auto decode = [&](float code) { return srgb ? srgb_decode(code) : code; };
+    const int out_channels = channel == "rgb" ? 3 : 1;
+    const int out_width = image->width;
+    std::vector<float> texels;
+    texels.reserve(image->texels.size() * size_t(out_channels));
+    size_t clamped = 0;
+    for (size_t i = 0; i < image->texels.size(); ++i) {
+        const glm::vec4& t = image->texels[i];
+        float values[3];
+        if (channel == "rgb") {
+            for (int c = 0; c < 3; ++c) values[c] = decode(t[c]);
+        } else if (channel == "luminance") {
+            values[0] = luminance(glm::vec3(decode(t.x), decode(t.y), decode(t.z)));
+        } else if (channel == "a") {
+            values[0] = t.w;  // alpha is linear coverage in every format
+        } else {
+            values[0] = decode(t[channel == "r" ? 0 : channel == "g" ? 1 : 2]);
+        }
+        for (int c = 0; c < out_channels; ++c) {
+            double v = offset + scale * double(values[c]);
+            if (!(v >= p.min && v <= p.max)) {
+                if (p.clamp_below && v < p.min) {
+                    v = p.min;
+                    ++clamped;
+                } else {
+                    fail(
+                        "{}: texel (x={}, y={}) maps to {:g} = {:g} + {:g} x {:g}, outside the "
+                        "parameter's range [{:g}, {:g}] (set \"scale\" and \"offset\" so that "
+                        "value = offset + scale x texel stays inside)",
+                        where, i % size_t(out_width), i / size_t(out_width), v, offset, scale,
+                        double(values[c]), p.min, p.max);
+                }
+            }
+            switch (p.filtered) {
+                case TextureParameter::Filtered::Value:
+                    break;
+                case TextureParameter::Filtered::Square:
+                    v = v * v;
+                    break;
+                case TextureParameter::Filtered::Exp:
+                    v = std::exp(v);
+                    break;
+            }
+            texels.push_back(float(v));
+        }
+    }
+    if (clamped > 0)
+        fmt::print(stderr, "warning: {}: {} texel value{} below {:g} clamped to {:g}\n", where,
+                   clamped, clamped == 1 ? "" : "s", p.min, p.min);
+    input->texture = std::make_shared<const MipTexture>(image->width, image->height, out_channels,
+                                                        std::move(texels), wrap);
+    return input;
+}
+
+std::shared_ptr<const TextureInput> read_texture_input(JsonObject& o, std::string_view key,
+                                                       const TextureParameter& p,
+                                                       TextureFileCache& files) {
+    std::optional<JsonObject> block = o.object(key);
+    if (!block) o.error(key, "expected a texture object {\"texture\": \"file\", ...}");
+    return read_texture_block(*block, p, files);
+}
+
+}  // namespace glintlab

@@ -1,0 +1,166 @@
+// The texture form of material parameters (docs/SCENE_FORMAT.md,
+// "Textures"): values, colour spaces, channels, and the errors a user meets.
+#include <gtest/gtest.h>
+
+#include <unistd.h>
+#include <cmath>
+#include <filesystem>
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include "glintlab/core/image.h"
+#include "glintlab/glints/glint_textures.h"
+#include "glintlab/scene/scene_loader.h"
+
+namespace glintlab {
+namespace {
+
+struct TextureScene {
+    std::filesystem::path dir;
+    TextureScene() {
+        dir = std::filesystem::temp_directory_path() /
+              ("glintlab_textures_" + std::to_string(::getpid()));
+        std::filesystem::create_directories(dir);
+        // 4x2 EXR: ln N 8 on the left half, 12 on the right.
+        Image density(4, 2);
+        for (int y = 0; y < 2; ++y)
+            for (int x = 0; x < 4; ++x) density.at(x, y) = glm::vec3(x < 2 ? 8.0f : 12.0f);
+        write_exr(density, dir / "density.exr");
+        Image grey(2, 2, glm::vec3(0.25f));  // PNG codes round(255 srgb(0.25)) = 137
+        write_png(grey, dir / "grey.png");
+        Image colour(2, 2, glm::vec3(0.25f, 0.5f, 0.75f));
+        write_png(colour, dir / "colour.png");
+    }
+    ~TextureScene() { std::filesystem::remove_all(dir); }
+
+    nlohmann::json scene(const nlohmann::json& material) const {
+        nlohmann::json m = material;
+        m["name"] = "m";
+        if (m["type"] == "glint" && !m.contains("model")) m["model"] = "smooth";
+        return {{"camera", {{"eye", {0, 1, 3}}, {"target", {0, 0, 0}}}},
+                {"film", {{"width", 8}, {"height", 8}}},
+                {"materials", {m}},
+                {"shapes", {{{"type", "quad"}, {"size", {2, 2}}, {"material", "m"}}}},
+                {"lights", {{{"type", "directional"}, {"direction", {0, 1, 0}}}}}};
+    }
+    Scene load(const nlohmann::json& material) const {
+        return parse_scene(scene(material), dir / "scene.json");
+    }
+    std::string error(const nlohmann::json& material) const {
+        try {
+            load(material);
+        } catch (const std::exception& e) {
+            return e.what();
+        }
+        return "";
+    }
+};
+
+TEST(TextureReader, DensityMapIsFilteredAsFacetsPerAreaAndReadBackAsItsLog) {
+    const TextureScene t;
+    const Scene s = t.load({{"type", "glint"},
+                            {"model", "deliot2023"},
+                            {"log_density", {{"texture", "density.exr"}, {"wrap", "clamp"}}}});
+    const GlintDesc& g = s.materials[0].glint;
+    ASSERT_TRUE(g.textures && g.textures->density);
+    // Texel centres: ln N itself.
+    EXPECT_NEAR(resolve_glint_textures(g, {0.125f, 0.5f}, nullptr).log_density, 8.0f, 1e-4f);
+    EXPECT_NEAR(resolve_glint_textures(g, {0.875f, 0.5f}, nullptr).log_density, 12.0f, 1e-4f);
+    // A footprint over the whole map: ln of the mean N, not the mean ln N.
+    const Footprint whole{{0.5f, 0.5f}, {1.0f, 0.0f}, {0.0f, 1.0f}};
+    EXPECT_NEAR(resolve_glint_textures(g, {0.5f, 0.5f}, &whole).log_density,
+                std::log(0.5 * (std::exp(8.0) + std::exp(12.0))), 1e-3);
+}
+
+TEST(TextureReader, PngDataIsLinearCodesAndColourIsSrgbDecoded) {
+    const TextureScene t;
+    const Scene s = t.load({{"type", "glint"},
+                            {"model", "smooth"},
+                            {"roughness", {{"texture", "grey.png"}}},
+                            {"color", {{"texture", "colour.png"}}}});
+    const GlintDesc r = resolve_glint_textures(s.materials[0].glint, {0.3f, 0.3f}, nullptr);
+    const float code = std::round(255.0f * srgb_encode(0.25f)) / 255.0f;
+    EXPECT_NEAR(r.alpha_x, code, 1e-5f);
+    EXPECT_NEAR(r.alpha_y, code, 1e-5f);
+    EXPECT_NEAR(r.color.x, 0.25f, 0.004f);
+    EXPECT_NEAR(r.color.z, 0.75f, 0.004f);
+    // scale and offset: value = offset + scale x texel.
+    const Scene s2 =
+        t.load({{"type", "glint"},
+                {"model", "smooth"},
+                {"roughness", {{"texture", "grey.png"}, {"scale", 0.5}, {"offset", 0.1}}}});
+    EXPECT_NEAR(resolve_glint_textures(s2.materials[0].glint, {0.3f, 0.3f}, nullptr).alpha_x,
+                0.1f + 0.5f * code, 1e-5f);
+}
+
+TEST(TextureReader, DiffuseAlbedoAndConductorRoughnessTakeTextures) {
+    const TextureScene t;
+    const Scene d = t.load({{"type", "diffuse"}, {"albedo", {{"texture", "colour.png"}}}});
+    ASSERT_TRUE(d.materials[0].textures && d.materials[0].textures->albedo);
+    EXPECT_TRUE(d.materials[0].needs_uv());
+    const Scene c =
+        t.load({{"type", "conductor"}, {"roughness", {{{"texture", "grey.png"}}, 0.2}}});
+    ASSERT_TRUE(c.materials[0].textures);
+    EXPECT_TRUE(c.materials[0].textures->alpha_x_sq);
+    EXPECT_FALSE(c.materials[0].textures->alpha_y_sq);
+    EXPECT_FLOAT_EQ(c.materials[0].alpha_y, 0.2f);
+}
+
+TEST(TextureReader, ErrorsNameTheFileTheJsonPathAndTheRange) {
+    const TextureScene t;
+    const std::string missing =
+        t.error({{"type", "glint"}, {"roughness", {{"texture", "no.png"}}}});
+    EXPECT_NE(missing.find("/materials/0/roughness/texture"), std::string::npos) << missing;
+    EXPECT_NE(missing.find("no.png"), std::string::npos) << missing;
+
+    const std::string range = t.error(
+        {{"type", "glint"}, {"log_density", {{"texture", "density.exr"}, {"scale", 10.0}}}});
+    EXPECT_NE(range.find("density.exr"), std::string::npos) << range;
+    EXPECT_NE(range.find("/materials/0/log_density"), std::string::npos) << range;
+    EXPECT_NE(range.find("[-20, 60]"), std::string::npos) << range;
+
+    const std::string channel =
+        t.error({{"type", "glint"}, {"roughness", {{"texture", "colour.png"}}}});
+    EXPECT_NE(channel.find("\"channel\""), std::string::npos) << channel;
+    const std::string rgb =
+        t.error({{"type", "glint"}, {"roughness", {{"texture", "grey.png"}, {"channel", "rgb"}}}});
+    EXPECT_NE(rgb.find("single value"), std::string::npos) << rgb;
+    const std::string srgb = t.error(
+        {{"type", "glint"}, {"log_density", {{"texture", "density.exr"}, {"colorspace", "srgb"}}}});
+    EXPECT_NE(srgb.find("linear values"), std::string::npos) << srgb;
+    const std::string wrap =
+        t.error({{"type", "glint"}, {"roughness", {{"texture", "grey.png"}, {"wrap", "tile"}}}});
+    EXPECT_NE(wrap.find("mirror"), std::string::npos) << wrap;
+    const std::string unknown =
+        t.error({{"type", "glint"}, {"roughness", {{"texture", "grey.png"}, {"gamma", 2}}}});
+    EXPECT_NE(unknown.find("gamma"), std::string::npos) << unknown;
+    // A model that precomputes per material says why it cannot.
+    const std::string model = t.error(
+        {{"type", "glint"}, {"model", "wang2020"}, {"log_density", {{"texture", "density.exr"}}}});
+    EXPECT_NE(model.find("cannot take \"log_density\" from a texture"), std::string::npos) << model;
+    // The paths that take numbers only say so instead of drawing the wrong image.
+    const Scene s = t.load({{"type", "glint"}, {"roughness", {{"texture", "grey.png"}}}});
+    try {
+        require_untextured(s.materials[0], s.file, "the OpenGL renderer");
+        ADD_FAILURE() << "no error";
+    } catch (const std::exception& e) {
+        EXPECT_NE(std::string(e.what()).find("reads roughness from a texture"), std::string::npos)
+            << e.what();
+    }
+}
+
+TEST(TextureReader, RoughnessBelowTheRangeIsClampedWithAWarning) {
+    const TextureScene t;
+    Image black(2, 2, glm::vec3(0.0f));
+    write_png(black, t.dir / "black.png");
+    testing::internal::CaptureStderr();
+    const Scene s = t.load({{"type", "glint"}, {"roughness", {{"texture", "black.png"}}}});
+    const std::string warning = testing::internal::GetCapturedStderr();
+    EXPECT_NE(warning.find("4 texel values below 0.001 clamped"), std::string::npos) << warning;
+    EXPECT_NEAR(resolve_glint_textures(s.materials[0].glint, {0.5f, 0.5f}, nullptr).alpha_x, 1e-3f,
+                1e-7f);
+}
+
+}  // namespace
+}  // namespace glintlab
