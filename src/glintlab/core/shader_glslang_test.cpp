@@ -73,18 +73,21 @@ std::vector<std::string> glue_files() {
 // What realtime/forward_shaders.cpp puts ahead of forward.frag.glsl: the
 // light counts and sample counts, then the glue of one model. Every glue with
 // no lights and with every light kind (sphere and cone lights included: the
-// glue's GLINTLAB_GLINT_SHADES_AREA_LIGHTS branches).
+// glue's GLINTLAB_GLINT_SHADES_AREA_LIGHTS branches); with every light kind
+// also the textured-material variant (GLINTLAB_MATERIAL_TEXTURES).
 std::vector<std::string> forward_prefixes() {
     std::vector<std::string> out;
     for (const std::string& glue : glue_files())
-        for (const int lights : {0, 1}) {
-            const int points = 2 * lights, directionals = lights, environment = lights;
+        for (const int lights : {0, 1, 2}) {
+            const int points = lights > 0 ? 2 : 0, directionals = lights > 0 ? 1 : 0;
+            const int environment = lights > 0 ? 1 : 0;
             out.push_back(fmt::format(
                 "#define GLINTLAB_POINT_LIGHTS {}\n#define GLINTLAB_DIRECTIONAL_LIGHTS {}\n"
                 "#define GLINTLAB_ENVIRONMENT {}\n#define GLINTLAB_ENV_SPECULAR_SAMPLES 4\n"
                 "#define GLINTLAB_ENV_DIFFUSE_SAMPLES 4\n#define GLINTLAB_ENV_SUN_SAMPLES 4\n"
-                "#include \"{}\"\n",
-                points, directionals, environment, glue));
+                "{}#include \"{}\"\n",
+                points, directionals, environment,
+                lights == 2 ? "#define GLINTLAB_MATERIAL_TEXTURES 1\n" : "", glue));
         }
     return out;
 }

@@ -60,7 +60,8 @@ void read_glint_params(const GlintModelDescriptor& model, JsonObject& block, Gli
 
 void read_glint_model_blocks(JsonObject& material, GlintDesc& desc) {
     const GlintModelDescriptor& model = glint_model(desc.model_id);
-    if (desc.has_base() && model.shades_light != nullptr)
+    if ((desc.has_base() || (desc.textures && desc.textures->base_albedo)) &&
+        model.shades_light != nullptr)
         material.error("base_albedo",
                        fmt::format("glint model \"{}\" shades its lights itself (prefiltered or "
                                    "enumerated radiance) and has no diffuse base; use another "

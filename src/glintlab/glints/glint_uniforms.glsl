@@ -8,6 +8,18 @@
 uniform int u_glint_ndf;  // NDF_BECKMANN / NDF_GGX
 uniform vec2 u_glint_alpha;  // alpha_x, alpha_y
 uniform float u_glint_log_density;
+#ifdef GLINTLAB_MATERIAL_TEXTURES
+// A material with textured parameters (the forward renderer's variant,
+// realtime/shaders/material_textures.glsl): the names every glue reads are
+// per-fragment values, resolved from the textures at the start of main();
+// the uniforms stay readable through these two functions.
+vec2 glint_alpha_uniform() { return u_glint_alpha; }
+float glint_log_density_uniform() { return u_glint_log_density; }
+vec2 g_glint_alpha;
+float g_glint_log_density;
+#define u_glint_alpha g_glint_alpha
+#define u_glint_log_density g_glint_log_density
+#endif
 uniform uint u_glint_seed;
 // The glint material's Fresnel (FresnelDesc: GLINT_FRESNEL_* mode of
 // glint_fresnel.glsl, Schlick f0, conductor eta + i k, dielectric eta.x);

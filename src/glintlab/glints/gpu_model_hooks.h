@@ -28,7 +28,8 @@ class UniformCache;
 }
 
 // Texture units 0..3 are the forward shader's (realtime/forward_shaders.h);
-// models use units from 4 on (chermain2020 4, deliot2023 5, kneiphof2025 6-9).
+// models use units 4-9 (chermain2020 4, deliot2023 5, kneiphof2025 6-9); textured
+// material parameters take 10-14 (forward_shaders.h kMaterialTextureUnit).
 inline constexpr int kFirstModelTextureUnit = 4;
 
 // One boolean GPU option of a model (GpuRenderer::set_model_option, a viewer

@@ -21,6 +21,8 @@ struct ProgramKey {
     // The model's options that select another glue variant (bit i: the
     // model's GpuModelOption i, glints/gpu_model_hooks.h).
     unsigned model_options = 0;
+    // The material reads parameters from textures (shaders/material_textures.glsl).
+    bool material_textures = false;
     auto operator<=>(const ProgramKey&) const = default;
     std::string name() const;  // "forward[deliot2023, 1 point, 0 directional, no environment]"
 };
@@ -32,6 +34,10 @@ inline constexpr int kShadowMapSize = 2048;
 inline constexpr int kPointShadowUnit = 2;  // depth-compare cube array, one cube per point light
 inline constexpr int kPointShadowSize = 1024;
 inline constexpr int kEnvironmentResidualUnit = 3;  // the map without its sun (environment_sun.h)
+// Textured material parameters: units kMaterialTextureUnit + slot
+// (shaders/material_textures.glsl MATERIAL_TEXTURE_*).
+inline constexpr int kMaterialTextureUnit = 10;  // after the models' units 4-9 (gpu_model_hooks.h)
+inline constexpr int kMaterialTextureSlots = 5;
 
 // Environment lighting (Krivanek & Colbert 2008, filtered importance
 // sampling): a fixed Hammersley set of samples per pixel, the same for every

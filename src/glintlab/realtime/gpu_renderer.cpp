@@ -80,6 +80,7 @@ gl::ProgramKey program_key(const Scene& scene, const Shape& shape,
     if (shape.material >= 0) {
         const MaterialDesc& m = scene.materials[static_cast<size_t>(shape.material)];
         if (m.type == MaterialDesc::Type::Glint) key.model = m.glint.model_id;
+        key.material_textures = m.textured();
     }
     const auto it = model_options.find(key.model);
     const GpuModelHooks* hooks = find_gpu_model_hooks(key.model);
@@ -120,6 +121,9 @@ struct GpuRenderer::Impl {
     float environment_scale = 1.0f, environment_rotation = 0.0f;
     int environment_width = 0, environment_height = 0;
     std::map<gl::ProgramKey, gl::Program> programs;
+    // Material textures by their CPU texture (kept alive so the key stays unique).
+    std::map<const MipTexture*, std::pair<std::shared_ptr<const MipTexture>, gl::Texture>>
+        material_textures;
     gl::Program background;
     gl::UniformCache uniforms;
     // Each model's GPU state (GpuModelHooks::make_state, made on first use)
@@ -432,6 +436,74 @@ struct GpuRenderer::Impl {
             state->prepare(p, uniforms, g, frame(scene), options_of(g.model_id));
     }
 
+    // The material's textures (shaders/material_textures.glsl): bound to
+    // units kMaterialTextureUnit + slot, with their uv transforms and the
+    // mask of the textured slots.
+    void set_material_textures(GLuint p, const MaterialDesc& m) {
+        if (!m.textured()) return;
+        std::shared_ptr<const TextureInput> slots[gl::kMaterialTextureSlots];
+        if (const MaterialTextures* t = m.textures.get()) {
+            slots[1] = t->alpha_x_sq, slots[2] = t->alpha_y_sq, slots[3] = t->albedo;
+        }
+        if (const GlintTextures* t = m.glint.textures.get()) {
+            slots[0] = t->density, slots[1] = t->alpha_x_sq, slots[2] = t->alpha_y_sq;
+            slots[3] = t->color, slots[4] = t->base_albedo;
+        }
+        int mask = 0;
+        glm::mat2 linear[gl::kMaterialTextureSlots];
+        glm::vec2 offset[gl::kMaterialTextureSlots], size[gl::kMaterialTextureSlots];
+        for (int i = 0; i < gl::kMaterialTextureSlots; ++i) {
+            linear[i] = glm::mat2(1.0f), offset[i] = glm::vec2(0.0f), size[i] = glm::vec2(1.0f);
+            if (!slots[i]) continue;
+            const TextureInput& in = *slots[i];
+            mask |= 1 << i;
+            linear[i] = glm::mat2(in.transform.apply_vector({1.0f, 0.0f}),
+                                  in.transform.apply_vector({0.0f, 1.0f}));
+            offset[i] = in.transform.offset;
+            size[i] = glm::vec2(float(in.texture->width()), float(in.texture->height()));
+            glBindTextureUnit(static_cast<GLuint>(gl::kMaterialTextureUnit + i),
+                              material_texture(in.texture));
+        }
+        auto loc = [&](const char* name) { return uniforms.location(p, name); };
+        glProgramUniform1i(p, loc("u_material_texture_mask"), mask);
+        glProgramUniformMatrix2fv(p, loc("u_material_texture_linear"), gl::kMaterialTextureSlots,
+                                  GL_FALSE, glm::value_ptr(linear[0]));
+        glProgramUniform2fv(p, loc("u_material_texture_offset"), gl::kMaterialTextureSlots,
+                            glm::value_ptr(offset[0]));
+        glProgramUniform2fv(p, loc("u_material_texture_size"), gl::kMaterialTextureSlots,
+                            glm::value_ptr(size[0]));
+    }
+
+    // A material texture's GL texture, uploaded on first use with the CPU's
+    // mip chain (exact box means), trilinear, the texture's wrap mode; one
+    // channel is read as grey (swizzle r, r, r).
+    GLuint material_texture(const std::shared_ptr<const MipTexture>& tex) {
+        auto it = material_textures.find(tex.get());
+        if (it != material_textures.end()) return it->second.second.get();
+        gl::Texture t = gl::make_texture(GL_TEXTURE_2D);
+        const bool grey = tex->channels() == 1;
+        glTextureStorage2D(t.get(), tex->level_count(), grey ? GL_R32F : GL_RGB32F, tex->width(),
+                           tex->height());
+        glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+        for (int level = 0; level < tex->level_count(); ++level)
+            glTextureSubImage2D(t.get(), level, 0, 0, tex->width(level), tex->height(level),
+                                grey ? GL_RED : GL_RGB, GL_FLOAT, tex->level_texels(level).data());
+        glTextureParameteri(t.get(), GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
+        glTextureParameteri(t.get(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+        const GLint wrap = tex->wrap() == TextureWrap::Clamp    ? GL_CLAMP_TO_EDGE
+                           : tex->wrap() == TextureWrap::Mirror ? GL_MIRRORED_REPEAT
+                                                                : GL_REPEAT;
+        glTextureParameteri(t.get(), GL_TEXTURE_WRAP_S, wrap);
+        glTextureParameteri(t.get(), GL_TEXTURE_WRAP_T, wrap);
+        if (grey) {
+            const GLint swizzle[4] = {GL_RED, GL_RED, GL_RED, GL_ONE};
+            glTextureParameteriv(t.get(), GL_TEXTURE_SWIZZLE_RGBA, swizzle);
+        }
+        const GLuint id = t.get();
+        material_textures.emplace(tex.get(), std::make_pair(tex, std::move(t)));
+        return id;
+    }
+
     void set_lights(GLuint p, const Scene& scene) {
         std::vector<glm::vec3> point_position, point_intensity, dir_direction, dir_irradiance;
         // The shapes of area lights, for glint models that shade them as
@@ -505,8 +577,6 @@ gl::Texture upload_latlong(const Image& image) {
 }  // namespace
 
 GpuRenderer::GpuRenderer(const Scene& scene) : impl_(std::make_unique<Impl>()) {
-    for (const MaterialDesc& m : scene.materials)
-        require_untextured(m, scene.file, "the OpenGL renderer (render --gpu, view)");
     require_gl45("OpenGL renderer");
     Impl& r = *impl_;
     const int segments = sphere_segments(scene);
@@ -682,6 +752,8 @@ void GpuRenderer::render(const Scene& scene) {
         glProgramUniform1i(p, loc("u_per_triangle_frame"), g.per_triangle_frame ? 1 : 0);
         glProgramUniform1i(p, loc("u_has_normals"), g.has_normals ? 1 : 0);
         r.set_material(p, scene, shape);
+        if (shape.material >= 0)
+            r.set_material_textures(p, scene.materials[static_cast<size_t>(shape.material)]);
         if (r.environment) {
             glProgramUniform1f(p, loc("u_environment_scale"), r.environment_scale);
             glProgramUniform1f(p, loc("u_environment_rotation"), r.environment_rotation);

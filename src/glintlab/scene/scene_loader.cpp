@@ -184,9 +184,9 @@ GlintDesc read_glint(JsonObject& o, TextureFileCache& files) {
     };
     if (t.density && !model.textured_density) refuse("log_density");
     if ((t.alpha_x_sq || t.alpha_y_sq) && !model.textured_roughness) refuse("roughness");
-    read_glint_model_blocks(o, g);  // the model's block, through its descriptor
     if (t.density || t.alpha_x_sq || t.alpha_y_sq || t.color || t.base_albedo)
         g.textures = std::make_shared<const GlintTextures>(std::move(t));
+    read_glint_model_blocks(o, g);  // the model's block, through its descriptor
     return g;
 }
 

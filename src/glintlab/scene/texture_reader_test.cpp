@@ -11,6 +11,7 @@
 
 #include "glintlab/core/image.h"
 #include "glintlab/glints/glint_textures.h"
+#include "glintlab/glints/registry.h"
 #include "glintlab/scene/scene_loader.h"
 
 namespace glintlab {
@@ -160,6 +161,22 @@ TEST(TextureReader, RoughnessBelowTheRangeIsClampedWithAWarning) {
     EXPECT_NE(warning.find("4 texel values below 0.001 clamped"), std::string::npos) << warning;
     EXPECT_NEAR(resolve_glint_textures(s.materials[0].glint, {0.5f, 0.5f}, nullptr).alpha_x, 1e-3f,
                 1e-7f);
+}
+
+// The viewer's model switcher: a model that cannot read a texture takes the
+// whole map's mean instead (the number a scene file would give it).
+TEST(TextureReader, SwitchingToAModelWithoutTexturedDensityUsesTheMapMean) {
+    const TextureScene t;
+    const Scene s = t.load({{"type", "glint"},
+                            {"model", "deliot2023"},
+                            {"log_density", {{"texture", "density.exr"}}},
+                            {"color", {{"texture", "colour.png"}}}});
+    GlintDesc g = s.materials[0].glint;
+    switch_glint_model(g, GlintModelId::Wang2020);
+    ASSERT_TRUE(g.textures);
+    EXPECT_FALSE(g.textures->density);
+    EXPECT_TRUE(g.textures->color);  // every model takes a colour texture
+    EXPECT_NEAR(g.log_density, std::log(0.5 * (std::exp(8.0) + std::exp(12.0))), 1e-3);
 }
 
 }  // namespace

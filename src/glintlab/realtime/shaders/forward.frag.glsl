@@ -48,17 +48,10 @@ uniform vec3 u_eye;
 uniform bool u_orthographic;
 uniform vec3 u_view_forward;
 
-uniform int u_material_type;  // GpuMaterialType
-uniform vec3 u_albedo;        // diffuse, plastic
-uniform int u_ndf;            // conductor, dielectric, plastic
-uniform vec2 u_alpha;
-uniform vec3 u_eta;
-uniform vec3 u_k;
-uniform vec3 u_emission;  // sphere-light shapes (outer side)
-// Glint material: colour (its Fresnel u_fresnel_* is glint_uniforms.glsl's).
-uniform vec3 u_glint_color;
-uniform vec3 u_glint_base_albedo;  // diffuse base under a dielectric coat (0: none)
-uniform int u_glint_g2;  // GLINT_G2_*: the model's masking (glint_g2_mode, glint_bxdf.h)
+#include "glintlab/realtime/shaders/material_uniforms.glsl"
+#ifdef GLINTLAB_MATERIAL_TEXTURES
+#include "glintlab/realtime/shaders/material_textures.glsl"
+#endif
 
 #if GLINTLAB_POINT_LIGHTS > 0
 uniform vec3 u_point_position[GLINTLAB_POINT_LIGHTS];
@@ -333,6 +326,9 @@ void main() {
     fp.uv = v_uv;
     fp.duvdx = dFdxFine(v_uv);
     fp.duvdy = -dFdyFine(v_uv);
+#ifdef GLINTLAB_MATERIAL_TEXTURES
+    resolve_material_textures(fp);
+#endif
 
     if (u_material_type >= 0) {
         SurfaceMaterial mat = surface_material();

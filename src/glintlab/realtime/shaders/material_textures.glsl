@@ -1,0 +1,101 @@
+// Textured material parameters in the forward pass (docs/MODELS.md,
+// "Textured parameters"), the GPU side of glints/glint_textures.cpp and
+// render/surface_bsdf.cpp: each texture holds the quantity a footprint
+// averages (e^{ln N}, α², linear RGB) with the CPU's mip chain of exact box
+// means (core/mip_texture.h), and is read over the pixel footprint by the
+// same anisotropic filter as MipTexture::filtered: N = ⌈Pmax/Pmin⌉ ≤ 16
+// trilinear probes along the longer derivative at λ = log2(Pmax/N).
+// (textureGrad's own anisotropic filter is implementation-defined, and Mesa
+// llvmpipe's returns stripes.) Included by forward.frag.glsl after the
+// material uniforms when GLINTLAB_MATERIAL_TEXTURES is defined.
+#ifndef GLINTLAB_REALTIME_MATERIAL_TEXTURES_GLSL
+#define GLINTLAB_REALTIME_MATERIAL_TEXTURES_GLSL
+
+#ifndef GLINTLAB_MATERIAL_TEXTURES
+#define GLINTLAB_MATERIAL_TEXTURES 1
+#endif
+#include "glintlab/core/footprint.glsl"
+#include "glintlab/glints/glint_uniforms.glsl"
+#include "glintlab/realtime/shaders/material_uniforms.glsl"
+
+// Slots (gpu_renderer.cpp set_material_textures), texture units 10-14 (forward_shaders.h).
+const int MATERIAL_TEXTURE_DENSITY = 0;  // glint: e^{ln N}
+const int MATERIAL_TEXTURE_ALPHA_X = 1;  // α² along u (glint or conductor/dielectric/plastic)
+const int MATERIAL_TEXTURE_ALPHA_Y = 2;  // α² along v
+const int MATERIAL_TEXTURE_COLOR = 3;    // glint colour, or diffuse/plastic albedo
+const int MATERIAL_TEXTURE_BASE = 4;     // glint base_albedo
+layout(binding = 10) uniform sampler2D u_material_texture[5];
+uniform int u_material_texture_mask;  // bit i: slot i is textured
+// uv' = linear · uv + offset (KHR_texture_transform), level 0's size in texels.
+uniform mat2 u_material_texture_linear[5];
+uniform vec2 u_material_texture_offset[5];
+uniform vec2 u_material_texture_size[5];
+
+const int kMaterialTextureMaxAnisotropy = 16;
+
+vec3 material_texture_filtered(sampler2D tex, vec2 size, mat2 linear, vec2 offset, Footprint fp) {
+    vec2 st = linear * fp.uv + offset;
+    vec2 dx = linear * fp.duvdx, dy = linear * fp.duvdy;
+    float px = length(dx * size), py = length(dy * size);
+    float pmax = max(px, py), pmin = min(px, py);
+    if (!(pmax > 0.0f) || isinf(pmax)) return textureLod(tex, st, 0.0f).rgb;
+    int n = int(min(float(kMaterialTextureMaxAnisotropy), ceil(pmax / max(pmin, pmax * 1e-6f))));
+    float lod = log2(pmax / float(n));
+    vec2 major = px >= py ? dx : dy;
+    vec3 sum = vec3(0.0f);
+    for (int i = 0; i < n; ++i)
+        sum += textureLod(tex, st + major * ((float(i) + 0.5f) / float(n) - 0.5f), lod).rgb;
+    return sum / float(n);
+}
+
+// One line: the texture of `slot` over the footprint (a constant slot indexes the sampler array).
+#define MATERIAL_TEXTURE(slot, fp) material_texture_filtered(u_material_texture[slot], u_material_texture_size[slot], u_material_texture_linear[slot], u_material_texture_offset[slot], fp)
+
+vec3 g_albedo;
+vec2 g_alpha;
+vec3 g_glint_color;
+vec3 g_glint_base_albedo;
+
+// The per-fragment values every later read of the material's names sees.
+void resolve_material_textures(Footprint fp) {
+    g_albedo = u_albedo;
+    g_alpha = u_alpha;
+    g_glint_color = u_glint_color;
+    g_glint_base_albedo = u_glint_base_albedo;
+    g_glint_alpha = glint_alpha_uniform();
+    g_glint_log_density = glint_log_density_uniform();
+    int mask = u_material_texture_mask;
+    bool glint = u_material_type == 4;
+    if ((mask & (1 << MATERIAL_TEXTURE_DENSITY)) != 0)
+        g_glint_log_density = log(max(MATERIAL_TEXTURE(MATERIAL_TEXTURE_DENSITY, fp).x, 1e-30f));
+    if ((mask & (1 << MATERIAL_TEXTURE_ALPHA_X)) != 0) {
+        float a2 = max(MATERIAL_TEXTURE(MATERIAL_TEXTURE_ALPHA_X, fp).x, 0.0f);
+        if (glint)
+            g_glint_alpha.x = clamp(sqrt(a2), 1e-3f, 1.0f);  // glint_textures.cpp alpha_from_squared
+        else
+            g_alpha.x = sqrt(a2);
+    }
+    if ((mask & (1 << MATERIAL_TEXTURE_ALPHA_Y)) != 0) {
+        float a2 = max(MATERIAL_TEXTURE(MATERIAL_TEXTURE_ALPHA_Y, fp).x, 0.0f);
+        if (glint)
+            g_glint_alpha.y = clamp(sqrt(a2), 1e-3f, 1.0f);
+        else
+            g_alpha.y = sqrt(a2);
+    }
+    if ((mask & (1 << MATERIAL_TEXTURE_COLOR)) != 0) {
+        vec3 c = MATERIAL_TEXTURE(MATERIAL_TEXTURE_COLOR, fp);
+        if (glint)
+            g_glint_color = c;
+        else
+            g_albedo = c;
+    }
+    if ((mask & (1 << MATERIAL_TEXTURE_BASE)) != 0)
+        g_glint_base_albedo = MATERIAL_TEXTURE(MATERIAL_TEXTURE_BASE, fp);
+}
+
+#define u_albedo g_albedo
+#define u_alpha g_alpha
+#define u_glint_color g_glint_color
+#define u_glint_base_albedo g_glint_base_albedo
+
+#endif
