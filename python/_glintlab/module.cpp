@@ -68,7 +68,27 @@ py::object& scene_error_type() {
     return type;
 }
 
-Scene parse(const std::string& text, const std::string& file) {
+// A NumPy texture (float32, (H, W), (H, W, 1), (H, W, 3) or (H, W, 4),
+// linear values; the Python side has checked the shape and finiteness and
+// names the JSON path in its errors) as the loader's RGBA texels.
+std::shared_ptr<const TextureImage> texture_of_array(const FloatArray& a) {
+    const py::ssize_t h = a.shape(0), w = a.shape(1);
+    const py::ssize_t c = a.ndim() == 3 ? a.shape(2) : 1;
+    TextureImage t;
+    t.width = static_cast<int>(w), t.height = static_cast<int>(h);
+    t.texels.resize(static_cast<size_t>(w * h));
+    const float* p = a.data();
+    for (size_t i = 0; i < t.texels.size(); ++i) {
+        const float* v = p + i * static_cast<size_t>(c);
+        t.texels[i] = c == 1   ? glm::vec4(v[0], v[0], v[0], 1.0f)
+                      : c == 3 ? glm::vec4(v[0], v[1], v[2], 1.0f)
+                               : glm::vec4(v[0], v[1], v[2], v[3]);
+    }
+    return std::make_shared<const TextureImage>(std::move(t));
+}
+
+Scene parse(const std::string& text, const std::string& file,
+            const std::vector<FloatArray>& arrays) {
     nlohmann::json document;
     try {
         document = nlohmann::json::parse(text);
@@ -77,7 +97,11 @@ Scene parse(const std::string& text, const std::string& file) {
         throw py::error_already_set();
     }
     try {
-        return parse_scene(document, file);
+        TextureFileCache textures;
+        for (size_t i = 0; i < arrays.size(); ++i)
+            textures[std::string(kArrayPrefix) + std::to_string(i) + ">"] =
+                texture_of_array(arrays[i]);
+        return parse_scene(document, file, std::move(textures));
     } catch (const Error& e) {
         PyErr_SetString(scene_error_type().ptr(), e.what());
         throw py::error_already_set();
@@ -252,6 +276,7 @@ PYBIND11_MODULE(_glintlab, m) {
         py::arg("text"), py::arg("model"),
         "scene_edits.h set_glint_model on a JSON text: the model set and fitted");
     m.def("parse_scene", &parse, py::arg("text"), py::arg("file"),
+          py::arg("arrays") = std::vector<FloatArray>{},
           "Parses a JSON text strictly; raises SceneError naming the file and JSON path");
     m.def("render", &render, py::arg("scene"), py::arg("gpu") = false, py::arg("spp") = py::none(),
           py::arg("seed") = py::none(), py::arg("width") = py::none(),

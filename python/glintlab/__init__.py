@@ -130,14 +130,74 @@ def set_model(document, model):
         raise SceneError(f"model: unknown glint model \"{model}\" (known: {', '.join(names)})")
     materials = document.get("materials", [])
     if any(isinstance(m, dict) and m.get("type") == "glint" for m in materials):
+        # NumPy textures travel through the JSON text as placeholders.
+        stash = []
+
+        def swap(node, restore):
+            items = node.items() if isinstance(node, dict) else enumerate(node)
+            for key, value in list(items):
+                if not restore and isinstance(value, np.ndarray):
+                    stash.append(value)
+                    node[key] = f"<numpy {len(stash) - 1}>"
+                elif restore and isinstance(value, str) and value.startswith("<numpy "):
+                    node[key] = stash[int(value[7:-1])]
+                elif isinstance(value, (dict, list)):
+                    swap(value, restore)
+
+        swap(materials, False)
         switched = json.loads(_glintlab.set_glint_model(json.dumps({"materials": materials}), model))
+        swap(materials, True)
         materials[:] = switched["materials"]
+        swap(materials, True)
     return document
+
+
+def _texture_arrays(doc, name):
+    """Replaces every NumPy array given as a texture ({"texture": array}) by
+    the name the loader knows it under ("<array N>") and returns the arrays:
+    float32, C order, shape (H, W), (H, W, 1), (H, W, 3) or (H, W, 4),
+    finite, linear values (like an EXR)."""
+    arrays = []
+
+    def check(a, where):
+        if a.ndim not in (2, 3) or (a.ndim == 3 and a.shape[2] not in (1, 3, 4)):
+            raise SceneError(f"{name}: {where}: a texture array has shape (H, W), (H, W, 1), "
+                             f"(H, W, 3) or (H, W, 4), got {a.shape}")
+        if a.shape[0] < 1 or a.shape[1] < 1 or a.shape[0] > 65536 or a.shape[1] > 65536:
+            raise SceneError(f"{name}: {where}: texture size {a.shape[1]}x{a.shape[0]} is outside "
+                             "[1, 65536] per side")
+        if not np.issubdtype(a.dtype, np.number) or np.issubdtype(a.dtype, np.complexfloating):
+            raise SceneError(f"{name}: {where}: a texture array holds real numbers, got {a.dtype}")
+        f = np.ascontiguousarray(a, dtype=np.float32)
+        bad = ~np.isfinite(f)
+        if bad.any():
+            y, x = np.argwhere(bad)[0][:2]
+            raise SceneError(f"{name}: {where}: texel (x={x}, y={y}) is not finite "
+                             "(a texture array must hold finite values)")
+        return f
+
+    def walk(node, where):
+        if isinstance(node, dict):
+            for key, value in node.items():
+                if key == "texture" and isinstance(value, np.ndarray):
+                    arrays.append(check(value, f"{where}/texture"))
+                    node[key] = f"<array {len(arrays) - 1}>"
+                else:
+                    walk(value, f"{where}/{key}")
+        elif isinstance(node, list):
+            for i, value in enumerate(node):
+                walk(value, f"{where}/{i}")
+
+    walk(doc, "")
+    return arrays
 
 
 def parse_scene(document, file=None, model=None, overrides=None):
     """A validated `Scene` from a dict or a path, after `model` and
-    `overrides`; raises SceneError naming the file and JSON path."""
+    `overrides`; raises SceneError naming the file and JSON path. A material
+    parameter's texture may be a NumPy array in place of a file:
+    {"texture": array, ...} (float32 (H, W[, 1|3|4]) of linear values, uv
+    (0, 0) at row 0, column 0; docs/SCENE_FORMAT.md "Textures")."""
     if isinstance(document, Scene):
         if model is not None or overrides:
             raise TypeError("model/overrides need a dict or a path, not a parsed Scene")
@@ -146,7 +206,8 @@ def parse_scene(document, file=None, model=None, overrides=None):
     if model is not None:
         set_model(doc, model)
     apply_overrides(doc, overrides)
-    return _glintlab.parse_scene(json.dumps(doc), name)
+    arrays = _texture_arrays(doc, name)
+    return _glintlab.parse_scene(json.dumps(doc), name, arrays)
 
 
 def render(scene, model=None, overrides=None, gpu=False, spp=None, seed=None, res=None,

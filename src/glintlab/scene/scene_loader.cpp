@@ -526,6 +526,11 @@ void check_model_lights(const Scene& scene) {
 }  // namespace
 
 Scene parse_scene(const nlohmann::json& document, const std::filesystem::path& file) {
+    return parse_scene(document, file, {});
+}
+
+Scene parse_scene(const nlohmann::json& document, const std::filesystem::path& file,
+                  TextureFileCache arrays) {
     Scene scene;
     scene.file = file;
     JsonObject root(document, "", file.string());
@@ -564,7 +569,7 @@ Scene parse_scene(const nlohmann::json& document, const std::filesystem::path& f
         render->finish();
     }
     LoadContext ctx{{}, &scene};
-    TextureFileCache texture_files;
+    TextureFileCache texture_files = std::move(arrays);
     for (JsonObject& m : root.object_array("materials")) {
         MaterialDesc desc = read_material(m, texture_files);
         if (ctx.material_index.contains(desc.name))

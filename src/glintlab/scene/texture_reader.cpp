@@ -52,8 +52,23 @@ bool is_texture_form(JsonObject& o, std::string_view key) {
 
 std::shared_ptr<const TextureInput> read_texture_block(JsonObject& b, const TextureParameter& p,
                                                        TextureFileCache& files) {
-    const std::filesystem::path file = b.file_path("texture");
-    const std::shared_ptr<const TextureImage> image = load(file, files);
+    // A texture handed over in memory (the Python module's NumPy arrays,
+    // "<array N>") or a file.
+    std::filesystem::path file;
+    std::shared_ptr<const TextureImage> image;
+    if (const nlohmann::json* v = b.has("texture") ? b.raw("texture") : nullptr;
+        v && v->is_string() && v->get<std::string>().starts_with(kArrayPrefix)) {
+        file = v->get<std::string>();
+        const auto it = files.find(file);
+        if (it == files.end())
+            b.error("texture", fmt::format("{} names no array handed to the loader (arrays come "
+                                           "from the Python module's scene dicts)",
+                                           file.string()));
+        image = it->second;
+    } else {
+        file = b.file_path("texture");
+        image = load(file, files);
+    }
     const std::string where = fmt::format("{} ({})", b.path(), file.string());
 
     if (!b.has("channel") && !p.colour && !image->grey())

@@ -28,8 +28,12 @@ struct TextureParameter {
     enum class Filtered { Value, Square, Exp } filtered = Filtered::Value;
 };
 
-// The files a scene's textures read, each decoded once.
+// The files a scene's textures read, each decoded once; also the textures a
+// caller hands over in memory under names starting with kArrayPrefix
+// ("<array 0>": the Python module's NumPy arrays), which a scene's
+// "texture" value names in place of a file.
 using TextureFileCache = std::map<std::filesystem::path, std::shared_ptr<const TextureImage>>;
+inline constexpr std::string_view kArrayPrefix = "<array ";
 
 // True when `key` holds an object (the texture form) rather than a number or colour.
 bool is_texture_form(JsonObject& o, std::string_view key);
