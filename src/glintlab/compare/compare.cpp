@@ -88,9 +88,19 @@ Mask material_mask(const Scene& scene, const Accelerator& accel, const Camera& c
 }
 
 std::string truth_key(const GlintDesc& d) {
-    return fmt::format("explicit {} alpha {:.4g}x{:.4g} ln density {:.4g} gamma {:.3g} deg",
+    std::string maps;
+    if (const GlintTextures* t = d.textures.get()) {
+        auto add = [&](bool on, const char* name) {
+            if (on) maps += fmt::format("{}{}", maps.empty() ? ", maps: " : " ", name);
+        };
+        add(t->density != nullptr, "density");
+        add(t->alpha_x_sq || t->alpha_y_sq, "roughness");
+        add(t->color != nullptr, "color");
+        add(t->base_albedo != nullptr, "base");
+    }
+    return fmt::format("explicit {} alpha {:.4g}x{:.4g} ln density {:.4g} gamma {:.3g} deg{}",
                        d.ndf == NdfType::GGX ? "ggx" : "beckmann", d.alpha_x, d.alpha_y,
-                       d.log_density, std::get<ExplicitParams>(d.params).gamma_deg);
+                       d.log_density, std::get<ExplicitParams>(d.params).gamma_deg, maps);
 }
 
 // One set of renders: a model (or the truth) on R realizations, and P
@@ -228,6 +238,15 @@ CompareResult run_compare(const CompareOptions& o) {
         t.ndf = fitted.ndf, t.alpha_x = fitted.alpha_x, t.alpha_y = fitted.alpha_y;
         t.log_density = std::clamp(fitted.log_density, 0.0f, 30.0f);  // explicit's range
         t.base_albedo = glm::vec3(0.0f);
+        // The truth reads the textures the model reads (a model that cannot
+        // read one got its map's mean: switch_glint_model), not the base.
+        if (fitted.textures) {
+            GlintTextures maps = *fitted.textures;
+            maps.base_albedo = nullptr;
+            t.textures = std::make_shared<const GlintTextures>(std::move(maps));
+        } else {
+            t.textures = nullptr;
+        }
         const std::string key = truth_key(t);
         const auto it = truth_job.find(key);
         if (it != truth_job.end()) return std::pair{it->second, key};
@@ -285,6 +304,10 @@ CompareResult run_compare(const CompareOptions& o) {
         // 1-degree cone at roughness 0.3 (docs/VALIDATION.md "compare").
         // A model whose method fixes the extent gets a truth of its extent.
         double gamma_deg = truth_gamma_deg;
+        const bool lost_maps =
+            original.textures &&
+            ((original.textures->density && !(d.textures && d.textures->density)) ||
+             (original.textures->alpha_x_sq && !(d.textures && d.textures->alpha_x_sq)));
         if (m->id == original.model_id) {
             d.params = original.params;
             row.facet_extent = "the scene's parameters";
@@ -303,6 +326,15 @@ CompareResult run_compare(const CompareOptions& o) {
             gamma_deg = std::get<ExplicitParams>(cone.params).gamma_deg;
         }
         d.base_albedo = glm::vec3(0.0f);  // the truth has no diffuse base either
+        if (d.textures && d.textures->base_albedo) {
+            GlintTextures maps = *d.textures;
+            maps.base_albedo = nullptr;
+            d.textures = std::make_shared<const GlintTextures>(std::move(maps));
+        }
+        if (lost_maps)
+            row.facet_extent +=
+                "; density/roughness maps replaced by their means (the model "
+                "cannot read them), against a truth of the same means";
         const auto [truth, key] = add_truth(d, gamma_deg);
         row.compared = true;
         row.backend = on_gpu ? "gpu" : "cpu";

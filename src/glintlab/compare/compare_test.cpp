@@ -174,5 +174,31 @@ TEST(Compare, DeltaLightModelsFlickerAsTheTruthWithItsFacetExtent) {
     }
 }
 
+// A textured material (scenes/compare/textured_lights.json's maps): every
+// truth reads the maps its model reads, a model that cannot read a map
+// (wang2020: density, roughness) gets the map's mean against a truth of the
+// same means, and says so.
+TEST(Compare, TexturedMaterialsAreComparedWithTruthsOfTheSameMaps) {
+    const std::filesystem::path scene =
+        std::filesystem::path(GLINTLAB_SOURCE_DIR) / "scenes" / "compare" / "textured_lights.json";
+    compare::CompareOptions o;
+    o.scene = scene;
+    o.models = {"deliot2023", "wang2020"};
+    o.realizations = 2, o.frames = 2, o.threads = 1;
+    o.width = 16, o.height = 16;
+    const compare::CompareResult r = compare::run_compare(o);
+    const compare::ModelMetrics* deliot = r.find("deliot2023");
+    const compare::ModelMetrics* wang = r.find("wang2020");
+    ASSERT_NE(deliot, nullptr);
+    ASSERT_NE(wang, nullptr);
+    EXPECT_NE(deliot->truth.find("maps: density roughness color"), std::string::npos)
+        << deliot->truth;
+    EXPECT_NE(wang->truth.find(", maps: color"), std::string::npos) << wang->truth;
+    EXPECT_EQ(wang->truth.find("maps: density"), std::string::npos) << wang->truth;
+    EXPECT_NE(wang->facet_extent.find("replaced by their means"), std::string::npos)
+        << wang->facet_extent;
+    EXPECT_GT(deliot->mean_luminance, 0.0);
+}
+
 }  // namespace
 }  // namespace glintlab
