@@ -394,6 +394,30 @@ std::vector<std::pair<std::string, std::string>> asset_scenes() {
                   {"type": "quad", "material": "glass", "size": [1, 2], "uv_scale": [3, 3]},
                   {"type": "sphere", "material": "metal", "center": [0, 1, 0], "radius": 0.3})",
                R"({"type": "environment", "radiance": [0.5, 0.6, 0.7], "scale": 2})")},
+        // Every key of the texture form (scene/texture_reader.h) on the
+        // parameters that take one, reading the grey height.png and the
+        // colour photo.jpg.
+        {"textured.json", R"({
+  "camera": {"eye": [0, 2, 4], "target": [0, 0, 0], "fov_deg": 40},
+  "film": {"width": 16, "height": 16},
+  "render": {"integrator": "path", "spp": 1, "max_depth": 3},
+  "materials": [
+    {"name": "glint", "type": "glint", "model": "deliot2023",
+     "log_density": {"texture": "height.png", "scale": 4, "offset": 8, "wrap": "mirror",
+                     "uv_transform": {"scale": [2, 3], "offset": [0.1, 0.2], "rotation_deg": 15}},
+     "roughness": [{"texture": "height.png", "channel": "r", "scale": 0.5, "offset": 0.05}, 0.2],
+     "color": {"texture": "photo.jpg", "colorspace": "srgb"},
+     "fresnel": {"type": "conductor", "metal": "silver"}},
+    {"name": "paint", "type": "plastic",
+     "albedo": {"texture": "photo.jpg", "channel": "luminance", "colorspace": "linear", "wrap": "clamp"},
+     "roughness": {"texture": "height.png", "channel": "a", "scale": 0.3, "wrap": "repeat"}}
+  ],
+  "shapes": [{"type": "quad", "material": "glint", "size": [2, 2], "uv_scale": [2, 2]},
+             {"type": "sphere", "material": "paint", "center": [0, 0.5, 0], "radius": 0.4}],
+  "lights": [{"type": "point", "position": [0, 3, 0], "intensity": [5, 5, 5]}],
+  "comment": "fuzz seed"
+}
+)"},
     };
 }
 
