@@ -179,10 +179,15 @@ void model_switcher(GlintDesc& g) {
 
 // Material controls; edits in place within the loader's ranges.
 void material_panel(MaterialDesc& m) {
+    // Parameters read from textures have no number to edit: the panel names
+    // them and leaves their widgets out.
+    const MaterialTextures* mt = m.textures.get();
+    const GlintTextures* gt = m.glint.textures.get();
+    if (m.textured()) text(fmt::format("from textures: {}", textured_keys(m)));
     if (m.type != MaterialDesc::Type::Glint) {
         const bool diffuse_part =
             m.type == MaterialDesc::Type::Diffuse || m.type == MaterialDesc::Type::Plastic;
-        if (diffuse_part) {
+        if (diffuse_part && !(mt && mt->albedo)) {
             ImGui::ColorEdit3(fit_label("albedo").c_str(), &m.albedo.x);
             note("albedo");
         }
@@ -191,8 +196,8 @@ void material_panel(MaterialDesc& m) {
         if (ImGui::Combo(fit_label("ndf").c_str(), &ndf, "beckmann\0ggx\0"))
             m.ndf = ndf == 1 ? NdfType::GGX : NdfType::Beckmann;
         note("ndf");
-        slider("alpha x", &m.alpha_x, 1e-3f, 1.0f, true);
-        slider("alpha y", &m.alpha_y, 1e-3f, 1.0f, true);
+        if (!(mt && mt->alpha_x_sq)) slider("alpha x", &m.alpha_x, 1e-3f, 1.0f, true);
+        if (!(mt && mt->alpha_y_sq)) slider("alpha y", &m.alpha_y, 1e-3f, 1.0f, true);
         if (m.type == MaterialDesc::Type::Conductor) {
             ImGui::DragFloat3(fit_label("eta").c_str(), &m.eta.x, 0.01f, 0.01f, 10.0f);
             note("eta");
@@ -216,14 +221,16 @@ void material_panel(MaterialDesc& m) {
             g.ndf = ndf == 1 ? NdfType::GGX : NdfType::Beckmann;
         note("ndf");
     }
-    slider("alpha x", &g.alpha_x, 1e-3f, 1.0f, true);
-    slider("alpha y", &g.alpha_y, 1e-3f, 1.0f, true);
-    slider("log density", &g.log_density, -20.0f, 60.0f);
+    if (!(gt && gt->alpha_x_sq)) slider("alpha x", &g.alpha_x, 1e-3f, 1.0f, true);
+    if (!(gt && gt->alpha_y_sq)) slider("alpha y", &g.alpha_y, 1e-3f, 1.0f, true);
+    if (!(gt && gt->density)) slider("log density", &g.log_density, -20.0f, 60.0f);
     int seed = static_cast<int>(g.seed & 0x7fffffffu);
     if (ImGui::InputInt("seed", &seed)) g.seed = static_cast<uint32_t>(std::max(seed, 0));
     note("seed");
-    ImGui::ColorEdit3(fit_label("colour").c_str(), &g.color.x);
-    note("colour");
+    if (!(gt && gt->color)) {
+        ImGui::ColorEdit3(fit_label("colour").c_str(), &g.color.x);
+        note("colour");
+    }
     int fresnel = static_cast<int>(g.fresnel.mode);
     if (ImGui::Combo(fit_label("fresnel").c_str(), &fresnel,
                      "none\0schlick\0conductor\0dielectric\0"))
@@ -242,8 +249,10 @@ void material_panel(MaterialDesc& m) {
     if (g.fresnel.mode == FresnelDesc::Mode::Dielectric) {
         slider("eta", &g.fresnel.eta.x, 1.0f, 3.0f);
         // The diffuse base lies under the dielectric coat (glint_bxdf.h).
-        ImGui::ColorEdit3(fit_label("base albedo").c_str(), &g.base_albedo.x);
-        note("base albedo");
+        if (!(gt && gt->base_albedo)) {
+            ImGui::ColorEdit3(fit_label("base albedo").c_str(), &g.base_albedo.x);
+            note("base albedo");
+        }
     } else {
         g.base_albedo = glm::vec3(0.0f);  // the loader's rule: no coat, no base
     }
