@@ -594,7 +594,22 @@ TriangleMesh load_gltf_bytes(const std::string& file, const std::string& name,
                 "{}: required glTF extension \"{}\" is not supported (supported: {}; material "
                 "and texture extensions are accepted and ignored)",
                 name, ext, kDracoExtension);
-    return GltfReader(model, name).read_scene();
+    TriangleMesh mesh = GltfReader(model, name).read_scene();
+    // The file's materials are not read yet: the shape's own "material"
+    // shades every primitive. Said once per file, never dropped silently.
+    if (!model.materials.empty()) {
+        std::string names;
+        for (size_t i = 0; i < model.materials.size() && i < 4; ++i)
+            names += fmt::format("{}\"{}\"", i ? ", " : "", model.materials[i].name);
+        if (model.materials.size() > 4) names += ", ...";
+        fmt::print(stderr,
+                   "warning: {}: its {} material{} ({}) and {} texture{} are not read; the "
+                   "shape's \"material\" shades every primitive (textures: give them as material "
+                   "parameters, docs/SCENE_FORMAT.md \"Textures\")\n",
+                   name, model.materials.size(), model.materials.size() == 1 ? "" : "s", names,
+                   model.textures.size(), model.textures.size() == 1 ? "" : "s");
+    }
+    return mesh;
 }
 
 }  // namespace glintlab

@@ -230,6 +230,30 @@ TEST_F(MeshGltf, JsonWithDataUriAndTrsHierarchy) {
     }
 }
 
+// The file's materials and textures are not read yet (the shape's
+// "material" shades the mesh): a warning says so, naming them.
+TEST_F(MeshGltf, FileMaterialsAreNamedInAWarning) {
+    Asset a = quad_asset(kU16);
+    add_hierarchy(a, /*child_as_matrix=*/false);
+    a.doc["materials"] = json::array(
+        {{{"name", "paint"}, {"pbrMetallicRoughness", {{"baseColorTexture", {{"index", 0}}}}}}});
+    a.doc["textures"] = json::array({{{"source", 0}}});
+    a.doc["images"] = json::array({{{"uri", "paint.png"}}});
+    a.doc["meshes"][0]["primitives"][0]["material"] = 0;
+    testing::internal::CaptureStderr();
+    const TriangleMesh m = load_gltf(write_gltf("painted.gltf", a));
+    const std::string warning = testing::internal::GetCapturedStderr();
+    EXPECT_EQ(m.triangles.size(), 2u);
+    EXPECT_NE(warning.find("1 material (\"paint\") and 1 texture are not read"), std::string::npos)
+        << warning;
+    // Without materials: nothing said.
+    testing::internal::CaptureStderr();
+    Asset plain = quad_asset(kU16);
+    add_hierarchy(plain, /*child_as_matrix=*/false);
+    load_gltf(write_gltf("plain.gltf", plain));
+    EXPECT_EQ(testing::internal::GetCapturedStderr(), "");
+}
+
 TEST_F(MeshGltf, BinaryWithMatrixNode) {
     for (int type : {kU16, kNoIndices}) {
         SCOPED_TRACE(type);
