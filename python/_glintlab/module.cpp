@@ -72,6 +72,10 @@ py::object& scene_error_type() {
 // linear values; the Python side has checked the shape and finiteness and
 // names the JSON path in its errors) as the loader's RGBA texels.
 std::shared_ptr<const TextureImage> texture_of_array(const FloatArray& a) {
+    if (a.ndim() < 2 || a.ndim() > 3 || a.shape(0) < 1 || a.shape(1) < 1 ||
+        (a.ndim() == 3 && a.shape(2) != 1 && a.shape(2) != 3 && a.shape(2) != 4))
+        throw py::value_error(
+            "texture array: expected shape (H, W), (H, W, 1), (H, W, 3) or (H, W, 4)");
     const py::ssize_t h = a.shape(0), w = a.shape(1);
     const py::ssize_t c = a.ndim() == 3 ? a.shape(2) : 1;
     TextureImage t;

@@ -60,3 +60,10 @@ def test_array_values_are_checked_against_the_parameters_range(tiny_scene):
     tiny_scene["materials"][0]["log_density"] = {"texture": np.full((2, 2), 70.0, np.float32)}
     with pytest.raises(glintlab.SceneError, match=r"outside the parameter's range \[-20, 60\]"):
         glintlab.parse_scene(tiny_scene)
+
+
+def test_the_extension_checks_array_shapes_itself():
+    # The module's parse_scene checks first; the extension must not read a
+    # 1-D array out of bounds when called directly.
+    with pytest.raises(ValueError, match="expected shape"):
+        glintlab._glintlab.parse_scene("{}", "x", [np.zeros(4, np.float32)])
