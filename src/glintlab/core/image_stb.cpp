@@ -217,17 +217,33 @@ Image read_radiance_hdr(const std::filesystem::path& path) {
 // int on a long width: fuzz/regressions/image/pnm_width_int_overflow.png),
 // so only PNG reaches stb, and JPEG goes to libjpeg-turbo (image_jpeg.cpp),
 // each told by its signature whatever the file's extension.
-Image read_srgb_8bit_or_16bit(const std::filesystem::path& path) {
+namespace {
+
+// The file's bytes, told apart by their signature: a JPEG as read, a PNG as
+// stb may read it (png_bytes_for_stb); anything else is an error.
+struct PngOrJpeg {
+    std::string bytes;
+    bool jpeg = false;
+};
+PngOrJpeg png_or_jpeg_bytes(const std::filesystem::path& path) {
     static constexpr std::string_view kPng("\x89PNG\r\n\x1a\n", 8);
     static constexpr std::string_view kJpeg("\xff\xd8\xff", 3);
-    const std::string file_bytes = read_file_bytes(path);
-    if (file_bytes.starts_with(kJpeg)) return read_jpeg(file_bytes, path);
+    std::string file_bytes = read_file_bytes(path);
+    if (file_bytes.starts_with(kJpeg)) return {std::move(file_bytes), true};
     if (!file_bytes.starts_with(kPng))
         fail(
             "{}: cannot read PNG/JPEG file: it has neither the PNG signature nor the JPEG "
             "start-of-image marker (stb's other formats are not read)",
             path.string());
-    const std::string bytes = png_bytes_for_stb(file_bytes, path);
+    return {png_bytes_for_stb(file_bytes, path), false};
+}
+
+}  // namespace
+
+Image read_srgb_8bit_or_16bit(const std::filesystem::path& path) {
+    const PngOrJpeg file = png_or_jpeg_bytes(path);
+    if (file.jpeg) return read_jpeg(file.bytes, path);
+    const std::string& bytes = file.bytes;
     const auto* p = reinterpret_cast<const stbi_uc*>(bytes.data());
     const int size = static_cast<int>(bytes.size());
     int w = 0, h = 0, channels_in_file = 0;
@@ -259,15 +275,13 @@ Image read_srgb_8bit_or_16bit(const std::filesystem::path& path) {
 }
 
 TextureImage read_png_or_jpeg_codes(const std::filesystem::path& path) {
-    static constexpr std::string_view kPng("\x89PNG\r\n\x1a\n", 8);
-    static constexpr std::string_view kJpeg("\xff\xd8\xff", 3);
-    const std::string file_bytes = read_file_bytes(path);
+    const PngOrJpeg file = png_or_jpeg_bytes(path);
     TextureImage t;
     t.codes = true;
-    if (file_bytes.starts_with(kJpeg)) {
+    if (file.jpeg) {
         // libjpeg-turbo's reader decodes sRGB exactly; encoding again gives
         // the 8-bit codes back to within float rounding (JPEG has no alpha).
-        const Image image = read_jpeg(file_bytes, path);
+        const Image image = read_jpeg(file.bytes, path);
         t.width = image.width, t.height = image.height;
         t.texels.reserve(image.pixels.size());
         for (const glm::vec3& p : image.pixels)
@@ -276,12 +290,7 @@ TextureImage read_png_or_jpeg_codes(const std::filesystem::path& path) {
                                   std::clamp(srgb_encode(p.z), 0.0f, 1.0f), 1.0f);
         return t;
     }
-    if (!file_bytes.starts_with(kPng))
-        fail(
-            "{}: cannot read PNG/JPEG file: it has neither the PNG signature nor the JPEG "
-            "start-of-image marker (stb's other formats are not read)",
-            path.string());
-    const std::string bytes = png_bytes_for_stb(file_bytes, path);
+    const std::string& bytes = file.bytes;
     const auto* p = reinterpret_cast<const stbi_uc*>(bytes.data());
     const int size = static_cast<int>(bytes.size());
     int w = 0, h = 0, channels_in_file = 0;
