@@ -39,14 +39,22 @@ struct TextureInput {
     // The mean over the pixel footprint (MipTexture::filtered), or the
     // finest level's bilinear value at uv without a footprint (a path's
     // later bounces carry none).
+    // A one-channel texture's value is repeated in all three (a grey colour).
     glm::vec3 lookup(glm::vec2 uv, const Footprint* footprint) const {
         const glm::vec2 st = transform.apply(uv);
-        if (!footprint) return texture->bilinear(0, st);
-        return texture->filtered(st, transform.apply_vector(footprint->duvdx),
-                                 transform.apply_vector(footprint->duvdy));
+        if (!footprint) return grey_or_rgb(texture->bilinear(0, st));
+        return grey_or_rgb(texture->filtered(st, transform.apply_vector(footprint->duvdx),
+                                             transform.apply_vector(footprint->duvdy)));
     }
     // The finest level's bilinear value at uv (the ground truth's per-facet value).
-    glm::vec3 at(glm::vec2 uv) const { return texture->bilinear(0, transform.apply(uv)); }
+    glm::vec3 at(glm::vec2 uv) const {
+        return grey_or_rgb(texture->bilinear(0, transform.apply(uv)));
+    }
+
+  private:
+    glm::vec3 grey_or_rgb(glm::vec3 v) const {
+        return texture->channels() == 1 ? glm::vec3(v.x) : v;
+    }
 };
 
 }  // namespace glintlab

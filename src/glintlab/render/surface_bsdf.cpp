@@ -51,10 +51,7 @@ SurfaceBsdf make_surface_bsdf(const MaterialDesc& m, const SurfaceHit& hit, glm:
     float alpha_x = m.alpha_x, alpha_y = m.alpha_y;
     if (m.textures) {
         const MaterialTextures& t = *m.textures;
-        if (t.albedo) {
-            const glm::vec3 v = t.albedo->lookup(hit.uv, footprint);
-            albedo = t.albedo->texture->channels() == 1 ? glm::vec3(v.x) : v;
-        }
+        if (t.albedo) albedo = t.albedo->lookup(hit.uv, footprint);
         // Conductors and dielectrics take α in [0, 1] (0: a mirror).
         if (t.alpha_x_sq)
             alpha_x = std::sqrt(std::max(t.alpha_x_sq->lookup(hit.uv, footprint).x, 0.0f));
