@@ -67,3 +67,29 @@ def test_the_extension_checks_array_shapes_itself():
     # 1-D array out of bounds when called directly.
     with pytest.raises(ValueError, match="expected shape"):
         glintlab._glintlab.parse_scene("{}", "x", [np.zeros(4, np.float32)])
+
+
+def test_normal_map_array_renders_as_the_same_map_from_an_exr_file(tiny_scene, tmp_path):
+    # Bumps along u: unit normals stored as themselves ("encoding": "signed").
+    h, w = 16, 32
+    x = np.sin(np.linspace(0, 4 * np.pi, w, dtype=np.float32))[None, :] * 0.4
+    n = np.stack(np.broadcast_arrays(x, np.zeros((h, 1), np.float32), np.ones((h, w), np.float32)),
+                 axis=-1)
+    n /= np.linalg.norm(n, axis=-1, keepdims=True)
+    glintlab.write_image(tmp_path / "n.exr", n)
+    from_file = copy.deepcopy(tiny_scene)
+    from_file["materials"][0]["normal_map"] = {"texture": "n.exr", "encoding": "signed"}
+    from_array = copy.deepcopy(tiny_scene)
+    from_array["materials"][0]["normal_map"] = {"texture": n, "encoding": "signed"}
+    a = glintlab.render(from_file, file=tmp_path / "scene.json", res=(24, 20), threads=1)
+    b = glintlab.render(from_array, res=(24, 20), threads=1)
+    assert a.max() > 0 and np.isfinite(a).all()
+    assert np.array_equal(a, b)
+    assert not np.array_equal(b, glintlab.render(tiny_scene, res=(24, 20), threads=1))
+    # A map that is not one names the array's JSON path and the texel.
+    bad = copy.deepcopy(tiny_scene)
+    not_unit = np.zeros((4, 4, 3), np.float32)
+    not_unit[..., 0] = 2.0
+    bad["materials"][0]["normal_map"] = {"texture": not_unit, "encoding": "signed"}
+    with pytest.raises(glintlab.SceneError, match=r"normal_map.*texel \(x=0, y=0\)"):
+        glintlab.parse_scene(bad)

@@ -10,6 +10,7 @@
 
 #include <glm/glm.hpp>
 
+#include "glintlab/core/normal_map.h"
 #include "glintlab/core/texture_input.h"
 #include "glintlab/glints/model_list.h"
 #include "glintlab/glints/model_params.h"
@@ -75,6 +76,15 @@ struct GlintDesc {
     // hit (glint_textures.h) into the numbers above; the ground truth
     // `explicit` also reads them per facet.
     std::shared_ptr<const GlintTextures> textures;
+    // The material's normal map as the ground truth reads it: each facet's
+    // normal composed with the map's normal at the facet's own position
+    // (docs/MODELS.md, "Normal maps"). Set by the renderers at each hit for
+    // `explicit` only; the other models see a frame and a roughness that
+    // already hold the map. `normal_map_axes` maps the map's (x, y) onto the
+    // hit's local frame: (1, ±1) on the front (−1 where the uv mapping is
+    // mirrored), x negated too seen from behind.
+    std::shared_ptr<const NormalMap> normal_map;
+    glm::vec2 normal_map_axes{1.0f};
     // The active model's parameters, as read through its descriptor's
     // parameter table. (The block as written in the scene file is not kept:
     // nothing needs it once it is read, and a second copy could disagree.)

@@ -80,7 +80,7 @@ gl::ProgramKey program_key(const Scene& scene, const Shape& shape,
     if (shape.material >= 0) {
         const MaterialDesc& m = scene.materials[static_cast<size_t>(shape.material)];
         if (m.type == MaterialDesc::Type::Glint) key.model = m.glint.model_id;
-        key.material_textures = m.textured();
+        key.material_textures = m.textures != nullptr || m.glint.textures != nullptr;
     }
     const auto it = model_options.find(key.model);
     const GpuModelHooks* hooks = find_gpu_model_hooks(key.model);
@@ -578,6 +578,14 @@ gl::Texture upload_latlong(const Image& image) {
 
 GpuRenderer::GpuRenderer(const Scene& scene) : impl_(std::make_unique<Impl>()) {
     require_gl45("OpenGL renderer");
+    for (const MaterialDesc& m : scene.materials)
+        if (m.normal_map)
+            fail(
+                "{}: material \"{}\" has a normal map: normal maps render on the CPU for now "
+                "(glintlab render without --gpu, compare, Python); the OpenGL renderer, the "
+                "viewer, export and the web page do not read them yet (docs/MODELS.md, \"Normal "
+                "maps\")",
+                scene.file.string(), m.name);
     Impl& r = *impl_;
     const int segments = sphere_segments(scene);
     for (const Shape& shape : scene.shapes) r.shapes.push_back(upload_shape(shape, segments));

@@ -3,7 +3,9 @@
 #include <algorithm>
 #include <cmath>
 
+#include "glintlab/core/normal_map.h"
 #include "glintlab/glints/glint_textures.h"
+#include "glintlab/glints/registry.h"
 #include "glintlab/render/light_sampling.h"
 
 namespace glintlab {
@@ -15,6 +17,49 @@ MicrofacetDistribution distribution(NdfType ndf, float ax, float ay) {
     d.alpha_x = ax;
     d.alpha_y = ay;
     return d;
+}
+
+// The normal map at a hit, in the hit's local frame (docs/MODELS.md,
+// "Normal maps"): the footprint's mean slope and slope covariance, and the
+// signs that carry the map's (x, y) onto the frame's (t, b).
+struct LocalBump {
+    SlopeStatistics slopes;
+    glm::vec2 axes{1.0f};
+};
+
+LocalBump local_bump(const NormalMap& map, const SurfaceHit& hit, const ShadingFrame& frame,
+                     bool back, const Footprint* footprint) {
+    LocalBump bump;
+    // glTF's bitangent: "up" in the image, i.e. against ∂p/∂v (v runs down
+    // the image); frame.b = n × t is it unless the uv mapping is mirrored.
+    bump.axes.y = glm::dot(frame.b, hit.dpdv) <= 0.0f ? 1.0f : -1.0f;
+    // Seen from behind, the surface's normal is −n: the map's normal (x, y,
+    // z) becomes (−x, y, z) in the flipped frame (t, −b, −n).
+    if (back) bump.axes.x = -1.0f;
+    bump.slopes = map.lookup(hit.uv, footprint);
+    bump.slopes.mean *= bump.axes;
+    bump.slopes.covariance.z *= bump.axes.x * bump.axes.y;
+    return bump;
+}
+
+// The frame around the footprint's mean normal, its tangent the projection
+// of the base frame's (∂p/∂u).
+ShadingFrame tilted_frame(const ShadingFrame& base, glm::vec3 local_normal) {
+    ShadingFrame f;
+    glm::vec3 t, b;
+    tangent_frame_around(local_normal, &t, &b);
+    f.n = base.to_world(local_normal);
+    f.t = base.to_world(t);
+    f.b = base.to_world(b);
+    return f;
+}
+
+// α² + 2 σ²: a footprint's mixture of lobes whose normals spread with slope
+// variance σ² along an axis is, to second order, the lobe of slope variance
+// α²/2 + σ² (LEAN mapping's sum of Beckmann covariances; the same rule for
+// GGX, as Filament's and Unreal's specular anti-aliasing use it).
+float widened(float alpha, float slope_variance, float max_alpha) {
+    return std::min(std::sqrt(alpha * alpha + 2.0f * slope_variance), max_alpha);
 }
 
 template <typename... Ts>
@@ -43,10 +88,18 @@ SurfaceBsdf make_surface_bsdf(const MaterialDesc& m, const SurfaceHit& hit, glm:
     ShadingFrame frame = shading_frame(hit);
     // Opaque materials are two-sided: look at them from the side of wo. The
     // dielectric keeps its orientation (inside/outside matters for eta).
-    if (m.type != MaterialDesc::Type::Dielectric && glm::dot(wo, frame.n) < 0.0f) {
+    const bool back = m.type != MaterialDesc::Type::Dielectric && glm::dot(wo, frame.n) < 0.0f;
+    std::optional<LocalBump> bump;
+    if (m.normal_map) bump = local_bump(*m.normal_map, hit, frame, back, footprint);
+    if (back) {
         frame.n = -frame.n;
         frame.b = -frame.b;  // keeps (t, b, n) right-handed
     }
+    // The frame every lobe but the ground truth's sees: tilted to the
+    // footprint's mean normal. (`explicit` keeps the base frame and
+    // composes each facet with the map at its own position.)
+    const ShadingFrame base_frame = frame;
+    if (bump) frame = tilted_frame(frame, bump->slopes.normal());
     glm::vec3 albedo = m.albedo;
     float alpha_x = m.alpha_x, alpha_y = m.alpha_y;
     if (m.textures) {
@@ -57,6 +110,26 @@ SurfaceBsdf make_surface_bsdf(const MaterialDesc& m, const SurfaceHit& hit, glm:
             alpha_x = std::sqrt(std::max(t.alpha_x_sq->lookup(hit.uv, footprint).x, 0.0f));
         if (t.alpha_y_sq)
             alpha_y = std::sqrt(std::max(t.alpha_y_sq->lookup(hit.uv, footprint).x, 0.0f));
+    }
+    if (bump && m.type != MaterialDesc::Type::Diffuse && m.type != MaterialDesc::Type::Glint) {
+        const glm::vec3 c = bump->slopes.covariance;
+        if (alpha_x == alpha_y && c.z != 0.0f) {
+            // An isotropic lobe widened by a correlated covariance is the
+            // lobe of covariance α²/2 I + Σ exactly: along Σ's principal axes.
+            const float angle = 0.5f * std::atan2(2.0f * c.z, c.x - c.y);
+            const float mid = 0.5f * (c.x + c.y);
+            const float radius = std::sqrt(0.25f * (c.x - c.y) * (c.x - c.y) + c.z * c.z);
+            const glm::vec3 t = std::cos(angle) * frame.t + std::sin(angle) * frame.b;
+            frame.t = t;
+            frame.b = glm::cross(frame.n, t);
+            const float a = alpha_x;
+            alpha_x = widened(a, mid + radius, 4.0f);
+            alpha_y = widened(a, std::max(mid - radius, 0.0f), 4.0f);
+        } else {
+            // An anisotropic lobe keeps its axes; Σ's correlation is dropped.
+            alpha_x = widened(alpha_x, c.x, 4.0f);
+            alpha_y = widened(alpha_y, c.y, 4.0f);
+        }
     }
     switch (m.type) {
         case MaterialDesc::Type::Diffuse: {
@@ -93,11 +166,24 @@ SurfaceBsdf make_surface_bsdf(const MaterialDesc& m, const SurfaceHit& hit, glm:
         g.has_footprint = true;
         g.footprint = *footprint;
     }
-    if (m.glint.textures)
-        return SurfaceBsdf(
-            frame, g,
-            std::make_shared<const GlintDesc>(resolve_glint_textures(m.glint, hit.uv, footprint)));
-    return SurfaceBsdf(frame, g);
+    if (!m.glint.textures && !bump) return SurfaceBsdf(frame, g);
+    auto resolved = std::make_shared<GlintDesc>(resolve_glint_textures(m.glint, hit.uv, footprint));
+    if (!bump) return SurfaceBsdf(frame, g, std::move(resolved));
+    if (resolved->model_id == GlintModelId::Explicit) {
+        resolved->normal_map = m.normal_map;
+        resolved->normal_map_axes = bump->axes;
+        return SurfaceBsdf(base_frame, g, std::move(resolved));
+    }
+    // Models whose precomputed tables hold one roughness (wang2020,
+    // kneiphof2025: glint_model_descriptor.h) take the mean normal only.
+    if (glint_model(resolved->model_id).textured_roughness) {
+        // Glint NDF axes stay on the uv axes (the models' grids follow
+        // them): Σ's correlation is dropped, as for anisotropic lobes.
+        const glm::vec3 c = bump->slopes.covariance;
+        resolved->alpha_x = widened(resolved->alpha_x, c.x, 1.0f);
+        resolved->alpha_y = widened(resolved->alpha_y, c.y, 1.0f);
+    }
+    return SurfaceBsdf(frame, g, std::move(resolved));
 }
 
 glm::vec3 SurfaceBsdf::f(glm::vec3 wo, glm::vec3 wi) const {

@@ -36,6 +36,7 @@ std::string textured_keys(const MaterialDesc& m) {
         add(t.color != nullptr, "color");
         add(t.base_albedo != nullptr, "base_albedo");
     }
+    add(m.normal_map != nullptr, "normal_map");
     return keys;
 }
 

@@ -38,9 +38,15 @@ struct MaterialDesc {
     glm::vec3 k{0.0f};
     GlintDesc glint;                                   // Glint
     std::shared_ptr<const MaterialTextures> textures;  // null: no textured parameter
-    bool needs_uv() const { return type == Type::Glint || textures != nullptr; }
-    // Any parameter, of the glint block too, read from a texture.
-    bool textured() const { return textures != nullptr || glint.textures != nullptr; }
+    // Every type may carry one (docs/MODELS.md, "Normal maps"); null: none.
+    std::shared_ptr<const NormalMap> normal_map;
+    bool needs_uv() const {
+        return type == Type::Glint || textures != nullptr || normal_map != nullptr;
+    }
+    // Any parameter, of the glint block too, read from a texture, or a normal map.
+    bool textured() const {
+        return textures != nullptr || glint.textures != nullptr || normal_map != nullptr;
+    }
 };
 
 // The scene format's name of a material type ("diffuse", "glint", ...).

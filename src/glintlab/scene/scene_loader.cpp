@@ -20,6 +20,7 @@
 #include "glintlab/scene/obj_loader.h"
 #include "glintlab/scene/shapes.h"
 #include "glintlab/scene/shapes_heightfield.h"
+#include "glintlab/scene/normal_map_reader.h"
 #include "glintlab/scene/texture_reader.h"
 #include "glintlab/scene/transform.h"
 #include "glintlab/scene/uv_projection.h"
@@ -223,6 +224,7 @@ MaterialDesc read_material(JsonObject& o, TextureFileCache& files) {
         m.type = MaterialDesc::Type::Glint;
         m.glint = read_glint(o, files);
     }
+    if (o.has("normal_map")) m.normal_map = read_normal_map(o, "normal_map", files);
     o.finish();
     if (t.albedo || t.alpha_x_sq || t.alpha_y_sq)
         m.textures = std::make_shared<const MaterialTextures>(std::move(t));
@@ -404,10 +406,15 @@ void read_shape(JsonObject& o, LoadContext& ctx) {
         if (auto uv = o.object("uv")) project_uvs(mesh, read_uv_projection(*uv));
         transform_mesh(mesh, transform);
         mesh.validate(where);
-        if (ctx.scene->materials[shape.material].needs_uv() && !mesh.has_uvs())
-            o.error("material", fmt::format("material \"{}\" is a glint material and needs a uv "
-                                            "parameterization, but this mesh has no uvs",
-                                            material));
+        if (const MaterialDesc& m = ctx.scene->materials[shape.material];
+            m.needs_uv() && !mesh.has_uvs())
+            o.error("material",
+                    fmt::format("material \"{}\" {} and needs a uv parameterization, but this mesh "
+                                "has no uvs (give it one with \"uv\": {{\"projection\": ...}})",
+                                material,
+                                m.type == MaterialDesc::Type::Glint
+                                    ? "is a glint material"
+                                    : fmt::format("reads {} from textures", textured_keys(m))));
         shape.geometry = std::move(mesh);
     }
     o.finish();

@@ -23,6 +23,8 @@ std::shared_ptr<const TextureImage> load(const std::filesystem::path& path,
     return image;
 }
 
+}  // namespace
+
 TextureUvTransform read_uv_transform(JsonObject& parent) {
     TextureUvTransform t;
     auto block = parent.object("uv_transform");
@@ -41,7 +43,32 @@ TextureUvTransform read_uv_transform(JsonObject& parent) {
     return t;
 }
 
-}  // namespace
+TextureSource read_texture_source(JsonObject& b, TextureFileCache& files) {
+    // A texture handed over in memory (the Python module's NumPy arrays,
+    // "<array N>") or a file.
+    TextureSource source;
+    if (const nlohmann::json* v = b.has("texture") ? b.raw("texture") : nullptr;
+        v && v->is_string() && v->get<std::string>().starts_with(kArrayPrefix)) {
+        source.file = v->get<std::string>();
+        const auto it = files.find(source.file);
+        if (it == files.end())
+            b.error("texture", fmt::format("{} names no array handed to the loader (arrays come "
+                                           "from the Python module's scene dicts)",
+                                           source.file.string()));
+        source.image = it->second;
+    } else {
+        source.file = b.file_path("texture");
+        source.image = load(source.file, files);
+    }
+    return source;
+}
+
+TextureWrap read_texture_wrap(JsonObject& b) {
+    const std::string wrap_name = b.string("wrap", "repeat", kWraps);
+    return wrap_name == "clamp"    ? TextureWrap::Clamp
+           : wrap_name == "mirror" ? TextureWrap::Mirror
+                                   : TextureWrap::Repeat;
+}
 
 bool is_texture_form(JsonObject& o, std::string_view key) {
     if (!o.has(key)) return false;
@@ -52,23 +79,7 @@ bool is_texture_form(JsonObject& o, std::string_view key) {
 
 std::shared_ptr<const TextureInput> read_texture_block(JsonObject& b, const TextureParameter& p,
                                                        TextureFileCache& files) {
-    // A texture handed over in memory (the Python module's NumPy arrays,
-    // "<array N>") or a file.
-    std::filesystem::path file;
-    std::shared_ptr<const TextureImage> image;
-    if (const nlohmann::json* v = b.has("texture") ? b.raw("texture") : nullptr;
-        v && v->is_string() && v->get<std::string>().starts_with(kArrayPrefix)) {
-        file = v->get<std::string>();
-        const auto it = files.find(file);
-        if (it == files.end())
-            b.error("texture", fmt::format("{} names no array handed to the loader (arrays come "
-                                           "from the Python module's scene dicts)",
-                                           file.string()));
-        image = it->second;
-    } else {
-        file = b.file_path("texture");
-        image = load(file, files);
-    }
+    const auto [file, image] = read_texture_source(b, files);
     const std::string where = fmt::format("{} ({})", b.path(), file.string());
 
     if (!b.has("channel") && !p.colour && !image->grey())
@@ -93,10 +104,7 @@ std::shared_ptr<const TextureInput> read_texture_block(JsonObject& b, const Text
     }
     const double scale = b.number("scale", 1.0, -1e6, 1e6);
     const double offset = b.number("offset", 0.0, -1e6, 1e6);
-    const std::string wrap_name = b.string("wrap", "repeat", kWraps);
-    const TextureWrap wrap = wrap_name == "clamp"    ? TextureWrap::Clamp
-                             : wrap_name == "mirror" ? TextureWrap::Mirror
-                                                     : TextureWrap::Repeat;
+    const TextureWrap wrap = read_texture_wrap(b);
     auto input = std::make_shared<TextureInput>();
     input->transform = read_uv_transform(b);
     input->source = file.string();

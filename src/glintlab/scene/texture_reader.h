@@ -35,6 +35,17 @@ struct TextureParameter {
 using TextureFileCache = std::map<std::filesystem::path, std::shared_ptr<const TextureImage>>;
 inline constexpr std::string_view kArrayPrefix = "<array ";
 
+// The image a texture block's "texture" names: a file (decoded once) or an
+// array handed over in memory.
+struct TextureSource {
+    std::filesystem::path file;
+    std::shared_ptr<const TextureImage> image;
+};
+TextureSource read_texture_source(JsonObject& block, TextureFileCache& files);
+// The block's "uv_transform" (KHR_texture_transform's keys) and "wrap".
+TextureUvTransform read_uv_transform(JsonObject& block);
+TextureWrap read_texture_wrap(JsonObject& block);
+
 // True when `key` holds an object (the texture form) rather than a number or colour.
 bool is_texture_form(JsonObject& o, std::string_view key);
 

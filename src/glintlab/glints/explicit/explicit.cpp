@@ -74,13 +74,21 @@ float explicit_footprint_ndf(const ExplicitFacetField& field, const Footprint& f
     h = glm::normalize(h);
     const double cos_ih = glm::dot(wi, h);
     if (h.z <= 0.0f || cos_ih <= 0.0) return 0.0f;
-    // With a density map each facet counts by its area (ExplicitFacet::weight).
+    // With a density map each facet counts by its area (ExplicitFacet::weight);
+    // with a normal map by its area relative to a facet of the base surface,
+    // (wo·n)(m·n) / ((wo·n_map)(m·n_map)) (explicit_facet_weight's ratio).
     double count = 0.0;
-    if (field.textures && field.textures->density) {
+    if ((field.textures && field.textures->density) || field.normal_map) {
         const float cos_gamma = std::cos(gamma_rad);
         for_each_explicit_facet(field, fp, [&](const ExplicitFacet& f) {
-            if (glm::dot(wo, f.m) > 0.0f && glm::dot(mirror(wo, f.m), wi) >= cos_gamma)
-                count += f.weight;
+            if (!(glm::dot(wo, f.m) > 0.0f && glm::dot(mirror(wo, f.m), wi) >= cos_gamma)) return;
+            double c = f.weight;
+            if (field.normal_map) {
+                const double on = glm::dot(wo, f.n_map), mn = glm::dot(f.m, f.n_map);
+                if (!(on > 0.0 && mn > 0.0)) return;
+                c *= double(wo.z) * double(f.m.z) / (on * mn);
+            }
+            count += c;
         });
     } else {
         count = double(explicit_count(field, fp, wo, wi, gamma_rad));
@@ -126,6 +134,20 @@ double explicit_direction_probability(const ExplicitFacetField& field, glm::vec3
     return sum;
 }
 
+float explicit_facet_weight(const ExplicitFacetField& field, glm::vec3 wo, const ExplicitFacet& f,
+                            glm::vec3& r) {
+    if (!field.normal_map) return explicit_facet_weight(field, wo, f.m, r);
+    glm::vec3 t, b;
+    tangent_frame_around(f.n_map, &t, &b);
+    auto to_map = [&](glm::vec3 v) {
+        return glm::vec3(glm::dot(v, t), glm::dot(v, b), glm::dot(v, f.n_map));
+    };
+    glm::vec3 r_map;
+    const float w = explicit_facet_weight(field, to_map(wo), to_map(f.m), r_map);
+    r = r_map.x * t + r_map.y * b + r_map.z * f.n_map;
+    return w;
+}
+
 float explicit_facet_weight(const ExplicitFacetField& field, glm::vec3 wo, glm::vec3 m,
                             glm::vec3& r) {
     const float cos_om = glm::dot(wo, m);
@@ -145,7 +167,7 @@ glm::vec3 explicit_environment_radiance(const ExplicitFacetField& field, const F
     glm::dvec3 sum(0.0);
     for_each_explicit_facet(field, fp, [&](const ExplicitFacet& f) {
         glm::vec3 r;
-        const float w = explicit_facet_weight(field, wo, f.m, r);
+        const float w = explicit_facet_weight(field, wo, f, r);
         if (w <= 0.0f) return;
         glm::vec3 L = env(r);
         if (fresnel) L *= fresnel(glm::dot(wo, f.m));

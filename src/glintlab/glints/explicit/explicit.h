@@ -64,11 +64,21 @@ struct ExplicitFacetField {
     // each facet's normal is drawn with α(uv) = sqrt(α²) bilinear in the
     // finest level. Null: none.
     const GlintTextures* textures = nullptr;
+    // A normal map (docs/MODELS.md, "Normal maps"): each facet's normal,
+    // drawn around z as without one, is rotated into the frame of the map's
+    // normal at the facet's own position (bilinear in the finest level;
+    // tangent_frame_around gives the frame), and the facet is weighed as a
+    // facet of a surface whose normal is the map's there. `normal_map_axes`
+    // carries the map's (x, y) onto the local frame (GlintDesc). Null: none.
+    const NormalMap* normal_map = nullptr;
+    glm::vec2 normal_map_axes{1.0f};
 };
 
 struct ExplicitFacet {
     glm::vec2 uv;  // position (including the footprint's tile offset)
     glm::vec3 m;   // unit normal, local frame (z = n)
+    // The normal map's normal at the facet (local frame); z without a map.
+    glm::vec3 n_map{0.0f, 0.0f, 1.0f};
     // N_field / N(uv): the facet's area relative to the field's nominal
     // 1/N_field (1 without a density map); the estimators weigh by it.
     float weight = 1.0f;
@@ -132,6 +142,10 @@ double explicit_direction_probability(const ExplicitFacetField& field, glm::vec3
 // Per-facet weight w(m) above (0 when m·wo <= 0 or the mirror direction is
 // below the horizon); `r` receives the mirror direction.
 float explicit_facet_weight(const ExplicitFacetField& field, glm::vec3 wo, glm::vec3 m,
+                            glm::vec3& r);
+// The same for a facet of the field: with a normal map, w(m) in the frame of
+// the facet's map normal (its (wo·n) and (m·n) are the map's surface's).
+float explicit_facet_weight(const ExplicitFacetField& field, glm::vec3 wo, const ExplicitFacet& f,
                             glm::vec3& r);
 
 // Radiance reflected towards wo by the footprint's facets under an

@@ -41,7 +41,7 @@ glm::vec3 cone_radiance(const GlintLightingContext& ctx, const Cone& cone) {
     glm::dvec3 sum(0.0);
     for_each_explicit_facet(field, fp, [&](const ExplicitFacet& f) {
         glm::vec3 r;
-        const float w = explicit_facet_weight(field, ctx.wo, f.m, r);
+        const float w = explicit_facet_weight(field, ctx.wo, f, r);
         if (w <= 0.0f || !inside_cone(r, axis, cone.one_minus_cos_max)) return;
         sum += glm::dvec3(w * f.weight * bxdf.fresnel(glm::dot(ctx.wo, f.m)));
     });
@@ -69,6 +69,8 @@ ExplicitFacetField explicit_field(const GlintDesc& desc) {
             f.log_density = std::log(n_max);
         }
     }
+    f.normal_map = desc.normal_map.get();
+    f.normal_map_axes = desc.normal_map_axes;
     return f;
 }
 

@@ -160,6 +160,13 @@ struct Walker {
                 if (t->alpha_y_sq) ay = alpha_from_squared(t->alpha_y_sq->at(f.uv).x);
             }
             f.m = sample_explicit_normal(field.ndf, ax, ay, u1, u2);
+            if (field.normal_map) {
+                const glm::vec2 s = field.normal_map->slope_at(f.uv) * field.normal_map_axes;
+                f.n_map = glm::normalize(glm::vec3(-s.x, -s.y, 1.0f));
+                glm::vec3 t, b;
+                tangent_frame_around(f.n_map, &t, &b);
+                f.m = glm::normalize(f.m.x * t + f.m.y * b + f.m.z * f.n_map);
+            }
             visit(f);
             ++visited;
         }

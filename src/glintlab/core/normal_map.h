@@ -1,0 +1,53 @@
+// A tangent-space normal map as the renderers read it (docs/MODELS.md,
+// "Normal maps"): its texels turned into slopes and LEAN-mapped (Olano &
+// Baker, "LEAN Mapping", I3D 2010): two mip chains hold the first moments
+// (s_x, s_y) and the second moments (s_x², s_y², s_x s_y) of the slopes, so
+// the filtered lookup over a pixel footprint gives the footprint's mean
+// slope and its slope covariance Σ = E[s sᵀ] − s̄ s̄ᵀ.
+//
+// Slopes follow the microfacet convention (Heitz 2014 Eq. 36): a unit
+// normal n = (x, y, z) in the tangent frame (x along ∂p/∂u, y along the
+// map's "up", z the surface normal) has slope s = (−x/z, −y/z), and
+// n = normalize(−s_x, −s_y, 1).
+#pragma once
+
+#include <memory>
+
+#include <glm/glm.hpp>
+
+#include "glintlab/core/footprint.h"
+#include "glintlab/core/texture_input.h"
+
+namespace glintlab {
+
+// The footprint's slope statistics: mean slope and covariance (symmetric,
+// positive semi-definite; xx, yy, xy).
+struct SlopeStatistics {
+    glm::vec2 mean{0.0f};
+    glm::vec3 covariance{0.0f};
+    glm::vec3 normal() const;  // normalize(−mean.x, −mean.y, 1)
+};
+
+struct NormalMap {
+    // "lean": the footprint's mean normal and slope covariance (the filtered
+    // models widen their NDF by it); "none": the finest level's normal at
+    // the pixel's centre, no covariance (the per-pixel normal mapping of a
+    // forward renderer: the aliasing the filter removes stays measurable).
+    enum class Filtering { Lean, None };
+    Filtering filtering = Filtering::Lean;
+    std::shared_ptr<const TextureInput> slopes;   // channels s_x, s_y, 0
+    std::shared_ptr<const TextureInput> moments;  // channels s_x², s_y², s_x s_y
+
+    // The statistics over the footprint at uv (the finest level's bilinear
+    // values without a footprint, or with Filtering::None).
+    SlopeStatistics lookup(glm::vec2 uv, const Footprint* footprint) const;
+    // The finest level's bilinear slope at uv (the ground truth's per-facet normal).
+    glm::vec2 slope_at(glm::vec2 uv) const;
+};
+
+// A tangent frame around the unit normal n whose tangent is the projection
+// of (1, 0, 0) (the base frame's ∂p/∂u direction): the frame a normal map
+// rotates a local lobe into. Returns (t, b) with b = n × t.
+void tangent_frame_around(glm::vec3 n, glm::vec3* t, glm::vec3* b);
+
+}  // namespace glintlab

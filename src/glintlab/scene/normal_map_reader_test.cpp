@@ -1,0 +1,169 @@
+// The "normal_map" key (docs/SCENE_FORMAT.md, "Normal maps"): decoding,
+// glTF's scale, the LEAN moments' footprint statistics, and the errors a
+// user meets.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <fstream>
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include "glintlab/core/image.h"
+#include "glintlab/core/image_test_util.h"
+#include "glintlab/scene/scene_loader.h"
+
+namespace glintlab {
+namespace {
+
+using testing::ScratchDir;
+
+// A PNG whose stored codes are exactly `codes` (write_png encodes linear
+// values to sRGB codes: hand it the decoded codes).
+void write_png_codes(const Image& codes, const std::filesystem::path& path) {
+    Image linear = codes;
+    for (glm::vec3& p : linear.pixels)
+        p = glm::vec3(srgb_decode(p.x / 255.0f), srgb_decode(p.y / 255.0f),
+                      srgb_decode(p.z / 255.0f));
+    write_png(linear, path);
+}
+
+nlohmann::json scene_with(const nlohmann::json& normal_map, const std::string& type = "conductor",
+                          const nlohmann::json& shape = {{"type", "quad"}, {"size", {2, 2}}}) {
+    nlohmann::json m = {{"name", "m"}, {"type", type}, {"normal_map", normal_map}};
+    if (type == "glint") m["model"] = "smooth";
+    nlohmann::json s = shape;
+    s["material"] = "m";
+    return {{"camera", {{"eye", {0, 1, 3}}, {"target", {0, 0, 0}}}},
+            {"film", {{"width", 8}, {"height", 8}}},
+            {"materials", {m}},
+            {"shapes", {s}},
+            {"lights", {{{"type", "directional"}, {"direction", {0, 1, 0}}}}}};
+}
+
+std::string load_error(const nlohmann::json& doc, const std::filesystem::path& file) {
+    try {
+        parse_scene(doc, file);
+    } catch (const std::exception& e) {
+        return e.what();
+    }
+    return "";
+}
+
+TEST(NormalMapReader, EightBitCodesDecodeToUnitNormalsAndScaleMultipliesXY) {
+    ScratchDir dir;
+    // (x, y, z) = 2c − 1: codes (191, 128, 225) ≈ (0.498, 0.004, 0.765).
+    write_png_codes(Image(2, 2, glm::vec3(191, 128, 225)), dir / "n.png");
+    for (const float scale : {1.0f, 2.0f, 0.0f}) {
+        const Scene scene =
+            parse_scene(scene_with({{"texture", "n.png"}, {"scale", scale}}), dir / "s.json");
+        const NormalMap& map = *scene.materials[0].normal_map;
+        const glm::vec3 n = 2.0f * glm::vec3(191, 128, 225) / 255.0f - 1.0f;
+        // glTF: normalize((2c − 1) · (scale, scale, 1)); slope = −(x, y)/z.
+        const glm::vec2 expected = -scale * glm::vec2(n.x, n.y) / n.z;
+        const glm::vec2 s = map.slope_at({0.3f, 0.6f});
+        EXPECT_NEAR(s.x, expected.x, 1e-5f) << scale;
+        EXPECT_NEAR(s.y, expected.y, 1e-5f) << scale;
+    }
+}
+
+TEST(NormalMapReader, LeanMomentsGiveTheFootprintsMeanAndCovariance) {
+    ScratchDir dir;
+    // A 64 × 64 checker of two normals tilted ±0.3 in slope along x, and
+    // 0.1 along y everywhere: over a footprint of many texels the mean slope
+    // is (0, s_y) and the covariance that of the bilinear surface the
+    // lookups reconstruct, s_x = 0.3 (1 − 2f_x)(1 − 2f_y) between texel
+    // centres: E[s_x²] = 0.09 / 9 (not the texels' 0.09), uncorrelated.
+    Image n(64, 64);
+    for (int y = 0; y < 64; ++y)
+        for (int x = 0; x < 64; ++x) {
+            const float sx = ((x + y) % 2) ? 0.3f : -0.3f, sy = 0.1f;
+            n.at(x, y) = glm::normalize(glm::vec3(-sx, -sy, 1.0f));
+        }
+    write_exr(n, dir / "n.exr");
+    const Scene scene =
+        parse_scene(scene_with({{"texture", "n.exr"}, {"encoding", "signed"}}), dir / "s.json");
+    const NormalMap& map = *scene.materials[0].normal_map;
+    Footprint fp;
+    fp.uv = glm::vec2(0.5f);
+    fp.duvdx = glm::vec2(0.25f, 0.0f);
+    fp.duvdy = glm::vec2(0.0f, 0.25f);
+    const SlopeStatistics s = map.lookup(fp.uv, &fp);
+    EXPECT_NEAR(s.mean.x, 0.0f, 1e-4f);
+    EXPECT_NEAR(s.mean.y, 0.1f, 1e-4f);
+    EXPECT_NEAR(s.covariance.x, 0.01f, 1e-5f);
+    EXPECT_NEAR(s.covariance.y, 0.0f, 1e-5f);
+    EXPECT_NEAR(s.covariance.z, 0.0f, 1e-5f);
+    // Without a footprint: one point of the finest level, no covariance.
+    const SlopeStatistics point = map.lookup(glm::vec2(0.5f / 64.0f), nullptr);
+    EXPECT_NEAR(std::abs(point.mean.x), 0.3f, 1e-4f);
+    EXPECT_EQ(point.covariance, glm::vec3(0.0f));
+    // "filtering": "none" ignores the footprint.
+    const Scene none = parse_scene(
+        scene_with({{"texture", "n.exr"}, {"encoding", "signed"}, {"filtering", "none"}}),
+        dir / "s.json");
+    const SlopeStatistics unfiltered = none.materials[0].normal_map->lookup(fp.uv, &fp);
+    EXPECT_EQ(unfiltered.covariance, glm::vec3(0.0f));
+}
+
+TEST(NormalMapReader, BadMapsNameTheFileTheTexelAndTheRange) {
+    ScratchDir dir;
+    Image black(3, 2, glm::vec3(128, 128, 255));
+    black.at(2, 1) = glm::vec3(0.0f);  // decodes to (−1, −1, −1): length 1.73
+    write_png_codes(black, dir / "black.png");
+    std::string e = load_error(scene_with({{"texture", "black.png"}}), dir / "s.json");
+    EXPECT_NE(e.find("black.png"), std::string::npos) << e;
+    EXPECT_NE(e.find("/materials/0/normal_map"), std::string::npos) << e;
+    EXPECT_NE(e.find("texel (x=2, y=1)"), std::string::npos) << e;
+    EXPECT_NE(e.find("[0.5, 1.5]"), std::string::npos) << e;
+
+    write_png_codes(Image(2, 2, glm::vec3(128)), dir / "grey.png");
+    e = load_error(scene_with({{"texture", "grey.png"}}), dir / "s.json");
+    EXPECT_NE(e.find("grey"), std::string::npos) << e;
+
+    write_png_codes(Image(2, 2, glm::vec3(128, 128, 255)), dir / "flat.png");
+    e = load_error(scene_with({{"texture", "flat.png"}, {"encoding", "signed"}}), dir / "s.json");
+    EXPECT_NE(e.find("\"unorm\""), std::string::npos) << e;
+    e = load_error(scene_with({{"texture", "flat.png"}, {"scale", 11}}), dir / "s.json");
+    EXPECT_NE(e.find("scale"), std::string::npos) << e;
+    e = load_error(scene_with({{"texture", "flat.png"}, {"filtering", "box"}}), dir / "s.json");
+    EXPECT_NE(e.find("lean"), std::string::npos) << e;
+    e = load_error(scene_with("flat.png"), dir / "s.json");
+    EXPECT_NE(e.find("normal map object"), std::string::npos) << e;
+    e = load_error(scene_with({{"texture", "missing.png"}}), dir / "s.json");
+    EXPECT_NE(e.find("missing.png"), std::string::npos) << e;
+
+    // A mesh without uvs cannot place the map.
+    {
+        std::ofstream obj(dir / "tri.obj");
+        obj << "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n";
+    }
+    e = load_error(
+        scene_with({{"texture", "flat.png"}}, "diffuse", {{"type", "obj"}, {"file", "tri.obj"}}),
+        dir / "s.json");
+    EXPECT_NE(e.find("normal_map"), std::string::npos) << e;
+    EXPECT_NE(e.find("no uvs"), std::string::npos) << e;
+}
+
+TEST(NormalMapReader, NormalsAtOrBelowTheTangentPlaneAreClampedAndCounted) {
+    ScratchDir dir;
+    Image n(2, 1);
+    n.at(0, 0) = glm::vec3(1.0f, 0.0f, 0.0f);   // in the plane
+    n.at(1, 0) = glm::vec3(0.0f, 0.6f, -0.8f);  // below it
+    write_exr(n, dir / "n.exr");
+    ::testing::internal::CaptureStderr();
+    const Scene scene =
+        parse_scene(scene_with({{"texture", "n.exr"}, {"encoding", "signed"}}), dir / "s.json");
+    const std::string warning = ::testing::internal::GetCapturedStderr();
+    EXPECT_NE(warning.find("2 texels"), std::string::npos) << warning;
+    const NormalMap& map = *scene.materials[0].normal_map;
+    const glm::vec2 a = map.slope_at({0.25f, 0.5f}), b = map.slope_at({0.75f, 0.5f});
+    // Clamped to z = 0.05: slope length sqrt(1 − 0.05²)/0.05 ≈ 19.97, azimuth kept.
+    EXPECT_NEAR(glm::length(a), 19.97f, 0.01f);
+    EXPECT_LT(a.x, 0.0f);
+    EXPECT_NEAR(glm::length(b), 19.97f, 0.01f);
+    EXPECT_LT(b.y, 0.0f);
+}
+
+}  // namespace
+}  // namespace glintlab
