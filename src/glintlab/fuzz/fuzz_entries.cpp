@@ -308,6 +308,22 @@ Image height_image() {
     return image;
 }
 
+// A tangent-space normal map: tilts up to ~45° around the tile, one texel
+// at the tangent plane (the clamped case), stored as PNG codes (n + 1)/2.
+Image normal_image() {
+    Image image(6, 4);
+    for (int y = 0; y < image.height; ++y)
+        for (int x = 0; x < image.width; ++x) {
+            const glm::vec3 n =
+                glm::normalize(glm::vec3(float(x - 2) * 0.4f, float(y - 1) * 0.5f, 1.0f));
+            image.at(x, y) =
+                glm::vec3(srgb_decode(0.5f * (n.x + 1.0f)), srgb_decode(0.5f * (n.y + 1.0f)),
+                          srgb_decode(0.5f * (n.z + 1.0f)));
+        }
+    image.at(5, 3) = glm::vec3(1.0f, srgb_decode(0.5f), srgb_decode(0.5f));  // (1, 0, 0)
+    return image;
+}
+
 // A baseline JPEG of a 16 x 8 gradient (4:2:0, as stb writes below quality 90).
 void write_jpeg_seed(const fs::path& path) {
     std::vector<unsigned char> rgb(3 * 16 * 8);
@@ -324,6 +340,7 @@ void write_assets(const fs::path& dir) {
     write_exr(environment_image(), dir / "env.exr");
     write_hdr(environment_image(), dir / "env.hdr");
     write_png(height_image(), dir / "height.png");
+    write_png(normal_image(), dir / "normal.png");
     write_jpeg_seed(dir / "photo.jpg");
 }
 
@@ -414,6 +431,25 @@ std::vector<std::pair<std::string, std::string>> asset_scenes() {
   ],
   "shapes": [{"type": "quad", "material": "glint", "size": [2, 2], "uv_scale": [2, 2]},
              {"type": "sphere", "material": "paint", "center": [0, 0.5, 0], "radius": 0.4}],
+  "lights": [{"type": "point", "position": [0, 3, 0], "intensity": [5, 5, 5]}],
+  "comment": "fuzz seed"
+}
+)"},
+        // Every key of the normal map (scene/normal_map_reader.h), on the
+        // ground truth (per-facet composition) and on a smooth lobe.
+        {"normal_mapped.json", R"({
+  "camera": {"eye": [0, 2, 4], "target": [0, 0, 0], "fov_deg": 40},
+  "film": {"width": 16, "height": 16},
+  "render": {"integrator": "path", "spp": 1, "max_depth": 3},
+  "materials": [
+    {"name": "glint", "type": "glint", "model": "explicit", "log_density": 8,
+     "normal_map": {"texture": "normal.png", "scale": 1.5, "encoding": "unorm", "filtering": "lean",
+                    "wrap": "mirror", "uv_transform": {"scale": 3, "rotation_deg": 20}}},
+    {"name": "metal", "type": "conductor", "roughness": 0.2,
+     "normal_map": {"texture": "normal.png", "scale": -0.5, "filtering": "none", "wrap": "clamp"}}
+  ],
+  "shapes": [{"type": "quad", "material": "glint", "size": [2, 2], "uv_scale": [2, 2]},
+             {"type": "sphere", "material": "metal", "center": [0, 0.5, 0], "radius": 0.4}],
   "lights": [{"type": "point", "position": [0, 3, 0], "intensity": [5, 5, 5]}],
   "comment": "fuzz seed"
 }
@@ -549,6 +585,7 @@ size_t write_seeds(Target target, const fs::path& dir, const fs::path& source_di
             copy_asset("env.exr");
             copy_asset("env.hdr");
             copy_asset("height.png");
+            copy_asset("normal.png");
             copy_asset("photo.jpg");
             break;
     }

@@ -114,5 +114,20 @@ TEST(GpuTextured, CountingModelsWithDensityAndRoughnessMapsMatchTheCpu) {
     }
 }
 
+// Normal maps render on the CPU only for now: the OpenGL renderer (and the
+// viewer on it) says so instead of drawing the unmapped surface.
+TEST(GpuTextured, NormalMappedMaterialsAreRefusedWithTheReason) {
+    const TexturedScenes t;
+    write_exr(Image(2, 2, glm::vec3(0.0f, 0.0f, 1.0f)), t.dir / "flat.exr");
+    const Scene scene = t.scene(
+        {{"type", "conductor"}, {"normal_map", {{"texture", "flat.exr"}, {"encoding", "signed"}}}});
+    try {
+        GpuRenderer renderer(scene);
+        ADD_FAILURE() << "no error";
+    } catch (const std::exception& e) {
+        EXPECT_NE(std::string(e.what()).find("has a normal map"), std::string::npos) << e.what();
+    }
+}
+
 }  // namespace
 }  // namespace glintlab

@@ -77,7 +77,9 @@ std::shared_ptr<const NormalMap> read_normal_map(JsonObject& material, std::stri
         material.error(key, "expected a normal map object {\"texture\": \"n.png\", \"scale\": 1}");
     std::optional<JsonObject> block = material.object(key);
     JsonObject& b = *block;
-    const auto [file, image] = read_texture_source(b, files);
+    const TextureSource source = read_texture_source(b, files);
+    const std::filesystem::path& file = source.file;
+    const std::shared_ptr<const TextureImage>& image = source.image;
     const std::string where = fmt::format("{} ({})", b.path(), file.string());
     // glTF's normalTexture.scale: the x and y components are multiplied by it
     // before the normal is renormalised.

@@ -143,6 +143,15 @@ TEST(NormalMapReader, BadMapsNameTheFileTheTexelAndTheRange) {
         dir / "s.json");
     EXPECT_NE(e.find("normal_map"), std::string::npos) << e;
     EXPECT_NE(e.find("no uvs"), std::string::npos) << e;
+
+    // export and the web page take numbers only: they name the key.
+    const Scene flat = parse_scene(scene_with({{"texture", "flat.png"}}), dir / "s.json");
+    try {
+        require_untextured(flat.materials[0], flat.file, "export");
+        ADD_FAILURE() << "no error";
+    } catch (const std::exception& ex) {
+        EXPECT_NE(std::string(ex.what()).find("normal_map"), std::string::npos) << ex.what();
+    }
 }
 
 TEST(NormalMapReader, NormalsAtOrBelowTheTangentPlaneAreClampedAndCounted) {

@@ -79,7 +79,9 @@ bool is_texture_form(JsonObject& o, std::string_view key) {
 
 std::shared_ptr<const TextureInput> read_texture_block(JsonObject& b, const TextureParameter& p,
                                                        TextureFileCache& files) {
-    const auto [file, image] = read_texture_source(b, files);
+    const TextureSource source = read_texture_source(b, files);
+    const std::filesystem::path& file = source.file;
+    const std::shared_ptr<const TextureImage>& image = source.image;
     const std::string where = fmt::format("{} ({})", b.path(), file.string());
 
     if (!b.has("channel") && !p.colour && !image->grey())
