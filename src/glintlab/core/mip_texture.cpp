@@ -144,7 +144,8 @@ glm::vec3 MipTexture::trilinear(float lod, glm::vec2 uv) const {
     return f > 0.0f ? a + f * (bilinear(l0 + 1, uv) - a) : a;
 }
 
-glm::vec3 MipTexture::filtered(glm::vec2 uv, glm::vec2 duvdx, glm::vec2 duvdy) const {
+glm::vec3 MipTexture::filtered(glm::vec2 uv, glm::vec2 duvdx, glm::vec2 duvdy,
+                               float lod_bias) const {
     const glm::vec2 size = glm::vec2(float(width()), float(height()));
     const float px = glm::length(duvdx * size), py = glm::length(duvdy * size);
     if (!std::isfinite(px) || !std::isfinite(py)) return trilinear(float(level_count() - 1), uv);
@@ -152,7 +153,7 @@ glm::vec3 MipTexture::filtered(glm::vec2 uv, glm::vec2 duvdx, glm::vec2 duvdy) c
     if (!(pmax > 0.0f)) return bilinear(0, uv);
     const int n =
         int(std::min<float>(float(kMaxAnisotropy), std::ceil(pmax / std::max(pmin, pmax * 1e-6f))));
-    const float lod = std::log2(pmax / float(n));
+    const float lod = std::log2(pmax / float(n)) + lod_bias;
     const glm::vec2 major = px >= py ? duvdx : duvdy;
     glm::vec3 sum(0.0f);
     for (int i = 0; i < n; ++i)

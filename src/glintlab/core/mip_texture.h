@@ -54,7 +54,9 @@ class MipTexture {
     // The filtered value over the footprint uv + s·duvdx + t·duvdy: the
     // trilinear probes of the anisotropic filter (N = ⌈Pmax/Pmin⌉ ≤ 16 probes
     // along the longer derivative, λ = log2(Pmax/N) in texels).
-    glm::vec3 filtered(glm::vec2 uv, glm::vec2 duvdx, glm::vec2 duvdy) const;
+    // `lod_bias` is added to λ (OpenGL's TEXTURE_LOD_BIAS); the probes'
+    // positions stay.
+    glm::vec3 filtered(glm::vec2 uv, glm::vec2 duvdx, glm::vec2 duvdy, float lod_bias = 0.0f) const;
     // The largest texel value of level 0 in each channel.
     glm::vec3 max_value() const { return max_; }
 

@@ -4,6 +4,21 @@
 #include <cmath>
 
 namespace glintlab {
+namespace {
+
+// The level of detail the moments are read at, relative to OpenGL's. A
+// trilinear lookup at λ = log2(footprint width in texels) averages over the
+// level's texel (a box of the footprint's width, variance w²/12) convolved
+// with the bilinear tent (variance w²/6): a window of 3× the footprint's
+// spatial variance. Means hardly notice; a covariance does: across a
+// smooth slope field it grows with the window's variance, so it came out
+// ~3× the footprint's and over-widened every lobe (+37 % in the far rows of
+// normal_bumps_forest). log2(1/√3) makes the window's variance the
+// footprint's along its minor axis; along the major axis the anisotropic
+// probes' spread already is.
+constexpr float kMomentLodBias = -0.79248125f;
+
+}  // namespace
 
 glm::vec3 SlopeStatistics::normal() const {
     return glm::normalize(glm::vec3(-mean.x, -mean.y, 1.0f));
@@ -12,10 +27,10 @@ glm::vec3 SlopeStatistics::normal() const {
 SlopeStatistics NormalMap::lookup(glm::vec2 uv, const Footprint* footprint) const {
     const Footprint* fp = filtering == Filtering::Lean ? footprint : nullptr;
     SlopeStatistics s;
-    const glm::vec3 first = slopes->lookup(uv, fp);
+    const glm::vec3 first = slopes->lookup(uv, fp, kMomentLodBias);
     s.mean = glm::vec2(first.x, first.y);
     if (!fp) return s;  // one point of the bilinear surface: no spread to keep
-    const glm::vec3 second = moments->lookup(uv, fp);
+    const glm::vec3 second = moments->lookup(uv, fp, kMomentLodBias);
     // Σ = E[s sᵀ] − s̄ s̄ᵀ; rounding can leave it slightly indefinite.
     float xx = std::max(second.x - s.mean.x * s.mean.x, 0.0f);
     float yy = std::max(second.y - s.mean.y * s.mean.y, 0.0f);

@@ -40,11 +40,11 @@ struct TextureInput {
     // finest level's bilinear value at uv without a footprint (a path's
     // later bounces carry none).
     // A one-channel texture's value is repeated in all three (a grey colour).
-    glm::vec3 lookup(glm::vec2 uv, const Footprint* footprint) const {
+    glm::vec3 lookup(glm::vec2 uv, const Footprint* footprint, float lod_bias = 0.0f) const {
         const glm::vec2 st = transform.apply(uv);
         if (!footprint) return grey_or_rgb(texture->bilinear(0, st));
         return grey_or_rgb(texture->filtered(st, transform.apply_vector(footprint->duvdx),
-                                             transform.apply_vector(footprint->duvdy)));
+                                             transform.apply_vector(footprint->duvdy), lod_bias));
     }
     // The finest level's bilinear value at uv (the ground truth's per-facet value).
     glm::vec3 at(glm::vec2 uv) const {

@@ -88,6 +88,11 @@ SurfaceHit triangle_hit(const TriangleMesh& m, unsigned prim, float bu, float bv
         h.dpdu = glm::normalize(glm::cross(h.ng, a));
         h.dpdv = glm::cross(h.ng, h.dpdu);
     }
+    if (!m.tangents.empty()) {
+        const glm::vec4 t0 = m.tangents[tri.x], t1 = m.tangents[tri.y], t2 = m.tangents[tri.z];
+        h.tangent = glm::vec4(glm::vec3(b0 * t0 + bu * t1 + bv * t2),
+                              b0 * t0.w + bu * t1.w + bv * t2.w < 0.0f ? -1.0f : 1.0f);
+    }
     if (m.has_normals()) {
         const glm::vec3 n = b0 * m.normals[tri.x] + bu * m.normals[tri.y] + bv * m.normals[tri.z];
         h.ns = glm::length(n) > 0.0f ? glm::normalize(n) : h.ng;

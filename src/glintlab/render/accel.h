@@ -21,12 +21,15 @@ struct SurfaceHit {
     glm::vec3 ns{0.0f};  // unit shading normal (interpolated vertex normals, or ng)
     glm::vec2 uv{0.0f};
     glm::vec3 dpdu{0.0f}, dpdv{0.0f};
+    // The interpolated vertex tangent (xyz, unnormalised) and glTF's
+    // bitangent sign (w); w = 0: the mesh has none (mesh_tangents.h).
+    glm::vec4 tangent{0.0f};
     bool has_uv = false;  // false: uv is the barycentric fallback of pbrt
     int shape = -1;
 };
 
 class Accelerator {
-public:
+  public:
     explicit Accelerator(const Scene& scene);
     ~Accelerator();
     Accelerator(const Accelerator&) = delete;
@@ -36,7 +39,7 @@ public:
     // True if anything blocks the segment origin + t·dir, t in (0, t_max).
     bool occluded(glm::vec3 origin, glm::vec3 dir, float t_max) const;
 
-private:
+  private:
     struct Impl;
     std::unique_ptr<Impl> impl_;
 };

@@ -32,7 +32,11 @@ LocalBump local_bump(const NormalMap& map, const SurfaceHit& hit, const ShadingF
     LocalBump bump;
     // glTF's bitangent: "up" in the image, i.e. against ∂p/∂v (v runs down
     // the image); frame.b = n × t is it unless the uv mapping is mirrored.
-    bump.axes.y = glm::dot(frame.b, hit.dpdv) <= 0.0f ? 1.0f : -1.0f;
+    // A mesh's vertex tangents carry that sign (w).
+    if (hit.tangent.w != 0.0f)
+        bump.axes.y = hit.tangent.w;
+    else
+        bump.axes.y = glm::dot(frame.b, hit.dpdv) <= 0.0f ? 1.0f : -1.0f;
     // Seen from behind, the surface's normal is −n: the map's normal (x, y,
     // z) becomes (−x, y, z) in the flipped frame (t, −b, −n).
     if (back) bump.axes.x = -1.0f;
@@ -86,6 +90,17 @@ ShadingFrame shading_frame(const SurfaceHit& hit) {
 SurfaceBsdf make_surface_bsdf(const MaterialDesc& m, const SurfaceHit& hit, glm::vec3 wo,
                               const Footprint* footprint) {
     ShadingFrame frame = shading_frame(hit);
+    // A normal map's tangent space follows the mesh's vertex tangents, which
+    // vary smoothly across triangles (∂p/∂u jumps at every edge).
+    if (m.normal_map && hit.tangent.w != 0.0f) {
+        const glm::vec3 t =
+            glm::vec3(hit.tangent) - frame.n * glm::dot(frame.n, glm::vec3(hit.tangent));
+        const float len = glm::length(t);
+        if (len > 1e-12f && std::isfinite(len)) {
+            frame.t = t / len;
+            frame.b = glm::cross(frame.n, frame.t);
+        }
+    }
     // Opaque materials are two-sided: look at them from the side of wo. The
     // dielectric keeps its orientation (inside/outside matters for eta).
     const bool back = m.type != MaterialDesc::Type::Dielectric && glm::dot(wo, frame.n) < 0.0f;

@@ -33,6 +33,9 @@ void TriangleMesh::validate(std::string_view what) const {
     if (!uvs.empty() && uvs.size() != positions.size())
         fail("{}: mesh has {} uvs for {} positions (must be 0 or equal)", what, uvs.size(),
              positions.size());
+    if (!tangents.empty() && tangents.size() != positions.size())
+        fail("{}: mesh has {} tangents for {} positions (must be 0 or equal)", what,
+             tangents.size(), positions.size());
     const size_t n = positions.size();
     for (size_t t = 0; t < triangles.size(); ++t) {
         const glm::uvec3 tri = triangles[t];
@@ -77,6 +80,10 @@ void append_mesh(TriangleMesh& dst, const TriangleMesh& src) {
         dst.uvs.insert(dst.uvs.end(), src.uvs.begin(), src.uvs.end());
     else
         dst.uvs.clear();
+    if (!dst.tangents.empty() && !src.tangents.empty())
+        dst.tangents.insert(dst.tangents.end(), src.tangents.begin(), src.tangents.end());
+    else
+        dst.tangents.clear();
     dst.triangles.reserve(dst.triangles.size() + src.triangles.size());
     for (const glm::uvec3& t : src.triangles) dst.triangles.push_back(t + glm::uvec3(offset));
 }

@@ -22,6 +22,10 @@ struct TriangleMesh {
     std::vector<glm::vec3> positions;
     std::vector<glm::vec3> normals;  // per vertex, may be empty (then faceted shading)
     std::vector<glm::vec2> uvs;      // per vertex, may be empty (no uv parameterization)
+    // Per vertex (xyz unit tangent along ∂p/∂u, w = ±1: glTF's bitangent
+    // sign), may be empty; generated for the meshes of normal-mapped
+    // materials (mesh_tangents.h).
+    std::vector<glm::vec4> tangents;
     std::vector<glm::uvec3> triangles;
 
     bool has_uvs() const { return !uvs.empty(); }

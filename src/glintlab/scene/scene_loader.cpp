@@ -17,10 +17,11 @@
 #include "glintlab/glints/registry.h"
 #include "glintlab/scene/environment_file.h"
 #include "glintlab/scene/gltf_loader.h"
+#include "glintlab/scene/mesh_tangents.h"
+#include "glintlab/scene/normal_map_reader.h"
 #include "glintlab/scene/obj_loader.h"
 #include "glintlab/scene/shapes.h"
 #include "glintlab/scene/shapes_heightfield.h"
-#include "glintlab/scene/normal_map_reader.h"
 #include "glintlab/scene/texture_reader.h"
 #include "glintlab/scene/transform.h"
 #include "glintlab/scene/uv_projection.h"
@@ -415,6 +416,14 @@ void read_shape(JsonObject& o, LoadContext& ctx) {
                                 m.type == MaterialDesc::Type::Glint
                                     ? "is a glint material"
                                     : fmt::format("reads {} from textures", textured_keys(m))));
+        if (ctx.scene->materials[shape.material].normal_map) {
+            const size_t fixed = generate_vertex_tangents(mesh);
+            if (fixed > 0)
+                fmt::print(stderr,
+                           "warning: {}: {} vertices have degenerate uvs (no direction of u): "
+                           "their normal map's tangent is an arbitrary one\n",
+                           where, fixed);
+        }
         shape.geometry = std::move(mesh);
     }
     o.finish();
