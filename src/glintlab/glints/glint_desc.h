@@ -85,6 +85,10 @@ struct GlintDesc {
     // mirrored), x negated too seen from behind.
     std::shared_ptr<const NormalMap> normal_map;
     glm::vec2 normal_map_axes{1.0f};
+    // Set where the renderers resolved α per hit (a roughness map, a normal
+    // map's widening): every pixel may hold another α, and models that
+    // build a table per α (jakob2014) snap it to a grid instead.
+    bool alpha_varies = false;
     // The active model's parameters, as read through its descriptor's
     // parameter table. (The block as written in the scene file is not kept:
     // nothing needs it once it is read, and a second copy could disagree.)

@@ -20,6 +20,7 @@ GlintDesc resolve_glint_textures(const GlintDesc& desc, glm::vec2 uv, const Foot
     }
     if (t.alpha_x_sq) d.alpha_x = alpha_from_squared(t.alpha_x_sq->lookup(uv, footprint).x);
     if (t.alpha_y_sq) d.alpha_y = alpha_from_squared(t.alpha_y_sq->lookup(uv, footprint).x);
+    if (t.alpha_x_sq || t.alpha_y_sq) d.alpha_varies = true;
     if (t.color) d.color = t.color->lookup(uv, footprint);
     if (t.base_albedo) d.base_albedo = t.base_albedo->lookup(uv, footprint);
     return d;

@@ -197,6 +197,7 @@ SurfaceBsdf make_surface_bsdf(const MaterialDesc& m, const SurfaceHit& hit, glm:
         const glm::vec3 c = bump->slopes.covariance;
         resolved->alpha_x = widened(resolved->alpha_x, c.x, 1.0f);
         resolved->alpha_y = widened(resolved->alpha_y, c.y, 1.0f);
+        resolved->alpha_varies = true;
     }
     return SurfaceBsdf(frame, g, std::move(resolved));
 }

@@ -47,11 +47,19 @@ void basis(glm::dvec3 w, glm::dvec3& t, glm::dvec3& b) {
 
 }  // namespace
 
+// α on the grid 2^(k/64) (steps of 1.1 %): each α has its own NDF integral
+// table (built on first use, kept), so a roughness resolved per hit would
+// build one per pixel without bound; on the grid a scene needs at most
+// ~640 per axis, and the lobe moves by less than its own Monte Carlo noise.
+float snapped_alpha(float alpha) {
+    return std::exp2(std::round(std::log2(alpha) * 64.0f) / 64.0f);
+}
+
 NdfSpec ndf_spec(const GlintDesc& desc) {
     NdfSpec s;
     s.ndf = desc.ndf == NdfType::GGX ? shader::NDF_GGX : shader::NDF_BECKMANN;
-    s.alpha_x = desc.alpha_x;
-    s.alpha_y = desc.alpha_y;
+    s.alpha_x = desc.alpha_varies ? snapped_alpha(desc.alpha_x) : desc.alpha_x;
+    s.alpha_y = desc.alpha_varies ? snapped_alpha(desc.alpha_y) : desc.alpha_y;
     return s;
 }
 

@@ -663,3 +663,30 @@ TEST(Jakob2014Ndf, SplitScheduleDoesNotChangeTheStatistics) {
 
 }  // namespace
 }  // namespace glintlab
+
+namespace glintlab {
+namespace {
+
+// A roughness resolved per hit (a roughness map, a normal map's widening)
+// takes α from the grid 2^(k/64), so a render builds a bounded set of NDF
+// tables; the material's own α stays exact.
+TEST(Jakob2014Tables, PerHitRoughnessSnapsToTheGridAndMaterialRoughnessStaysExact) {
+    GlintDesc desc;
+    desc.alpha_x = 0.3f;
+    desc.alpha_y = 0.2f;
+    EXPECT_EQ(jakob2014::ndf_spec(desc).alpha_x, 0.3f);
+    std::set<float> snapped;
+    desc.alpha_varies = true;
+    for (int i = 0; i <= 1000; ++i) {
+        desc.alpha_x = 0.15f + 0.3f * float(i) / 1000.0f;
+        const float a = jakob2014::ndf_spec(desc).alpha_x;
+        EXPECT_NEAR(a / desc.alpha_x, 1.0f, 0.0055f);  // half a step of 2^(1/64)
+        snapped.insert(a);
+    }
+    // log2(0.45/0.15) × 64 ≈ 101 grid values in [0.15, 0.45].
+    EXPECT_LE(snapped.size(), 103u);
+    EXPECT_GE(snapped.size(), 100u);
+}
+
+}  // namespace
+}  // namespace glintlab

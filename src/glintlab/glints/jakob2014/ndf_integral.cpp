@@ -1,7 +1,9 @@
 #include "glintlab/glints/jakob2014/ndf_integral.h"
 
 #include <cmath>
+#include <map>
 #include <mutex>
+#include <tuple>
 #include <vector>
 
 #include "glintlab/microfacet/microfacet.h"
@@ -65,7 +67,8 @@ namespace {
 
 struct TableRegistry {
     std::mutex mutex;
-    std::vector<std::unique_ptr<NdfIntegralTable>> tables;
+    // By (ndf, α_x, α_y): per-hit roughness asks for many.
+    std::map<std::tuple<int, float, float>, std::unique_ptr<NdfIntegralTable>> tables;
 };
 
 TableRegistry& registry() {
@@ -80,17 +83,16 @@ const NdfIntegralTable& ndf_integral_table(const NdfSpec& spec) {
     if (last && last->spec() == spec) return *last;
     TableRegistry& r = registry();
     std::lock_guard<std::mutex> lock(r.mutex);
-    for (const auto& t : r.tables)
-        if (t->spec() == spec) return *(last = t.get());
-    r.tables.push_back(std::make_unique<NdfIntegralTable>(spec));
-    return *(last = r.tables.back().get());
+    std::unique_ptr<NdfIntegralTable>& t = r.tables[{spec.ndf, spec.alpha_x, spec.alpha_y}];
+    if (!t) t = std::make_unique<NdfIntegralTable>(spec);
+    return *(last = t.get());
 }
 
 size_t ndf_integral_tables_memory_bytes() {
     TableRegistry& r = registry();
     std::lock_guard<std::mutex> lock(r.mutex);
     size_t total = 0;
-    for (const auto& t : r.tables) total += t->memory_bytes();
+    for (const auto& [key, t] : r.tables) total += t->memory_bytes();
     return total;
 }
 
