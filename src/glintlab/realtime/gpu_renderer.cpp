@@ -577,7 +577,7 @@ gl::Texture upload_latlong(const Image& image) {
 }  // namespace
 
 GpuRenderer::GpuRenderer(const Scene& scene) : impl_(std::make_unique<Impl>()) {
-    require_gl45("OpenGL renderer");
+    // What the renderer cannot draw is said first, with or without a context.
     for (const MaterialDesc& m : scene.materials)
         if (m.normal_map)
             fail(
@@ -586,6 +586,7 @@ GpuRenderer::GpuRenderer(const Scene& scene) : impl_(std::make_unique<Impl>()) {
                 "viewer, export and the web page do not read them yet (docs/MODELS.md, \"Normal "
                 "maps\")",
                 scene.file.string(), m.name);
+    require_gl45("OpenGL renderer");
     Impl& r = *impl_;
     const int segments = sphere_segments(scene);
     for (const Shape& shape : scene.shapes) r.shapes.push_back(upload_shape(shape, segments));

@@ -115,7 +115,8 @@ TEST(GpuTextured, CountingModelsWithDensityAndRoughnessMapsMatchTheCpu) {
 }
 
 // Normal maps render on the CPU only for now: the OpenGL renderer (and the
-// viewer on it) says so instead of drawing the unmapped surface.
+// viewer on it) says so instead of drawing the unmapped surface, before it
+// needs a context.
 TEST(GpuTextured, NormalMappedMaterialsAreRefusedWithTheReason) {
     const TexturedScenes t;
     write_exr(Image(2, 2, glm::vec3(0.0f, 0.0f, 1.0f)), t.dir / "flat.exr");
