@@ -576,8 +576,9 @@ gl::Texture upload_latlong(const Image& image) {
 
 }  // namespace
 
-GpuRenderer::GpuRenderer(const Scene& scene) : impl_(std::make_unique<Impl>()) {
-    // What the renderer cannot draw is said first, with or without a context.
+// What the renderer cannot draw is said first, before any OpenGL call (the
+// renderer's state is built with the context current).
+std::unique_ptr<GpuRenderer::Impl> GpuRenderer::make_impl(const Scene& scene) {
     for (const MaterialDesc& m : scene.materials)
         if (m.normal_map)
             fail(
@@ -586,6 +587,10 @@ GpuRenderer::GpuRenderer(const Scene& scene) : impl_(std::make_unique<Impl>()) {
                 "viewer, export and the web page do not read them yet (docs/MODELS.md, \"Normal "
                 "maps\")",
                 scene.file.string(), m.name);
+    return std::make_unique<Impl>();
+}
+
+GpuRenderer::GpuRenderer(const Scene& scene) : impl_(make_impl(scene)) {
     require_gl45("OpenGL renderer");
     Impl& r = *impl_;
     const int segments = sphere_segments(scene);

@@ -90,6 +90,7 @@ class GpuRenderer {
 
   private:
     struct Impl;
+    static std::unique_ptr<Impl> make_impl(const Scene& scene);
     std::unique_ptr<Impl> impl_;
 };
 
