@@ -20,10 +20,6 @@ constexpr float kMomentLodBias = -0.79248125f;
 
 }  // namespace
 
-glm::vec3 SlopeStatistics::normal() const {
-    return glm::normalize(glm::vec3(-mean.x, -mean.y, 1.0f));
-}
-
 SlopeStatistics NormalMap::lookup(glm::vec2 uv, const Footprint* footprint) const {
     const Footprint* fp = filtering == Filtering::Lean ? footprint : nullptr;
     SlopeStatistics s;

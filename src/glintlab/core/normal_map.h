@@ -20,12 +20,17 @@
 
 namespace glintlab {
 
+// The unit normal of slope s: normalize(−s_x, −s_y, 1).
+inline glm::vec3 normal_from_slope(glm::vec2 s) {
+    return glm::normalize(glm::vec3(-s.x, -s.y, 1.0f));
+}
+
 // The footprint's slope statistics: mean slope and covariance (symmetric,
 // positive semi-definite; xx, yy, xy).
 struct SlopeStatistics {
     glm::vec2 mean{0.0f};
     glm::vec3 covariance{0.0f};
-    glm::vec3 normal() const;  // normalize(−mean.x, −mean.y, 1)
+    glm::vec3 normal() const { return normal_from_slope(mean); }
 };
 
 struct NormalMap {

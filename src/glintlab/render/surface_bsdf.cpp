@@ -73,34 +73,27 @@ struct Overloaded : Ts... {
 
 }  // namespace
 
-ShadingFrame shading_frame(const SurfaceHit& hit) {
+ShadingFrame shading_frame(const SurfaceHit& hit, bool vertex_tangent) {
     ShadingFrame f;
     f.n = hit.ns;
-    const glm::vec3 t = hit.dpdu - f.n * glm::dot(f.n, hit.dpdu);
-    const float len = glm::length(t);
-    if (len > 1e-12f && std::isfinite(len)) {
+    // The candidate tangents in order, made orthogonal to n; the first that
+    // is not degenerate wins.
+    auto take = [&f](glm::vec3 candidate) {
+        const glm::vec3 t = candidate - f.n * glm::dot(f.n, candidate);
+        const float len = glm::length(t);
+        if (!(len > 1e-12f && std::isfinite(len))) return false;
         f.t = t / len;
         f.b = glm::cross(f.n, f.t);
-    } else {
-        orthonormal_basis(f.n, &f.t, &f.b);
-    }
+        return true;
+    };
+    if (vertex_tangent && hit.tangent.w != 0.0f && take(glm::vec3(hit.tangent))) return f;
+    if (!take(hit.dpdu)) orthonormal_basis(f.n, &f.t, &f.b);
     return f;
 }
 
 SurfaceBsdf make_surface_bsdf(const MaterialDesc& m, const SurfaceHit& hit, glm::vec3 wo,
                               const Footprint* footprint) {
-    ShadingFrame frame = shading_frame(hit);
-    // A normal map's tangent space follows the mesh's vertex tangents, which
-    // vary smoothly across triangles (∂p/∂u jumps at every edge).
-    if (m.normal_map && hit.tangent.w != 0.0f) {
-        const glm::vec3 t =
-            glm::vec3(hit.tangent) - frame.n * glm::dot(frame.n, glm::vec3(hit.tangent));
-        const float len = glm::length(t);
-        if (len > 1e-12f && std::isfinite(len)) {
-            frame.t = t / len;
-            frame.b = glm::cross(frame.n, frame.t);
-        }
-    }
+    ShadingFrame frame = shading_frame(hit, m.normal_map != nullptr);
     // Opaque materials are two-sided: look at them from the side of wo. The
     // dielectric keeps its orientation (inside/outside matters for eta).
     const bool back = m.type != MaterialDesc::Type::Dielectric && glm::dot(wo, frame.n) < 0.0f;

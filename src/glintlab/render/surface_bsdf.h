@@ -27,7 +27,10 @@ struct ShadingFrame {
 
 // A frame around the shading normal whose tangent follows ∂p/∂u, so that
 // anisotropic roughness (αx along u) and glint grids align with the uv axes.
-ShadingFrame shading_frame(const SurfaceHit& hit);
+// With `vertex_tangent` the mesh's interpolated vertex tangent takes ∂p/∂u's
+// place where the hit has one (a normal map's tangent space: smooth across
+// triangles, where ∂p/∂u jumps at every edge).
+ShadingFrame shading_frame(const SurfaceHit& hit, bool vertex_tangent = false);
 
 class SurfaceBsdf {
   public:

@@ -137,8 +137,7 @@ double explicit_direction_probability(const ExplicitFacetField& field, glm::vec3
 float explicit_facet_weight(const ExplicitFacetField& field, glm::vec3 wo, const ExplicitFacet& f,
                             glm::vec3& r) {
     if (!field.normal_map) return explicit_facet_weight(field, wo, f.m, r);
-    glm::vec3 t, b;
-    tangent_frame_around(f.n_map, &t, &b);
+    const glm::vec3 t = f.t_map, b = glm::cross(f.n_map, t);
     auto to_map = [&](glm::vec3 v) {
         return glm::vec3(glm::dot(v, t), glm::dot(v, b), glm::dot(v, f.n_map));
     };

@@ -77,8 +77,10 @@ struct ExplicitFacetField {
 struct ExplicitFacet {
     glm::vec2 uv;  // position (including the footprint's tile offset)
     glm::vec3 m;   // unit normal, local frame (z = n)
-    // The normal map's normal at the facet (local frame); z without a map.
+    // The normal map's normal at the facet and its frame's tangent
+    // (tangent_frame_around; local frame); z and x without a map.
     glm::vec3 n_map{0.0f, 0.0f, 1.0f};
+    glm::vec3 t_map{1.0f, 0.0f, 0.0f};
     // N_field / N(uv): the facet's area relative to the field's nominal
     // 1/N_field (1 without a density map); the estimators weigh by it.
     float weight = 1.0f;

@@ -161,11 +161,11 @@ struct Walker {
             }
             f.m = sample_explicit_normal(field.ndf, ax, ay, u1, u2);
             if (field.normal_map) {
-                const glm::vec2 s = field.normal_map->slope_at(f.uv) * field.normal_map_axes;
-                f.n_map = glm::normalize(glm::vec3(-s.x, -s.y, 1.0f));
-                glm::vec3 t, b;
-                tangent_frame_around(f.n_map, &t, &b);
-                f.m = glm::normalize(f.m.x * t + f.m.y * b + f.m.z * f.n_map);
+                f.n_map =
+                    normal_from_slope(field.normal_map->slope_at(f.uv) * field.normal_map_axes);
+                glm::vec3 b;
+                tangent_frame_around(f.n_map, &f.t_map, &b);
+                f.m = glm::normalize(f.m.x * f.t_map + f.m.y * b + f.m.z * f.n_map);
             }
             visit(f);
             ++visited;
