@@ -2,6 +2,7 @@
 texture file (docs/SCENE_FORMAT.md "Textures", docs/PYTHON.md)."""
 
 import copy
+import os
 
 import numpy as np
 import pytest
@@ -93,3 +94,33 @@ def test_normal_map_array_renders_as_the_same_map_from_an_exr_file(tiny_scene, t
     bad["materials"][0]["normal_map"] = {"texture": not_unit, "encoding": "signed"}
     with pytest.raises(glintlab.SceneError, match=r"normal_map.*texel \(x=0, y=0\)"):
         glintlab.parse_scene(bad)
+
+
+def test_a_gltf_file_renders_with_its_own_textured_materials(tmp_path):
+    """A glTF shape without "material" is shaded by the file's materials
+    (docs/SCENE_FORMAT.md "glTF materials"): the plate's base colour map is
+    a blue/orange checker, so blue and orange pixels both appear; an
+    override to a grey diffuse material takes the base colour map as its
+    albedo, and a plain grey material removes the checker."""
+    from conftest import SOURCE_DIR
+    asset = os.path.join(SOURCE_DIR, "scenes", "gltf", "glint_tiles.glb")
+    scene = {
+        "film": {"width": 32, "height": 24},
+        "camera": {"eye": [0.0, 2.5, 0.1], "target": [0, 0, 0], "fov_deg": 50},
+        "render": {"integrator": "direct", "spp": 2, "seed": 1},
+        "materials": [{"name": "grey", "type": "diffuse", "albedo": 0.5}],
+        "shapes": [{"type": "gltf", "name": "tiles", "file": asset,
+                    "material_overrides": {"Paint": {"type": "diffuse"}}}],
+        "lights": [{"type": "directional", "direction": [0, 1, 0], "irradiance": 3}],
+    }
+    image = glintlab.render(scene, threads=1)
+    assert np.isfinite(image).all()
+    corner = image[2:6, 6:26].reshape(-1, 3)  # the plate's far edge, beyond the ball
+    blue = (corner[:, 2] > 1.5 * corner[:, 0]).sum()
+    orange = (corner[:, 0] > 1.5 * corner[:, 2]).sum()
+    assert blue > 0 and orange > 0, corner
+    plain = copy.deepcopy(scene)
+    del plain["shapes"][0]["material_overrides"]
+    plain["shapes"][0]["material"] = "grey"
+    grey = glintlab.render(plain, threads=1)[2:6, 6:26].reshape(-1, 3)
+    assert np.allclose(grey[:, 0], grey[:, 2], rtol=1e-5)

@@ -38,6 +38,8 @@ Image read_srgb_8bit_or_16bit(const std::filesystem::path& path);
 // PNG (8 or 16 bits, 1-4 channels) or JPEG as stored codes / maximum code,
 // RGBA (texture_image.h).
 TextureImage read_png_or_jpeg_codes(const std::filesystem::path& path);
+// The same from the bytes of an image held in memory; `path` names it in messages.
+TextureImage decode_png_or_jpeg_codes(std::string bytes, const std::filesystem::path& path);
 void write_png_8bit(const Image& image, const std::filesystem::path& file,
                     const std::filesystem::path& name, float exposure_stops);
 void write_radiance_hdr(const Image& image, const std::filesystem::path& file,

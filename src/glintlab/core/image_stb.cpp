@@ -225,10 +225,9 @@ struct PngOrJpeg {
     std::string bytes;
     bool jpeg = false;
 };
-PngOrJpeg png_or_jpeg_bytes(const std::filesystem::path& path) {
+PngOrJpeg png_or_jpeg_bytes(std::string file_bytes, const std::filesystem::path& path) {
     static constexpr std::string_view kPng("\x89PNG\r\n\x1a\n", 8);
     static constexpr std::string_view kJpeg("\xff\xd8\xff", 3);
-    std::string file_bytes = read_file_bytes(path);
     if (file_bytes.starts_with(kJpeg)) return {std::move(file_bytes), true};
     if (!file_bytes.starts_with(kPng))
         fail(
@@ -236,6 +235,9 @@ PngOrJpeg png_or_jpeg_bytes(const std::filesystem::path& path) {
             "start-of-image marker (stb's other formats are not read)",
             path.string());
     return {png_bytes_for_stb(file_bytes, path), false};
+}
+PngOrJpeg png_or_jpeg_bytes(const std::filesystem::path& path) {
+    return png_or_jpeg_bytes(read_file_bytes(path), path);
 }
 
 }  // namespace
@@ -275,7 +277,11 @@ Image read_srgb_8bit_or_16bit(const std::filesystem::path& path) {
 }
 
 TextureImage read_png_or_jpeg_codes(const std::filesystem::path& path) {
-    const PngOrJpeg file = png_or_jpeg_bytes(path);
+    return decode_png_or_jpeg_codes(read_file_bytes(path), path);
+}
+
+TextureImage decode_png_or_jpeg_codes(std::string bytes_in, const std::filesystem::path& path) {
+    const PngOrJpeg file = png_or_jpeg_bytes(std::move(bytes_in), path);
     TextureImage t;
     t.codes = true;
     if (file.jpeg) {

@@ -34,4 +34,12 @@ TextureImage read_texture_image(const std::filesystem::path& path) {
     return t;
 }
 
+TextureImage decode_texture_image(std::string bytes, const std::string& name) {
+    if (bytes.empty()) fail("{}: the image is empty", name);
+    TextureImage t = image_formats::decode_png_or_jpeg_codes(std::move(bytes), name);
+    if (t.width <= 0 || t.height <= 0)
+        fail("{}: image has zero size ({}x{})", name, t.width, t.height);
+    return t;
+}
+
 }  // namespace glintlab

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <filesystem>
+#include <string>
 #include <vector>
 
 #include <glm/vec4.hpp>
@@ -25,5 +26,8 @@ struct TextureImage {
 // same checks: existence, size limits, corrupt data, NaN/Inf texels), errors
 // naming the file.
 TextureImage read_texture_image(const std::filesystem::path& path);
+// A PNG or JPEG image held in memory (a glTF file's embedded image), with
+// the same checks; `name` names it in messages.
+TextureImage decode_texture_image(std::string bytes, const std::string& name);
 
 }  // namespace glintlab

@@ -454,6 +454,26 @@ std::vector<std::pair<std::string, std::string>> asset_scenes() {
   "comment": "fuzz seed"
 }
 )"},
+        // glTF's metallic-roughness material written in the scene, with the
+        // texture keys its file materials use (a colour scale, "power").
+        {"metallic_roughness.json", R"({
+  "camera": {"eye": [0, 2, 4], "target": [0, 0, 0], "fov_deg": 40},
+  "film": {"width": 16, "height": 16},
+  "render": {"integrator": "path", "spp": 1, "max_depth": 3},
+  "materials": [
+    {"name": "paint", "type": "metallic_roughness", "ndf": "ggx", "eta": 1.45,
+     "base_color": {"texture": "photo.jpg", "scale": [0.9, 0.8, 0.7]},
+     "metallic": {"texture": "height.png", "channel": "b"},
+     "roughness": {"texture": "height.png", "channel": "g", "scale": 0.8, "power": 2}},
+    {"name": "trim", "type": "metallic_roughness", "base_color": [0.9, 0.8, 0.6],
+     "metallic": 0.5, "roughness": [0.2, 0.4]}
+  ],
+  "shapes": [{"type": "quad", "material": "paint", "size": [2, 2]},
+             {"type": "sphere", "material": "trim", "center": [0, 0.5, 0], "radius": 0.4}],
+  "lights": [{"type": "directional", "direction": [0, 1, 0.5], "irradiance": 2}],
+  "comment": "fuzz seed"
+}
+)"},
     };
 }
 
@@ -515,9 +535,14 @@ Outcome run(Target target, const uint8_t* data, size_t size, std::string* error)
                 check_scene(parse_scene(document, file));
                 break;
             }
-            case Target::Gltf:
+            case Target::Gltf: {
                 check_mesh(load_gltf_bytes(bytes, "input.gltf", dir), "glTF");
+                // The file's materials too: their translation, and the
+                // decoding of the images they read.
+                const GltfScene scene = load_gltf_scene_bytes(bytes, "input.gltf", dir);
+                for (const GltfScene::Part& part : scene.parts) check_mesh(part.mesh, "glTF part");
                 break;
+            }
             case Target::Obj:
                 check_mesh(load_obj_text(bytes, "input.obj"), "OBJ");
                 break;
@@ -561,6 +586,16 @@ size_t write_seeds(Target target, const fs::path& dir, const fs::path& source_di
                 // Generated meshes at most 16 cells a side: a 768² heightfield
                 // takes a second to build under the sanitizers, and the fuzzer
                 // would spend its time mutating that seed.
+                // glTF assets of the repository's scenes are copied next
+                // to the fuzzer's input under their file name.
+                if (doc.contains("shapes"))
+                    for (json& shape : doc["shapes"])
+                        if (shape.contains("file") && shape["file"].is_string()) {
+                            const fs::path file = shape["file"].get<std::string>();
+                            const fs::path name = file.filename();
+                            write_file(assets / name, read_file(source_dir / "scenes" / file));
+                            shape["file"] = name.string();
+                        }
                 if (doc.contains("shapes"))
                     for (json& shape : doc["shapes"])
                         for (const char* key : {"resolution", "segments_major", "segments_minor",
@@ -576,6 +611,9 @@ size_t write_seeds(Target target, const fs::path& dir, const fs::path& source_di
             copy_asset("mesh.gltf");
             copy_asset("mesh.glb");
             copy_asset("draco.glb");
+            // A file with materials, textures in its binary chunk and
+            // KHR_texture_transform (scripts/make_gltf_asset.py).
+            put("glint_tiles.glb", read_file(source_dir / "scenes" / "gltf" / "glint_tiles.glb"));
             break;
         case Target::Obj:
             put("quad.obj", obj_quad());

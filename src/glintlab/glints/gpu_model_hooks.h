@@ -29,7 +29,7 @@ class UniformCache;
 
 // Texture units 0..3 are the forward shader's (realtime/forward_shaders.h);
 // models use units 4-9 (chermain2020 4, deliot2023 5, kneiphof2025 6-9); textured
-// material parameters take 10-14 (forward_shaders.h kMaterialTextureUnit).
+// material parameters take 10-15 (forward_shaders.h kMaterialTextureUnit).
 inline constexpr int kFirstModelTextureUnit = 4;
 
 // One boolean GPU option of a model (GpuRenderer::set_model_option, a viewer

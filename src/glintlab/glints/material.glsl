@@ -95,11 +95,13 @@ const int MATERIAL_CONDUCTOR = 1;
 const int MATERIAL_DIELECTRIC = 2;
 const int MATERIAL_PLASTIC = 3;
 const int MATERIAL_GLINT = 4;
+const int MATERIAL_METALLIC_ROUGHNESS = 5;
 
 struct SurfaceMaterial {
     int type;     // MATERIAL_*
-    vec3 albedo;  // diffuse, plastic
-    int ndf;      // conductor, dielectric, plastic
+    vec3 albedo;     // diffuse, plastic, metallic-roughness (base colour)
+    float metallic;  // metallic-roughness
+    int ndf;         // conductor, dielectric, plastic, metallic-roughness
     float alpha_x;
     float alpha_y;
     vec3 eta;
@@ -118,6 +120,9 @@ vec3 eval_bsdf(SurfaceMaterial s, vec3 wo, vec3 wi, Footprint fp) {
     if (s.type == MATERIAL_GLINT) return glint_brdf(s.glint, wo, wi, h, glint_ndf(h, fp));
     if (s.type == MATERIAL_PLASTIC)
         return plastic_f(s.albedo, s.eta.x, s.ndf, s.alpha_x, s.alpha_y, wo, wi);
+    if (s.type == MATERIAL_METALLIC_ROUGHNESS)
+        return metallic_roughness_f(s.albedo, s.metallic, s.eta.x, s.ndf, s.alpha_x, s.alpha_y, wo,
+                                    wi);
     if (microfacet_effectively_smooth(s.alpha_x, s.alpha_y)) return vec3(0.0f);  // a delta lobe
     if (s.type == MATERIAL_CONDUCTOR)
         return conductor_f(s.ndf, s.alpha_x, s.alpha_y, s.eta, s.k, wo, wi);

@@ -278,6 +278,69 @@ std::optional<BsdfSample> PlasticBxdf::sample(glm::vec3 wo, float uc, glm::vec2 
     return BsdfSample{f(wo, wi), wi, p, false, false};
 }
 
+// --- Metallic-roughness (glTF) --------------------------------------------------
+PlasticBxdf MetallicRoughnessBxdf::dielectric() const {
+    PlasticBxdf p;
+    p.diffuse = base_color;
+    p.dist = dist;
+    p.eta = eta;
+    return p;
+}
+
+glm::vec3 MetallicRoughnessBxdf::f(glm::vec3 wo, glm::vec3 wi) const {
+    if (!same_hemisphere(wo, wi)) return glm::vec3(0.0f);
+    return sh::metallic_roughness_f(base_color, metallic, eta, ndf_id(dist.ndf), dist.alpha_x,
+                                    dist.alpha_y, wo, wi);
+}
+
+float MetallicRoughnessBxdf::pdf(glm::vec3 wo, glm::vec3 wi) const {
+    if (!same_hemisphere(wo, wi)) return 0.0f;
+    float p = metallic < 1.0f ? (1.0f - metallic) * dielectric().pdf(wo, wi) : 0.0f;
+    if (metallic > 0.0f && !dist.effectively_smooth()) {
+        glm::vec3 wm = wo + wi;
+        if (glm::dot(wm, wm) == 0.0f) return p;
+        wm = face_up(glm::normalize(wm));
+        p += metallic * dist.pdf(wo, wm) / (4.0f * std::abs(glm::dot(wo, wm)));
+    }
+    return p;
+}
+
+std::optional<BsdfSample> MetallicRoughnessBxdf::sample(glm::vec3 wo, float uc, glm::vec2 u) const {
+    if (wo.z == 0.0f) return std::nullopt;
+    const PlasticBxdf plastic = dielectric();
+    if (dist.effectively_smooth()) {
+        // Both specular lobes are the mirror direction's delta: chosen with
+        // the metal's probability plus the dielectric's share of its own.
+        const float ps = (1.0f - metallic) * plastic.specular_probability(wo);
+        const float p_delta = metallic + ps;
+        if (uc < p_delta) {
+            const glm::vec3 wi(-wo.x, -wo.y, wo.z);
+            const float c = abs_cos(wi);
+            const glm::vec3 F = metallic * sh::F_Schlick(base_color, c) +
+                                (1.0f - metallic) * sh::F_Dielectric(c, eta);
+            return BsdfSample{F / c, wi, p_delta, true, false};
+        }
+        glm::vec3 wi = sample_cosine_hemisphere(u);
+        if (wo.z < 0.0f) wi.z = -wi.z;
+        if (wi.z == 0.0f) return std::nullopt;
+        // The diffuse lobe's share of the (non-delta) pdf.
+        return BsdfSample{f(wo, wi), wi, pdf(wo, wi), false, false};
+    }
+    glm::vec3 wi;
+    if (uc < metallic) {
+        wi = reflect_about(wo, dist.sample_wm(wo, u));
+    } else {
+        const float uc_plastic = metallic < 1.0f ? (uc - metallic) / (1.0f - metallic) : 0.0f;
+        const auto s = plastic.sample(wo, std::min(uc_plastic, 0x1.fffffep-1f), u);
+        if (!s) return std::nullopt;
+        wi = s->wi;
+    }
+    if (!same_hemisphere(wo, wi)) return std::nullopt;
+    const float p = pdf(wo, wi);
+    if (p == 0.0f) return std::nullopt;
+    return BsdfSample{f(wo, wi), wi, p, false, false};
+}
+
 // --- Variant dispatch -----------------------------------------------------------
 glm::vec3 bxdf_f(const Bxdf& bxdf, glm::vec3 wo, glm::vec3 wi) {
     return std::visit([&](const auto& b) { return b.f(wo, wi); }, bxdf);

@@ -76,4 +76,29 @@ vec3 plastic_f(vec3 diffuse, float eta, int ndf, float alpha_x, float alpha_y, v
     return result;
 }
 
+// A rough metal whose Fresnel term is Schlick's with F0 = `f0` (glTF 2.0's
+// conductor_fresnel, Khronos glTF 2.0 specification Appendix B.3.3).
+vec3 schlick_metal_f(vec3 f0, int ndf, float alpha_x, float alpha_y, vec3 wo, vec3 wi) {
+    float cos_o = abs(wo.z);
+    float cos_i = abs(wi.z);
+    if (cos_o == 0.0f || cos_i == 0.0f || microfacet_effectively_smooth(alpha_x, alpha_y))
+        return vec3(0.0f);
+    vec3 wm = wi + wo;
+    if (dot(wm, wm) == 0.0f) return vec3(0.0f);
+    wm = microfacet_face_up(normalize(wm));
+    vec3 F = F_Schlick(f0, abs(dot(wo, wm)));
+    return microfacet_dg(ndf, alpha_x, alpha_y, wo, wi, wm) * F / (4.0f * cos_o * cos_i);
+}
+
+// glTF 2.0's metallic-roughness material (MetallicRoughnessBxdf; Appendix
+// B.3.5): mix(dielectric, metal, metallic). The dielectric is plastic_f
+// (a Lambertian of base_color under a coat of IOR eta), the metal
+// schlick_metal_f with F0 = base_color; both share one distribution.
+vec3 metallic_roughness_f(vec3 base_color, float metallic, float eta, int ndf, float alpha_x,
+                          float alpha_y, vec3 wo, vec3 wi) {
+    vec3 dielectric = plastic_f(base_color, eta, ndf, alpha_x, alpha_y, wo, wi);
+    vec3 metal = schlick_metal_f(base_color, ndf, alpha_x, alpha_y, wo, wi);
+    return (1.0f - metallic) * dielectric + metallic * metal;
+}
+
 #endif

@@ -105,7 +105,33 @@ struct PlasticBxdf {
     float specular_probability(glm::vec3 wo) const;
 };
 
-using Bxdf = std::variant<DiffuseBxdf, ConductorBxdf, DielectricBxdf, PlasticBxdf>;
+// glTF 2.0's metallic-roughness material (Khronos glTF 2.0 specification,
+// Appendix B): f = (1 - metallic) f_dielectric + metallic f_metal, one
+// distribution for both. f_dielectric is PlasticBxdf (base_color under a
+// coat of IOR eta: the specification's fresnel_mix, made reciprocal and
+// energy-bounded by PlasticBxdf's (1 - F) factors), f_metal a rough metal of
+// Schlick Fresnel with F0 = base_color (the specification's
+// conductor_fresnel). Sampling picks the metal with probability `metallic`,
+// else the plastic's own sampling; the pdf is the mixture's. Where the
+// distribution is a delta both specular lobes lie in the mirror direction,
+// and a delta sample carries their sum.
+struct MetallicRoughnessBxdf {
+    glm::vec3 base_color{0.5f};
+    float metallic = 1.0f;  // [0, 1]
+    MicrofacetDistribution dist;
+    float eta = 1.5f;  // the dielectric's IOR (glTF's 1.5, KHR_materials_ior)
+
+    glm::vec3 f(glm::vec3 wo, glm::vec3 wi) const;
+    float pdf(glm::vec3 wo, glm::vec3 wi) const;
+    std::optional<BsdfSample> sample(glm::vec3 wo, float uc, glm::vec2 u) const;
+    bool is_specular() const { return metallic >= 1.0f && dist.effectively_smooth(); }
+
+  private:
+    PlasticBxdf dielectric() const;
+};
+
+using Bxdf =
+    std::variant<DiffuseBxdf, ConductorBxdf, DielectricBxdf, PlasticBxdf, MetallicRoughnessBxdf>;
 
 glm::vec3 bxdf_f(const Bxdf& bxdf, glm::vec3 wo, glm::vec3 wi);
 float bxdf_pdf(const Bxdf& bxdf, glm::vec3 wo, glm::vec3 wi);

@@ -11,6 +11,7 @@
 
 #include "glintlab/microfacet/bxdfs.h"
 #include "glintlab/microfacet/chi2_test_util.h"
+#include "glintlab/microfacet/microfacet.h"
 
 namespace glintlab {
 namespace {
@@ -37,6 +38,12 @@ std::vector<NamedBxdf> rough_bxdfs() {
         {"dielectric beckmann aniso", DielectricBxdf{beck_aniso, 1.33f}, true},
         {"plastic ggx aniso", PlasticBxdf{glm::vec3(0.7f, 0.4f, 0.3f), ggx_aniso, 1.5f}, false},
         {"plastic beckmann", PlasticBxdf{glm::vec3(0.7f, 0.4f, 0.3f), beck_aniso, 1.5f}, false},
+        {"metallic-roughness 0.4 ggx aniso",
+         MetallicRoughnessBxdf{glm::vec3(0.9f, 0.6f, 0.2f), 0.4f, ggx_aniso, 1.5f}, false},
+        {"metallic-roughness 1 beckmann",
+         MetallicRoughnessBxdf{glm::vec3(0.9f, 0.6f, 0.2f), 1.0f, beck_aniso, 1.5f}, false},
+        {"metallic-roughness 0 ggx", MetallicRoughnessBxdf{glm::vec3(0.3f), 0.0f, ggx, 1.5f},
+         false},
     };
 }
 
@@ -152,6 +159,10 @@ TEST(MicrofacetBxdf, EnergyConservation) {
         {"plastic beckmann", PlasticBxdf{glm::vec3(1.0f), beck, 1.5f}},
         {"plastic smooth", PlasticBxdf{glm::vec3(1.0f), {NdfType::GGX, 1e-4f, 1e-4f}, 1.5f}},
         {"dielectric smooth", DielectricBxdf{{NdfType::GGX, 1e-4f, 1e-4f}, 1.5f}},
+        {"metallic-roughness 0.5 ggx", MetallicRoughnessBxdf{glm::vec3(1.0f), 0.5f, ggx_rough}},
+        {"metallic-roughness 0.5 smooth",
+         MetallicRoughnessBxdf{glm::vec3(1.0f), 0.5f, {NdfType::GGX, 1e-4f, 1e-4f}}},
+        {"metallic-roughness 0 beckmann", MetallicRoughnessBxdf{glm::vec3(1.0f), 0.0f, beck}},
     };
     uint64_t seed = 1;
     for (const auto& [name, b] : white)
@@ -224,6 +235,60 @@ TEST(MicrofacetBxdf, SmoothLimitIsDelta) {
     EXPECT_NEAR(r->pdf + t->pdf, 1.0f, 1e-6f);
     // Snell: sin_t = sin_o / eta.
     EXPECT_NEAR(std::hypot(t->wi.x, t->wi.y), std::hypot(wo.x, wo.y) / 1.5f, 1e-6f);
+}
+
+// glTF's material at its ends: metallic 0 is the plastic, metallic 1 the
+// Schlick metal D G2 F_Schlick(F0 = base colour) / (4 cos_o cos_i).
+TEST(MicrofacetBxdf, MetallicRoughnessEndsAreThePlasticAndTheSchlickMetal) {
+    const MicrofacetDistribution ggx{NdfType::GGX, 0.35f, 0.2f};
+    const glm::vec3 base(0.9f, 0.6f, 0.2f);
+    const MetallicRoughnessBxdf dielectric{base, 0.0f, ggx, 1.45f};
+    const MetallicRoughnessBxdf metal{base, 1.0f, ggx, 1.45f};
+    const PlasticBxdf plastic{base, ggx, 1.45f};
+    Pcg32 rng(5, 6);
+    for (int i = 0; i < 200; ++i) {
+        const glm::vec3 wo = random_direction(rng, true), wi = random_direction(rng, true);
+        if (wo.z < 1e-2f || wi.z < 1e-2f) continue;
+        const glm::vec3 fp = plastic.f(wo, wi), fd = dielectric.f(wo, wi);
+        for (int c = 0; c < 3; ++c) EXPECT_NEAR(fd[c], fp[c], 1e-6f * std::max(1.0f, fp[c]));
+        EXPECT_NEAR(dielectric.pdf(wo, wi), plastic.pdf(wo, wi),
+                    1e-5f * std::max(1.0f, plastic.pdf(wo, wi)));
+        const glm::vec3 wm = glm::normalize(wo + wi);
+        const float m5 = std::pow(1.0f - glm::dot(wo, wm), 5.0f);
+        const float dg = ggx.D(wm) * ggx.G2(wo, wi) / (4.0f * wo.z * wi.z);
+        const glm::vec3 fm = metal.f(wo, wi);
+        for (int c = 0; c < 3; ++c) {
+            const float expected = dg * (base[c] + (1.0f - base[c]) * m5);
+            EXPECT_NEAR(fm[c], expected, 1e-4f * std::max(1.0f, expected));
+        }
+    }
+}
+
+TEST(MicrofacetBxdf, SmoothMetallicRoughnessSumsBothMirrorLobes) {
+    // Half metal (Schlick F0 = 0.8), half plastic (IOR 1.5): the mirror
+    // direction carries 0.5 F_Schlick + 0.5 F_Dielectric, chosen with the
+    // metal's probability plus the plastic's specular share; the rest of
+    // the samples are the plastic's diffuse lobe.
+    const MetallicRoughnessBxdf b{glm::vec3(0.8f), 0.5f, {NdfType::GGX, 1e-4f, 1e-4f}, 1.5f};
+    EXPECT_FALSE(b.is_specular());
+    const glm::vec3 wo = glm::normalize(glm::vec3(0.3f, 0.2f, 0.8f));
+    const auto s = b.sample(wo, 0.1f, glm::vec2(0.3f));
+    ASSERT_TRUE(s);
+    ASSERT_TRUE(s->is_delta);
+    const float c = wo.z;
+    const float m5 = std::pow(1.0f - c, 5.0f);
+    const float schlick = 0.8f + 0.2f * m5;
+    const float fresnel = shader::F_Dielectric(c, 1.5f);
+    EXPECT_NEAR(s->f.x * c, 0.5f * schlick + 0.5f * fresnel, 1e-5f);
+    PlasticBxdf plastic{glm::vec3(0.8f), {NdfType::GGX, 1e-4f, 1e-4f}, 1.5f};
+    EXPECT_NEAR(s->pdf, 0.5f + 0.5f * plastic.specular_probability(wo), 1e-6f);
+    const auto d = b.sample(wo, 0.999f, glm::vec2(0.3f, 0.6f));
+    ASSERT_TRUE(d);
+    EXPECT_FALSE(d->is_delta);
+    EXPECT_NEAR(d->pdf, (1.0f - s->pdf) * d->wi.z / std::numbers::pi_v<float>, 1e-5f);
+    // Fully metallic and smooth: a mirror.
+    const MetallicRoughnessBxdf mirror{glm::vec3(0.8f), 1.0f, {NdfType::GGX, 1e-4f, 1e-4f}, 1.5f};
+    EXPECT_TRUE(mirror.is_specular());
 }
 
 TEST(MicrofacetBxdf, ChiSquareSamplingMatchesPdf) {

@@ -37,7 +37,7 @@ inline constexpr int kEnvironmentResidualUnit = 3;  // the map without its sun (
 // Textured material parameters: units kMaterialTextureUnit + slot
 // (shaders/material_textures.glsl MATERIAL_TEXTURE_*).
 inline constexpr int kMaterialTextureUnit = 10;  // after the models' units 4-9 (gpu_model_hooks.h)
-inline constexpr int kMaterialTextureSlots = 5;
+inline constexpr int kMaterialTextureSlots = 6;
 
 // Environment lighting (Krivanek & Colbert 2008, filtered importance
 // sampling): a fixed Hammersley set of samples per pixel, the same for every
@@ -66,7 +66,8 @@ enum class GpuMaterialType : int {
     Conductor,
     Dielectric,
     Plastic,
-    Glint
+    Glint,
+    MetallicRoughness
 };
 
 }  // namespace glintlab::gl

@@ -409,12 +409,16 @@ struct GpuRenderer::Impl {
             case MaterialDesc::Type::Plastic:
                 type = static_cast<int>(gl::GpuMaterialType::Plastic);
                 break;
+            case MaterialDesc::Type::MetallicRoughness:
+                type = static_cast<int>(gl::GpuMaterialType::MetallicRoughness);
+                break;
             case MaterialDesc::Type::Glint:
                 type = static_cast<int>(gl::GpuMaterialType::Glint);
                 break;
         }
         glProgramUniform1i(p, loc("u_material_type"), type);
         glProgramUniform3fv(p, loc("u_albedo"), 1, glm::value_ptr(m.albedo));
+        glProgramUniform1f(p, loc("u_metallic"), m.metallic);
         glProgramUniform1i(p, loc("u_ndf"), ndf_code(m.ndf));
         glProgramUniform2f(p, loc("u_alpha"), m.alpha_x, m.alpha_y);
         glProgramUniform3fv(p, loc("u_eta"), 1, glm::value_ptr(m.eta));
@@ -444,6 +448,7 @@ struct GpuRenderer::Impl {
         std::shared_ptr<const TextureInput> slots[gl::kMaterialTextureSlots];
         if (const MaterialTextures* t = m.textures.get()) {
             slots[1] = t->alpha_x_sq, slots[2] = t->alpha_y_sq, slots[3] = t->albedo;
+            slots[5] = t->metallic;
         }
         if (const GlintTextures* t = m.glint.textures.get()) {
             slots[0] = t->density, slots[1] = t->alpha_x_sq, slots[2] = t->alpha_y_sq;

@@ -185,12 +185,16 @@ void material_panel(MaterialDesc& m) {
     const GlintTextures* gt = m.glint.textures.get();
     if (m.textured()) text(fmt::format("from textures: {}", textured_keys(m)));
     if (m.type != MaterialDesc::Type::Glint) {
-        const bool diffuse_part =
-            m.type == MaterialDesc::Type::Diffuse || m.type == MaterialDesc::Type::Plastic;
+        const bool metallic_roughness = m.type == MaterialDesc::Type::MetallicRoughness;
+        const bool diffuse_part = m.type == MaterialDesc::Type::Diffuse ||
+                                  m.type == MaterialDesc::Type::Plastic || metallic_roughness;
         if (diffuse_part && !(mt && mt->albedo)) {
-            ImGui::ColorEdit3(fit_label("albedo").c_str(), &m.albedo.x);
-            note("albedo");
+            const char* key = metallic_roughness ? "base_color" : "albedo";
+            ImGui::ColorEdit3(fit_label(key).c_str(), &m.albedo.x);
+            note(key);
         }
+        if (metallic_roughness && !(mt && mt->metallic))
+            slider("metallic", &m.metallic, 0.0f, 1.0f);
         if (m.type == MaterialDesc::Type::Diffuse) return;
         int ndf = m.ndf == NdfType::GGX ? 1 : 0;
         if (ImGui::Combo(fit_label("ndf").c_str(), &ndf, "beckmann\0ggx\0"))

@@ -109,10 +109,14 @@ SurfaceBsdf make_surface_bsdf(const MaterialDesc& m, const SurfaceHit& hit, glm:
     const ShadingFrame base_frame = frame;
     if (bump) frame = tilted_frame(frame, bump->slopes.normal());
     glm::vec3 albedo = m.albedo;
+    float metallic = m.metallic;
     float alpha_x = m.alpha_x, alpha_y = m.alpha_y;
     if (m.textures) {
         const MaterialTextures& t = *m.textures;
         if (t.albedo) albedo = t.albedo->lookup(hit.uv, footprint);
+        // The footprint's mean metallic mixes the two lobes as the texels do:
+        // f is linear in it.
+        if (t.metallic) metallic = std::clamp(t.metallic->lookup(hit.uv, footprint).x, 0.0f, 1.0f);
         // Conductors and dielectrics take α in [0, 1] (0: a mirror).
         if (t.alpha_x_sq)
             alpha_x = std::sqrt(std::max(t.alpha_x_sq->lookup(hit.uv, footprint).x, 0.0f));
@@ -161,6 +165,14 @@ SurfaceBsdf make_surface_bsdf(const MaterialDesc& m, const SurfaceHit& hit, glm:
         case MaterialDesc::Type::Plastic: {
             PlasticBxdf b;
             b.diffuse = albedo;
+            b.dist = distribution(m.ndf, alpha_x, alpha_y);
+            b.eta = m.eta.x;
+            return SurfaceBsdf(frame, Bxdf(b));
+        }
+        case MaterialDesc::Type::MetallicRoughness: {
+            MetallicRoughnessBxdf b;
+            b.base_color = albedo;
+            b.metallic = metallic;
             b.dist = distribution(m.ndf, alpha_x, alpha_y);
             b.eta = m.eta.x;
             return SurfaceBsdf(frame, Bxdf(b));

@@ -13,9 +13,9 @@
 #include <glm/gtc/quaternion.hpp>
 #include <glm/gtc/type_ptr.hpp>
 
-// Textures are not needed for geometry, so tinygltf is built without its
-// stb_image dependency (another module owns STB_IMAGE_IMPLEMENTATION) and
-// images are skipped by a no-op loader below.
+// tinygltf is built without its stb_image dependency (another module owns
+// STB_IMAGE_IMPLEMENTATION): images are decoded by glintlab's own hardened
+// readers, and only those a used material reads.
 #define TINYGLTF_IMPLEMENTATION
 #define TINYGLTF_NO_STB_IMAGE
 #define TINYGLTF_NO_STB_IMAGE_WRITE
@@ -29,7 +29,9 @@
 #include "glintlab/core/error.h"
 #include "glintlab/core/json_depth.h"
 #include "glintlab/core/regular_file.h"
+#include "glintlab/core/texture_image.h"
 #include "glintlab/scene/draco_header.h"
+#include "glintlab/scene/gltf_materials.h"
 #include "glintlab/scene/transform.h"
 
 namespace glintlab {
@@ -38,8 +40,14 @@ namespace {
 
 constexpr const char* kDracoExtension = "KHR_draco_mesh_compression";
 
-bool skip_image(tinygltf::Image*, const int, std::string*, std::string*, int, int,
-                const unsigned char*, int, void*) {
+// Images are decoded by glintlab's own readers (core/texture_image.h), and
+// only those a used material reads: tinygltf keeps the encoded bytes.
+// Images in data URIs keep their bytes here; those in buffer views are read
+// from their view, range-checked, when a material needs them.
+bool keep_encoded_image(tinygltf::Image* image, const int, std::string*, std::string*, int, int,
+                        const unsigned char* bytes, int size, void*) {
+    if (image->bufferView < 0 && size > 0) image->image.assign(bytes, bytes + size);
+    image->as_is = true;
     return true;
 }
 
@@ -55,10 +63,12 @@ struct AccessorView {
 
 class GltfReader {
   public:
-    GltfReader(const tinygltf::Model& model, std::string name)
-        : model_(model), name_(std::move(name)) {}
+    // `uv_sets[m]`: the TEXCOORD set material m's textures read. `merge`:
+    // one part for every primitive (TEXCOORD_0), else one per material.
+    GltfReader(const tinygltf::Model& model, std::string name, std::vector<int> uv_sets, bool merge)
+        : model_(model), name_(std::move(name)), uv_sets_(std::move(uv_sets)), merge_(merge) {}
 
-    TriangleMesh read_scene() {
+    std::vector<GltfScene::Part> read_scene() {
         // glTF 2.0 (§3.5.3): the node graph is a forest, every node has at
         // most one parent. A node with two parents would be instanced once
         // per path, and chains of such nodes multiply the paths
@@ -101,9 +111,16 @@ class GltfReader {
         }
         on_path_.assign(model_.nodes.size(), 0);
         for (int root : roots) visit(root);
-        if (mesh_.triangles.empty()) fail("{}: glTF scene has no triangles", name_);
-        mesh_.validate(name_);
-        return std::move(mesh_);
+        size_t triangles = 0;
+        for (const GltfScene::Part& part : parts_) triangles += part.mesh.triangles.size();
+        if (triangles == 0) fail("{}: glTF scene has no triangles", name_);
+        std::vector<GltfScene::Part> parts;
+        for (GltfScene::Part& part : parts_) {
+            if (part.mesh.triangles.empty()) continue;
+            part.mesh.validate(name_);
+            parts.push_back(std::move(part));
+        }
+        return parts;
     }
 
   private:
@@ -182,13 +199,26 @@ class GltfReader {
         const Transform transform{glm::mat4(world), glm::mat4(glm::inverse(world))};
         const tinygltf::Mesh& mesh = model_.meshes[mesh_index];
         for (size_t p = 0; p < mesh.primitives.size(); ++p) {
-            TriangleMesh part = read_primitive(mesh, p);
+            const int material = merge_ ? -1 : mesh.primitives[p].material;
+            if (material >= static_cast<int>(model_.materials.size()))
+                fail("{}: mesh '{}' primitive {} names material {}, out of range [0, {})", name_,
+                     mesh.name, p, material, model_.materials.size());
+            const int uv_set = material >= 0 ? uv_sets_[static_cast<size_t>(material)] : 0;
+            TriangleMesh part = read_primitive(mesh, p, fmt::format("TEXCOORD_{}", uv_set));
             transform_mesh(part, transform);
-            append_mesh(mesh_, part);
+            append_mesh(part_of(material), part);
         }
     }
 
-    TriangleMesh read_primitive(const tinygltf::Mesh& mesh, size_t p) const {
+    TriangleMesh& part_of(int material) {
+        for (GltfScene::Part& part : parts_)
+            if (part.material == material) return part.mesh;
+        parts_.push_back({TriangleMesh{}, material});
+        return parts_.back().mesh;
+    }
+
+    TriangleMesh read_primitive(const tinygltf::Mesh& mesh, size_t p,
+                                const std::string& uv_attribute) const {
         const tinygltf::Primitive& prim = mesh.primitives[p];
         const std::string what = fmt::format("mesh '{}' primitive {}", mesh.name, p);
         if (prim.mode != -1 && prim.mode != TINYGLTF_MODE_TRIANGLES)
@@ -197,7 +227,7 @@ class GltfReader {
         const auto pos_it = prim.attributes.find("POSITION");
         if (pos_it == prim.attributes.end()) fail("{}: {} has no POSITION", name_, what);
         if (auto ext = prim.extensions.find(kDracoExtension); ext != prim.extensions.end())
-            return read_draco_primitive(prim, ext->second, what);
+            return read_draco_primitive(prim, ext->second, what, uv_attribute);
 
         TriangleMesh part;
         const AccessorView pos = view(pos_it->second, TINYGLTF_TYPE_VEC3, what + " POSITION");
@@ -213,8 +243,8 @@ class GltfReader {
             part.normals.resize(nrm.count);
             for (size_t i = 0; i < nrm.count; ++i) part.normals[i] = read_vec<3>(nrm, i);
         }
-        if (auto it = prim.attributes.find("TEXCOORD_0"); it != prim.attributes.end()) {
-            const AccessorView uv = view(it->second, TINYGLTF_TYPE_VEC2, what + " TEXCOORD_0");
+        if (auto it = prim.attributes.find(uv_attribute); it != prim.attributes.end()) {
+            const AccessorView uv = view(it->second, TINYGLTF_TYPE_VEC2, what + " " + uv_attribute);
             if (uv.count != pos.count)
                 fail("{}: {} has {} uvs for {} positions", name_, what, uv.count, pos.count);
             part.uvs.resize(uv.count);
@@ -246,7 +276,8 @@ class GltfReader {
     // their accessors as usual; they must have one element per Draco point.
     // Draco dequantises positions/uvs and unpacks octahedral normals itself.
     TriangleMesh read_draco_primitive(const tinygltf::Primitive& prim, const tinygltf::Value& ext,
-                                      const std::string& what) const {
+                                      const std::string& what,
+                                      const std::string& uv_attribute) const {
         const std::string where = fmt::format("{}: {} {}", name_, what, kDracoExtension);
         if (!ext.IsObject()) fail("{} is not an object", where);
         const tinygltf::Value& bv_value = ext.Get("bufferView");
@@ -287,7 +318,8 @@ class GltfReader {
             if (!attributes.Has(semantic)) {
                 if (it == prim.attributes.end()) return out;
                 const AccessorView v = view(it->second, type, what + " " + semantic);
-                if (std::string(semantic) != "TEXCOORD_0") require_float(v, what + " " + semantic);
+                if (!std::string_view(semantic).starts_with("TEXCOORD_"))
+                    require_float(v, what + " " + semantic);
                 if (v.count != points)
                     fail("{}: {} accessor has {} elements for {} Draco points", where, semantic,
                          v.count, points);
@@ -335,7 +367,7 @@ class GltfReader {
         TriangleMesh part;
         part.positions = read.template operator()<3>("POSITION", TINYGLTF_TYPE_VEC3);
         part.normals = read.template operator()<3>("NORMAL", TINYGLTF_TYPE_VEC3);
-        part.uvs = read.template operator()<2>("TEXCOORD_0", TINYGLTF_TYPE_VEC2);
+        part.uvs = read.template operator()<2>(uv_attribute.c_str(), TINYGLTF_TYPE_VEC2);
         part.triangles.reserve(draco_mesh->num_faces());
         for (draco::FaceIndex f(0); f < draco_mesh->num_faces(); ++f) {
             const draco::Mesh::Face& face = draco_mesh->face(f);
@@ -460,7 +492,9 @@ class GltfReader {
 
     const tinygltf::Model& model_;
     std::string name_;
-    TriangleMesh mesh_;
+    std::vector<int> uv_sets_;
+    bool merge_ = false;
+    std::vector<GltfScene::Part> parts_;
     std::vector<char> on_path_;  // per node: on the path of the current walk
 };
 
@@ -546,25 +580,25 @@ std::optional<std::string> strip_draco_indices(const std::string& file, bool bin
 
 }  // namespace
 
-TriangleMesh load_gltf(const std::filesystem::path& path) {
+namespace {
+
+std::string read_file(const std::filesystem::path& path) {
     const std::string name = path.string();
     if (const std::string problem = regular_file_problem(path); !problem.empty())
         fail("{}: the glTF file {}", name, problem);
-
-    std::string file;
-    {
-        std::ifstream in(path, std::ios::binary);
-        if (!in) fail("{}: cannot open glTF file", name);
-        file.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
-    }
-    return load_gltf_bytes(file, name, path.parent_path());
+    std::ifstream in(path, std::ios::binary);
+    if (!in) fail("{}: cannot open glTF file", name);
+    return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
 }
 
-TriangleMesh load_gltf_bytes(const std::string& file, const std::string& name,
-                             const std::filesystem::path& base_dir) {
+bool is_binary(const std::string& file) {
     // Binary glTF starts with the magic "glTF" (glTF 2.0 §4.4.3.1).
-    const bool binary = file.size() >= 4 && std::memcmp(file.data(), "glTF", 4) == 0;
+    return file.size() >= 4 && std::memcmp(file.data(), "glTF", 4) == 0;
+}
 
+tinygltf::Model parse_model(const std::string& file, const std::string& name,
+                            const std::filesystem::path& base_dir) {
+    const bool binary = is_binary(file);
     // tinygltf walks its JSON recursively (extras, extensions): a deep
     // nesting would overflow the stack, so it is refused before parsing.
     if (const size_t depth = json_nesting_depth(gltf_json_text(file, binary));
@@ -573,7 +607,7 @@ TriangleMesh load_gltf_bytes(const std::string& file, const std::string& name,
              depth, kMaxJsonNesting);
 
     tinygltf::TinyGLTF loader;
-    loader.SetImageLoader(skip_image, nullptr);
+    loader.SetImageLoader(keep_encoded_image, nullptr);
     tinygltf::Model model;
     std::string err, warn;
     const std::optional<std::string> rewritten = strip_draco_indices(file, binary);
@@ -592,24 +626,99 @@ TriangleMesh load_gltf_bytes(const std::string& file, const std::string& name,
         if (!extension_supported(ext))
             fail(
                 "{}: required glTF extension \"{}\" is not supported (supported: {}; material "
-                "and texture extensions are accepted and ignored)",
+                "and texture extensions are accepted, and those not read are named in a "
+                "warning)",
                 name, ext, kDracoExtension);
-    TriangleMesh mesh = GltfReader(model, name).read_scene();
-    // The file's materials are not read yet: the shape's own "material"
-    // shades every primitive. Said once per file, never dropped silently.
-    if (!model.materials.empty()) {
-        std::string names;
-        for (size_t i = 0; i < model.materials.size() && i < 4; ++i)
-            names += fmt::format("{}\"{}\"", i ? ", " : "", model.materials[i].name);
-        if (model.materials.size() > 4) names += ", ...";
-        fmt::print(stderr,
-                   "warning: {}: its {} material{} ({}) and {} texture{} are not read; the "
-                   "shape's \"material\" shades every primitive (textures: give them as material "
-                   "parameters, docs/SCENE_FORMAT.md \"Textures\")\n",
-                   name, model.materials.size(), model.materials.size() == 1 ? "" : "s", names,
-                   model.textures.size(), model.textures.size() == 1 ? "" : "s");
+    return model;
+}
+
+// How texture blocks name image i: its file (an external uri, resolved
+// against the glTF file's folder) or an in-memory name for images stored in
+// the file (a buffer view or a data uri).
+std::vector<std::string> image_names(const tinygltf::Model& model, const std::string& name,
+                                     const std::filesystem::path& base_dir) {
+    std::vector<std::string> names;
+    for (size_t i = 0; i < model.images.size(); ++i) {
+        const tinygltf::Image& image = model.images[i];
+        if (image.bufferView < 0 && !image.uri.empty() && !tinygltf::IsDataURI(image.uri))
+            names.push_back((base_dir / tinygltf::dlib::urldecode(image.uri)).string());
+        else
+            names.push_back(fmt::format("<{} image {}>", name, i));
     }
-    return mesh;
+    return names;
+}
+
+// The encoded bytes of an image stored in the file.
+std::string embedded_image_bytes(const tinygltf::Model& model, int index,
+                                 const std::string& image_name) {
+    const tinygltf::Image& image = model.images[static_cast<size_t>(index)];
+    if (image.bufferView < 0) {
+        if (image.image.empty()) fail("{}: the image holds no data", image_name);
+        return std::string(image.image.begin(), image.image.end());
+    }
+    if (image.bufferView >= static_cast<int>(model.bufferViews.size()))
+        fail("{}: bufferView {} out of range [0, {})", image_name, image.bufferView,
+             model.bufferViews.size());
+    const tinygltf::BufferView& bv = model.bufferViews[static_cast<size_t>(image.bufferView)];
+    if (bv.buffer < 0 || bv.buffer >= static_cast<int>(model.buffers.size()))
+        fail("{}: bufferView {} has no valid buffer", image_name, image.bufferView);
+    const std::vector<unsigned char>& data = model.buffers[static_cast<size_t>(bv.buffer)].data;
+    if (bv.byteOffset > data.size() || bv.byteLength > data.size() - bv.byteOffset)
+        fail("{}: bufferView {} reads past the end of its buffer", image_name, image.bufferView);
+    const auto* begin = reinterpret_cast<const char*>(data.data() + bv.byteOffset);
+    return std::string(begin, bv.byteLength);
+}
+
+GltfScene read_gltf(const std::string& file, const std::string& name,
+                    const std::filesystem::path& base_dir, bool merge) {
+    const tinygltf::Model model = parse_model(file, name, base_dir);
+    GltfScene scene;
+    if (merge) {
+        scene.parts = GltfReader(model, name, {}, true).read_scene();
+        return scene;
+    }
+    const std::vector<std::string> images = image_names(model, name, base_dir);
+    const nlohmann::json document = nlohmann::json::parse(gltf_json_text(file, is_binary(file)),
+                                                          nullptr, /*allow_exceptions=*/false);
+    std::vector<int> uv_sets;
+    for (size_t m = 0; m < model.materials.size(); ++m) {
+        scene.materials.push_back(translate_gltf_material(document, int(m), images, name));
+        uv_sets.push_back(scene.materials.back().uv_set);
+    }
+    scene.default_material = translate_gltf_material(document, -1, images, name);
+    scene.parts = GltfReader(model, name, std::move(uv_sets), false).read_scene();
+    for (const GltfScene::Part& part : scene.parts) {
+        if (part.material < 0) continue;
+        for (int image : scene.materials[static_cast<size_t>(part.material)].images) {
+            const std::string& image_name = images[static_cast<size_t>(image)];
+            if (!image_name.starts_with("<") || scene.images.contains(image_name)) continue;
+            scene.images.emplace(image_name,
+                                 std::make_shared<const TextureImage>(decode_texture_image(
+                                     embedded_image_bytes(model, image, image_name), image_name)));
+        }
+    }
+    return scene;
+}
+
+}  // namespace
+
+GltfScene load_gltf_scene(const std::filesystem::path& path) {
+    return read_gltf(read_file(path), path.string(), path.parent_path(), false);
+}
+
+GltfScene load_gltf_scene_bytes(const std::string& bytes, const std::string& name,
+                                const std::filesystem::path& base_dir) {
+    return read_gltf(bytes, name, base_dir, false);
+}
+
+TriangleMesh load_gltf(const std::filesystem::path& path) {
+    return load_gltf_bytes(read_file(path), path.string(), path.parent_path());
+}
+
+TriangleMesh load_gltf_bytes(const std::string& file, const std::string& name,
+                             const std::filesystem::path& base_dir) {
+    GltfScene scene = read_gltf(file, name, base_dir, true);
+    return std::move(scene.parts.front().mesh);
 }
 
 }  // namespace glintlab

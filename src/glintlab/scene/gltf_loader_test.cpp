@@ -13,6 +13,7 @@
 #include <draco/compression/encode.h>
 #include <draco/mesh/mesh.h>
 #include <draco/metadata/geometry_metadata.h>
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 #include <unistd.h>
 #include <glm/gtc/constants.hpp>
@@ -21,6 +22,7 @@
 #include <nlohmann/json.hpp>
 
 #include "glintlab/core/error.h"
+#include "glintlab/core/image.h"
 #include "glintlab/core/memory_limit.h"
 #include "glintlab/render/renderer.h"
 #include "glintlab/scene/draco_header.h"
@@ -230,28 +232,141 @@ TEST_F(MeshGltf, JsonWithDataUriAndTrsHierarchy) {
     }
 }
 
-// The file's materials and textures are not read yet (the shape's
-// "material" shades the mesh): a warning says so, naming them.
-TEST_F(MeshGltf, FileMaterialsAreNamedInAWarning) {
+// A 4x4 PNG: a colour checker in r and b, a ramp in g (codes, as data).
+std::vector<uint8_t> write_test_png(const fs::path& path) {
+    Image image(4, 4);
+    for (int y = 0; y < 4; ++y)
+        for (int x = 0; x < 4; ++x)
+            image.at(x, y) = glm::vec3((x + y) % 2 ? 0.8f : 0.1f, 0.1f + 0.2f * float(x),
+                                       (x + y) % 2 ? 0.0f : 1.0f);
+    write_png(image, path);
+    std::ifstream in(path, std::ios::binary);
+    return std::vector<uint8_t>(std::istreambuf_iterator<char>(in), {});
+}
+
+// Primitives split into one part per material; each part's uvs are the set
+// its material's textures read; images in data uris are decoded, those in
+// files named by path. A shape with its own "material" still gets one mesh
+// of every primitive.
+TEST_F(MeshGltf, PrimitivesSplitByMaterialWithTheirUvSetAndImages) {
     Asset a = quad_asset(kU16);
     add_hierarchy(a, /*child_as_matrix=*/false);
-    a.doc["materials"] = json::array(
-        {{{"name", "paint"}, {"pbrMetallicRoughness", {{"baseColorTexture", {{"index", 0}}}}}}});
-    a.doc["textures"] = json::array({{{"source", 0}}});
-    a.doc["images"] = json::array({{{"uri", "paint.png"}}});
+    json second = a.doc["meshes"][0]["primitives"][0];
+    std::vector<glm::vec2> uv1;
+    for (glm::vec3 p : kQuadPositions) uv1.emplace_back(2.0f * p.x, 3.0f * p.y);
+    second["attributes"]["TEXCOORD_1"] =
+        a.add_accessor(uv1.data(), uv1.size() * 8, kFloat, "VEC2", uv1.size());
+    second["material"] = 1;
     a.doc["meshes"][0]["primitives"][0]["material"] = 0;
-    testing::internal::CaptureStderr();
-    const TriangleMesh m = load_gltf(write_gltf("painted.gltf", a));
-    const std::string warning = testing::internal::GetCapturedStderr();
-    EXPECT_EQ(m.triangles.size(), 2u);
-    EXPECT_NE(warning.find("1 material (\"paint\") and 1 texture are not read"), std::string::npos)
-        << warning;
-    // Without materials: nothing said.
-    testing::internal::CaptureStderr();
-    Asset plain = quad_asset(kU16);
-    add_hierarchy(plain, /*child_as_matrix=*/false);
-    load_gltf(write_gltf("plain.gltf", plain));
-    EXPECT_EQ(testing::internal::GetCapturedStderr(), "");
+    a.doc["meshes"][0]["primitives"].push_back(second);
+    const std::vector<uint8_t> png = write_test_png(dir_ / "colour.png");
+    a.doc["materials"] = json::array(
+        {{{"name", "A"}, {"pbrMetallicRoughness", {{"baseColorTexture", {{"index", 0}}}}}},
+         {{"name", "B"},
+          {"pbrMetallicRoughness", {{"baseColorTexture", {{"index", 1}, {"texCoord", 1}}}}}}});
+    a.doc["textures"] = json::array({{{"source", 0}}, {{"source", 1}}});
+    a.doc["images"] =
+        json::array({{{"uri", "colour.png"}}, {{"uri", "data:image/png;base64," + base64(png)}}});
+    const fs::path path = write_gltf("two.gltf", a);
+    const GltfScene g = load_gltf_scene(path);
+    ASSERT_EQ(g.parts.size(), 2u);
+    ASSERT_EQ(g.materials.size(), 2u);
+    EXPECT_EQ(g.parts[0].material, 0);
+    EXPECT_EQ(g.parts[1].material, 1);
+    ASSERT_TRUE(g.parts[1].mesh.has_uvs());
+    for (size_t i = 0; i < kQuadPositions.size(); ++i) {
+        EXPECT_EQ(g.parts[0].mesh.uvs[i], glm::vec2(kQuadPositions[i]));
+        EXPECT_EQ(g.parts[1].mesh.uvs[i], uv1[i]);
+    }
+    EXPECT_EQ(g.materials[0].block["base_color"]["texture"], (dir_ / "colour.png").string());
+    const std::string embedded = fmt::format("<{} image 1>", path.string());
+    EXPECT_EQ(g.materials[1].block["base_color"]["texture"], embedded);
+    ASSERT_TRUE(g.images.contains(embedded));
+    EXPECT_EQ(g.images.at(embedded)->width, 4);
+    EXPECT_EQ(load_gltf(path).triangles.size(), 4u);
+}
+
+// The file's material renders exactly as the same material written in the
+// scene: the translation is the scene format's own reading.
+TEST_F(MeshGltf, FileMaterialsRenderAsTheSameMaterialWrittenInTheScene) {
+    write_test_png(dir_ / "colour.png");
+    Asset a = quad_asset(kU16);
+    a.doc["nodes"] = json::array({{{"mesh", 0}}});
+    a.doc["meshes"][0]["primitives"][0]["material"] = 0;
+    a.doc["materials"] = json::array(
+        {{{"name", "paint"},
+          {"pbrMetallicRoughness",
+           {{"baseColorFactor", {0.8, 0.6, 0.9, 1.0}},
+            {"baseColorTexture",
+             {{"index", 0}, {"extensions", {{"KHR_texture_transform", {{"scale", {2, 2}}}}}}}},
+            {"roughnessFactor", 0.8},
+            {"metallicRoughnessTexture", {{"index", 0}}}}}}});
+    a.doc["textures"] = json::array({{{"source", 0}}});
+    a.doc["images"] = json::array({{{"uri", "colour.png"}}});
+    write_gltf("paint.gltf", a);
+    const json written = {
+        {"name", "m"},
+        {"type", "metallic_roughness"},
+        {"base_color",
+         {{"texture", "colour.png"}, {"scale", {0.8, 0.6, 0.9}}, {"uv_transform", {{"scale", 2}}}}},
+        {"metallic", {{"texture", "colour.png"}, {"channel", "b"}}},
+        {"roughness", {{"texture", "colour.png"}, {"channel", "g"}, {"scale", 0.8}, {"power", 2}}}};
+    auto render = [&](bool file_material) {
+        json shape = {{"type", "gltf"}, {"file", "paint.gltf"}};
+        if (!file_material) shape["material"] = "m";
+        const json scene = {
+            {"film", {{"width", 24}, {"height", 24}}},
+            {"camera", {{"eye", {0.5, 0.5, 2}}, {"target", {0.5, 0.5, 0}}, {"fov_deg", 40}}},
+            {"render", {{"integrator", "path"}, {"spp", 2}, {"seed", 3}}},
+            {"materials", file_material ? json::array() : json::array({written})},
+            {"shapes", {shape}},
+            {"lights",
+             {{{"type", "directional"}, {"direction", {0.3, 0.2, 1}}, {"irradiance", 2}},
+              {{"type", "environment"}, {"radiance", 0.2}}}}};
+        return render_scene(parse_scene(scene, dir_ / "scene.json"), RenderOptions{1, true});
+    };
+    const Image from_file = render(true), from_scene = render(false);
+    double sum = 0.0;
+    for (size_t i = 0; i < from_file.pixels.size(); ++i) {
+        EXPECT_EQ(from_file.pixels[i], from_scene.pixels[i]) << i;
+        sum += double(from_file.pixels[i].x);
+    }
+    EXPECT_GT(sum, 0.0);
+}
+
+TEST_F(MeshGltf, MaterialOverridesNameTheFilesMaterials) {
+    Asset a = quad_asset(kU16);
+    a.doc["nodes"] = json::array({{{"mesh", 0}}});
+    a.doc["meshes"][0]["primitives"][0]["material"] = 0;
+    a.doc["materials"] = json::array({{{"name", "paint"}}});
+    write_gltf("paint.gltf", a);
+    auto error = [&](const json& shape) {
+        const json scene = {{"camera", {{"eye", {0, 0, 3}}, {"target", {0, 0, 0}}}},
+                            {"materials", {{{"name", "m"}, {"type", "diffuse"}}}},
+                            {"shapes", {shape}}};
+        try {
+            parse_scene(scene, dir_ / "scene.json");
+        } catch (const Error& e) {
+            return std::string(e.what());
+        }
+        return std::string();
+    };
+    const std::string unknown = error({{"type", "gltf"},
+                                       {"file", "paint.gltf"},
+                                       {"material_overrides", {{"Paint", {{"type", "diffuse"}}}}}});
+    EXPECT_NE(unknown.find("/shapes/0/material_overrides/Paint"), std::string::npos) << unknown;
+    EXPECT_NE(unknown.find("has no material named \"Paint\" (its materials: \"paint\")"),
+              std::string::npos)
+        << unknown;
+    const std::string both = error({{"type", "gltf"},
+                                    {"file", "paint.gltf"},
+                                    {"material", "m"},
+                                    {"material_overrides", {{"paint", {{"type", "diffuse"}}}}}});
+    EXPECT_NE(both.find("\"material\" replaces them all"), std::string::npos) << both;
+    const std::string bad = error({{"type", "gltf"},
+                                   {"file", "paint.gltf"},
+                                   {"material_overrides", {{"paint", {{"type", "velvet"}}}}}});
+    EXPECT_NE(bad.find("/shapes/0/material_overrides/paint/type"), std::string::npos) << bad;
 }
 
 TEST_F(MeshGltf, BinaryWithMatrixNode) {

@@ -14,6 +14,8 @@ const char* material_type_name(MaterialDesc::Type type) {
             return "dielectric";
         case MaterialDesc::Type::Plastic:
             return "plastic";
+        case MaterialDesc::Type::MetallicRoughness:
+            return "metallic_roughness";
         case MaterialDesc::Type::Glint:
             return "glint";
     }
@@ -26,8 +28,10 @@ std::string textured_keys(const MaterialDesc& m) {
         if (on) keys += keys.empty() ? key : std::string(", ") + key;
     };
     if (m.textures) {
-        add(m.textures->albedo != nullptr, "albedo");
+        add(m.textures->albedo != nullptr,
+            m.type == MaterialDesc::Type::MetallicRoughness ? "base_color" : "albedo");
         add(m.textures->alpha_x_sq || m.textures->alpha_y_sq, "roughness");
+        add(m.textures->metallic != nullptr, "metallic");
     }
     if (m.glint.textures) {
         const GlintTextures& t = *m.glint.textures;

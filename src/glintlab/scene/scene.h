@@ -21,20 +21,23 @@
 namespace glintlab {
 
 // The non-glint material parameters read from textures (scene/texture_reader.h):
-// albedo as linear RGB, the roughness as α². Null: the number.
+// albedo (or base colour) as linear RGB, the roughness as α², metallic as
+// itself. Null: the number.
 struct MaterialTextures {
     std::shared_ptr<const TextureInput> albedo;
     std::shared_ptr<const TextureInput> alpha_x_sq, alpha_y_sq;
+    std::shared_ptr<const TextureInput> metallic;
 };
 
 struct MaterialDesc {
-    enum class Type { Diffuse, Conductor, Dielectric, Plastic, Glint };
+    enum class Type { Diffuse, Conductor, Dielectric, Plastic, MetallicRoughness, Glint };
     std::string name;
     Type type = Type::Diffuse;
-    glm::vec3 albedo{0.5f};  // Diffuse, Plastic (diffuse part)
+    glm::vec3 albedo{0.5f};  // Diffuse, Plastic (diffuse part), MetallicRoughness (base colour)
+    float metallic = 1.0f;   // MetallicRoughness
     NdfType ndf = NdfType::GGX;
     float alpha_x = 0.2f, alpha_y = 0.2f;
-    glm::vec3 eta{1.5f};  // Conductor: complex IOR; Dielectric/Plastic: eta.x
+    glm::vec3 eta{1.5f};  // Conductor: complex IOR; Dielectric/Plastic/MetallicRoughness: eta.x
     glm::vec3 k{0.0f};
     GlintDesc glint;                                   // Glint
     std::shared_ptr<const MaterialTextures> textures;  // null: no textured parameter

@@ -4,8 +4,10 @@
 #include <fstream>
 #include <limits>
 #include <map>
+#include <optional>
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 #include <glm/gtc/constants.hpp>
 
 #include "glintlab/core/error.h"
@@ -196,8 +198,8 @@ MaterialDesc read_material(JsonObject& o, TextureFileCache& files) {
     MaterialTextures t;
     MaterialDesc m;
     m.name = o.required_string("name");
-    const std::string type =
-        o.required_string("type", {"diffuse", "conductor", "dielectric", "plastic", "glint"});
+    const std::string type = o.required_string(
+        "type", {"diffuse", "conductor", "dielectric", "plastic", "metallic_roughness", "glint"});
     if (type == "diffuse") {
         m.type = MaterialDesc::Type::Diffuse;
         m.albedo = read_colour_or_texture(o, "albedo", m.albedo, &t.albedo, files);
@@ -221,13 +223,27 @@ MaterialDesc read_material(JsonObject& o, TextureFileCache& files) {
         read_roughness_or_textures(o, 0.0, &m.alpha_x, &m.alpha_y, &t.alpha_x_sq, &t.alpha_y_sq,
                                    files);
         m.eta = glm::vec3(static_cast<float>(o.number("eta", 1.5, kEtaRange)));
+    } else if (type == "metallic_roughness") {
+        m.type = MaterialDesc::Type::MetallicRoughness;
+        m.albedo = read_colour_or_texture(o, "base_color", glm::vec3(1.0f), &t.albedo, files);
+        if (is_texture_form(o, "metallic")) {
+            TextureParameter p;  // min 0, max 1, filtered as itself (the lobes mix linearly)
+            t.metallic = read_texture_input(o, "metallic", p, files);
+        } else {
+            m.metallic = static_cast<float>(o.number("metallic", 1.0, 0.0, 1.0));
+        }
+        m.ndf = read_ndf(o, NdfType::GGX);
+        m.alpha_x = m.alpha_y = 1.0f;  // glTF's roughness factor 1
+        read_roughness_or_textures(o, 0.0, &m.alpha_x, &m.alpha_y, &t.alpha_x_sq, &t.alpha_y_sq,
+                                   files);
+        m.eta = glm::vec3(static_cast<float>(o.number("eta", 1.5, kEtaRange)));
     } else {
         m.type = MaterialDesc::Type::Glint;
         m.glint = read_glint(o, files);
     }
     if (o.has("normal_map")) m.normal_map = read_normal_map(o, "normal_map", files);
     o.finish();
-    if (t.albedo || t.alpha_x_sq || t.alpha_y_sq)
+    if (t.albedo || t.alpha_x_sq || t.alpha_y_sq || t.metallic)
         m.textures = std::make_shared<const MaterialTextures>(std::move(t));
     return m;
 }
@@ -275,6 +291,7 @@ void require_grid_memory(const JsonObject& o, const char* what, int a, int b, in
 struct LoadContext {
     std::map<std::string, int> material_index;
     Scene* scene;
+    TextureFileCache* texture_files;
 };
 
 TriangleMesh read_heightfield(JsonObject& o) {
@@ -339,18 +356,121 @@ UvProjection read_uv_projection(JsonObject& o) {
     return p;
 }
 
+// A mesh in world space with the checks and tangents its material needs.
+void finish_mesh(JsonObject& o, LoadContext& ctx, TriangleMesh& mesh, int material,
+                 const Transform& transform, const std::optional<UvProjection>& uv,
+                 const std::string& where) {
+    if (uv) project_uvs(mesh, *uv);
+    transform_mesh(mesh, transform);
+    mesh.validate(where);
+    const MaterialDesc& m = ctx.scene->materials[static_cast<size_t>(material)];
+    if (m.needs_uv() && !mesh.has_uvs())
+        o.error(o.has("material") ? "material" : "file",
+                fmt::format("material \"{}\" {} and needs a uv parameterization, but this mesh "
+                            "has no uvs (give it one with \"uv\": {{\"projection\": ...}})",
+                            m.name,
+                            m.type == MaterialDesc::Type::Glint
+                                ? "is a glint material"
+                                : fmt::format("reads {} from textures", textured_keys(m))));
+    if (m.normal_map) {
+        const size_t fixed = generate_vertex_tangents(mesh);
+        if (fixed > 0)
+            fmt::print(stderr,
+                       "warning: {}: {} vertices have degenerate uvs (no direction of u): "
+                       "their normal map's tangent is an arbitrary one\n",
+                       where, fixed);
+    }
+}
+
+// A glTF shape without "material": one shape per material its primitives
+// use, each shaded by the file's material (docs/SCENE_FORMAT.md, "glTF
+// materials") or by the shape's "material_overrides" entry for its name.
+void read_gltf_shape_with_file_materials(JsonObject& o, LoadContext& ctx, const Shape& base,
+                                         const Transform& transform,
+                                         const std::optional<UvProjection>& uv) {
+    const std::filesystem::path path = o.file_path("file");
+    GltfScene gltf = load_gltf_scene(path);
+    for (auto& [name, image] : gltf.images) ctx.texture_files->emplace(name, image);
+    std::map<std::string, const nlohmann::json*> overrides;
+    const nlohmann::json* raw_overrides =
+        o.has("material_overrides") ? o.raw("material_overrides") : nullptr;
+    if (raw_overrides && !raw_overrides->is_object())
+        o.error("material_overrides",
+                "expected an object {\"FILE MATERIAL NAME\": {...a material...}}");
+    std::optional<JsonObject> override_block;
+    if (raw_overrides) {
+        override_block.emplace(*raw_overrides, o.path() + "/material_overrides", o.file());
+        for (const auto& [name, value] : raw_overrides->items()) {
+            bool found = false;
+            for (const GltfMaterial& m : gltf.materials) found = found || m.name == name;
+            if (!found) {
+                std::string names;
+                for (const GltfMaterial& m : gltf.materials)
+                    names += fmt::format("{}\"{}\"", names.empty() ? "" : ", ", m.name);
+                override_block->error(
+                    name, fmt::format("{} has no material named \"{}\" (its materials: {})",
+                                      path.string(), name, names.empty() ? "none" : names));
+            }
+            override_block->ignore(name);
+            overrides[name] = &value;
+        }
+        override_block->finish();
+    }
+    for (GltfScene::Part& part : gltf.parts) {
+        const GltfMaterial& file_material = part.material >= 0
+                                                ? gltf.materials[static_cast<size_t>(part.material)]
+                                                : gltf.default_material;
+        std::vector<std::string> notes = file_material.unread;
+        nlohmann::json block = file_material.block;
+        std::string path_in_json =
+            fmt::format("{} material \"{}\"", path.string(), file_material.name);
+        std::string json_file = path.string();
+        if (const auto it = overrides.find(file_material.name); it != overrides.end()) {
+            block = apply_material_override(file_material, *it->second, &notes);
+            path_in_json = fmt::format("{}/material_overrides/{}", o.path(), file_material.name);
+            json_file = o.file();
+        }
+        if (!block.is_object()) fail("{}: {}: expected a material object", json_file, path_in_json);
+        block["name"] = fmt::format("{}:{}", base.name, file_material.name);
+        if (!notes.empty())
+            fmt::print(stderr, "warning: {}: material \"{}\": not read: {}\n", path.string(),
+                       file_material.name, fmt::join(notes, "; "));
+        JsonObject material_object(block, path_in_json, json_file);
+        ctx.scene->materials.push_back(read_material(material_object, *ctx.texture_files));
+        Shape shape = base;
+        shape.name = ctx.scene->materials.back().name;
+        shape.material = static_cast<int>(ctx.scene->materials.size()) - 1;
+        const std::string where = fmt::format("{}: {} ({})", o.file(), o.path(), shape.name);
+        finish_mesh(o, ctx, part.mesh, shape.material, transform, uv, where);
+        shape.geometry = std::move(part.mesh);
+        ctx.scene->shapes.push_back(std::move(shape));
+    }
+}
+
 void read_shape(JsonObject& o, LoadContext& ctx) {
     Shape shape;
     const std::string type = o.required_string(
         "type", {"quad", "sphere", "torus", "head", "heightfield", "obj", "gltf"});
     shape.name = o.string("name", fmt::format("{}", o.path()));
+    const Transform transform = read_transform(o);
+    if (type == "gltf" && !o.has("material")) {
+        std::optional<UvProjection> uv;
+        if (auto block = o.object("uv")) uv = read_uv_projection(*block);
+        read_gltf_shape_with_file_materials(o, ctx, shape, transform, uv);
+        o.finish();
+        return;
+    }
+    if (o.has("material_overrides"))
+        o.error("material_overrides",
+                type == "gltf" ? "overrides change a glTF file's own materials; this shape's "
+                                 "\"material\" replaces them all (leave \"material\" out)"
+                               : "only glTF shapes have materials of their own to override");
     const std::string material = o.required_string("material");
     const auto it = ctx.material_index.find(material);
     if (it == ctx.material_index.end())
         o.error("material",
                 fmt::format("unknown material \"{}\" (define it under /materials)", material));
     shape.material = it->second;
-    const Transform transform = read_transform(o);
     const std::string where = fmt::format("{}: {}", o.file(), o.path());
 
     if (type == "sphere") {
@@ -404,26 +524,9 @@ void read_shape(JsonObject& o, LoadContext& ctx) {
         } else {
             mesh = load_gltf(o.file_path("file"));
         }
-        if (auto uv = o.object("uv")) project_uvs(mesh, read_uv_projection(*uv));
-        transform_mesh(mesh, transform);
-        mesh.validate(where);
-        if (const MaterialDesc& m = ctx.scene->materials[shape.material];
-            m.needs_uv() && !mesh.has_uvs())
-            o.error("material",
-                    fmt::format("material \"{}\" {} and needs a uv parameterization, but this mesh "
-                                "has no uvs (give it one with \"uv\": {{\"projection\": ...}})",
-                                material,
-                                m.type == MaterialDesc::Type::Glint
-                                    ? "is a glint material"
-                                    : fmt::format("reads {} from textures", textured_keys(m))));
-        if (ctx.scene->materials[shape.material].normal_map) {
-            const size_t fixed = generate_vertex_tangents(mesh);
-            if (fixed > 0)
-                fmt::print(stderr,
-                           "warning: {}: {} vertices have degenerate uvs (no direction of u): "
-                           "their normal map's tangent is an arbitrary one\n",
-                           where, fixed);
-        }
+        std::optional<UvProjection> uv;
+        if (auto block = o.object("uv")) uv = read_uv_projection(*block);
+        finish_mesh(o, ctx, mesh, shape.material, transform, uv, where);
         shape.geometry = std::move(mesh);
     }
     o.finish();
@@ -584,8 +687,8 @@ Scene parse_scene(const nlohmann::json& document, const std::filesystem::path& f
         scene.render.seed = static_cast<uint64_t>(render->number("seed", 0.0, 0.0, 4294967295.0));
         render->finish();
     }
-    LoadContext ctx{{}, &scene};
     TextureFileCache texture_files = std::move(arrays);
+    LoadContext ctx{{}, &scene, &texture_files};
     for (JsonObject& m : root.object_array("materials")) {
         MaterialDesc desc = read_material(m, texture_files);
         if (ctx.material_index.contains(desc.name))

@@ -44,17 +44,18 @@ TextureUvTransform read_uv_transform(JsonObject& parent) {
 }
 
 TextureSource read_texture_source(JsonObject& b, TextureFileCache& files) {
-    // A texture handed over in memory (the Python module's NumPy arrays,
-    // "<array N>") or a file.
+    // An image handed over in memory (the Python module's NumPy arrays,
+    // "<array N>"; a glTF file's embedded images, "<file.glb image N>") or a file.
     TextureSource source;
     if (const nlohmann::json* v = b.has("texture") ? b.raw("texture") : nullptr;
-        v && v->is_string() && v->get<std::string>().starts_with(kArrayPrefix)) {
+        v && v->is_string() && v->get<std::string>().starts_with(kInMemoryPrefix)) {
         source.file = v->get<std::string>();
         const auto it = files.find(source.file);
         if (it == files.end())
-            b.error("texture", fmt::format("{} names no array handed to the loader (arrays come "
-                                           "from the Python module's scene dicts)",
-                                           source.file.string()));
+            b.error("texture",
+                    fmt::format("{} names no image handed to the loader (names in <...> are "
+                                "the Python module's arrays and glTF files' embedded images)",
+                                source.file.string()));
         source.image = it->second;
     } else {
         source.file = b.file_path("texture");
@@ -104,8 +105,21 @@ std::shared_ptr<const TextureInput> read_texture_block(JsonObject& b, const Text
                                 "of PNG and JPEG files only",
                                 file.string()));
     }
-    const double scale = b.number("scale", 1.0, -1e6, 1e6);
+    // A colour's scale may be one factor a channel (glTF's baseColorFactor).
+    glm::dvec3 scale(1.0);
+    if (b.has("scale") && b.raw("scale")->is_array()) {
+        if (!p.colour)
+            b.error("scale",
+                    "one factor a channel needs a colour parameter; this one takes a "
+                    "single value: give one number");
+        scale = glm::dvec3(b.vec3("scale", glm::vec3(1.0f), -1e6f, 1e6f));
+    } else {
+        scale = glm::dvec3(b.number("scale", 1.0, -1e6, 1e6));
+    }
     const double offset = b.number("offset", 0.0, -1e6, 1e6);
+    // value = (offset + scale x texel)^power: 2 turns glTF's perceptual
+    // roughness maps into α.
+    const int power = b.integer("power", 1, 1, 2);
     const TextureWrap wrap = read_texture_wrap(b);
     auto input = std::make_shared<TextureInput>();
     input->transform = read_uv_transform(b);
@@ -132,18 +146,19 @@ std::shared_ptr<const TextureInput> read_texture_block(JsonObject& b, const Text
             values[0] = decode(t[channel == "r" ? 0 : channel == "g" ? 1 : 2]);
         }
         for (int c = 0; c < out_channels; ++c) {
-            double v = offset + scale * double(values[c]);
+            const double linear = offset + scale[c] * double(values[c]);
+            double v = power == 2 ? linear * linear : linear;
             if (!(v >= p.min && v <= p.max)) {
                 if (p.clamp_below && v < p.min) {
                     v = p.min;
                     ++clamped;
                 } else {
                     fail(
-                        "{}: texel (x={}, y={}) maps to {:g} = {:g} + {:g} x {:g}, outside the "
-                        "parameter's range [{:g}, {:g}] (set \"scale\" and \"offset\" so that "
-                        "value = offset + scale x texel stays inside)",
-                        where, i % size_t(out_width), i / size_t(out_width), v, offset, scale,
-                        double(values[c]), p.min, p.max);
+                        "{}: texel (x={}, y={}) maps to {:g} = ({:g} + {:g} x {:g})^{}, outside "
+                        "the parameter's range [{:g}, {:g}] (set \"scale\" and \"offset\" so "
+                        "that value = (offset + scale x texel)^power stays inside)",
+                        where, i % size_t(out_width), i / size_t(out_width), v, offset, scale[c],
+                        double(values[c]), power, p.min, p.max);
                 }
             }
             switch (p.filtered) {

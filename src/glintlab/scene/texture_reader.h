@@ -34,6 +34,8 @@ struct TextureParameter {
 // "texture" value names in place of a file.
 using TextureFileCache = std::map<std::filesystem::path, std::shared_ptr<const TextureImage>>;
 inline constexpr std::string_view kArrayPrefix = "<array ";
+// Every in-memory name starts with it (arrays; a glTF file's embedded images).
+inline constexpr std::string_view kInMemoryPrefix = "<";
 
 // The image a texture block's "texture" names: a file (decoded once) or an
 // array handed over in memory.

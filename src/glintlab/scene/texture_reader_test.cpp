@@ -151,6 +151,37 @@ TEST(TextureReader, ErrorsNameTheFileTheJsonPathAndTheRange) {
     }
 }
 
+// glTF's maps: a perceptual roughness r is α = r² ("power": 2), a base
+// colour factor scales each channel.
+TEST(TextureReader, PowerSquaresTheValueAndAColourScaleHasOneFactorAChannel) {
+    const TextureScene s;
+    const Scene conductor =
+        s.load({{"type", "conductor"},
+                {"roughness", {{"texture", "grey.png"}, {"power", 2}, {"scale", 0.5}}}});
+    const double r = 0.5 * 137.0 / 255.0;  // linear data: the code itself
+    EXPECT_NEAR(conductor.materials[0].textures->alpha_x_sq->at({0.5f, 0.5f}).x, std::pow(r, 4.0),
+                1e-6);  // stored as α² = r⁴
+    const Scene paint =
+        s.load({{"type", "metallic_roughness"},
+                {"base_color", {{"texture", "colour.png"}, {"scale", {1.0, 0.5, 0.0}}}}});
+    const glm::vec3 c = paint.materials[0].textures->albedo->at({0.5f, 0.5f});
+    // sRGB codes of (0.25, 0.5, 0.75), decoded: within half a code's step.
+    EXPECT_NEAR(c.x, 0.25f, 2e-3f);
+    EXPECT_NEAR(c.y, 0.25f, 2e-3f);
+    EXPECT_EQ(c.z, 0.0f);
+    const std::string scalar = s.error(
+        {{"type", "conductor"}, {"roughness", {{"texture", "grey.png"}, {"scale", {1, 1, 1}}}}});
+    EXPECT_NE(scalar.find("/materials/0/roughness/scale"), std::string::npos) << scalar;
+    EXPECT_NE(scalar.find("one factor a channel needs a colour parameter"), std::string::npos);
+    const std::string cube =
+        s.error({{"type", "conductor"}, {"roughness", {{"texture", "grey.png"}, {"power", 3}}}});
+    EXPECT_NE(cube.find("/materials/0/roughness/power"), std::string::npos) << cube;
+    const std::string range =
+        s.error({{"type", "conductor"},
+                 {"roughness", {{"texture", "grey.png"}, {"power", 2}, {"scale", 4.0}}}});
+    EXPECT_NE(range.find("^2, outside the parameter's range [0, 1]"), std::string::npos) << range;
+}
+
 TEST(TextureReader, RoughnessBelowTheRangeIsClampedWithAWarning) {
     const TextureScene t;
     Image black(2, 2, glm::vec3(0.0f));

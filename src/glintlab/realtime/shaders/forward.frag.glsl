@@ -221,6 +221,7 @@ SurfaceMaterial surface_material() {
     SurfaceMaterial s;
     s.type = u_material_type;
     s.albedo = u_albedo;
+    s.metallic = u_metallic;
     s.ndf = u_ndf;
     s.alpha_x = u_alpha.x;
     s.alpha_y = u_alpha.y;
@@ -251,6 +252,7 @@ vec3 environment_lighting(SurfaceMaterial mat, vec3 wo, vec3 t, vec3 b, vec3 n, 
     int ndf = glint ? u_glint_ndf : u_ndf;
     vec2 alpha = glint ? u_glint_alpha : u_alpha;
     bool has_diffuse = u_material_type == 0 || u_material_type == 3 ||
+                       (u_material_type == 5 && mat.metallic < 1.0f) ||
                        (glint && glint_has_base(mat.glint));
     bool has_lobe = u_material_type != 0;
     bool mirror = max(alpha.x, alpha.y) < 1e-3f;
@@ -260,6 +262,8 @@ vec3 environment_lighting(SurfaceMaterial mat, vec3 wo, vec3 t, vec3 b, vec3 n, 
         vec3 f = u_material_type == 1 ? F_Conductor(wo.z, u_eta, u_k)
                                       : vec3(F_Dielectric(wo.z, glint ? u_fresnel_eta.x : u_eta.x));
         if (glint) f = u_glint_color * glint_fresnel(mat.glint, wo.z);
+        if (u_material_type == 5)
+            f = mix(vec3(F_Dielectric(wo.z, u_eta.x)), F_Schlick(mat.albedo, wo.z), mat.metallic);
         sum += f * environment_radiance(wi.x * t + wi.y * b + wi.z * n, 0.0f);
         if (!has_diffuse) return sum;
     }

@@ -18,18 +18,19 @@
 #include "glintlab/glints/glint_uniforms.glsl"
 #include "glintlab/realtime/shaders/material_uniforms.glsl"
 
-// Slots (gpu_renderer.cpp set_material_textures), texture units 10-14 (forward_shaders.h).
+// Slots (gpu_renderer.cpp set_material_textures), texture units 10-15 (forward_shaders.h).
 const int MATERIAL_TEXTURE_DENSITY = 0;  // glint: e^{ln N}
 const int MATERIAL_TEXTURE_ALPHA_X = 1;  // α² along u (glint or conductor/dielectric/plastic)
 const int MATERIAL_TEXTURE_ALPHA_Y = 2;  // α² along v
 const int MATERIAL_TEXTURE_COLOR = 3;    // glint colour, or diffuse/plastic albedo
 const int MATERIAL_TEXTURE_BASE = 4;     // glint base_albedo
-layout(binding = 10) uniform sampler2D u_material_texture[5];
+const int MATERIAL_TEXTURE_METALLIC = 5; // metallic-roughness metallic
+layout(binding = 10) uniform sampler2D u_material_texture[6];
 uniform int u_material_texture_mask;  // bit i: slot i is textured
 // uv' = linear · uv + offset (KHR_texture_transform), level 0's size in texels.
-uniform mat2 u_material_texture_linear[5];
-uniform vec2 u_material_texture_offset[5];
-uniform vec2 u_material_texture_size[5];
+uniform mat2 u_material_texture_linear[6];
+uniform vec2 u_material_texture_offset[6];
+uniform vec2 u_material_texture_size[6];
 
 const int kMaterialTextureMaxAnisotropy = 16;
 
@@ -52,6 +53,7 @@ vec3 material_texture_filtered(sampler2D tex, vec2 size, mat2 linear, vec2 offse
 #define MATERIAL_TEXTURE(slot, fp) material_texture_filtered(u_material_texture[slot], u_material_texture_size[slot], u_material_texture_linear[slot], u_material_texture_offset[slot], fp)
 
 vec3 g_albedo;
+float g_metallic;
 vec2 g_alpha;
 vec3 g_glint_color;
 vec3 g_glint_base_albedo;
@@ -59,6 +61,7 @@ vec3 g_glint_base_albedo;
 // The per-fragment values every later read of the material's names sees.
 void resolve_material_textures(Footprint fp) {
     g_albedo = u_albedo;
+    g_metallic = u_metallic;
     g_alpha = u_alpha;
     g_glint_color = u_glint_color;
     g_glint_base_albedo = u_glint_base_albedo;
@@ -91,9 +94,12 @@ void resolve_material_textures(Footprint fp) {
     }
     if ((mask & (1 << MATERIAL_TEXTURE_BASE)) != 0)
         g_glint_base_albedo = MATERIAL_TEXTURE(MATERIAL_TEXTURE_BASE, fp);
+    if ((mask & (1 << MATERIAL_TEXTURE_METALLIC)) != 0)
+        g_metallic = clamp(MATERIAL_TEXTURE(MATERIAL_TEXTURE_METALLIC, fp).x, 0.0f, 1.0f);
 }
 
 #define u_albedo g_albedo
+#define u_metallic g_metallic
 #define u_alpha g_alpha
 #define u_glint_color g_glint_color
 #define u_glint_base_albedo g_glint_base_albedo

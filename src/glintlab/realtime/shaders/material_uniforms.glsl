@@ -5,7 +5,8 @@
 #define GLINTLAB_REALTIME_MATERIAL_UNIFORMS_GLSL
 
 uniform int u_material_type;  // GpuMaterialType
-uniform vec3 u_albedo;        // diffuse, plastic
+uniform vec3 u_albedo;        // diffuse, plastic, metallic-roughness (base colour)
+uniform float u_metallic;     // metallic-roughness
 uniform int u_ndf;            // conductor, dielectric, plastic
 uniform vec2 u_alpha;
 uniform vec3 u_eta;
