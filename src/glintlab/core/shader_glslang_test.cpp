@@ -74,11 +74,12 @@ std::vector<std::string> glue_files() {
 // light counts and sample counts, then the glue of one model. Every glue with
 // no lights and with every light kind (sphere and cone lights included: the
 // glue's GLINTLAB_GLINT_SHADES_AREA_LIGHTS branches); with every light kind
-// also the textured-material variant (GLINTLAB_MATERIAL_TEXTURES).
+// also the textured-material variant (GLINTLAB_MATERIAL_TEXTURES) and the
+// normal-mapped one (GLINTLAB_NORMAL_MAP with it).
 std::vector<std::string> forward_prefixes() {
     std::vector<std::string> out;
     for (const std::string& glue : glue_files())
-        for (const int lights : {0, 1, 2}) {
+        for (const int lights : {0, 1, 2, 3}) {
             const int points = lights > 0 ? 2 : 0, directionals = lights > 0 ? 1 : 0;
             const int environment = lights > 0 ? 1 : 0;
             out.push_back(fmt::format(
@@ -87,7 +88,11 @@ std::vector<std::string> forward_prefixes() {
                 "#define GLINTLAB_ENV_DIFFUSE_SAMPLES 4\n#define GLINTLAB_ENV_SUN_SAMPLES 4\n"
                 "{}#include \"{}\"\n",
                 points, directionals, environment,
-                lights == 2 ? "#define GLINTLAB_MATERIAL_TEXTURES 1\n" : "", glue));
+                lights == 2 ? "#define GLINTLAB_MATERIAL_TEXTURES 1\n"
+                : lights == 3
+                    ? "#define GLINTLAB_MATERIAL_TEXTURES 1\n#define GLINTLAB_NORMAL_MAP 1\n"
+                    : "",
+                glue));
         }
     return out;
 }

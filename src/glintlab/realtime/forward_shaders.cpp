@@ -12,10 +12,10 @@ std::string ProgramKey::name() const {
     if (const GpuModelHooks* hooks = find_gpu_model_hooks(model))
         for (size_t i = 0; i < hooks->options.size(); ++i)
             if ((model_options >> i) & 1u) options += fmt::format(" ({})", hooks->options[i].name);
-    return fmt::format("forward[{}{}, {} point, {} directional, {}{}]", info ? info->name : "?",
-                       options, point_lights, directional_lights,
-                       environment ? "environment" : "no environment",
-                       material_textures ? ", textured material" : "");
+    return fmt::format(
+        "forward[{}{}, {} point, {} directional, {}{}{}]", info ? info->name : "?", options,
+        point_lights, directional_lights, environment ? "environment" : "no environment",
+        material_textures ? ", textured material" : "", normal_map ? ", normal map" : "");
 }
 
 AssembledShader shadow_vertex_shader() {
@@ -37,7 +37,8 @@ AssembledShader forward_fragment_shader(const ProgramKey& key) {
         "#define GLINTLAB_ENV_DIFFUSE_SAMPLES {}\n#define GLINTLAB_ENV_SUN_SAMPLES {}\n",
         key.point_lights, key.directional_lights, key.environment ? 1 : 0,
         kEnvironmentSpecularSamples, kEnvironmentDiffuseSamples, kEnvironmentSunSamples);
-    if (key.material_textures) text += "#define GLINTLAB_MATERIAL_TEXTURES 1\n";
+    if (key.material_textures || key.normal_map) text += "#define GLINTLAB_MATERIAL_TEXTURES 1\n";
+    if (key.normal_map) text += "#define GLINTLAB_NORMAL_MAP 1\n";
     text += glint_model_glsl(key.model, key.model_options);
     text += "#include \"glintlab/realtime/shaders/forward.frag.glsl\"\n";
     return assemble_shader(text, true);

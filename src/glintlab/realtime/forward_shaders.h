@@ -23,6 +23,9 @@ struct ProgramKey {
     unsigned model_options = 0;
     // The material reads parameters from textures (shaders/material_textures.glsl).
     bool material_textures = false;
+    // The material has a normal map (shaders/normal_map.glsl; implies
+    // material_textures: the map widens the per-fragment α).
+    bool normal_map = false;
     auto operator<=>(const ProgramKey&) const = default;
     std::string name() const;  // "forward[deliot2023, 1 point, 0 directional, no environment]"
 };
@@ -38,6 +41,8 @@ inline constexpr int kEnvironmentResidualUnit = 3;  // the map without its sun (
 // (shaders/material_textures.glsl MATERIAL_TEXTURE_*).
 inline constexpr int kMaterialTextureUnit = 10;  // after the models' units 4-9 (gpu_model_hooks.h)
 inline constexpr int kMaterialTextureSlots = 6;
+// A normal map's slopes and moments (shaders/normal_map.glsl): units 16, 17.
+inline constexpr int kNormalMapUnit = kMaterialTextureUnit + kMaterialTextureSlots;
 
 // Environment lighting (Krivanek & Colbert 2008, filtered importance
 // sampling): a fixed Hammersley set of samples per pixel, the same for every

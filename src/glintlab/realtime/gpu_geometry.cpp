@@ -55,7 +55,13 @@ GpuMeshData gpu_mesh_data(const Shape& shape, int segments) {
             const float st = std::sin(theta);
             const glm::vec3 dpdphi =
                 s->radius * glm::vec3(-st * std::sin(phi), 0.0f, st * std::cos(phi));
-            v.dpdu = s->rotation * (glm::two_pi<float>() * dpdphi);
+            const glm::vec3 dpdu = s->rotation * (glm::two_pi<float>() * dpdphi);
+            // The normal map's bitangent sign (render/surface_bsdf.cpp
+            // local_bump): +1 where n × dp/du points against dp/dv.
+            const glm::vec3 dpdtheta = s->radius * glm::vec3(std::cos(theta) * std::cos(phi), -st,
+                                                             std::cos(theta) * std::sin(phi));
+            const float side = glm::dot(glm::cross(v.normal, dpdu), s->rotation * dpdtheta);
+            v.dpdu = glm::vec4(dpdu, side <= 0.0f ? 1.0f : -1.0f);
         }
         out.indices.reserve(m.triangles.size() * 3);
         for (const glm::uvec3& t : m.triangles)
@@ -70,6 +76,7 @@ GpuMeshData gpu_mesh_data(const Shape& shape, int segments) {
         out.vertices[i].position = m.positions[i];
         if (m.has_normals()) out.vertices[i].normal = m.normals[i];
         if (m.has_uvs()) out.vertices[i].uv = m.uvs[i];
+        if (!m.tangents.empty()) out.vertices[i].dpdu = m.tangents[i];
     }
     out.indices.reserve(m.triangles.size() * 3);
     out.triangles.resize(m.triangles.size());

@@ -16,9 +16,12 @@ struct GpuVertex {
     glm::vec3 position{0.0f};
     glm::vec3 normal{0.0f};
     glm::vec2 uv{0.0f};
-    glm::vec3 dpdu{0.0f};  // spheres only (analytic); meshes use GpuTriangleFrame
+    // Spheres: the analytic dp/du. Meshes with vertex tangents (normal-mapped
+    // materials, scene/mesh_tangents.h): the tangent. Otherwise unused
+    // (meshes use GpuTriangleFrame). w: glTF's bitangent sign, 0 for none.
+    glm::vec4 dpdu{0.0f};
 };
-static_assert(sizeof(GpuVertex) == 11 * sizeof(float));
+static_assert(sizeof(GpuVertex) == 12 * sizeof(float));
 
 // std430 layout of the shader's TriangleFrame.
 struct GpuTriangleFrame {

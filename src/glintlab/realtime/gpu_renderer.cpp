@@ -54,7 +54,7 @@ GpuShape upload_shape(const Shape& shape, int sphere_segments) {
     glVertexArrayElementBuffer(vao, g.indices.get());
     const GLuint offsets[4] = {offsetof(GpuVertex, position), offsetof(GpuVertex, normal),
                                offsetof(GpuVertex, uv), offsetof(GpuVertex, dpdu)};
-    const GLint sizes[4] = {3, 3, 2, 3};
+    const GLint sizes[4] = {3, 3, 2, 4};
     for (GLuint a = 0; a < 4; ++a) {
         glEnableVertexArrayAttrib(vao, a);
         glVertexArrayAttribFormat(vao, a, sizes[a], GL_FLOAT, GL_FALSE, offsets[a]);
@@ -81,6 +81,7 @@ gl::ProgramKey program_key(const Scene& scene, const Shape& shape,
         const MaterialDesc& m = scene.materials[static_cast<size_t>(shape.material)];
         if (m.type == MaterialDesc::Type::Glint) key.model = m.glint.model_id;
         key.material_textures = m.textures != nullptr || m.glint.textures != nullptr;
+        key.normal_map = m.normal_map != nullptr;
     }
     const auto it = model_options.find(key.model);
     const GpuModelHooks* hooks = find_gpu_model_hooks(key.model);
@@ -477,6 +478,30 @@ struct GpuRenderer::Impl {
                             glm::value_ptr(offset[0]));
         glProgramUniform2fv(p, loc("u_material_texture_size"), gl::kMaterialTextureSlots,
                             glm::value_ptr(size[0]));
+        if (const NormalMap* map = m.normal_map.get()) {
+            // shaders/normal_map.glsl: slopes and moments share the map's
+            // transform and size.
+            const TextureInput& slopes = *map->slopes;
+            glBindTextureUnit(gl::kNormalMapUnit, material_texture(slopes.texture));
+            glBindTextureUnit(gl::kNormalMapUnit + 1, material_texture(map->moments->texture));
+            const glm::mat2 map_linear(slopes.transform.apply_vector({1.0f, 0.0f}),
+                                       slopes.transform.apply_vector({0.0f, 1.0f}));
+            glProgramUniformMatrix2fv(p, loc("u_normal_map_linear"), 1, GL_FALSE,
+                                      glm::value_ptr(map_linear));
+            glProgramUniform2fv(p, loc("u_normal_map_offset"), 1,
+                                glm::value_ptr(slopes.transform.offset));
+            glProgramUniform2f(p, loc("u_normal_map_size"), float(slopes.texture->width()),
+                               float(slopes.texture->height()));
+            glProgramUniform1i(p, loc("u_normal_map_filtering"),
+                               map->filtering == NormalMap::Filtering::Lean ? 0 : 1);
+            // Models whose tables hold one α take the mean normal only
+            // (glint_model_descriptor.h textured_roughness).
+            glProgramUniform1i(p, loc("u_normal_map_widens_glint"),
+                               m.type == MaterialDesc::Type::Glint &&
+                                       glint_model(m.glint.model_id).textured_roughness
+                                   ? 1
+                                   : 0);
+        }
     }
 
     // A material texture's GL texture, uploaded on first use with the CPU's
@@ -583,20 +608,24 @@ gl::Texture upload_latlong(const Image& image) {
 
 // What the renderer cannot draw is said first, before any OpenGL call (the
 // renderer's state is built with the context current).
-std::unique_ptr<GpuRenderer::Impl> GpuRenderer::make_impl(const Scene& scene) {
-    for (const MaterialDesc& m : scene.materials)
-        if (m.normal_map)
-            fail(
-                "{}: material \"{}\" has a normal map: normal maps render on the CPU for now "
-                "(glintlab render without --gpu, compare, Python); the OpenGL renderer, the "
-                "viewer, export and the web page do not read them yet (docs/MODELS.md, \"Normal "
-                "maps\")",
-                scene.file.string(), m.name);
+std::unique_ptr<GpuRenderer::Impl> GpuRenderer::make_impl(const Scene&) {
     return std::make_unique<Impl>();
 }
 
 GpuRenderer::GpuRenderer(const Scene& scene) : impl_(make_impl(scene)) {
     require_gl45("OpenGL renderer");
+    for (const MaterialDesc& m : scene.materials) {
+        if (!m.normal_map) continue;
+        GLint units = 0;
+        glGetIntegerv(GL_MAX_TEXTURE_IMAGE_UNITS, &units);
+        if (units < gl::kNormalMapUnit + 2)
+            fail(
+                "{}: material \"{}\" has a normal map: the OpenGL renderer reads it on texture "
+                "units {} and {}, and this driver has {} fragment texture units "
+                "(GL_MAX_TEXTURE_IMAGE_UNITS); render it on the CPU (without --gpu)",
+                scene.file.string(), m.name, gl::kNormalMapUnit, gl::kNormalMapUnit + 1, units);
+        break;
+    }
     Impl& r = *impl_;
     const int segments = sphere_segments(scene);
     for (const Shape& shape : scene.shapes) r.shapes.push_back(upload_shape(shape, segments));

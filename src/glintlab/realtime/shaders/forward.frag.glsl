@@ -24,7 +24,7 @@
 in vec3 v_position;
 in vec3 v_normal;
 in vec2 v_uv;
-in vec3 v_dpdu;
+in vec4 v_dpdu;
 out vec4 o_radiance;
 // wang2020's §4.4 glint layer (gpu_renderer.cpp): rgb = the environment
 // glints of shapes with u_glint_layer set (left out of o_radiance), a = the
@@ -51,6 +51,9 @@ uniform vec3 u_view_forward;
 #include "glintlab/realtime/shaders/material_uniforms.glsl"
 #ifdef GLINTLAB_MATERIAL_TEXTURES
 #include "glintlab/realtime/shaders/material_textures.glsl"
+#endif
+#ifdef GLINTLAB_NORMAL_MAP
+#include "glintlab/realtime/shaders/normal_map.glsl"
 #endif
 
 #if GLINTLAB_POINT_LIGHTS > 0
@@ -315,8 +318,13 @@ void main() {
         dpdu = tri.dpdu.xyz;
     } else {
         ng = normalize(v_normal);
-        dpdu = v_dpdu;
+        dpdu = v_dpdu.xyz;
     }
+#ifdef GLINTLAB_NORMAL_MAP
+    // A normal map's tangent space: the mesh's vertex tangent, smooth
+    // across triangles (shading_frame with vertex_tangent).
+    if (dot(v_dpdu.xyz, v_dpdu.xyz) > 0.0f) dpdu = v_dpdu.xyz;
+#endif
     vec3 n = u_has_normals ? normalize(v_normal) : ng;
     if (u_has_normals && dot(ng, n) < 0.0f) ng = -ng;
     // Emitters: sphere lights shine from their outer side (integrators.cpp emitted()).
@@ -347,10 +355,14 @@ void main() {
         } else {
             orthonormal_basis(n, t, b);
         }
-        if (u_material_type != 2 && dot(wo_world, n) < 0.0f) {
+        bool back_side = u_material_type != 2 && dot(wo_world, n) < 0.0f;
+        if (back_side) {
             n = -n;
             b = -b;
         }
+#ifdef GLINTLAB_NORMAL_MAP
+        normal_map_shade(fp, back_side, v_dpdu.w < 0.0f ? -1.0f : 1.0f, t, b, n, mat);
+#endif
         vec3 wo = vec3(dot(wo_world, t), dot(wo_world, b), dot(wo_world, n));
 #if GLINTLAB_POINT_LIGHTS > 0
         for (int i = 0; i < GLINTLAB_POINT_LIGHTS; ++i) {

@@ -3,12 +3,12 @@
 layout(location = 0) in vec3 a_position;
 layout(location = 1) in vec3 a_normal;
 layout(location = 2) in vec2 a_uv;
-layout(location = 3) in vec3 a_dpdu;
+layout(location = 3) in vec4 a_dpdu;
 uniform mat4 u_view_projection;
 out vec3 v_position;
 out vec3 v_normal;
 out vec2 v_uv;
-out vec3 v_dpdu;
+out vec4 v_dpdu;
 void main() {
     v_position = a_position;
     v_normal = a_normal;

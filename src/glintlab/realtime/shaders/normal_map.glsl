@@ -1,0 +1,101 @@
+// Normal maps in the forward pass (docs/MODELS.md, "Normal maps"): the GPU
+// side of core/normal_map.cpp (LEAN lookup of the slopes' first and second
+// moments over the footprint, the moments at kMomentLodBias) and of
+// render/surface_bsdf.cpp (local_bump's axes, the frame tilted to the mean
+// normal, α² + 2Σ). Included by forward.frag.glsl after
+// material_textures.glsl when GLINTLAB_NORMAL_MAP is defined; the program
+// is then also the textured-material variant, whose per-fragment α this
+// file widens.
+#ifndef GLINTLAB_REALTIME_NORMAL_MAP_GLSL
+#define GLINTLAB_REALTIME_NORMAL_MAP_GLSL
+
+// material_textures.glsl first: it turns on the per-fragment α the
+// uniforms' includes then declare.
+#include "glintlab/realtime/shaders/material_textures.glsl"
+#include "glintlab/core/footprint.glsl"
+#include "glintlab/glints/material.glsl"
+
+// Units 16 and 17 (forward_shaders.h kNormalMapUnit): the map's mip chains
+// of (s_x, s_y, 0) and (s_x², s_y², s_x s_y), one uv transform for both.
+layout(binding = 16) uniform sampler2D u_normal_slopes;
+layout(binding = 17) uniform sampler2D u_normal_moments;
+uniform mat2 u_normal_map_linear;
+uniform vec2 u_normal_map_offset;
+uniform vec2 u_normal_map_size;
+uniform int u_normal_map_filtering;     // 0: lean, 1: none (the finest level's normal)
+uniform int u_normal_map_widens_glint;  // the glint model reads a per-pixel α
+
+// core/normal_map.cpp kMomentLodBias: log2(1/√3), the window of the
+// footprint's own spatial variance.
+const float kNormalMapLodBias = -0.79248125f;
+
+vec3 normal_map_fetch(sampler2D tex, Footprint fp, bool filtered) {
+    if (!filtered)
+        return textureLod(tex, u_normal_map_linear * fp.uv + u_normal_map_offset, 0.0f).rgb;
+    return material_texture_filtered(tex, u_normal_map_size, u_normal_map_linear,
+                                     u_normal_map_offset, fp, kNormalMapLodBias);
+}
+
+float normal_map_widened(float alpha, float slope_variance, float max_alpha) {
+    return min(sqrt(alpha * alpha + 2.0f * slope_variance), max_alpha);
+}
+
+// Tilts (t, b, n) to the footprint's mean normal and widens the material's
+// α by the slope covariance, as make_surface_bsdf does. `back`: the frame
+// was flipped to the side of wo; `bitangent_sign`: the tangent's w.
+void normal_map_shade(Footprint fp, bool back, float bitangent_sign, inout vec3 t, inout vec3 b,
+                      inout vec3 n, inout SurfaceMaterial mat) {
+    bool lean = u_normal_map_filtering == 0;
+    vec2 mean = normal_map_fetch(u_normal_slopes, fp, lean).xy;
+    vec3 cov = vec3(0.0f);
+    if (lean) {
+        // Σ = E[s sᵀ] − s̄ s̄ᵀ, kept positive semi-definite.
+        vec3 second = normal_map_fetch(u_normal_moments, fp, true);
+        float xx = max(second.x - mean.x * mean.x, 0.0f);
+        float yy = max(second.y - mean.y * mean.y, 0.0f);
+        float bound = sqrt(xx * yy);
+        cov = vec3(xx, yy, clamp(second.z - mean.x * mean.y, -bound, bound));
+    }
+    vec2 axes = vec2(back ? -1.0f : 1.0f, bitangent_sign);
+    mean *= axes;
+    cov.z *= axes.x * axes.y;
+    // core/normal_map.h normal_from_slope and tangent_frame_around.
+    vec3 nl = normalize(vec3(-mean.x, -mean.y, 1.0f));
+    vec3 tl = normalize(vec3(1.0f, 0.0f, 0.0f) - nl * nl.x);
+    vec3 bl = cross(nl, tl);
+    vec3 tw = tl.x * t + tl.y * b + tl.z * n;
+    vec3 bw = bl.x * t + bl.y * b + bl.z * n;
+    vec3 nw = nl.x * t + nl.y * b + nl.z * n;
+    t = tw;
+    b = bw;
+    n = nw;
+    if (mat.type == MATERIAL_DIFFUSE) return;
+    if (mat.type == MATERIAL_GLINT) {
+        // Glint NDF axes stay on the uv axes: Σ's correlation is dropped.
+        if (u_normal_map_widens_glint != 0) {
+            mat.glint.alpha_x = normal_map_widened(mat.glint.alpha_x, cov.x, 1.0f);
+            mat.glint.alpha_y = normal_map_widened(mat.glint.alpha_y, cov.y, 1.0f);
+            g_glint_alpha = vec2(mat.glint.alpha_x, mat.glint.alpha_y);
+        }
+        return;
+    }
+    if (mat.alpha_x == mat.alpha_y && cov.z != 0.0f) {
+        // An isotropic lobe widened by a correlated covariance: exact along
+        // Σ's principal axes.
+        float angle = 0.5f * atan(2.0f * cov.z, cov.x - cov.y);
+        float mid = 0.5f * (cov.x + cov.y);
+        float radius = sqrt(0.25f * (cov.x - cov.y) * (cov.x - cov.y) + cov.z * cov.z);
+        vec3 tr = cos(angle) * t + sin(angle) * b;
+        t = tr;
+        b = cross(n, tr);
+        float a = mat.alpha_x;
+        mat.alpha_x = normal_map_widened(a, mid + radius, 4.0f);
+        mat.alpha_y = normal_map_widened(a, max(mid - radius, 0.0f), 4.0f);
+    } else {
+        mat.alpha_x = normal_map_widened(mat.alpha_x, cov.x, 4.0f);
+        mat.alpha_y = normal_map_widened(mat.alpha_y, cov.y, 4.0f);
+    }
+    g_alpha = vec2(mat.alpha_x, mat.alpha_y);
+}
+
+#endif
