@@ -243,6 +243,21 @@ class GltfReader {
             part.normals.resize(nrm.count);
             for (size_t i = 0; i < nrm.count; ++i) part.normals[i] = read_vec<3>(nrm, i);
         }
+        if (auto it = prim.attributes.find("TANGENT"); it != prim.attributes.end()) {
+            // glTF's tangents (xyz along ∂p/∂u, w the bitangent sign): the
+            // normal map's tangent space as the asset was baked.
+            const AccessorView tan = view(it->second, TINYGLTF_TYPE_VEC4, what + " TANGENT");
+            require_float(tan, what + " TANGENT");
+            if (tan.count != pos.count)
+                fail("{}: {} has {} tangents for {} positions", name_, what, tan.count, pos.count);
+            part.tangents.resize(tan.count);
+            for (size_t i = 0; i < tan.count; ++i) {
+                glm::vec4 t = read_vec<4>(tan, i);
+                // glTF requires w = ±1; other values keep their sign.
+                if (std::isfinite(t.w)) t.w = t.w < 0.0f ? -1.0f : 1.0f;
+                part.tangents[i] = t;
+            }
+        }
         if (auto it = prim.attributes.find(uv_attribute); it != prim.attributes.end()) {
             const AccessorView uv = view(it->second, TINYGLTF_TYPE_VEC2, what + " " + uv_attribute);
             if (uv.count != pos.count)
@@ -368,6 +383,9 @@ class GltfReader {
         part.positions = read.template operator()<3>("POSITION", TINYGLTF_TYPE_VEC3);
         part.normals = read.template operator()<3>("NORMAL", TINYGLTF_TYPE_VEC3);
         part.uvs = read.template operator()<2>(uv_attribute.c_str(), TINYGLTF_TYPE_VEC2);
+        part.tangents = read.template operator()<4>("TANGENT", TINYGLTF_TYPE_VEC4);
+        for (glm::vec4& t : part.tangents)
+            if (std::isfinite(t.w)) t.w = t.w < 0.0f ? -1.0f : 1.0f;  // quantised ±1
         part.triangles.reserve(draco_mesh->num_faces());
         for (draco::FaceIndex f(0); f < draco_mesh->num_faces(); ++f) {
             const draco::Mesh::Face& face = draco_mesh->face(f);

@@ -334,6 +334,39 @@ TEST_F(MeshGltf, FileMaterialsRenderAsTheSameMaterialWrittenInTheScene) {
     EXPECT_GT(sum, 0.0);
 }
 
+// glTF TANGENT: read, mapped by the node transform (a mirror flips w), and
+// kept as the normal map's tangent space instead of generated ones.
+TEST_F(MeshGltf, FileTangentsAreTransformedAndKeptForNormalMaps) {
+    Asset a = quad_asset(kU16);
+    const std::vector<glm::vec4> tangents(4, glm::vec4(0.0f, 1.0f, 0.0f, 0.5f));
+    a.doc["meshes"][0]["primitives"][0]["attributes"]["TANGENT"] =
+        a.add_accessor(tangents.data(), tangents.size() * 16, kFloat, "VEC4", tangents.size());
+    a.doc["nodes"] = json::array({{{"mesh", 0}, {"scale", {-1, 1, 1}}}});
+    write_gltf("tangents.gltf", a);
+    const TriangleMesh m = load_gltf(dir_ / "tangents.gltf");
+    ASSERT_EQ(m.tangents.size(), 4u);
+    for (const glm::vec4& t : m.tangents) EXPECT_EQ(t, glm::vec4(0.0f, 1.0f, 0.0f, -1.0f));
+    Image flat(2, 2, glm::vec3(0.5f, 0.5f, 1.0f));
+    write_png(flat, dir_ / "flat.png");
+    const json scene = {
+        {"camera", {{"eye", {0, 0, 3}}, {"target", {0, 0, 0}}}},
+        {"materials",
+         {{{"name", "m"},
+           {"type", "conductor"},
+           {"normal_map", {{"texture", "flat.png"}, {"encoding", "unorm"}}}}}},
+        {"shapes", {{{"type", "gltf"}, {"file", "tangents.gltf"}, {"material", "m"}}}}};
+    const Scene s = parse_scene(scene, dir_ / "scene.json");
+    const auto& mesh = std::get<TriangleMesh>(s.shapes[0].geometry);
+    ASSERT_EQ(mesh.tangents.size(), 4u);
+    EXPECT_EQ(mesh.tangents[0], glm::vec4(0.0f, 1.0f, 0.0f, -1.0f));  // not ∂p/∂u = (−1, 0, 0)
+    json projected = scene;
+    projected["shapes"][0]["uv"] = {{"projection", "planar"}, {"axis", "z"}};
+    const Scene p = parse_scene(projected, dir_ / "scene.json");
+    const auto& regenerated = std::get<TriangleMesh>(p.shapes[0].geometry);
+    ASSERT_EQ(regenerated.tangents.size(), 4u);
+    EXPECT_NEAR(std::abs(regenerated.tangents[0].x), 1.0f, 1e-5f);  // from the new uvs
+}
+
 TEST_F(MeshGltf, MaterialOverridesNameTheFilesMaterials) {
     Asset a = quad_asset(kU16);
     a.doc["nodes"] = json::array({{{"mesh", 0}}});

@@ -60,6 +60,13 @@ void TriangleMesh::validate(std::string_view what) const {
             fail("{}: uv {} = ({:g}, {:g}) out of range: uvs must lie in [-1e6, 1e6]", what, i,
                  uvs[i].x, uvs[i].y);
     }
+    for (size_t i = 0; i < tangents.size(); ++i) {
+        if (!all_finite(glm::vec3(tangents[i])) || !std::isfinite(tangents[i].w))
+            fail("{}: tangent {} is not finite", what, i);
+        if (tangents[i].w != 1.0f && tangents[i].w != -1.0f)
+            fail("{}: tangent {} has w = {:g}: the bitangent sign must be 1 or -1", what, i,
+                 tangents[i].w);
+    }
 }
 
 void append_mesh(TriangleMesh& dst, const TriangleMesh& src) {

@@ -360,7 +360,10 @@ UvProjection read_uv_projection(JsonObject& o) {
 void finish_mesh(JsonObject& o, LoadContext& ctx, TriangleMesh& mesh, int material,
                  const Transform& transform, const std::optional<UvProjection>& uv,
                  const std::string& where) {
-    if (uv) project_uvs(mesh, *uv);
+    if (uv) {
+        project_uvs(mesh, *uv);
+        mesh.tangents.clear();  // a file's tangents follow its own uvs
+    }
     transform_mesh(mesh, transform);
     mesh.validate(where);
     const MaterialDesc& m = ctx.scene->materials[static_cast<size_t>(material)];
@@ -372,7 +375,9 @@ void finish_mesh(JsonObject& o, LoadContext& ctx, TriangleMesh& mesh, int materi
                             m.type == MaterialDesc::Type::Glint
                                 ? "is a glint material"
                                 : fmt::format("reads {} from textures", textured_keys(m))));
-    if (m.normal_map) {
+    // The file's tangents (glTF TANGENT) when it has them; else MikkTSpace's
+    // convention, generated.
+    if (m.normal_map && mesh.tangents.empty()) {
         const size_t fixed = generate_vertex_tangents(mesh);
         if (fixed > 0)
             fmt::print(stderr,

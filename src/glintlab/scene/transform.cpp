@@ -57,6 +57,14 @@ void transform_mesh(TriangleMesh& mesh, const Transform& transform) {
         const float len = glm::length(mapped);
         n = len > 0.0f ? mapped / len : mapped;
     }
+    // Tangents map as directions; a mirroring transform flips the
+    // bitangent's sign so that n × t · w keeps following ∂p/∂v's image.
+    const float sign = transform.flips_handedness() ? -1.0f : 1.0f;
+    for (glm::vec4& t : mesh.tangents) {
+        const glm::vec3 mapped = transform.apply_vector(glm::vec3(t));
+        const float len = glm::length(mapped);
+        t = glm::vec4(len > 0.0f ? mapped / len : mapped, sign * t.w);
+    }
     if (transform.flips_handedness())
         for (glm::uvec3& t : mesh.triangles) std::swap(t.y, t.z);
 }
