@@ -276,8 +276,35 @@ export class ExportedModel {
       gl.bindTexture(t.texture.target, t.texture.texture);
       set(t.uniform, unit);
     });
+    // The export's optional input textures (docs/INTEGRATION.md "Per-pixel
+    // material inputs"): none here (mask 0), but their samplers are active
+    // and must not point at unit 0, where the last frame's image may still
+    // be bound (a feedback loop with the framebuffer): a 1x1 placeholder on
+    // a unit of its own.
+    const inputUnit = 1 + this.textures.length;
+    gl.activeTexture(gl.TEXTURE0 + inputUnit);
+    gl.bindTexture(gl.TEXTURE_2D, inputPlaceholder(gl));
+    for (const name of ['u_input_density', 'u_input_alpha', 'u_input_color',
+                        'u_input_base_albedo']) set(name, inputUnit);
+    set('u_input_texture_mask', 0);
     gl.activeTexture(gl.TEXTURE0);
   }
+}
+
+// One 1x1 RGBA8 texture per context, for samplers that read nothing.
+const placeholders = new WeakMap();
+function inputPlaceholder(gl) {
+  let t = placeholders.get(gl);
+  if (!t) {
+    t = gl.createTexture();
+    gl.bindTexture(gl.TEXTURE_2D, t);
+    gl.texImage2D(gl.TEXTURE_2D, 0, gl.RGBA8, 1, 1, 0, gl.RGBA, gl.UNSIGNED_BYTE,
+                  new Uint8Array([0, 0, 0, 255]));
+    gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_MIN_FILTER, gl.NEAREST);
+    gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_MAG_FILTER, gl.NEAREST);
+    placeholders.set(gl, t);
+  }
+  return t;
 }
 
 function normalize3(v) {

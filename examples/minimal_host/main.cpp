@@ -8,7 +8,12 @@
 // (surfaceless Mesa platform) into an RGBA32F framebuffer and writes the
 // linear radiance as a PFM file.
 //
-// Usage: minimal_host EXPORT_DIR MODEL OUT.pfm [WIDTH HEIGHT LOG_DENSITY]
+// Usage: minimal_host EXPORT_DIR MODEL OUT.pfm [WIDTH HEIGHT LOG_DENSITY [LOG_DENSITY_MAP.pfm]]
+//
+// LOG_DENSITY_MAP.pfm (optional): ln N per texel (the first channel), uv
+// (0, 0) at the image's top-left corner; fed through the export's input
+// texture u_input_density as N = exp(ln N) with a mip chain
+// (docs/INTEGRATION.md "Per-pixel material inputs").
 //
 // What a host does with an export, in order:
 //  1. read MODEL.glsl.manifest.json: the fragment shader's file, the model's
@@ -18,6 +23,7 @@
 //     v_dpdu in world space) with the exported fragment stage;
 //  3. upload each resource as a texture and point its sampler uniform at a unit;
 //  4. set the material, light and camera uniforms; draw.
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -208,6 +214,30 @@ void set_uniform(GLuint program, const std::map<std::string, GLenum>& types,
     }
 }
 
+// The first channel of a PFM (little-endian, rows bottom to top), rows top
+// to bottom.
+std::vector<float> read_pfm_channel(const std::string& path, int* w, int* h) {
+    std::ifstream f(path, std::ios::binary);
+    std::string magic;
+    float scale = 0.0f;
+    f >> magic >> *w >> *h >> scale;
+    f.get();
+    if (!f || (magic != "PF" && magic != "Pf") || scale >= 0.0f || *w < 1 || *h < 1 || *w > 16384 ||
+        *h > 16384)
+        die(path + ": not a little-endian PFM of at most 16384 x 16384");
+    const int channels = magic == "PF" ? 3 : 1;
+    std::vector<float> data(static_cast<size_t>(*w) * *h * channels);
+    f.read(reinterpret_cast<char*>(data.data()),
+           static_cast<std::streamsize>(data.size() * sizeof(float)));
+    if (!f) die(path + ": truncated");
+    std::vector<float> out(static_cast<size_t>(*w) * *h);
+    for (int y = 0; y < *h; ++y)
+        for (int x = 0; x < *w; ++x)
+            out[static_cast<size_t>(y) * *w + x] =
+                data[(static_cast<size_t>(*h - 1 - y) * *w + x) * channels];
+    return out;
+}
+
 void write_pfm(const std::string& path, int w, int h, const std::vector<float>& rgb) {
     std::ofstream f(path, std::ios::binary);
     f << "PF\n" << w << " " << h << "\n-1.0\n";  // little-endian, rows bottom to top
@@ -217,15 +247,17 @@ void write_pfm(const std::string& path, int w, int h, const std::vector<float>& 
 }
 
 int run(int argc, char** argv) {
-    if (argc != 4 && argc != 7) {
-        std::fprintf(stderr, "usage: %s EXPORT_DIR MODEL OUT.pfm [WIDTH HEIGHT LOG_DENSITY]\n",
+    if (argc != 4 && argc != 7 && argc != 8) {
+        std::fprintf(stderr,
+                     "usage: %s EXPORT_DIR MODEL OUT.pfm [WIDTH HEIGHT LOG_DENSITY "
+                     "[LOG_DENSITY_MAP.pfm]]\n",
                      argv[0]);
         return 2;
     }
     const std::string dir = argv[1], model = argv[2], out = argv[3];
-    const int width = argc == 7 ? std::atoi(argv[4]) : 128;
-    const int height = argc == 7 ? std::atoi(argv[5]) : 128;
-    const float log_density = argc == 7 ? static_cast<float>(std::atof(argv[6])) : 12.0f;
+    const int width = argc >= 7 ? std::atoi(argv[4]) : 128;
+    const int height = argc >= 7 ? std::atoi(argv[5]) : 128;
+    const float log_density = argc >= 7 ? static_cast<float>(std::atof(argv[6])) : 12.0f;
     if (width < 1 || height < 1 || width > 8192 || height > 8192) die("bad image size");
 
     const nlohmann::json manifest =
@@ -313,6 +345,43 @@ int run(int argc, char** argv) {
                 set_uniform(program, types, name, value);
         ++unit;
     }
+    // The export's per-pixel input textures: a density map when given, its
+    // texels N = exp(ln N) (a footprint's expected count is N's mean over
+    // it) with a mip chain of box means (glGenerateMipmap on a power-of-two
+    // map), read by the export's own footprint filter. The samplers of the
+    // other inputs point at the same unit (their mask bits are 0).
+    int input_mask = 0;
+    if (argc == 8) {
+        int mw = 0, mh = 0;
+        std::vector<float> n = read_pfm_channel(argv[7], &mw, &mh);
+        for (float& v : n) v = std::exp(v);
+        int levels = 1;
+        while ((std::max(mw, mh) >> levels) > 0) ++levels;
+        GLuint tex = 0;
+        glCreateTextures(GL_TEXTURE_2D, 1, &tex);
+        glTextureStorage2D(tex, levels, GL_R32F, mw, mh);
+        glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+        glTextureSubImage2D(tex, 0, 0, 0, mw, mh, GL_RED, GL_FLOAT, n.data());
+        glGenerateTextureMipmap(tex);
+        glTextureParameteri(tex, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
+        glTextureParameteri(tex, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+        glTextureParameteri(tex, GL_TEXTURE_WRAP_S, GL_REPEAT);
+        glTextureParameteri(tex, GL_TEXTURE_WRAP_T, GL_REPEAT);
+        glBindTextureUnit(static_cast<GLuint>(unit), tex);
+        input_mask |= 1;  // GLINT_INPUT_DENSITY
+    }
+    for (const char* name :
+         {"u_input_density", "u_input_alpha", "u_input_color", "u_input_base_albedo"})
+        glProgramUniform1i(program, glGetUniformLocation(program, name), unit);
+    set_uniform(program, types, "u_input_texture_mask", input_mask);
+    const float identity[4] = {1, 0, 0, 1};
+    for (int i = 0; i < 4; ++i)
+        glProgramUniformMatrix2fv(
+            program,
+            glGetUniformLocation(program,
+                                 ("u_input_texture_linear[" + std::to_string(i) + "]").c_str()),
+            1, GL_FALSE, identity);
+
     // The model's parameters at the exported material's values (`value`; the
     // descriptor's `default` without --scene).
     for (const auto& p : manifest.at("parameters")) {
@@ -348,7 +417,7 @@ int run(int argc, char** argv) {
     // from the command line if given.
     for (const auto& [name, value] : manifest.at("material").at("uniforms").items())
         set_uniform(program, types, name, value);
-    if (argc == 7) set_uniform(program, types, "u_glint_log_density", log_density);
+    if (argc >= 7) set_uniform(program, types, "u_glint_log_density", log_density);
     set_uniform(program, types, "u_glint_g2", model == "chermain2020" ? 1 : 0);
     // One directional light towards (0.3, 0.8, 0.5), irradiance 2.
     const Vec3 l = normalize({0.3f, 0.8f, 0.5f});

@@ -97,11 +97,13 @@ std::vector<std::string> forward_prefixes() {
     return out;
 }
 
-// `glintlab export`'s fragment stage (export/shader_export.h): after any glue.
+// `glintlab export`'s fragment stage (export/shader_export.h): after any
+// glue, with the per-pixel inputs' GLINTLAB_MATERIAL_TEXTURES as the
+// exporter puts it ahead.
 std::vector<std::string> export_prefixes() {
     std::vector<std::string> out;
     for (const std::string& glue : glue_files())
-        out.push_back(fmt::format("#include \"{}\"\n", glue));
+        out.push_back(fmt::format("#define GLINTLAB_MATERIAL_TEXTURES 1\n#include \"{}\"\n", glue));
     return out;
 }
 

@@ -8,8 +8,12 @@
 //
 // Entry points for a host that keeps its own fragment stage:
 //     Footprint glint_footprint(vec2 uv);  // call in uniform control flow
+//     void glint_set_inputs(GlintInputs inputs);  // per-pixel material inputs
 //     vec3 glint_shade(vec3 p, vec3 n_geo, vec3 dpdu, Footprint fp);
 //     vec3 glint_eval(vec3 wo, vec3 wi, Footprint fp);  // f(wo, wi) cos(wi)
+// The exporter defines GLINTLAB_MATERIAL_TEXTURES ahead of the glue: the
+// names u_glint_alpha and u_glint_log_density the glue reads are then
+// per-fragment values (glint_uniforms.glsl), set by glint_set_inputs.
 #include "glintlab/core/constants.glsl"
 #include "glintlab/core/footprint.glsl"
 #include "glintlab/glints/glint_uniforms.glsl"
@@ -41,10 +45,93 @@ uniform vec3 u_point_intensity[GLINT_MAX_LIGHTS];
 // The model's own image-based lighting (kneiphof2025, wang2020).
 uniform bool u_environment_on;
 
+// Per-pixel material inputs (docs/INTEGRATION.md, "Per-pixel material
+// inputs"): what a host may read from its own textures. Each is the value
+// at the pixel after filtering over its footprint in the quantity stated:
+struct GlintInputs {
+    float log_density;  // ln N; filter N = exp(ln N) (the footprint's expected count), then log
+    vec2 alpha;         // (alpha_x, alpha_y); filter alpha² (the slope variance), then sqrt
+    vec3 color;         // linear RGB tint; filter linearly
+    vec3 base_albedo;   // linear RGB diffuse base (0: none); filter linearly
+};
+vec3 g_glint_color_input;
+vec3 g_glint_base_albedo_input;
+
+// The material uniforms as inputs (a material without textures).
+GlintInputs glint_inputs_from_uniforms() {
+    GlintInputs inputs;
+    inputs.log_density = glint_log_density_uniform();
+    inputs.alpha = glint_alpha_uniform();
+    inputs.color = u_glint_color;
+    inputs.base_albedo = u_glint_base_albedo;
+    return inputs;
+}
+
+// Sets the inputs every later glint_shade / glint_eval reads.
+void glint_set_inputs(GlintInputs inputs) {
+    g_glint_log_density = inputs.log_density;
+    g_glint_alpha = clamp(inputs.alpha, vec2(1e-3f), vec2(1.0f));
+    g_glint_color_input = inputs.color;
+    g_glint_base_albedo_input = inputs.base_albedo;
+}
+
+// Optional input textures the exported main() reads (bit i of
+// u_input_texture_mask: input i is textured; 0: every input from the
+// uniforms). Each holds the filtered quantity of GlintInputs (N, alpha²,
+// linear RGB) with a mip chain of box means, read with the renderer's own
+// footprint filter (N = ceil(Pmax / Pmin) <= 16 trilinear probes along the
+// major axis, realtime/shaders/material_textures.glsl), at uv' =
+// u_input_texture_linear[i] uv + u_input_texture_offset[i].
+const int GLINT_INPUT_DENSITY = 0;  // N = exp(ln N), one channel
+const int GLINT_INPUT_ALPHA = 1;    // alpha² (isotropic), one channel
+const int GLINT_INPUT_COLOR = 2;    // linear RGB
+const int GLINT_INPUT_BASE = 3;     // linear RGB
+uniform sampler2D u_input_density;
+uniform sampler2D u_input_alpha;
+uniform sampler2D u_input_color;
+uniform sampler2D u_input_base_albedo;
+uniform int u_input_texture_mask;
+uniform mat2 u_input_texture_linear[4];
+uniform vec2 u_input_texture_offset[4];
+
+vec3 glint_input_filtered(sampler2D tex, int slot, Footprint fp) {
+    mat2 linear = u_input_texture_linear[slot];
+    vec2 size = vec2(textureSize(tex, 0));
+    vec2 st = linear * fp.uv + u_input_texture_offset[slot];
+    vec2 dx = linear * fp.duvdx, dy = linear * fp.duvdy;
+    float px = length(dx * size), py = length(dy * size);
+    float pmax = max(px, py), pmin = min(px, py);
+    if (!(pmax > 0.0f) || isinf(pmax)) return textureLod(tex, st, 0.0f).rgb;
+    int n = int(min(16.0f, ceil(pmax / max(pmin, pmax * 1e-6f))));
+    float lod = log2(pmax / float(n));
+    vec2 major = px >= py ? dx : dy;
+    vec3 sum = vec3(0.0f);
+    for (int i = 0; i < n; ++i)
+        sum += textureLod(tex, st + major * ((float(i) + 0.5f) / float(n) - 0.5f), lod).rgb;
+    return sum / float(n);
+}
+
+// The uniforms' inputs with the textured ones replaced by their filtered values.
+GlintInputs glint_inputs_from_textures(Footprint fp) {
+    GlintInputs inputs = glint_inputs_from_uniforms();
+    int mask = u_input_texture_mask;
+    if ((mask & (1 << GLINT_INPUT_DENSITY)) != 0)
+        inputs.log_density =
+            log(max(glint_input_filtered(u_input_density, GLINT_INPUT_DENSITY, fp).x, 1e-30f));
+    if ((mask & (1 << GLINT_INPUT_ALPHA)) != 0)
+        inputs.alpha = vec2(sqrt(max(glint_input_filtered(u_input_alpha, GLINT_INPUT_ALPHA, fp).x,
+                                     0.0f)));
+    if ((mask & (1 << GLINT_INPUT_COLOR)) != 0)
+        inputs.color = glint_input_filtered(u_input_color, GLINT_INPUT_COLOR, fp);
+    if ((mask & (1 << GLINT_INPUT_BASE)) != 0)
+        inputs.base_albedo = glint_input_filtered(u_input_base_albedo, GLINT_INPUT_BASE, fp);
+    return inputs;
+}
+
 GlintMaterial glint_material() {
     GlintMaterial m;
-    m.color = u_glint_color;
-    m.base_albedo = u_glint_base_albedo;
+    m.color = g_glint_color_input;
+    m.base_albedo = g_glint_base_albedo_input;
     m.fresnel_mode = u_fresnel_mode;
     m.fresnel_f0 = u_fresnel_f0;
     m.fresnel_eta = u_fresnel_eta;
@@ -108,16 +195,16 @@ vec3 glint_shade(vec3 p, vec3 n, vec3 dpdu, Footprint fp) {
         vec3 wi = vec3(dot(w, t), dot(w, b), dot(w, n));
         if (wi.z <= 0.0f) continue;
 #ifdef GLINTLAB_GLINT_OWN_LIGHTS
-        radiance += u_glint_color * glint_own_light(wo, wi, u_point_intensity[i] / r2, fp);
+        radiance += g_glint_color_input * glint_own_light(wo, wi, u_point_intensity[i] / r2, fp);
 #else
         radiance += glint_eval(wo, wi, fp) * u_point_intensity[i] / r2;
 #endif
     }
 #ifdef GLINTLAB_GLINT_OWN_LIGHTS
-    if (u_environment_on) radiance += u_glint_color * glint_own_environment(n, wo_world, fp);
+    if (u_environment_on) radiance += g_glint_color_input * glint_own_environment(n, wo_world, fp);
 #endif
 #ifdef GLINTLAB_GLINT_SHADES_ENVIRONMENT
-    if (u_environment_on) radiance += glint_environment(wo, t, b, n, u_glint_color, fp);
+    if (u_environment_on) radiance += glint_environment(wo, t, b, n, g_glint_color_input, fp);
 #endif
     for (int i = 0; i < GLINT_MAX_LIGHTS; ++i) {
         if (i >= u_directional_count) break;
@@ -125,7 +212,7 @@ vec3 glint_shade(vec3 p, vec3 n, vec3 dpdu, Footprint fp) {
         vec3 wi = vec3(dot(w, t), dot(w, b), dot(w, n));
         if (wi.z <= 0.0f) continue;
 #ifdef GLINTLAB_GLINT_OWN_LIGHTS
-        radiance += u_glint_color * glint_own_light(wo, wi, u_directional_irradiance[i], fp);
+        radiance += g_glint_color_input * glint_own_light(wo, wi, u_directional_irradiance[i], fp);
 #else
         radiance += glint_eval(wo, wi, fp) * u_directional_irradiance[i];
 #endif
@@ -137,5 +224,6 @@ vec3 glint_shade(vec3 p, vec3 n, vec3 dpdu, Footprint fp) {
 
 void main() {
     Footprint fp = glint_footprint(v_uv);
+    glint_set_inputs(glint_inputs_from_textures(fp));
     o_radiance = vec4(glint_shade(v_position, normalize(v_normal), v_dpdu, fp), 1.0f);
 }

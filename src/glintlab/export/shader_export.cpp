@@ -214,6 +214,25 @@ std::string wrap_row(std::string text) {
     return out + text + "\n";
 }
 
+// The header's GLSL vocabulary in HLSL's: vector and matrix types,
+// samplers as a Texture2D and its SamplerState, derivatives.
+std::string in_hlsl_terms(std::string text) {
+    static const std::pair<std::regex, const char*> kTerms[] = {
+        {std::regex(R"(\bvec([234])\b)"), "float$1"},
+        {std::regex(R"(\bmat2\b)"), "float2x2"},
+        {std::regex(R"(\buint\b)"), "uint"},
+        {std::regex(R"(\bsampler2D\b)"), "Texture2D + SamplerState"},
+        {std::regex(R"(-dFdy in OpenGL window space)"), "ddy_fine as translated"},
+        {std::regex(R"(\bdFdy\b)"), "ddy"},
+        {std::regex(R"(Uniforms of every model)"), "Constants (cbuffer) of every model"},
+        {std::regex(R"(uniform only)"), "constant only"},
+        {std::regex(R"(\(uniform, type)"), "(constant, type"},
+    };
+    for (const auto& [pattern, replacement] : kTerms)
+        text = std::regex_replace(text, pattern, replacement);
+    return text;
+}
+
 std::string header(const GlintModelDescriptor& d, ExportLanguage lang, const std::string& glue,
                    const std::string& shader) {
     std::string h = fmt::format(
@@ -267,10 +286,34 @@ std::string header(const GlintModelDescriptor& d, ExportLanguage lang, const std
                       return m.shades_light != nullptr && m.shades(GlintLightType::Environment);
                   }),
                   ", ")));
+    auto yes = [&](bool on) {
+        return on ? std::string("per pixel")
+                  : fmt::format("uniform only ({})", d.untextured_reason);
+    };
+    h += fmt::format(
+        "Per-pixel material inputs (docs/INTEGRATION.md \"Per-pixel material inputs\"):\n"
+        "  struct GlintInputs {{ float log_density; vec2 alpha; vec3 color; vec3 base_albedo; }}\n"
+        "  void glint_set_inputs(GlintInputs): before glint_shade / glint_eval; the exported\n"
+        "          main() passes glint_inputs_from_textures(fp), which starts from\n"
+        "          glint_inputs_from_uniforms() (the u_glint_* above).\n"
+        "  For {}: color, base_albedo per pixel;\n",
+        d.name);
+    h += wrap_row("    log_density               " + yes(d.textured_density));
+    h += wrap_row("    alpha                     " + yes(d.textured_roughness));
+    h += "  Filter each over the pixel footprint in its own quantity: N = exp(ln N) (the\n"
+         "          footprint's expected facet count is N's mean), alpha^2 (the slope\n"
+         "          variance), colours as linear RGB; never ln N or alpha themselves.\n"
+         "  Input textures (optional): u_input_density (R: N), u_input_alpha (R: alpha^2),\n"
+         "          u_input_color, u_input_base_albedo (RGB, linear), each with a mip chain of\n"
+         "          box means, trilinear; bit i of u_input_texture_mask turns input i on\n"
+         "          (0 density, 1 alpha, 2 color, 3 base_albedo); uv' =\n"
+         "          u_input_texture_linear[i] uv + u_input_texture_offset[i]. Point the unused\n"
+         "          samplers at a unit holding any 2D texture that is not the render target.\n";
     h += fmt::format(
         "Parameters of {} (uniform, type, range, default: meaning; a name in\n"
         "parentheses is host-side, see docs/INTEGRATION.md):\n{}",
         d.name, parameter_rows(d, shader));
+    if (lang == ExportLanguage::Hlsl) h = in_hlsl_terms(h);
     return comment_block(h);
 }
 
@@ -474,8 +517,11 @@ std::string export_fragment_glsl(GlintModelId model, unsigned program_options,
     if (!m) fail("export: model \"{}\" has no exportable GPU back end", glint_model(model).name);
     const std::string glue =
         (program_options & 1u) && !m->variant_glue.empty() ? m->variant_glue : m->glue;
+    // GLINTLAB_MATERIAL_TEXTURES: the material's per-pixel inputs
+    // (glint_export.frag.glsl GlintInputs) in place of its uniforms.
     const std::string root =
-        fmt::format("#include \"{}\"\n#include \"{}\"\n", glue, std::string(kEntry));
+        fmt::format("#define GLINTLAB_MATERIAL_TEXTURES 1\n#include \"{}\"\n#include \"{}\"\n",
+                    glue, std::string(kEntry));
     const AssembledShader a = assemble_shader(root, true, "\n");
     std::string body = resolve_preprocessor(a.text);
     std::string prelude;
@@ -647,6 +693,28 @@ std::vector<ExportedFile> export_model(const ExportOptions& o) {
           {"u_fresnel_f0", v3(g.fresnel.f0)},
           {"u_fresnel_eta", v3(g.fresnel.eta)},
           {"u_fresnel_k", v3(g.fresnel.k)}}}};
+    // The per-pixel material inputs (glint_export.frag.glsl GlintInputs,
+    // docs/INTEGRATION.md "Per-pixel material inputs").
+    nlohmann::json inputs = nlohmann::json::array();
+    auto input = [&](const char* key, const char* sampler, int bit, const char* stores,
+                     bool per_pixel) {
+        nlohmann::json i = {{"key", key},
+                            {"bit", bit},
+                            {"sampler", sampler},
+                            {"stores", stores},
+                            {"per_pixel", per_pixel},
+                            {"filter", "linear, mip-mapped (box means)"}};
+        if (!per_pixel) i["reason"] = d->untextured_reason;
+        inputs.push_back(i);
+    };
+    input("log_density", "u_input_density", 0, "N = exp(ln N), one channel", d->textured_density);
+    input("roughness", "u_input_alpha", 1, "alpha^2, one channel (isotropic)",
+          d->textured_roughness);
+    input("color", "u_input_color", 2, "linear RGB", true);
+    input("base_albedo", "u_input_base_albedo", 3, "linear RGB", true);
+    j["inputs"] = {{"mask_uniform", "u_input_texture_mask"},
+                   {"transform_uniforms", {"u_input_texture_linear", "u_input_texture_offset"}},
+                   {"textures", inputs}};
     nlohmann::json listed = nlohmann::json::array();
     for (const ExportedFile& f : files)
         listed.push_back({{"file", f.name}, {"kind", f.kind}, {"bytes", f.bytes}});

@@ -20,6 +20,7 @@
 #include <nlohmann/json.hpp>
 
 #include "glintlab/bench/table1.h"
+#include "glintlab/core/image.h"
 #include "glintlab/core/image_test_util.h"
 #include "glintlab/export/shader_export.h"
 #include "glintlab/realtime/gpu_renderer.h"
@@ -141,6 +142,86 @@ TEST_P(MinimalHost, MatchesTheRendererOnPlane25) {
     EXPECT_LT(a.mean_relative_error, gated ? 0.05 : 0.03);
     EXPECT_LT(a.smoothed_relative_l1, gated ? 0.10 : 0.05);
     EXPECT_LT(a.mismatch_fraction, 0.01);
+}
+
+// The export's per-pixel inputs (docs/INTEGRATION.md "Per-pixel material
+// inputs"): a host binding a density map through u_input_density draws what
+// the OpenGL renderer draws with the same map as the material's textured
+// log_density (the same mip chain of box means, the same footprint filter),
+// within the same limits as above.
+TEST(MinimalHostInputs, DensityMapMatchesTheRenderer) {
+    GLINTLAB_REQUIRE_GL();
+    for (const std::string model : {"deliot2023", "chermain2020"}) {
+        SCOPED_TRACE(model);
+        testing::ScratchDir dir;
+        // ln N 9 to 13 in steps across u, a finer checker in v: 64 x 64, tiled.
+        Image map(64, 64);
+        std::vector<float> pfm(64 * 64 * 3);
+        for (int y = 0; y < 64; ++y)
+            for (int x = 0; x < 64; ++x) {
+                const float ln = 9.0f + float(x / 16) + ((y / 8) % 2 ? 0.5f : 0.0f);
+                map.at(x, y) = glm::vec3(ln);
+                for (int c = 0; c < 3; ++c) pfm[(size_t(63 - y) * 64 + size_t(x)) * 3 + c] = ln;
+            }
+        write_exr(map, dir / "density.exr");
+        {
+            std::ofstream f(dir / "density.pfm", std::ios::binary);
+            f << "PF\n64 64\n-1.0\n";
+            f.write(reinterpret_cast<const char*>(pfm.data()),
+                    static_cast<std::streamsize>(pfm.size() * sizeof(float)));
+        }
+        nlohmann::json scene_json = plane25_scene(model);
+        scene_json["materials"][0]["log_density"] = {{"texture", "density.exr"}};
+        const std::filesystem::path scene_file = dir / "plane_25.json";
+        { std::ofstream(scene_file) << scene_json.dump(2); }
+        ExportOptions o;
+        o.model = model;
+        o.language = ExportLanguage::Glsl;
+        o.out_dir = dir / "export";
+        // The export takes numbers only: its material is the scene's with
+        // ln N 12; the host then replaces ln N by the map.
+        o.scene = dir / "plain.json";
+        { std::ofstream(o.scene) << plane25_scene(model).dump(2); }
+        export_model(o);
+        const std::filesystem::path out = dir / "host.pfm";
+        const std::string cmd = fmt::format(
+            "{} {} {} {} 128 128 12 {} > {} 2>&1", GLINTLAB_MINIMAL_HOST_PATH, o.out_dir.string(),
+            model, out.string(), (dir / "density.pfm").string(), (dir / "host.log").string());
+        const int status = std::system(cmd.c_str());
+        std::ifstream log(dir / "host.log");
+        const std::string log_text((std::istreambuf_iterator<char>(log)),
+                                   std::istreambuf_iterator<char>());
+        ASSERT_EQ(status, 0) << log_text;
+        const Image host = read_pfm(out);
+        const Scene scene = parse_scene(scene_json, scene_file);
+        GpuRenderer renderer(scene);
+        renderer.render(scene);
+        const Image gpu = renderer.read_image();
+        const ImageAgreement raw = compare_images(host, gpu, 8, 0.02f, 0.1f);
+        ASSERT_GT(raw.mean_b, 1e-4);
+        Image host_n = host, gpu_n = gpu;
+        const float k = static_cast<float>(1.0 / raw.mean_b);
+        for (int y = 0; y < gpu.height; ++y)
+            for (int x = 0; x < gpu.width; ++x) {
+                host_n.at(x, y) *= k;
+                gpu_n.at(x, y) *= k;
+            }
+        const ImageAgreement a = compare_images(host_n, gpu_n, 8, 0.02f, 0.1f);
+        RecordProperty(model + "_mean_rel", std::to_string(a.mean_relative_error));
+        RecordProperty(model + "_smoothed", std::to_string(a.smoothed_relative_l1));
+        const bool gated = model == "deliot2023";
+        EXPECT_LT(a.mean_relative_error, gated ? 0.05 : 0.03);
+        EXPECT_LT(a.smoothed_relative_l1, gated ? 0.10 : 0.05);
+        EXPECT_LT(a.mismatch_fraction, 0.01);
+        // The map matters: the host without it draws another image.
+        const std::string plain_cmd =
+            fmt::format("{} {} {} {} 128 128 12 > /dev/null 2>&1", GLINTLAB_MINIMAL_HOST_PATH,
+                        o.out_dir.string(), model, (dir / "plain.pfm").string());
+        ASSERT_EQ(std::system(plain_cmd.c_str()), 0);
+        const ImageAgreement without =
+            compare_images(read_pfm(dir / "plain.pfm"), gpu, 8, 0.02f, 0.1f);
+        EXPECT_GT(without.smoothed_relative_l1, 2.0 * a.smoothed_relative_l1 + 0.02);
+    }
 }
 
 INSTANTIATE_TEST_SUITE_P(Models, MinimalHost,

@@ -48,9 +48,10 @@ void require_untextured(const MaterialDesc& m, const std::filesystem::path& file
                         const char* path) {
     if (!m.textured()) return;
     fail(
-        "{}: material \"{}\" reads {} from a texture: textured parameters render on the CPU "
-        "(glintlab render without --gpu, compare, Python); {} takes numbers only for now "
-        "(docs/SCENE_FORMAT.md, \"Textures\")",
+        "{}: material \"{}\" reads {} from a texture: {} takes numbers only (textured "
+        "parameters render in glintlab render, with or without --gpu, view, compare and Python; "
+        "an exported shader reads the host's own textures through its per-pixel inputs, "
+        "docs/INTEGRATION.md \"Per-pixel material inputs\": export the material with numbers)",
         file.string(), m.name, textured_keys(m), path);
 }
 
