@@ -53,6 +53,35 @@ Image read_pfm(const std::filesystem::path& path) {
     return image;
 }
 
+// Runs examples/minimal_host with `args`; its output (stdout and stderr)
+// goes to `log` and comes back in `log_text`. Returns the exit status.
+int run_minimal_host(const std::string& args, const std::filesystem::path& log,
+                     std::string* log_text) {
+    const std::string cmd =
+        fmt::format("{} {} > {} 2>&1", GLINTLAB_MINIMAL_HOST_PATH, args, log.string());
+    const int status = std::system(cmd.c_str());
+    std::ifstream in(log);
+    log_text->assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+    return status;
+}
+
+// The agreement of the host's image with the renderer's, both scaled to the
+// renderer's mean luminance 1: the view is lit dimly (the light is behind
+// the camera: mean ~1e-3), and the scaling makes the absolute part (0.02)
+// of the pixel tolerance relative to the image's level. `mean_b`: the
+// renderer's mean before scaling.
+ImageAgreement agreement_at_unit_mean(const Image& host, const Image& gpu, double* mean_b) {
+    *mean_b = compare_images(host, gpu, 8, 0.02f, 0.1f).mean_b;
+    Image host_n = host, gpu_n = gpu;
+    const float k = *mean_b > 0.0 ? static_cast<float>(1.0 / *mean_b) : 1.0f;
+    for (int y = 0; y < gpu.height; ++y)
+        for (int x = 0; x < gpu.width; ++x) {
+            host_n.at(x, y) *= k;
+            gpu_n.at(x, y) *= k;
+        }
+    return compare_images(host_n, gpu_n, 8, 0.02f, 0.1f);
+}
+
 class MinimalHost : public ::testing::TestWithParam<std::string> {};
 
 // The PLANE_25 scene of `model` as the test renders it: 000 Table 1's
@@ -89,14 +118,11 @@ TEST_P(MinimalHost, MatchesTheRendererOnPlane25) {
     o.scene = scene_file;
     export_model(o);
     const std::filesystem::path pfm = dir / "host.pfm";
-    const std::string cmd =
-        fmt::format("{} {} {} {} > {} 2>&1", GLINTLAB_MINIMAL_HOST_PATH, o.out_dir.string(), model,
-                    pfm.string(), (dir / "host.log").string());
-    const int status = std::system(cmd.c_str());
-    std::ifstream log(dir / "host.log");
-    const std::string log_text((std::istreambuf_iterator<char>(log)),
-                               std::istreambuf_iterator<char>());
-    ASSERT_EQ(status, 0) << log_text;
+    std::string log_text;
+    ASSERT_EQ(run_minimal_host(fmt::format("{} {} {}", o.out_dir.string(), model, pfm.string()),
+                               dir / "host.log", &log_text),
+              0)
+        << log_text;
     const Image host = read_pfm(pfm);
 
     const Scene scene = parse_scene(scene_json, scene_file);
@@ -122,19 +148,9 @@ TEST_P(MinimalHost, MatchesTheRendererOnPlane25) {
         EXPECT_LT(background, gpu.width * gpu.height / 2);  // the quad covers most of the view
     }
 
-    // The view is lit, dimly (the light is behind the camera: mean ~1e-3);
-    // both images are scaled to a mean luminance of 1 so that the absolute
-    // part (0.02) of the pixel tolerance is relative to the image's level.
-    const ImageAgreement raw = compare_images(host, gpu, 8, 0.02f, 0.1f);
-    ASSERT_GT(raw.mean_b, 1e-4);
-    Image host_n = host, gpu_n = gpu;
-    const float k = static_cast<float>(1.0 / raw.mean_b);
-    for (int y = 0; y < gpu.height; ++y)
-        for (int x = 0; x < gpu.width; ++x) {
-            host_n.at(x, y) *= k;
-            gpu_n.at(x, y) *= k;
-        }
-    const ImageAgreement a = compare_images(host_n, gpu_n, 8, 0.02f, 0.1f);
+    double mean_b = 0.0;
+    const ImageAgreement a = agreement_at_unit_mean(host, gpu, &mean_b);
+    ASSERT_GT(mean_b, 1e-4);
     RecordProperty("mean_rel", std::to_string(a.mean_relative_error));
     RecordProperty("smoothed", std::to_string(a.smoothed_relative_l1));
     RecordProperty("mismatch", std::to_string(a.mismatch_fraction));
@@ -184,29 +200,20 @@ TEST(MinimalHostInputs, DensityMapMatchesTheRenderer) {
         { std::ofstream(o.scene) << plane25_scene(model).dump(2); }
         export_model(o);
         const std::filesystem::path out = dir / "host.pfm";
-        const std::string cmd = fmt::format(
-            "{} {} {} {} 128 128 12 {} > {} 2>&1", GLINTLAB_MINIMAL_HOST_PATH, o.out_dir.string(),
-            model, out.string(), (dir / "density.pfm").string(), (dir / "host.log").string());
-        const int status = std::system(cmd.c_str());
-        std::ifstream log(dir / "host.log");
-        const std::string log_text((std::istreambuf_iterator<char>(log)),
-                                   std::istreambuf_iterator<char>());
-        ASSERT_EQ(status, 0) << log_text;
+        std::string log_text;
+        ASSERT_EQ(run_minimal_host(fmt::format("{} {} {} 128 128 12 {}", o.out_dir.string(), model,
+                                               out.string(), (dir / "density.pfm").string()),
+                                   dir / "host.log", &log_text),
+                  0)
+            << log_text;
         const Image host = read_pfm(out);
         const Scene scene = parse_scene(scene_json, scene_file);
         GpuRenderer renderer(scene);
         renderer.render(scene);
         const Image gpu = renderer.read_image();
-        const ImageAgreement raw = compare_images(host, gpu, 8, 0.02f, 0.1f);
-        ASSERT_GT(raw.mean_b, 1e-4);
-        Image host_n = host, gpu_n = gpu;
-        const float k = static_cast<float>(1.0 / raw.mean_b);
-        for (int y = 0; y < gpu.height; ++y)
-            for (int x = 0; x < gpu.width; ++x) {
-                host_n.at(x, y) *= k;
-                gpu_n.at(x, y) *= k;
-            }
-        const ImageAgreement a = compare_images(host_n, gpu_n, 8, 0.02f, 0.1f);
+        double mean_b = 0.0;
+        const ImageAgreement a = agreement_at_unit_mean(host, gpu, &mean_b);
+        ASSERT_GT(mean_b, 1e-4);
         RecordProperty(model + "_mean_rel", std::to_string(a.mean_relative_error));
         RecordProperty(model + "_smoothed", std::to_string(a.smoothed_relative_l1));
         const bool gated = model == "deliot2023";
@@ -214,12 +221,13 @@ TEST(MinimalHostInputs, DensityMapMatchesTheRenderer) {
         EXPECT_LT(a.smoothed_relative_l1, gated ? 0.10 : 0.05);
         EXPECT_LT(a.mismatch_fraction, 0.01);
         // The map matters: the host without it draws another image.
-        const std::string plain_cmd =
-            fmt::format("{} {} {} {} 128 128 12 > /dev/null 2>&1", GLINTLAB_MINIMAL_HOST_PATH,
-                        o.out_dir.string(), model, (dir / "plain.pfm").string());
-        ASSERT_EQ(std::system(plain_cmd.c_str()), 0);
+        ASSERT_EQ(run_minimal_host(fmt::format("{} {} {} 128 128 12", o.out_dir.string(), model,
+                                               (dir / "plain.pfm").string()),
+                                   dir / "plain.log", &log_text),
+                  0)
+            << log_text;
         const ImageAgreement without =
-            compare_images(read_pfm(dir / "plain.pfm"), gpu, 8, 0.02f, 0.1f);
+            agreement_at_unit_mean(read_pfm(dir / "plain.pfm"), gpu, &mean_b);
         EXPECT_GT(without.smoothed_relative_l1, 2.0 * a.smoothed_relative_l1 + 0.02);
     }
 }
