@@ -367,6 +367,56 @@ TEST_F(MeshGltf, FileTangentsAreTransformedAndKeptForNormalMaps) {
     EXPECT_NEAR(std::abs(regenerated.tangents[0].x), 1.0f, 1e-5f);  // from the new uvs
 }
 
+// Hostile material data: each is an error naming the file and what is wrong,
+// never a crash or a silently untextured material.
+TEST_F(MeshGltf, BadMaterialTexturesAndImagesAreErrors) {
+    auto with_texture = [&](const json& images, const json& textures, int index) {
+        Asset a = quad_asset(kU16);
+        a.doc["nodes"] = json::array({{{"mesh", 0}}});
+        a.doc["meshes"][0]["primitives"][0]["material"] = 0;
+        a.doc["materials"] =
+            json::array({{{"name", "paint"},
+                          {"pbrMetallicRoughness", {{"baseColorTexture", {{"index", index}}}}}}});
+        if (!textures.is_null()) a.doc["textures"] = textures;
+        if (!images.is_null()) a.doc["images"] = images;
+        return a;
+    };
+    auto error = [&](const Asset& a) {
+        const fs::path path = write_gltf("bad.gltf", a);
+        try {
+            const json scene = {{"camera", {{"eye", {0, 0, 3}}, {"target", {0, 0, 0}}}},
+                                {"shapes", {{{"type", "gltf"}, {"file", "bad.gltf"}}}}};
+            parse_scene(scene, dir_ / "scene.json");
+        } catch (const Error& e) {
+            return std::string(e.what());
+        }
+        return std::string("no error");
+    };
+    const std::string index = error(with_texture(nullptr, nullptr, 5));
+    EXPECT_NE(index.find("bad.gltf: material \"paint\": baseColorTexture names texture 5, out "
+                         "of range [0, 0)"),
+              std::string::npos)
+        << index;
+    const std::vector<uint8_t> garbage = {'n', 'o', 't', ' ', 'a', 'n', ' ', 'i', 'm', 'a', 'g'};
+    const std::string decode =
+        error(with_texture(json::array({{{"uri", "data:image/png;base64," + base64(garbage)}}}),
+                           json::array({{{"source", 0}}}), 0));
+    EXPECT_NE(decode.find("bad.gltf image 0>"), std::string::npos) << decode;
+    EXPECT_NE(decode.find("neither the PNG signature nor the JPEG"), std::string::npos) << decode;
+    const std::string missing = error(
+        with_texture(json::array({{{"uri", "nowhere.png"}}}), json::array({{{"source", 0}}}), 0));
+    EXPECT_NE(missing.find("nowhere.png"), std::string::npos) << missing;
+    EXPECT_NE(missing.find("not found"), std::string::npos) << missing;
+    // An image in a buffer view past the end of its buffer.
+    Asset past = with_texture(json::array({{{"bufferView", 0}, {"mimeType", "image/png"}}}),
+                              json::array({{{"source", 0}}}), 0);
+    past.doc["bufferViews"].push_back({{"buffer", 0}, {"byteOffset", 0}, {"byteLength", 1 << 20}});
+    past.doc["images"][0]["bufferView"] = past.doc["bufferViews"].size() - 1;
+    const std::string view = error(past);
+    EXPECT_NE(view.find("bad.gltf"), std::string::npos) << view;
+    EXPECT_EQ(view.find("no error"), std::string::npos) << view;
+}
+
 TEST_F(MeshGltf, MaterialOverridesNameTheFilesMaterials) {
     Asset a = quad_asset(kU16);
     a.doc["nodes"] = json::array({{{"mesh", 0}}});
