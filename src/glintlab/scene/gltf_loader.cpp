@@ -691,6 +691,7 @@ GltfScene read_gltf(const std::string& file, const std::string& name,
                     const std::filesystem::path& base_dir, bool merge) {
     const tinygltf::Model model = parse_model(file, name, base_dir);
     GltfScene scene;
+    scene.file_materials = model.materials.size();
     if (merge) {
         scene.parts = GltfReader(model, name, {}, true).read_scene();
         return scene;
@@ -729,13 +730,14 @@ GltfScene load_gltf_scene_bytes(const std::string& bytes, const std::string& nam
     return read_gltf(bytes, name, base_dir, false);
 }
 
-TriangleMesh load_gltf(const std::filesystem::path& path) {
-    return load_gltf_bytes(read_file(path), path.string(), path.parent_path());
+TriangleMesh load_gltf(const std::filesystem::path& path, size_t* file_materials) {
+    return load_gltf_bytes(read_file(path), path.string(), path.parent_path(), file_materials);
 }
 
 TriangleMesh load_gltf_bytes(const std::string& file, const std::string& name,
-                             const std::filesystem::path& base_dir) {
+                             const std::filesystem::path& base_dir, size_t* file_materials) {
     GltfScene scene = read_gltf(file, name, base_dir, true);
+    if (file_materials) *file_materials = scene.file_materials;
     return std::move(scene.parts.front().mesh);
 }
 

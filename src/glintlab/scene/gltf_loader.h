@@ -2,6 +2,7 @@
 // and images, and .glb), through tinygltf.
 #pragma once
 
+#include <cstddef>
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -39,6 +40,7 @@ struct GltfScene {
     // The embedded images the parts' materials read, decoded, under the
     // in-memory names their texture blocks give ("<f.glb image 0>").
     TextureFileCache images;
+    size_t file_materials = 0;  // how many materials the file has (read or not)
 };
 GltfScene load_gltf_scene(const std::filesystem::path& path);
 // The same from the file's bytes already in memory: `name` names it in
@@ -50,8 +52,11 @@ GltfScene load_gltf_scene_bytes(const std::string& bytes, const std::string& nam
 // file's materials unread: the geometry a shape with its own "material"
 // shades. The fuzzing entry (src/glintlab/fuzz) reads glTF files through
 // load_gltf_bytes.
-TriangleMesh load_gltf(const std::filesystem::path& path);
+// `file_materials`, if given: how many materials the file has (which the
+// shape's own material replaces).
+TriangleMesh load_gltf(const std::filesystem::path& path, size_t* file_materials = nullptr);
 TriangleMesh load_gltf_bytes(const std::string& bytes, const std::string& name,
-                             const std::filesystem::path& base_dir);
+                             const std::filesystem::path& base_dir,
+                             size_t* file_materials = nullptr);
 
 }  // namespace glintlab

@@ -527,7 +527,17 @@ void read_shape(JsonObject& o, LoadContext& ctx) {
         } else if (type == "obj") {
             mesh = load_obj(o.file_path("file"));
         } else {
-            mesh = load_gltf(o.file_path("file"));
+            const std::filesystem::path file = o.file_path("file");
+            size_t file_materials = 0;
+            mesh = load_gltf(file, &file_materials);
+            // Said once per shape: an older scene's "material" hides the
+            // file's own (textured) materials.
+            if (file_materials > 0)
+                fmt::print(stderr,
+                           "note: {}: the shape's material \"{}\" replaces the file's {} "
+                           "material{} (leave \"material\" out to render them: "
+                           "docs/SCENE_FORMAT.md, \"glTF materials\")\n",
+                           file.string(), material, file_materials, file_materials == 1 ? "" : "s");
         }
         std::optional<UvProjection> uv;
         if (auto block = o.object("uv")) uv = read_uv_projection(*block);
