@@ -16,6 +16,7 @@
 // per-fragment values (glint_uniforms.glsl), set by glint_set_inputs.
 #include "glintlab/core/constants.glsl"
 #include "glintlab/core/footprint.glsl"
+#include "glintlab/core/texture_filter.glsl"
 #include "glintlab/glints/glint_uniforms.glsl"
 #include "glintlab/glints/material.glsl"
 
@@ -95,20 +96,8 @@ uniform mat2 u_input_texture_linear[4];
 uniform vec2 u_input_texture_offset[4];
 
 vec3 glint_input_filtered(sampler2D tex, int slot, Footprint fp) {
-    mat2 linear = u_input_texture_linear[slot];
-    vec2 size = vec2(textureSize(tex, 0));
-    vec2 st = linear * fp.uv + u_input_texture_offset[slot];
-    vec2 dx = linear * fp.duvdx, dy = linear * fp.duvdy;
-    float px = length(dx * size), py = length(dy * size);
-    float pmax = max(px, py), pmin = min(px, py);
-    if (!(pmax > 0.0f) || isinf(pmax)) return textureLod(tex, st, 0.0f).rgb;
-    int n = int(min(16.0f, ceil(pmax / max(pmin, pmax * 1e-6f))));
-    float lod = log2(pmax / float(n));
-    vec2 major = px >= py ? dx : dy;
-    vec3 sum = vec3(0.0f);
-    for (int i = 0; i < n; ++i)
-        sum += textureLod(tex, st + major * ((float(i) + 0.5f) / float(n) - 0.5f), lod).rgb;
-    return sum / float(n);
+    return material_texture_filtered(tex, vec2(textureSize(tex, 0)), u_input_texture_linear[slot],
+                                     u_input_texture_offset[slot], fp, 0.0f);
 }
 
 // The uniforms' inputs with the textured ones replaced by their filtered values.

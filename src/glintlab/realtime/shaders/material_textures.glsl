@@ -15,6 +15,7 @@
 #define GLINTLAB_MATERIAL_TEXTURES 1
 #endif
 #include "glintlab/core/footprint.glsl"
+#include "glintlab/core/texture_filter.glsl"
 #include "glintlab/glints/glint_uniforms.glsl"
 #include "glintlab/realtime/shaders/material_uniforms.glsl"
 
@@ -31,25 +32,6 @@ uniform int u_material_texture_mask;  // bit i: slot i is textured
 uniform mat2 u_material_texture_linear[6];
 uniform vec2 u_material_texture_offset[6];
 uniform vec2 u_material_texture_size[6];
-
-const int kMaterialTextureMaxAnisotropy = 16;
-
-// `bias`: OpenGL's TEXTURE_LOD_BIAS (MipTexture::filtered's lod_bias).
-vec3 material_texture_filtered(sampler2D tex, vec2 size, mat2 linear, vec2 offset, Footprint fp,
-                               float bias) {
-    vec2 st = linear * fp.uv + offset;
-    vec2 dx = linear * fp.duvdx, dy = linear * fp.duvdy;
-    float px = length(dx * size), py = length(dy * size);
-    float pmax = max(px, py), pmin = min(px, py);
-    if (!(pmax > 0.0f) || isinf(pmax)) return textureLod(tex, st, 0.0f).rgb;
-    int n = int(min(float(kMaterialTextureMaxAnisotropy), ceil(pmax / max(pmin, pmax * 1e-6f))));
-    float lod = log2(pmax / float(n)) + bias;
-    vec2 major = px >= py ? dx : dy;
-    vec3 sum = vec3(0.0f);
-    for (int i = 0; i < n; ++i)
-        sum += textureLod(tex, st + major * ((float(i) + 0.5f) / float(n) - 0.5f), lod).rgb;
-    return sum / float(n);
-}
 
 // One line: the texture of `slot` over the footprint (a constant slot indexes the sampler array).
 #define MATERIAL_TEXTURE(slot, fp) material_texture_filtered(u_material_texture[slot], u_material_texture_size[slot], u_material_texture_linear[slot], u_material_texture_offset[slot], fp, 0.0f)
