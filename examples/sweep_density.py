@@ -3,7 +3,7 @@ against the `explicit` ground truth, with standard errors (the convergence
 plots of the glint papers: at high densities every model tends to its
 smooth limit).
 
-    python3 examples/sweep_density.py [--scheduler ADDR] [--realizations R]
+    env/bin/python examples/sweep_density.py [--scheduler ADDR] [--realizations R]
 
 Reads examples/sweep_density.json (scene, axes, reference). Every point is
 rendered with R material seeds (realizations), each against the truth of

@@ -18,6 +18,8 @@ packages=(
     xvfb xauth
     python3-dev pybind11-dev python3-pybind11 python3-numpy python3-pytest
     python3-pandas python3-matplotlib python3-distributed
+    python3-venv python3-pip python3-setuptools python3-wheel python3-tqdm
+    jupyter-nbconvert python3-nbclient python3-nbformat python3-ipykernel
 )
 
 missing=()

@@ -9,7 +9,7 @@
   colour.png     sRGB stripes and a gradient (the tint)
 
 Run from the repository root with the Python module on the path:
-  PYTHONPATH=build/release/python python3 scripts/make_compare_textures.py
+  env/bin/python scripts/make_compare_textures.py
 """
 import os
 

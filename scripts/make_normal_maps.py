@@ -12,7 +12,7 @@ x along +u, y up in the image, i.e. along -v, z out of the surface):
 
 Both tile with period 1 in u and v. Run from the repository root with the
 Python module on the path:
-  PYTHONPATH=build/release/python python3 scripts/make_normal_maps.py
+  env/bin/python scripts/make_normal_maps.py
 """
 import os
 

@@ -310,18 +310,33 @@ PYBIND11_MODULE(_glintlab, m) {
            const std::string& material, const std::vector<std::string>& models, int realizations,
            int width, int height, int spp, int frames, double orbit_deg, uint64_t seed, bool gpu,
            int threads, const std::string& output, int truth_realizations, bool match_facet_extent,
-           int flicker_paths) {
+           int flicker_paths, py::object progress) {
             glintlab::python::CompareArgs a{scene,     sets,   material, models, realizations,
                                             width,     height, spp,      frames, threads,
                                             orbit_deg, seed,   gpu,      output};
             a.truth_realizations = truth_realizations;
             a.match_facet_extent = match_facet_extent;
             a.flicker_paths = flicker_paths;
+            // As render's callback: the first exception it raises is kept,
+            // later calls are skipped, and it is re-raised after the run.
+            std::unique_ptr<py::error_already_set> callback_error;
+            if (!progress.is_none()) {
+                a.progress = [&progress, &callback_error](int done, int total) {
+                    py::gil_scoped_acquire acquire;
+                    if (callback_error) return;
+                    try {
+                        progress(done, total);
+                    } catch (py::error_already_set& e) {
+                        callback_error = std::make_unique<py::error_already_set>(std::move(e));
+                    }
+                };
+            }
             nlohmann::json j;
             {
                 py::gil_scoped_release release;
                 j = glintlab::python::run_compare(a);
             }
+            if (callback_error) throw std::move(*callback_error);
             return j.dump();
         },
         py::arg("scene"), py::arg("sets"), py::arg("material"), py::arg("models"),
@@ -329,6 +344,7 @@ PYBIND11_MODULE(_glintlab, m) {
         py::arg("frames"), py::arg("orbit_deg"), py::arg("seed"), py::arg("gpu"),
         py::arg("threads"), py::arg("output"), py::arg("truth_realizations") = 0,
         py::arg("match_facet_extent") = true, py::arg("flicker_paths") = 4,
+        py::arg("progress") = py::none(),
         "glintlab compare: the metrics.json document (docs/VALIDATION.md \"compare\")");
     m.def(
         "read_image", [](const std::string& path) { return to_numpy(read_image(path)); },

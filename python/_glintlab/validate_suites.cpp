@@ -32,6 +32,7 @@ nlohmann::json run_compare(const CompareArgs& a) {
     o.seed = a.seed;
     o.gpu = a.gpu;
     o.threads = a.threads;
+    o.progress = a.progress;
     const compare::CompareResult r = compare::run_compare(o);
     if (!a.output.empty()) compare::write_compare_outputs(r, a.output);
     return r.to_json();

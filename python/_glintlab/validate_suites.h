@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -28,9 +29,10 @@ struct CompareArgs {
     uint64_t seed = 1;
     bool gpu = false;
     std::string output;
-    int truth_realizations = 0;      // 0: realizations
-    int flicker_paths = 4;           // camera paths of the flicker measure
-    bool match_facet_extent = true;  // false: the models' default facet extents
+    int truth_realizations = 0;                        // 0: realizations
+    int flicker_paths = 4;                             // camera paths of the flicker measure
+    bool match_facet_extent = true;                    // false: the models' default facet extents
+    std::function<void(int, int)> progress = nullptr;  // (done, total) renders, as CompareOptions
 };
 nlohmann::json run_compare(const CompareArgs& args);
 

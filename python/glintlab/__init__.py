@@ -2,6 +2,12 @@
 direct evaluation of glint BRDFs, validation suites, image I/O and
 parameter sweeps on Dask distributed (docs/PYTHON.md).
 
+Conventions: an image is a float32 NumPy array of shape (H, W, 3) holding
+linear radiance (row 0 at the top); `tonemap` turns it into display values
+for matplotlib. Tables (`sweep`, `compare_table`) are pandas DataFrames with
+each mean's standard error in the column beside it ("<name>_se"). Long
+calls show a progress bar once they run for a second (`set_progress`).
+
 Scene documents follow docs/SCENE_FORMAT.md. Errors of the strict scene
 loader are raised as `SceneError` with the loader's message (file, JSON
 path, allowed range); other library errors as `Error`.
@@ -15,15 +21,18 @@ import re
 import numpy as np
 
 from . import _glintlab
+from ._display import tonemap
 from ._glintlab import Error, Scene, SceneError
+from ._progress import _Bar, progress_enabled, set_progress
 
 __all__ = [
     "Error", "SceneError", "OverrideError", "Scene", "parse_scene", "load_document",
     "apply_overrides", "set_model", "render", "models", "eval_brdf", "eval_ndf", "validate",
-    "validation_suites", "compare", "read_image", "write_image", "sweep", "__version__",
+    "validation_suites", "compare", "compare_table", "read_image", "write_image", "tonemap",
+    "sweep", "set_progress", "progress_enabled", "with_gl", "__version__",
 ]
-__version__ = _glintlab.__version__
-with_gl = _glintlab.with_gl
+__version__ = _glintlab.__version__  # the C++ library's version, as `glintlab --version`
+with_gl = _glintlab.with_gl  # whether gpu=True renders are available (built with OpenGL)
 
 
 class OverrideError(SceneError):
@@ -214,12 +223,16 @@ def render(scene, model=None, overrides=None, gpu=False, spp=None, seed=None, re
            threads=0, progress=None, file=None):
     """Renders `scene` (dict, path or Scene) to a linear float32 array of
     shape (H, W, 3), like `glintlab render` (same seed and resolution: the
-    same pixels). `res` is (W, H); `progress(fraction)` is called as tiles
-    finish (CPU only). The GIL is released while rendering."""
+    same pixels). `res` is (W, H) or "WxH"; `model` switches every glint
+    material's model; `overrides` {JSON pointer: value} as apply_overrides.
+    `progress`: None (a bar after a second, see set_progress), True, False,
+    or a callable(fraction) called as tiles finish (CPU renders only). The
+    GIL is released while rendering."""
     parsed = parse_scene(scene, file=file, model=model, overrides=overrides)
     width, height = (None, None) if res is None else _resolution(res)
-    return _glintlab.render(parsed, gpu=gpu, spp=spp, seed=seed, width=width, height=height,
-                            threads=threads, progress=progress)
+    with _Bar(None if gpu and progress is None else progress, "render") as bar:
+        return _glintlab.render(parsed, gpu=gpu, spp=spp, seed=seed, width=width, height=height,
+                                threads=threads, progress=bar.hook)
 
 
 def _resolution(res):
@@ -322,6 +335,7 @@ def eval_ndf(material, wo, wi, footprint=None, file="<material>"):
 
 
 def validation_suites():
+    """Names of the suites `validate` runs (as `glintlab validate --help`)."""
     return list(_glintlab.validation_suites())
 
 
@@ -333,7 +347,7 @@ def validate(suite, seed=1):
 
 def compare(scene, models=None, material=None, realizations=4, res=None, spp=None, frames=8,
             orbit_deg=4.0, seed=1, gpu=False, threads=0, overrides=None, output=None,
-            truth_realizations=0, match_facet_extent=True, flicker_paths=4):
+            truth_realizations=0, match_facet_extent=True, flicker_paths=4, progress=None):
     """`glintlab compare` on a scene file: every model that can shade the
     scene's lights against the explicit ground truth (docs/VALIDATION.md
     "compare"). Returns the metrics.json document as a dict (one entry per
@@ -343,15 +357,50 @@ def compare(scene, models=None, material=None, realizations=4, res=None, spp=Non
     `match_facet_extent=False` keeps every model's default facet extent
     instead of the truth's (CLI --model-extent); `flicker_paths` camera
     paths (each another realization) give the flicker and its standard
-    error (CLI --flicker-paths)."""
+    error (CLI --flicker-paths). `progress` as in render, over the renders.
+    `compare_table` turns the result into a DataFrame."""
     width, height = _resolution(res) if res is not None else (0, 0)
     if isinstance(models, str):
         models = [models]
-    return json.loads(_glintlab.compare_json(
-        os.fspath(scene), list(overrides or []), material or "", list(models or []),
-        int(realizations), width, height, int(spp or 0), int(frames), float(orbit_deg),
-        int(seed), bool(gpu), int(threads), os.fspath(output) if output else "",
-        int(truth_realizations), bool(match_facet_extent), int(flicker_paths)))
+    with _Bar(progress, "compare") as bar:
+        hook = None if bar.hook is None else (lambda done, total: bar.update(done / total))
+        return json.loads(_glintlab.compare_json(
+            os.fspath(scene), list(overrides or []), material or "", list(models or []),
+            int(realizations), width, height, int(spp or 0), int(frames), float(orbit_deg),
+            int(seed), bool(gpu), int(threads), os.fspath(output) if output else "",
+            int(truth_realizations), bool(match_facet_extent), int(flicker_paths), hook))
+
+
+def compare_table(result):
+    """The models of a `compare` result as a pandas DataFrame, one row per
+    compared model in the result's order: "model", "truth" (the ground
+    truth it is measured against; a truth row of its own heads each facet
+    extent, "reference" True), "backend", then its numeric metrics, each
+    standard error ("<metric>_se") beside its metric (docs/VALIDATION.md
+    "compare" defines them). Models that were not compared are left out;
+    `result["models"]` says why."""
+    import pandas as pd
+    rows = []
+    for m in result.get("models", []):
+        if not m.get("compared"):
+            continue
+        row = {"model": m["model"], "truth": m.get("truth"), "reference": m.get("reference"),
+               "backend": m.get("backend")}
+        for key, value in m.items():
+            if key not in row and (value is None or (isinstance(value, (int, float)) and
+                                                     not isinstance(value, bool))):
+                row[key] = float("nan") if value is None else value  # JSON null: not defined
+        rows.append(row)
+    table = pd.DataFrame(rows)
+    metrics = [c for c in table.columns if c not in ("model", "truth", "reference", "backend")]
+    ordered = [c for c in metrics if not c.endswith("_se")]
+    columns = ["model", "truth", "reference", "backend"]
+    for c in ordered:
+        columns.append(c)
+        if c + "_se" in table.columns:
+            columns.append(c + "_se")
+    columns += [c for c in metrics if c not in columns]
+    return table[columns] if rows else table
 
 
 def read_image(path):

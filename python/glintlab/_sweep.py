@@ -66,26 +66,54 @@ def point_seed(base_seed, values):
     return int.from_bytes(hashlib.sha256(text.encode()).digest()[:4], "little")
 
 
-def _render_task(doc_text, file, values, seed, res, spp, threads):
+def realization_seed(base_seed, values, realization):
+    """The render seed of realization r of a point: point_seed for r = 0
+    (a sweep of one realization renders what it always did), a hash of the
+    point and r otherwise."""
+    if realization == 0:
+        return point_seed(base_seed, values)
+    return point_seed(base_seed, {"point": values, "realization": int(realization)})
+
+
+def _shift_glint_seeds(doc, realization):
+    """Realization r renders another microstructure: every glint material's
+    `seed` (the facets' placement, default 0) plus r, modulo 2^32."""
+    for m in doc.get("materials", []):
+        if isinstance(m, dict) and m.get("type") == "glint":
+            m["seed"] = (int(m.get("seed", 0)) + int(realization)) % (1 << 32)
+
+
+def _render_task(doc_text, file, values, seed, res, spp, threads, realization=0):
     """One render: the point's overrides (axis "model" switches every glint
-    material's model) on the base document. Returns (image, seconds)."""
+    material's model) on the base document, then realization r's glint
+    seeds. Returns (image, seconds)."""
     import glintlab
     overrides = {k: v for k, v in values.items() if k != "model"}
+    doc = json.loads(doc_text)
+    if realization:
+        glintlab.apply_overrides(doc, overrides)
+        overrides = None
+        _shift_glint_seeds(doc, realization)
     start = time.perf_counter()
-    image = glintlab.render(json.loads(doc_text), model=values.get("model"), overrides=overrides,
-                            spp=spp, seed=seed, res=res, threads=threads, file=file)
+    image = glintlab.render(doc, model=values.get("model"), overrides=overrides, spp=spp,
+                            seed=seed, res=res, threads=threads, file=file, progress=False)
     return image, time.perf_counter() - start
 
 
-def _row_task(index, values, rendered, reference, metric_names, custom):
-    image, seconds = rendered
-    ref_image = reference[0] if reference is not None else None
+def _row_task(index, values, rendered, references, metric_names, custom):
+    """A point's row: each metric's mean over the realizations (each against
+    the reference of the same realization) and its standard error (sample
+    standard deviation / sqrt(R); NaN for one realization)."""
     row = {"point": index}
     row.update({k: _cell(v) for k, v in values.items()})
     for name in metric_names:
         fn = custom.get(name) or METRICS[name]
-        row[name] = float(fn(image, ref_image))
-    row["render_s"] = seconds
+        samples = np.array([float(fn(image, None if references is None else references[r][0]))
+                            for r, (image, _) in enumerate(rendered)])
+        row[name] = float(np.mean(samples))
+        row[name + "_se"] = (float(np.std(samples, ddof=1) / np.sqrt(samples.size))
+                             if samples.size > 1 else float("nan"))
+    row["render_s"] = float(np.mean([seconds for _, seconds in rendered]))
     return row
 
 
@@ -97,34 +125,50 @@ def _slug(axis):
     return re.sub(r"[^A-Za-z0-9]+", "_", axis).strip("_") or "axis"
 
 
-class _Serial:
-    """Runs the tasks in this process, in order (client="serial")."""
-
-    def run(self, tasks):
-        results = {}
-        for key, fn, args in tasks:
-            results[key] = fn(*[results[a] if isinstance(a, _Dep) else a for a in args])
-        return results
-
-
 class _Dep(str):
-    """An argument that is the result of the task with this key."""
+    """An argument (or an element of a list argument) that is the result of
+    the task with this key."""
 
 
-def _run_dask(client, tasks, row_keys):
+def _resolve(arg, results):
+    if isinstance(arg, _Dep):
+        return results[arg]
+    if isinstance(arg, list):
+        return [_resolve(a, results) for a in arg]
+    return arg
+
+
+def _run_serial(tasks, row_keys, bar):
+    """Runs the tasks in this process, in order (client="serial")."""
+    results, rows = {}, set(row_keys)
+    for key, fn, args in tasks:
+        results[key] = fn(*[_resolve(a, results) for a in args])
+        if key in rows:
+            bar.update(sum(k in results for k in row_keys) / len(row_keys))
+    return results
+
+
+def _run_dask(client, tasks, row_keys, bar):
+    from distributed import as_completed
     futures = {}
     for key, fn, args in tasks:
-        futures[key] = client.submit(
-            fn, *[futures[a] if isinstance(a, _Dep) else a for a in args], key=key, pure=True)
+        futures[key] = client.submit(fn, *[_resolve(a, futures) for a in args], key=key, pure=True)
+    done = 0
+    for _ in as_completed([futures[k] for k in row_keys]):
+        done += 1
+        bar.update(done / len(row_keys))
     rows = client.gather([futures[k] for k in row_keys])
     return dict(zip(row_keys, rows))
 
 
 def sweep(base_scene, axes, metrics=None, client=None, seed=1, reference=None, res=None,
-          spp=None, threads=1, output=None, n_workers=2, file=None, plots=True):
+          spp=None, threads=1, output=None, n_workers=2, file=None, plots=True, realizations=1,
+          progress=None):
     """Renders every point of the product of `axes` and returns a pandas
     DataFrame with one row per point (sorted by "point", the point's index
-    in the product): the axis values, the metrics and "render_s".
+    in the product): the axis values, each metric's mean over the
+    realizations with its standard error beside it ("<metric>_se"; NaN for
+    one realization), and "render_s" (mean seconds per render).
 
     base_scene: dict or path. axes: {pointer or "model": [values, ...]},
       pointers as in glintlab.apply_overrides; the product runs in the
@@ -142,7 +186,14 @@ def sweep(base_scene, axes, metrics=None, client=None, seed=1, reference=None, r
       a distributed.Client (e.g. of a process cluster), a scheduler address
       ("tcp://host:8786") or "serial" (this process, no Dask).
     output: a directory for sweep.csv (+ sweep.parquet when pyarrow or
-      fastparquet is importable) and one PNG per metric and axis.
+      fastparquet is importable) and one PNG per metric and axis (error
+      bars of one standard error when realizations > 1).
+    realizations: R renders per point, realization r with the render seed
+      realization_seed(seed, values, r) and every glint material's `seed`
+      plus r (another microstructure); a reference is rendered per
+      realization too, so each point's error compares like with like.
+    progress: None (a bar after a second, see glintlab.set_progress), True,
+      False or a callable(fraction), over the points.
     """
     import pandas as pd
     import glintlab
@@ -171,6 +222,10 @@ def sweep(base_scene, axes, metrics=None, client=None, seed=1, reference=None, r
         if m in _NEEDS_REFERENCE and m not in custom and reference is None:
             raise ValueError(f"metrics: {m} needs a reference (reference={{...}})")
     res = None if res is None else glintlab._resolution(res)
+    if isinstance(realizations, bool) or not isinstance(realizations, (int, np.integer)) or \
+            not 1 <= realizations <= 1024:
+        raise ValueError(f"realizations: expected an integer in [1, 1024], got {realizations!r}")
+    realizations = int(realizations)
 
     points = [dict(zip(axis_names, combo)) for combo in itertools.product(*(axes[a] for a in axis_names))]
     # Validate every point's overrides here, where an error names the point,
@@ -182,46 +237,54 @@ def sweep(base_scene, axes, metrics=None, client=None, seed=1, reference=None, r
     # Keys: the sweep's content, then the role and index, so retries and
     # repeated sweeps reuse results and distinct sweeps never collide.
     digest = hashlib.sha256(json.dumps([doc_text, name, res, spp, seed, threads, metric_names,
-                                        sorted(custom)], default=str).encode()).hexdigest()[:16]
+                                        sorted(custom), realizations],
+                                       default=str).encode()).hexdigest()[:16]
     tasks, row_keys, ref_keys = [], [], {}
     for i, values in enumerate(points):
-        ref_dep = None
+        ref_deps = None
         if reference is not None:
             ref_values = dict(values)
             ref_values.update(reference)
             ref_id = json.dumps(ref_values, sort_keys=True)
             if ref_id not in ref_keys:
-                key = f"glintlab-ref-{digest}-{len(ref_keys)}"
-                ref_keys[ref_id] = key
-                tasks.append((key, _render_task, (doc_text, name, ref_values,
-                                                  point_seed(seed, ref_values), res, spp, threads)))
-            ref_dep = _Dep(ref_keys[ref_id])
-        render_key = f"glintlab-render-{digest}-{i}"
-        tasks.append((render_key, _render_task, (doc_text, name, values, point_seed(seed, values),
-                                                 res, spp, threads)))
+                ref_keys[ref_id] = [f"glintlab-ref-{digest}-{len(ref_keys)}-{r}"
+                                    for r in range(realizations)]
+                for r, key in enumerate(ref_keys[ref_id]):
+                    tasks.append((key, _render_task,
+                                  (doc_text, name, ref_values,
+                                   realization_seed(seed, ref_values, r), res, spp, threads, r)))
+            ref_deps = [_Dep(k) for k in ref_keys[ref_id]]
+        render_deps = []
+        for r in range(realizations):
+            render_key = f"glintlab-render-{digest}-{i}-{r}"
+            tasks.append((render_key, _render_task,
+                          (doc_text, name, values, realization_seed(seed, values, r), res, spp,
+                           threads, r)))
+            render_deps.append(_Dep(render_key))
         row_key = f"glintlab-row-{digest}-{i}"
-        tasks.append((row_key, _row_task, (i, values, _Dep(render_key), ref_dep, metric_names,
+        tasks.append((row_key, _row_task, (i, values, render_deps, ref_deps, metric_names,
                                            custom)))
         row_keys.append(row_key)
 
-    if isinstance(client, str) and client == "serial":
-        results = _Serial().run(tasks)
-    elif client is None:
-        from distributed import Client, LocalCluster
-        # Threads, not processes: a process cluster spawns interpreters that
-        # re-run the user's script, and one without a main guard then starts
-        # a cluster in every worker (it hung for 15 minutes). Renders release
-        # the GIL, so the threads render in parallel.
-        with LocalCluster(n_workers=n_workers, threads_per_worker=1, processes=False,
-                          dashboard_address=None) as cluster, \
-                Client(cluster) as own:
-            results = _run_dask(own, tasks, row_keys)
-    elif isinstance(client, str):
-        from distributed import Client
-        with Client(client) as own:
-            results = _run_dask(own, tasks, row_keys)
-    else:
-        results = _run_dask(client, tasks, row_keys)
+    with glintlab._Bar(progress, "sweep") as bar:
+        if isinstance(client, str) and client == "serial":
+            results = _run_serial(tasks, row_keys, bar)
+        elif client is None:
+            from distributed import Client, LocalCluster
+            # Threads, not processes: a process cluster spawns interpreters
+            # that re-run the user's script, and one without a main guard
+            # then starts a cluster in every worker (it hung for 15 minutes).
+            # Renders release the GIL, so the threads render in parallel.
+            with LocalCluster(n_workers=n_workers, threads_per_worker=1, processes=False,
+                              dashboard_address=None) as cluster, \
+                    Client(cluster) as own:
+                results = _run_dask(own, tasks, row_keys, bar)
+        elif isinstance(client, str):
+            from distributed import Client
+            with Client(client) as own:
+                results = _run_dask(own, tasks, row_keys, bar)
+        else:
+            results = _run_dask(client, tasks, row_keys, bar)
 
     table = pd.DataFrame([results[k] for k in row_keys]).sort_values("point").reset_index(drop=True)
     if not table["point"].is_unique or len(table) != len(points):
@@ -267,11 +330,15 @@ def write_outputs(table, axis_names, metric_names, output, plots=True):
                 key = key if isinstance(key, tuple) else (key,)
                 label = ", ".join(f"{a}={v}" for a, v in zip(others, key)) or None
                 xs = group[axis]
+                se_col = metric + "_se"
                 if all(isinstance(x, (int, float)) for x in xs):
                     g = group.sort_values(axis)
-                    ax.plot(g[axis], g[metric], marker="o", label=label)
+                    x_values = g[axis]
                 else:
-                    ax.plot([str(x) for x in xs], group[metric], marker="o", label=label)
+                    g = group
+                    x_values = [str(x) for x in xs]
+                se = g[se_col] if se_col in g and g[se_col].notna().any() else None
+                ax.errorbar(x_values, g[metric], yerr=se, marker="o", capsize=3, label=label)
             ax.set_xlabel(axis)
             ax.set_ylabel(metric)
             if others:
@@ -298,11 +365,14 @@ def main(argv=None):
     parser.add_argument("--scheduler", help="Dask scheduler address (default: a local cluster)")
     parser.add_argument("--workers", type=int, default=2, help="local cluster workers (2)")
     parser.add_argument("-o", "--output", help="output directory (overrides the file's)")
+    parser.add_argument("--realizations", type=int,
+                        help="renders per point, each another microstructure (overrides the "
+                             "file's; default 1)")
     args = parser.parse_args(argv)
     with open(args.sweep, encoding="utf-8") as f:
         spec = json.load(f)
     known = {"comment", "scene", "axes", "metrics", "reference", "res", "spp", "seed", "output",
-             "threads"}
+             "threads", "realizations"}
     unknown = sorted(set(spec) - known)
     if unknown:
         raise SystemExit(f"{args.sweep}: unknown keys {unknown} (known: {sorted(known)})")
@@ -318,6 +388,7 @@ def main(argv=None):
                       client=args.scheduler, seed=spec.get("seed", 1),
                       reference=spec.get("reference"), res=spec.get("res"), spp=spec.get("spp"),
                       threads=spec.get("threads", 1), output=output, n_workers=args.workers,
+                      realizations=args.realizations or spec.get("realizations", 1),
                       file=None if isinstance(scene, str) else args.sweep)
     except (glintlab.Error, ValueError) as e:
         raise SystemExit(f"glintlab.sweep: error: {e}")

@@ -1,6 +1,7 @@
-"""Shared fixtures of the glintlab Python tests (run by ctest as
-`python.pytest` with PYTHONPATH=<build>/python, GLINTLAB_CLI and
-GLINTLAB_SOURCE_DIR set by python/CMakeLists.txt)."""
+"""Shared fixtures of the glintlab Python tests. ctest runs them
+(`python.pytest`) on the interpreter of a virtual environment into which
+the `python.install` fixture installed glintlab with pip, with
+GLINTLAB_CLI and GLINTLAB_SOURCE_DIR set by python/CMakeLists.txt."""
 
 import copy
 import os

@@ -1,6 +1,7 @@
 // glintlab: render, validate and inspect glint models from the command line.
 #include <cstdio>
 #include <exception>
+#include <string>
 
 #include <fmt/format.h>
 
@@ -10,6 +11,8 @@
 int main(int argc, char** argv) {
     CLI::App app{"glintlab: rendering and validation of glint (discrete microfacet) models"};
     app.require_subcommand(1);
+    // The Python package's glintlab.__version__ is the same string.
+    app.set_version_flag("--version", std::string("glintlab ") + GLINTLAB_VERSION);
     int status = 0;
     glintlab::cmd::add_render_command(app, &status);
     glintlab::cmd::add_info_command(app, &status);

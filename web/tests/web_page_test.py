@@ -341,7 +341,6 @@ LIMITS = {
 
 def test_compare(page, export_dir, models, env_file):
     import numpy as np
-    sys.path.insert(0, os.environ.get("GLINTLAB_PYTHON", ""))
     import glintlab
     ok = True
     for model in models:
