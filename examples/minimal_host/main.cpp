@@ -8,12 +8,15 @@
 // (surfaceless Mesa platform) into an RGBA32F framebuffer and writes the
 // linear radiance as a PFM file.
 //
-// Usage: minimal_host EXPORT_DIR MODEL OUT.pfm [WIDTH HEIGHT LOG_DENSITY [LOG_DENSITY_MAP.pfm]]
+// Usage: minimal_host EXPORT_DIR MODEL OUT.pfm
+//            [WIDTH HEIGHT LOG_DENSITY [LOG_DENSITY_MAP.pfm|- [NORMAL_MAP.pfm]]]
 //
-// LOG_DENSITY_MAP.pfm (optional): ln N per texel (the first channel), uv
-// (0, 0) at the image's top-left corner; fed through the export's input
-// texture u_input_density as N = exp(ln N) with a mip chain
-// (docs/INTEGRATION.md "Per-pixel material inputs").
+// LOG_DENSITY_MAP.pfm (optional, "-" for none): ln N per texel (the first
+// channel), uv (0, 0) at the image's top-left corner; fed through the
+// export's input texture u_input_density as N = exp(ln N) with a mip chain
+// (docs/INTEGRATION.md "Per-pixel material inputs"). NORMAL_MAP.pfm
+// (optional): unit tangent-space normals (x, y, z) in glTF's convention,
+// LEAN-mapped here into the inputs u_input_normal_slopes/moments.
 //
 // What a host does with an export, in order:
 //  1. read MODEL.glsl.manifest.json: the fragment shader's file, the model's
@@ -216,7 +219,8 @@ void set_uniform(GLuint program, const std::map<std::string, GLenum>& types,
 
 // The first channel of a PFM (little-endian, rows bottom to top), rows top
 // to bottom.
-std::vector<float> read_pfm_channel(const std::string& path, int* w, int* h) {
+// Every channel of a PFM file (1 or 3), rows from the top.
+std::vector<float> read_pfm(const std::string& path, int* w, int* h, int* channels) {
     std::ifstream f(path, std::ios::binary);
     std::string magic;
     float scale = 0.0f;
@@ -225,17 +229,94 @@ std::vector<float> read_pfm_channel(const std::string& path, int* w, int* h) {
     if (!f || (magic != "PF" && magic != "Pf") || scale >= 0.0f || *w < 1 || *h < 1 || *w > 16384 ||
         *h > 16384)
         die(path + ": not a little-endian PFM of at most 16384 x 16384");
-    const int channels = magic == "PF" ? 3 : 1;
-    std::vector<float> data(static_cast<size_t>(*w) * *h * channels);
+    *channels = magic == "PF" ? 3 : 1;
+    const size_t row = static_cast<size_t>(*w) * static_cast<size_t>(*channels);
+    std::vector<float> data(row * static_cast<size_t>(*h));
     f.read(reinterpret_cast<char*>(data.data()),
            static_cast<std::streamsize>(data.size() * sizeof(float)));
     if (!f) die(path + ": truncated");
-    std::vector<float> out(static_cast<size_t>(*w) * *h);
+    std::vector<float> out(data.size());
     for (int y = 0; y < *h; ++y)
-        for (int x = 0; x < *w; ++x)
-            out[static_cast<size_t>(y) * *w + x] =
-                data[(static_cast<size_t>(*h - 1 - y) * *w + x) * channels];
+        std::copy_n(data.begin() + static_cast<std::ptrdiff_t>(row * size_t(*h - 1 - y)), row,
+                    out.begin() + static_cast<std::ptrdiff_t>(row * size_t(y)));
     return out;
+}
+
+// The first channel of a PFM file, rows from the top.
+std::vector<float> read_pfm_channel(const std::string& path, int* w, int* h) {
+    int channels = 0;
+    const std::vector<float> all = read_pfm(path, w, h, &channels);
+    std::vector<float> out(all.size() / static_cast<size_t>(channels));
+    for (size_t i = 0; i < out.size(); ++i) out[i] = all[i * static_cast<size_t>(channels)];
+    return out;
+}
+
+// A float RGB texture with a full mip chain of box means (glGenerateMipmap
+// on a power-of-two image), trilinear, repeating.
+GLuint mipmapped_texture(const std::vector<float>& rgb, int w, int h) {
+    int levels = 1;
+    while ((std::max(w, h) >> levels) > 0) ++levels;
+    GLuint tex = 0;
+    glCreateTextures(GL_TEXTURE_2D, 1, &tex);
+    glTextureStorage2D(tex, levels, GL_RGB32F, w, h);
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+    glTextureSubImage2D(tex, 0, 0, 0, w, h, GL_RGB, GL_FLOAT, rgb.data());
+    glGenerateTextureMipmap(tex);
+    glTextureParameteri(tex, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
+    glTextureParameteri(tex, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    glTextureParameteri(tex, GL_TEXTURE_WRAP_S, GL_REPEAT);
+    glTextureParameteri(tex, GL_TEXTURE_WRAP_T, GL_REPEAT);
+    return tex;
+}
+
+// LEAN mapping of a tangent-space normal map (docs/INTEGRATION.md,
+// "Per-pixel material inputs"): `normals` holds unit normals (x, y, z),
+// rows from the top. Writes each texel's slope s = (-x/z, -y/z) and the
+// second moments (s_x^2, s_y^2, s_x s_y) of the surface a bilinear lookup
+// reconstructs, averaged over the texel's cell (its four half-texel
+// squares, each inside one bilinear patch where s^2 is of degree 2 per
+// coordinate: 2 x 2 Gauss-Legendre nodes per square integrate it exactly).
+void lean_map(const std::vector<float>& normals, int w, int h, std::vector<float>* slopes,
+              std::vector<float>* moments) {
+    const size_t count = static_cast<size_t>(w) * static_cast<size_t>(h);
+    std::vector<float> sx(count), sy(count);
+    for (size_t i = 0; i < count; ++i) {
+        const float z = std::max(normals[i * 3 + 2], 0.05f);  // at most 87.1 degrees steep
+        sx[i] = -normals[i * 3] / z;
+        sy[i] = -normals[i * 3 + 1] / z;
+    }
+    slopes->assign(count * 3, 0.0f);
+    for (size_t i = 0; i < count; ++i) (*slopes)[i * 3] = sx[i], (*slopes)[i * 3 + 1] = sy[i];
+    auto at = [&](const std::vector<float>& v, int x, int y) {
+        return v[static_cast<size_t>(((y % h) + h) % h) * static_cast<size_t>(w) +
+                 static_cast<size_t>(((x % w) + w) % w)];
+    };
+    const float g = 0.25f / std::sqrt(3.0f);
+    const float nodes[4] = {-0.25f - g, -0.25f + g, 0.25f - g, 0.25f + g};
+    moments->assign(count * 3, 0.0f);
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x) {
+            float m[3] = {0.0f, 0.0f, 0.0f};
+            for (const float oy : nodes)
+                for (const float ox : nodes) {
+                    const float px = static_cast<float>(x) + ox, py = static_cast<float>(y) + oy;
+                    const int ix = static_cast<int>(std::floor(px));
+                    const int iy = static_cast<int>(std::floor(py));
+                    const float fx = px - static_cast<float>(ix), fy = py - static_cast<float>(iy);
+                    auto bilinear = [&](const std::vector<float>& v) {
+                        const float top = at(v, ix, iy) + fx * (at(v, ix + 1, iy) - at(v, ix, iy));
+                        const float bottom =
+                            at(v, ix, iy + 1) + fx * (at(v, ix + 1, iy + 1) - at(v, ix, iy + 1));
+                        return top + fy * (bottom - top);
+                    };
+                    const float a = bilinear(sx), b = bilinear(sy);
+                    m[0] += a * a, m[1] += b * b, m[2] += a * b;
+                }
+            float* out = &(*moments)[(static_cast<size_t>(y) * static_cast<size_t>(w) +
+                                      static_cast<size_t>(x)) *
+                                     3];
+            for (int c = 0; c < 3; ++c) out[c] = m[c] / 16.0f;
+        }
 }
 
 void write_pfm(const std::string& path, int w, int h, const std::vector<float>& rgb) {
@@ -247,10 +328,10 @@ void write_pfm(const std::string& path, int w, int h, const std::vector<float>& 
 }
 
 int run(int argc, char** argv) {
-    if (argc != 4 && argc != 7 && argc != 8) {
+    if (argc != 4 && (argc < 7 || argc > 9)) {
         std::fprintf(stderr,
                      "usage: %s EXPORT_DIR MODEL OUT.pfm [WIDTH HEIGHT LOG_DENSITY "
-                     "[LOG_DENSITY_MAP.pfm]]\n",
+                     "[LOG_DENSITY_MAP.pfm|- [NORMAL_MAP.pfm]]]\n",
                      argv[0]);
         return 2;
     }
@@ -351,7 +432,7 @@ int run(int argc, char** argv) {
     // map), read by the export's own footprint filter. The samplers of the
     // other inputs point at the same unit (their mask bits are 0).
     int input_mask = 0;
-    if (argc == 8) {
+    if (argc >= 8 && std::string(argv[7]) != "-") {
         int mw = 0, mh = 0;
         std::vector<float> n = read_pfm_channel(argv[7], &mw, &mh);
         for (float& v : n) v = std::exp(v);
@@ -371,11 +452,27 @@ int run(int argc, char** argv) {
         input_mask |= 1;  // GLINT_INPUT_DENSITY
     }
     for (const char* name :
-         {"u_input_density", "u_input_alpha", "u_input_color", "u_input_base_albedo"})
+         {"u_input_density", "u_input_alpha", "u_input_color", "u_input_base_albedo",
+          "u_input_normal_slopes", "u_input_normal_moments"})
         glProgramUniform1i(program, glGetUniformLocation(program, name), unit);
+    // A normal map: its LEAN slope and moment chains on the next two units.
+    if (argc == 9) {
+        int nw = 0, nh = 0, channels = 0;
+        const std::vector<float> normals = read_pfm(argv[8], &nw, &nh, &channels);
+        if (channels != 3) die(std::string(argv[8]) + ": a normal map holds RGB = (x, y, z)");
+        std::vector<float> slopes, moments;
+        lean_map(normals, nw, nh, &slopes, &moments);
+        glBindTextureUnit(static_cast<GLuint>(unit + 1), mipmapped_texture(slopes, nw, nh));
+        glBindTextureUnit(static_cast<GLuint>(unit + 2), mipmapped_texture(moments, nw, nh));
+        glProgramUniform1i(program, glGetUniformLocation(program, "u_input_normal_slopes"),
+                           unit + 1);
+        glProgramUniform1i(program, glGetUniformLocation(program, "u_input_normal_moments"),
+                           unit + 2);
+        input_mask |= 1 << 4;  // GLINT_INPUT_NORMAL
+    }
     set_uniform(program, types, "u_input_texture_mask", input_mask);
     const float identity[4] = {1, 0, 0, 1};
-    for (int i = 0; i < 4; ++i)
+    for (int i = 0; i < 5; ++i)
         glProgramUniformMatrix2fv(
             program,
             glGetUniformLocation(program,
@@ -426,6 +523,10 @@ int run(int argc, char** argv) {
     set_uniform(program, types, "u_directional_irradiance", {2.0f, 2.0f, 2.0f});
     set_uniform(program, types, "u_point_count", 0);
     set_uniform(program, types, "u_environment_on", environment);
+    // The quad's v runs along n x t (dp/dv = (0, 0, -1) below), so glTF's
+    // bitangent, which points up the image (against dp/dv), is -(n x t): a
+    // normal map's tangent w is -1 on it.
+    set_uniform(program, types, "u_input_uv_mirrored", true);
 
     // The quad: y = 0, normal +y, uv (0,0) at (-4, 0, 4), dp/du = (1, 0, 0).
     const float v[] = {

@@ -16,6 +16,7 @@
 // per-fragment values (glint_uniforms.glsl), set by glint_set_inputs.
 #include "glintlab/core/constants.glsl"
 #include "glintlab/core/footprint.glsl"
+#include "glintlab/core/slope_frame.glsl"
 #include "glintlab/core/texture_filter.glsl"
 #include "glintlab/glints/glint_uniforms.glsl"
 #include "glintlab/glints/material.glsl"
@@ -54,9 +55,17 @@ struct GlintInputs {
     vec2 alpha;         // (alpha_x, alpha_y); filter alpha² (the slope variance), then sqrt
     vec3 color;         // linear RGB tint; filter linearly
     vec3 base_albedo;   // linear RGB diffuse base (0: none); filter linearly
+    // A normal map over the footprint (LEAN mapping): its mean slope
+    // (s_x, s_y) = (−x/z, −y/z) of the tangent-space normal, in the frame
+    // (t, n × t, n) of glint_shade's v_dpdu and v_normal, and its slope
+    // covariance (xx, yy, xy); filter s and (s_x², s_y², s_x s_y), then
+    // Σ = E[s sᵀ] − s̄ s̄ᵀ. Zero: no normal map.
+    vec2 mean_slope;
+    vec3 slope_covariance;
 };
 vec3 g_glint_color_input;
 vec3 g_glint_base_albedo_input;
+vec2 g_glint_mean_slope;
 
 // The material uniforms as inputs (a material without textures).
 GlintInputs glint_inputs_from_uniforms() {
@@ -65,39 +74,57 @@ GlintInputs glint_inputs_from_uniforms() {
     inputs.alpha = glint_alpha_uniform();
     inputs.color = u_glint_color;
     inputs.base_albedo = u_glint_base_albedo;
+    inputs.mean_slope = vec2(0.0f);
+    inputs.slope_covariance = vec3(0.0f);
     return inputs;
 }
 
-// Sets the inputs every later glint_shade / glint_eval reads.
+// Sets the inputs every later glint_shade / glint_eval reads. A normal
+// map's covariance widens the glint lobe (α² + 2Σ per axis; Σ's
+// correlation is dropped: the glint NDF's axes stay on the uv axes) for the
+// models that read a per-pixel α; glint_shade tilts its frame to the mean
+// slope.
 void glint_set_inputs(GlintInputs inputs) {
     g_glint_log_density = inputs.log_density;
-    g_glint_alpha = clamp(inputs.alpha, vec2(1e-3f), vec2(1.0f));
+    vec2 alpha = clamp(inputs.alpha, vec2(1e-3f), vec2(1.0f));
+#ifdef GLINTLAB_GLINT_PER_PIXEL_ALPHA
+    alpha = vec2(slope_widened_alpha(alpha.x, max(inputs.slope_covariance.x, 0.0f), 1.0f),
+                 slope_widened_alpha(alpha.y, max(inputs.slope_covariance.y, 0.0f), 1.0f));
+#endif
+    g_glint_alpha = alpha;
     g_glint_color_input = inputs.color;
     g_glint_base_albedo_input = inputs.base_albedo;
+    g_glint_mean_slope = inputs.mean_slope;
 }
 
 // Optional input textures the exported main() reads (bit i of
 // u_input_texture_mask: input i is textured; 0: every input from the
 // uniforms). Each holds the filtered quantity of GlintInputs (N, alpha²,
-// linear RGB) with a mip chain of box means, read with the renderer's own
-// footprint filter (N = ceil(Pmax / Pmin) <= 16 trilinear probes along the
-// major axis, realtime/shaders/material_textures.glsl), at uv' =
+// linear RGB, slope moments) with a mip chain of box means, read with the
+// renderer's own footprint filter (N = ceil(Pmax / Pmin) <= 16 trilinear
+// probes along the major axis, core/texture_filter.glsl), at uv' =
 // u_input_texture_linear[i] uv + u_input_texture_offset[i].
 const int GLINT_INPUT_DENSITY = 0;  // N = exp(ln N), one channel
 const int GLINT_INPUT_ALPHA = 1;    // alpha² (isotropic), one channel
 const int GLINT_INPUT_COLOR = 2;    // linear RGB
 const int GLINT_INPUT_BASE = 3;     // linear RGB
+const int GLINT_INPUT_NORMAL = 4;   // two textures: slopes (s_x, s_y), moments (s_x², s_y², s_x s_y)
 uniform sampler2D u_input_density;
 uniform sampler2D u_input_alpha;
 uniform sampler2D u_input_color;
 uniform sampler2D u_input_base_albedo;
+uniform sampler2D u_input_normal_slopes;
+uniform sampler2D u_input_normal_moments;
 uniform int u_input_texture_mask;
-uniform mat2 u_input_texture_linear[4];
-uniform vec2 u_input_texture_offset[4];
+uniform mat2 u_input_texture_linear[5];
+uniform vec2 u_input_texture_offset[5];
+// The mesh's uvs are mirrored (glTF tangent w = −1): the normal map's y
+// runs along −(n × t).
+uniform bool u_input_uv_mirrored;
 
-vec3 glint_input_filtered(sampler2D tex, int slot, Footprint fp) {
+vec3 glint_input_filtered(sampler2D tex, int slot, Footprint fp, float lod_bias) {
     return material_texture_filtered(tex, vec2(textureSize(tex, 0)), u_input_texture_linear[slot],
-                                     u_input_texture_offset[slot], fp, 0.0f);
+                                     u_input_texture_offset[slot], fp, lod_bias);
 }
 
 // The uniforms' inputs with the textured ones replaced by their filtered values.
@@ -106,14 +133,26 @@ GlintInputs glint_inputs_from_textures(Footprint fp) {
     int mask = u_input_texture_mask;
     if ((mask & (1 << GLINT_INPUT_DENSITY)) != 0)
         inputs.log_density =
-            log(max(glint_input_filtered(u_input_density, GLINT_INPUT_DENSITY, fp).x, 1e-30f));
+            log(max(glint_input_filtered(u_input_density, GLINT_INPUT_DENSITY, fp, 0.0f).x,
+                    1e-30f));
     if ((mask & (1 << GLINT_INPUT_ALPHA)) != 0)
-        inputs.alpha = vec2(sqrt(max(glint_input_filtered(u_input_alpha, GLINT_INPUT_ALPHA, fp).x,
-                                     0.0f)));
+        inputs.alpha = vec2(sqrt(
+            max(glint_input_filtered(u_input_alpha, GLINT_INPUT_ALPHA, fp, 0.0f).x, 0.0f)));
     if ((mask & (1 << GLINT_INPUT_COLOR)) != 0)
-        inputs.color = glint_input_filtered(u_input_color, GLINT_INPUT_COLOR, fp);
+        inputs.color = glint_input_filtered(u_input_color, GLINT_INPUT_COLOR, fp, 0.0f);
     if ((mask & (1 << GLINT_INPUT_BASE)) != 0)
-        inputs.base_albedo = glint_input_filtered(u_input_base_albedo, GLINT_INPUT_BASE, fp);
+        inputs.base_albedo = glint_input_filtered(u_input_base_albedo, GLINT_INPUT_BASE, fp, 0.0f);
+    if ((mask & (1 << GLINT_INPUT_NORMAL)) != 0) {
+        // LEAN mapping, read as the renderer reads its normal maps.
+        vec2 mean = glint_input_filtered(u_input_normal_slopes, GLINT_INPUT_NORMAL, fp,
+                                         kSlopeMomentLodBias).xy;
+        vec3 second = glint_input_filtered(u_input_normal_moments, GLINT_INPUT_NORMAL, fp,
+                                           kSlopeMomentLodBias);
+        vec3 cov = slope_covariance(mean, second);
+        slopes_in_shading_frame(false, u_input_uv_mirrored ? -1.0f : 1.0f, mean, cov);
+        inputs.mean_slope = mean;
+        inputs.slope_covariance = cov;
+    }
     return inputs;
 }
 
@@ -170,9 +209,17 @@ vec3 glint_shade(vec3 p, vec3 n, vec3 dpdu, Footprint fp) {
         t = vec3(1.0f + s * n.x * n.x * a, s * c, -s * n.x);
         b = vec3(c, s + n.y * n.y * a, -n.y);
     }
-    if (dot(wo_world, n) < 0.0f) {
+    bool back = dot(wo_world, n) < 0.0f;
+    if (back) {
         n = -n;
         b = -b;
+    }
+    if (g_glint_mean_slope != vec2(0.0f)) {
+        // The normal map's mean normal (glint_set_inputs widened the lobe).
+        vec2 mean = g_glint_mean_slope;
+        vec3 unused = vec3(0.0f);
+        slopes_in_shading_frame(back, 1.0f, mean, unused);
+        tilt_frame_to_slope(mean, t, b, n);
     }
     vec3 wo = vec3(dot(wo_world, t), dot(wo_world, b), dot(wo_world, n));
     vec3 radiance = vec3(0.0f);

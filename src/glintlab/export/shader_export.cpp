@@ -292,7 +292,8 @@ std::string header(const GlintModelDescriptor& d, ExportLanguage lang, const std
     };
     h += fmt::format(
         "Per-pixel material inputs (docs/INTEGRATION.md \"Per-pixel material inputs\"):\n"
-        "  struct GlintInputs {{ float log_density; vec2 alpha; vec3 color; vec3 base_albedo; }}\n"
+        "  struct GlintInputs {{ float log_density; vec2 alpha; vec3 color; vec3 base_albedo;\n"
+        "          vec2 mean_slope; vec3 slope_covariance; }}\n"
         "  void glint_set_inputs(GlintInputs): before glint_shade / glint_eval; the exported\n"
         "          main() passes glint_inputs_from_textures(fp), which starts from\n"
         "          glint_inputs_from_uniforms() (the u_glint_* above).\n"
@@ -306,9 +307,18 @@ std::string header(const GlintModelDescriptor& d, ExportLanguage lang, const std
          "  Input textures (optional): u_input_density (R: N), u_input_alpha (R: alpha^2),\n"
          "          u_input_color, u_input_base_albedo (RGB, linear), each with a mip chain of\n"
          "          box means, trilinear; bit i of u_input_texture_mask turns input i on\n"
-         "          (0 density, 1 alpha, 2 color, 3 base_albedo); uv' =\n"
+         "          (0 density, 1 alpha, 2 color, 3 base_albedo, 4 normal map); uv' =\n"
          "          u_input_texture_linear[i] uv + u_input_texture_offset[i]. Point the unused\n"
-         "          samplers at a unit holding any 2D texture that is not the render target.\n";
+         "          samplers at a unit holding any 2D texture that is not the render target.\n"
+         "  Normal map (LEAN mapping): u_input_normal_slopes holds each texel's slope\n"
+         "          s = (-x/z, -y/z) of its tangent-space unit normal, u_input_normal_moments\n"
+         "          (s_x^2, s_y^2, s_x s_y) of the bilinear surface over the texel's cell; both\n"
+         "          mip-mapped (box means). glint_shade tilts its frame to the footprint's mean\n"
+         "          normal; u_input_uv_mirrored: the mesh's tangent w is -1.\n";
+    h += wrap_row("    normal map widens alpha   " +
+                  (d.textured_roughness
+                       ? std::string("yes (alpha^2 + 2 Sigma per axis)")
+                       : fmt::format("no, the frame is tilted only ({})", d.untextured_reason)));
     h += fmt::format(
         "Parameters of {} (uniform, type, range, default: meaning; a name in\n"
         "parentheses is host-side, see docs/INTEGRATION.md):\n{}",
@@ -518,10 +528,14 @@ std::string export_fragment_glsl(GlintModelId model, unsigned program_options,
     const std::string glue =
         (program_options & 1u) && !m->variant_glue.empty() ? m->variant_glue : m->glue;
     // GLINTLAB_MATERIAL_TEXTURES: the material's per-pixel inputs
-    // (glint_export.frag.glsl GlintInputs) in place of its uniforms.
-    const std::string root =
-        fmt::format("#define GLINTLAB_MATERIAL_TEXTURES 1\n#include \"{}\"\n#include \"{}\"\n",
-                    glue, std::string(kEntry));
+    // (glint_export.frag.glsl GlintInputs) in place of its uniforms;
+    // GLINTLAB_GLINT_PER_PIXEL_ALPHA: the model reads its α per pixel, so a
+    // normal map's covariance widens it (as the forward pass's
+    // u_normal_map_widens_glint).
+    const std::string root = fmt::format(
+        "#define GLINTLAB_MATERIAL_TEXTURES 1\n{}#include \"{}\"\n#include \"{}\"\n",
+        glint_model(model).textured_roughness ? "#define GLINTLAB_GLINT_PER_PIXEL_ALPHA 1\n" : "",
+        glue, std::string(kEntry));
     const AssembledShader a = assemble_shader(root, true, "\n");
     std::string body = resolve_preprocessor(a.text);
     std::string prelude;
@@ -712,6 +726,25 @@ std::vector<ExportedFile> export_model(const ExportOptions& o) {
           d->textured_roughness);
     input("color", "u_input_color", 2, "linear RGB", true);
     input("base_albedo", "u_input_base_albedo", 3, "linear RGB", true);
+    // The normal map (LEAN mapping): two textures under one bit and one uv
+    // transform, read at the moments' level-of-detail bias. Every model
+    // tilts its frame to the mean normal; those that read α per pixel also
+    // widen their lobe by the covariance.
+    nlohmann::json normal = {
+        {"key", "normal_map"},
+        {"bit", 4},
+        {"samplers", {"u_input_normal_slopes", "u_input_normal_moments"}},
+        {"stores",
+         {"slopes s = (-x/z, -y/z) of the tangent-space unit normal (RG or RGB)",
+          "second moments of the bilinear surface over each texel's cell (s_x^2, s_y^2, "
+          "s_x s_y; RGB)"}},
+        {"per_pixel", true},
+        {"widens_alpha", d->textured_roughness},
+        {"lod_bias", -0.79248125},
+        {"mirrored_uv_uniform", "u_input_uv_mirrored"},
+        {"filter", "linear, mip-mapped (box means)"}};
+    if (!d->textured_roughness) normal["reason"] = d->untextured_reason;
+    inputs.push_back(normal);
     j["inputs"] = {{"mask_uniform", "u_input_texture_mask"},
                    {"transform_uniforms", {"u_input_texture_linear", "u_input_texture_offset"}},
                    {"textures", inputs}};

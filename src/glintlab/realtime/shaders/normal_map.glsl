@@ -13,6 +13,7 @@
 // uniforms' includes then declare.
 #include "glintlab/realtime/shaders/material_textures.glsl"
 #include "glintlab/core/footprint.glsl"
+#include "glintlab/core/slope_frame.glsl"
 #include "glintlab/glints/material.glsl"
 
 // Units 16 and 17 (forward_shaders.h kNormalMapUnit): the map's mip chains
@@ -25,19 +26,11 @@ uniform vec2 u_normal_map_size;
 uniform int u_normal_map_filtering;     // 0: lean, 1: none (the finest level's normal)
 uniform int u_normal_map_widens_glint;  // the glint model reads a per-pixel α
 
-// core/normal_map.cpp kMomentLodBias: log2(1/√3), the window of the
-// footprint's own spatial variance.
-const float kNormalMapLodBias = -0.79248125f;
-
 vec3 normal_map_fetch(sampler2D tex, Footprint fp, bool filtered) {
     if (!filtered)
         return textureLod(tex, u_normal_map_linear * fp.uv + u_normal_map_offset, 0.0f).rgb;
     return material_texture_filtered(tex, u_normal_map_size, u_normal_map_linear,
-                                     u_normal_map_offset, fp, kNormalMapLodBias);
-}
-
-float normal_map_widened(float alpha, float slope_variance, float max_alpha) {
-    return min(sqrt(alpha * alpha + 2.0f * slope_variance), max_alpha);
+                                     u_normal_map_offset, fp, kSlopeMomentLodBias);
 }
 
 // Tilts (t, b, n) to the footprint's mean normal and widens the material's
@@ -48,33 +41,15 @@ void normal_map_shade(Footprint fp, bool back, float bitangent_sign, inout vec3 
     bool lean = u_normal_map_filtering == 0;
     vec2 mean = normal_map_fetch(u_normal_slopes, fp, lean).xy;
     vec3 cov = vec3(0.0f);
-    if (lean) {
-        // Σ = E[s sᵀ] − s̄ s̄ᵀ, kept positive semi-definite.
-        vec3 second = normal_map_fetch(u_normal_moments, fp, true);
-        float xx = max(second.x - mean.x * mean.x, 0.0f);
-        float yy = max(second.y - mean.y * mean.y, 0.0f);
-        float bound = sqrt(xx * yy);
-        cov = vec3(xx, yy, clamp(second.z - mean.x * mean.y, -bound, bound));
-    }
-    vec2 axes = vec2(back ? -1.0f : 1.0f, bitangent_sign);
-    mean *= axes;
-    cov.z *= axes.x * axes.y;
-    // core/normal_map.h normal_from_slope and tangent_frame_around.
-    vec3 nl = normalize(vec3(-mean.x, -mean.y, 1.0f));
-    vec3 tl = normalize(vec3(1.0f, 0.0f, 0.0f) - nl * nl.x);
-    vec3 bl = cross(nl, tl);
-    vec3 tw = tl.x * t + tl.y * b + tl.z * n;
-    vec3 bw = bl.x * t + bl.y * b + bl.z * n;
-    vec3 nw = nl.x * t + nl.y * b + nl.z * n;
-    t = tw;
-    b = bw;
-    n = nw;
+    if (lean) cov = slope_covariance(mean, normal_map_fetch(u_normal_moments, fp, true));
+    slopes_in_shading_frame(back, bitangent_sign, mean, cov);
+    tilt_frame_to_slope(mean, t, b, n);
     if (mat.type == MATERIAL_DIFFUSE) return;
     if (mat.type == MATERIAL_GLINT) {
         // Glint NDF axes stay on the uv axes: Σ's correlation is dropped.
         if (u_normal_map_widens_glint != 0) {
-            mat.glint.alpha_x = normal_map_widened(mat.glint.alpha_x, cov.x, 1.0f);
-            mat.glint.alpha_y = normal_map_widened(mat.glint.alpha_y, cov.y, 1.0f);
+            mat.glint.alpha_x = slope_widened_alpha(mat.glint.alpha_x, cov.x, 1.0f);
+            mat.glint.alpha_y = slope_widened_alpha(mat.glint.alpha_y, cov.y, 1.0f);
             g_glint_alpha = vec2(mat.glint.alpha_x, mat.glint.alpha_y);
         }
         return;
@@ -89,11 +64,11 @@ void normal_map_shade(Footprint fp, bool back, float bitangent_sign, inout vec3 
         t = tr;
         b = cross(n, tr);
         float a = mat.alpha_x;
-        mat.alpha_x = normal_map_widened(a, mid + radius, 4.0f);
-        mat.alpha_y = normal_map_widened(a, max(mid - radius, 0.0f), 4.0f);
+        mat.alpha_x = slope_widened_alpha(a, mid + radius, 4.0f);
+        mat.alpha_y = slope_widened_alpha(a, max(mid - radius, 0.0f), 4.0f);
     } else {
-        mat.alpha_x = normal_map_widened(mat.alpha_x, cov.x, 4.0f);
-        mat.alpha_y = normal_map_widened(mat.alpha_y, cov.y, 4.0f);
+        mat.alpha_x = slope_widened_alpha(mat.alpha_x, cov.x, 4.0f);
+        mat.alpha_y = slope_widened_alpha(mat.alpha_y, cov.y, 4.0f);
     }
     g_alpha = vec2(mat.alpha_x, mat.alpha_y);
 }

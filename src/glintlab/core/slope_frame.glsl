@@ -1,0 +1,57 @@
+// A normal map's footprint statistics turned into a shading frame and a
+// widened lobe: the GLSL side of core/normal_map.h (normal_from_slope,
+// tangent_frame_around) and render/surface_bsdf.cpp (the α² + 2Σ widening),
+// shared by the forward pass (realtime/shaders/normal_map.glsl) and the
+// export (export/glint_export.frag.glsl), so both tilt and widen alike.
+// Slopes follow the microfacet convention (Heitz 2014, Eq. 36): a normal
+// (x, y, z) of the tangent frame has slope (−x/z, −y/z).
+#ifndef GLINTLAB_CORE_SLOPE_FRAME_GLSL
+#define GLINTLAB_CORE_SLOPE_FRAME_GLSL
+
+// core/normal_map.cpp kMomentLodBias: the moments are read at log2(1/√3)
+// relative to OpenGL's level of detail, the window with the footprint's
+// own spatial variance.
+const float kSlopeMomentLodBias = -0.79248125f;
+
+// Σ = E[s sᵀ] − s̄ s̄ᵀ from the filtered first and second moments, kept
+// positive semi-definite: (xx, yy, xy).
+vec3 slope_covariance(vec2 mean, vec3 second) {
+    float xx = max(second.x - mean.x * mean.x, 0.0f);
+    float yy = max(second.y - mean.y * mean.y, 0.0f);
+    float bound = sqrt(xx * yy);
+    return vec3(xx, yy, clamp(second.z - mean.x * mean.y, -bound, bound));
+}
+
+// Slope statistics of a map in glTF's tangent frame (x along ∂p/∂u, y along
+// bitangent_sign (n × t)) expressed in the shading frame (t, b = n × t, n),
+// after the two-sided flip that negates n and b (`back`): the slope's x
+// changes sign with the flip, its y with a mirrored bitangent.
+void slopes_in_shading_frame(bool back, float bitangent_sign, inout vec2 mean, inout vec3 cov) {
+    vec2 axes = vec2(back ? -1.0f : 1.0f, bitangent_sign);
+    mean *= axes;
+    cov.z *= axes.x * axes.y;
+}
+
+// Tilts the frame (t, b, n) to the normal of slope `mean` in it,
+// normalize(−s̄x, −s̄y, 1); the new tangent is the old one's projection
+// (core/normal_map.h tangent_frame_around).
+void tilt_frame_to_slope(vec2 mean, inout vec3 t, inout vec3 b, inout vec3 n) {
+    vec3 nl = normalize(vec3(-mean.x, -mean.y, 1.0f));
+    vec3 tl = normalize(vec3(1.0f, 0.0f, 0.0f) - nl * nl.x);
+    vec3 bl = cross(nl, tl);
+    vec3 tw = tl.x * t + tl.y * b + tl.z * n;
+    vec3 bw = bl.x * t + bl.y * b + bl.z * n;
+    vec3 nw = nl.x * t + nl.y * b + nl.z * n;
+    t = tw;
+    b = bw;
+    n = nw;
+}
+
+// A lobe's α along an axis widened by the footprint's slope variance along
+// it: α² + 2σ² (a Beckmann lobe's α² is twice its slope variance; LEAN
+// mapping, Olano & Baker, I3D 2010), at most max_alpha.
+float slope_widened_alpha(float alpha, float slope_variance, float max_alpha) {
+    return min(sqrt(alpha * alpha + 2.0f * slope_variance), max_alpha);
+}
+
+#endif
