@@ -3,6 +3,7 @@
 
 import {makeQuad, makeSphere} from './geometry.js';
 import {ExportedModel, fresnelDiffers, glintBlurTaps} from './model.js';
+import {NORMAL_MAPS} from './normal_map.js';
 import {Renderer} from './renderer.js';
 
 // The models `glintlab export` can write (the page lists those whose
@@ -77,6 +78,7 @@ function stateFromUrl(search) {
       scale: number(q.get('env_scale') ?? '1', 'env_scale', 0, 1000),
       rotation: number(q.get('env_rotation') ?? '0', 'env_rotation', -360, 360) * Math.PI / 180,
     },
+    normalMap: choice(q.get('normal_map') ?? 'none', 'normal_map', NORMAL_MAPS),
     exposure: number(q.get('exposure') ?? '-1', 'exposure', -20, 20),
     params: {},
     continuous: q.get('static') !== '1',
@@ -131,6 +133,7 @@ function urlFromState(s) {
   q.set('env_scale', s.environment.scale);
   q.set('env_rotation', +(s.environment.rotation * 180 / Math.PI).toFixed(3));
   q.set('exposure', s.exposure);
+  if (s.normalMap !== 'none') q.set('normal_map', s.normalMap);
   for (const [k, v] of Object.entries(s.params)) q.set(`p.${k}`, v);
   if (!s.continuous) q.set('static', 1);
   if (s.exportBase !== 'export') q.set('export', s.exportBase);
@@ -424,6 +427,9 @@ class App {
       this.buildControls();
       this.changed();
     };
+    const normalSelect = document.getElementById('normal-map');
+    normalSelect.value = s.normalMap;
+    normalSelect.onchange = () => { s.normalMap = normalSelect.value; this.changed(); };
     const envBox = document.getElementById('environment');
     envBox.checked = s.environment.on;
     envBox.onchange = () => { s.environment.on = envBox.checked; this.changed(); };

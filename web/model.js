@@ -5,10 +5,13 @@
 // export documents (which scene parameter goes to which uniform, the
 // host-computed uniforms listed below).
 
+import {leanTextures} from './normal_map.js';
+
 // Model parameters the exported shader does not read under their own name
 // `u_<model>_<key>`: the host computes a uniform from them (as the native
 // hooks do, glints/<model>/<model>_gpu.cpp), or they were applied when the
 // files were exported (`baked`: changing them means exporting again).
+
 const HOST_PARAMS = {
   deliot2023: {
     gaussian: {uniform: 'u_deliot2023_conditional', value: (v) => (v === 'conditional' ? 1 : 0)},
@@ -277,7 +280,7 @@ export class ExportedModel {
       set(t.uniform, unit);
     });
     // The export's optional input textures (docs/INTEGRATION.md "Per-pixel
-    // material inputs"): none here (mask 0), but their samplers are active
+    // material inputs"): the normal map when one is on, but every sampler is active
     // and must not point at unit 0, where the last frame's image may still
     // be bound (a feedback loop with the framebuffer): a 1x1 placeholder on
     // a unit of its own.
@@ -285,8 +288,28 @@ export class ExportedModel {
     gl.activeTexture(gl.TEXTURE0 + inputUnit);
     gl.bindTexture(gl.TEXTURE_2D, inputPlaceholder(gl));
     for (const name of ['u_input_density', 'u_input_alpha', 'u_input_color',
-                        'u_input_base_albedo']) set(name, inputUnit);
-    set('u_input_texture_mask', 0);
+                        'u_input_base_albedo', 'u_input_normal_slopes',
+                        'u_input_normal_moments']) set(name, inputUnit);
+    let mask = 0;
+    if (state.normalMap !== 'none') {
+      // The normal map's LEAN textures on the next two units, one uv
+      // transform (the identity: the map tiles with the glint pattern's uv).
+      // Both meshes' v runs along n x t (the plane's v along -z, the
+      // sphere's towards its south pole), so glTF's bitangent, up the
+      // image, is -(n x t): tangent w = -1.
+      const lean = leanTextures(gl, state.normalMap);
+      gl.activeTexture(gl.TEXTURE0 + inputUnit + 1);
+      gl.bindTexture(gl.TEXTURE_2D, lean.slopes);
+      gl.activeTexture(gl.TEXTURE0 + inputUnit + 2);
+      gl.bindTexture(gl.TEXTURE_2D, lean.moments);
+      set('u_input_normal_slopes', inputUnit + 1);
+      set('u_input_normal_moments', inputUnit + 2);
+      set('u_input_uv_mirrored', 1);
+      set('u_input_texture_linear', Array(5).fill([1, 0, 0, 1]).flat());
+      set('u_input_texture_offset', Array(10).fill(0));
+      mask |= 1 << 4;  // GLINT_INPUT_NORMAL
+    }
+    set('u_input_texture_mask', mask);
     gl.activeTexture(gl.TEXTURE0);
   }
 }

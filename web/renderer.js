@@ -225,6 +225,7 @@ export class Renderer {
       case gl.UNSIGNED_INT_VEC2: gl.uniform2uiv(u.location, v); break;
       case gl.UNSIGNED_INT_VEC3: gl.uniform3uiv(u.location, v); break;
       case gl.UNSIGNED_INT_VEC4: gl.uniform4uiv(u.location, v); break;
+      case gl.FLOAT_MAT2: gl.uniformMatrix2fv(u.location, false, v); break;
       case gl.FLOAT_MAT4: gl.uniformMatrix4fv(u.location, false, v); break;
       default: throw new Error(`${prog.label}: uniform ${name} has an unsupported type 0x${u.type.toString(16)}`);
     }

@@ -1,0 +1,118 @@
+// A normal map on the page, as a host feeds one to an exported shader
+// (docs/INTEGRATION.md, "Per-pixel material inputs"): the map's LEAN
+// textures, slopes and second moments with box-mean mip chains, on the
+// export's inputs u_input_normal_slopes / u_input_normal_moments (mask bit 4).
+// The page's one map is procedural, so that the browser test can hand the
+// native renderer the same texels (web/tests/web_page_test.py bumps_normals).
+
+export const NORMAL_MAPS = ['none', 'bumps'];
+export const BUMPS_SIZE = 64;
+
+// "bumps": ridges along u and v, n = normalize(-0.5 cos 4πu, -0.5 sin 6πv, 1)
+// at texel centres (u, v) = ((x + 0.5) / 64, (y + 0.5) / 64), row 0 at v = 0:
+// tilts up to 35°. Unit normals (x, y, z), glTF's tangent-space convention.
+export function bumpsNormals(size = BUMPS_SIZE) {
+  const n = new Float32Array(size * size * 3);
+  for (let y = 0; y < size; ++y)
+    for (let x = 0; x < size; ++x) {
+      const u = (x + 0.5) / size, v = (y + 0.5) / size;
+      const a = -0.5 * Math.cos(4 * Math.PI * u), b = -0.5 * Math.sin(6 * Math.PI * v);
+      const len = Math.hypot(a, b, 1);
+      n.set([a / len, b / len, 1 / len], (y * size + x) * 3);
+    }
+  return n;
+}
+
+// The LEAN textures' finest levels (RGBA): slopes s = (-x/z, -y/z), and the
+// second moments (s_x², s_y², s_x s_y) of the bilinear surface over each
+// texel's cell: its four half-texel squares, 2 x 2 Gauss–Legendre nodes in
+// each (exact for the products of bilinear slopes), repeating edges.
+export function leanTexels(normals, w, h) {
+  const count = w * h;
+  const sx = new Float32Array(count), sy = new Float32Array(count);
+  const slopes = new Float32Array(count * 4);
+  for (let i = 0; i < count; ++i) {
+    const z = Math.max(normals[i * 3 + 2], 0.05);
+    sx[i] = -normals[i * 3] / z;
+    sy[i] = -normals[i * 3 + 1] / z;
+    slopes.set([sx[i], sy[i], 0, 1], i * 4);
+  }
+  const at = (s, x, y) => s[(((y % h) + h) % h) * w + (((x % w) + w) % w)];
+  const g = 0.25 / Math.sqrt(3);
+  const nodes = [-0.25 - g, -0.25 + g, 0.25 - g, 0.25 + g];
+  const moments = new Float32Array(count * 4);
+  for (let y = 0; y < h; ++y)
+    for (let x = 0; x < w; ++x) {
+      let mxx = 0, myy = 0, mxy = 0;
+      for (const oy of nodes)
+        for (const ox of nodes) {
+          const px = x + ox, py = y + oy;
+          const ix = Math.floor(px), iy = Math.floor(py);
+          const fx = px - ix, fy = py - iy;
+          const lerp2 = (s) => {
+            const top = at(s, ix, iy) + fx * (at(s, ix + 1, iy) - at(s, ix, iy));
+            const bottom = at(s, ix, iy + 1) + fx * (at(s, ix + 1, iy + 1) - at(s, ix, iy + 1));
+            return top + fy * (bottom - top);
+          };
+          const a = lerp2(sx), b = lerp2(sy);
+          mxx += a * a;
+          myy += b * b;
+          mxy += a * b;
+        }
+      moments.set([mxx / 16, myy / 16, mxy / 16, 1], (y * w + x) * 4);
+    }
+  return {slopes, moments};
+}
+
+// Box-mean mip levels of a power-of-two RGBA float image.
+function mipLevels(texels, w, h) {
+  const levels = [{data: texels, w, h}];
+  while (w > 1 || h > 1) {
+    const nw = Math.max(w >> 1, 1), nh = Math.max(h >> 1, 1);
+    const prev = levels[levels.length - 1].data;
+    const next = new Float32Array(nw * nh * 4);
+    for (let y = 0; y < nh; ++y)
+      for (let x = 0; x < nw; ++x)
+        for (let c = 0; c < 4; ++c) {
+          let sum = 0;
+          for (const [dx, dy] of [[0, 0], [1, 0], [0, 1], [1, 1]])
+            sum += prev[(Math.min(2 * y + dy, h - 1) * w + Math.min(2 * x + dx, w - 1)) * 4 + c];
+          next[(y * nw + x) * 4 + c] = sum / 4;
+        }
+    levels.push({data: next, w: nw, h: nh});
+    w = nw;
+    h = nh;
+  }
+  return levels;
+}
+
+// RGBA32F where OES_texture_float_linear makes it filterable, else RGBA16F
+// (filterable in every WebGL2); trilinear, repeating.
+function uploadMipmapped(gl, texels, w, h) {
+  const format = gl.getExtension('OES_texture_float_linear') ? gl.RGBA32F : gl.RGBA16F;
+  const t = gl.createTexture();
+  gl.bindTexture(gl.TEXTURE_2D, t);
+  mipLevels(texels, w, h).forEach((l, i) =>
+    gl.texImage2D(gl.TEXTURE_2D, i, format, l.w, l.h, 0, gl.RGBA, gl.FLOAT, l.data));
+  gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_MIN_FILTER, gl.LINEAR_MIPMAP_LINEAR);
+  gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_MAG_FILTER, gl.LINEAR);
+  gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_WRAP_S, gl.REPEAT);
+  gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_WRAP_T, gl.REPEAT);
+  return t;
+}
+
+// The LEAN textures of a named map, made once per context.
+const cache = new WeakMap();
+export function leanTextures(gl, name) {
+  let byName = cache.get(gl);
+  if (!byName) cache.set(gl, byName = new Map());
+  if (!byName.has(name)) {
+    if (name !== 'bumps') throw new Error(`normal map ${name}: expected one of ${NORMAL_MAPS}`);
+    const lean = leanTexels(bumpsNormals(), BUMPS_SIZE, BUMPS_SIZE);
+    byName.set(name, {
+      slopes: uploadMipmapped(gl, lean.slopes, BUMPS_SIZE, BUMPS_SIZE),
+      moments: uploadMipmapped(gl, lean.moments, BUMPS_SIZE, BUMPS_SIZE),
+    });
+  }
+  return byName.get(name);
+}
