@@ -5,7 +5,7 @@
 // export documents (which scene parameter goes to which uniform, the
 // host-computed uniforms listed below).
 
-import {leanTextures} from './normal_map.js';
+import {leanTexture} from './normal_map.js';
 
 // Model parameters the exported shader does not read under their own name
 // `u_<model>_<key>`: the host computes a uniform from them (as the native
@@ -288,22 +288,17 @@ export class ExportedModel {
     gl.activeTexture(gl.TEXTURE0 + inputUnit);
     gl.bindTexture(gl.TEXTURE_2D, inputPlaceholder(gl));
     for (const name of ['u_input_density', 'u_input_alpha', 'u_input_color',
-                        'u_input_base_albedo', 'u_input_normal_slopes',
-                        'u_input_normal_moments']) set(name, inputUnit);
+                        'u_input_base_albedo', 'u_input_normal_slopes']) set(name, inputUnit);
     let mask = 0;
     if (state.normalMap !== 'none') {
-      // The normal map's LEAN textures on the next two units, one uv
-      // transform (the identity: the map tiles with the glint pattern's uv).
-      // Both meshes' v runs along n x t (the plane's v along -z, the
-      // sphere's towards its south pole), so glTF's bitangent, up the
-      // image, is -(n x t): tangent w = -1.
-      const lean = leanTextures(gl, state.normalMap);
+      // The normal map's LEAN texture on the next unit, its uv transform
+      // the identity (the map tiles with the glint pattern's uv). Both
+      // meshes' v runs along n x t (the plane's v along -z, the sphere's
+      // towards its south pole), so glTF's bitangent, up the image, is
+      // -(n x t): tangent w = -1.
       gl.activeTexture(gl.TEXTURE0 + inputUnit + 1);
-      gl.bindTexture(gl.TEXTURE_2D, lean.slopes);
-      gl.activeTexture(gl.TEXTURE0 + inputUnit + 2);
-      gl.bindTexture(gl.TEXTURE_2D, lean.moments);
+      gl.bindTexture(gl.TEXTURE_2D, leanTexture(gl, state.normalMap));
       set('u_input_normal_slopes', inputUnit + 1);
-      set('u_input_normal_moments', inputUnit + 2);
       set('u_input_uv_mirrored', 1);
       set('u_input_texture_linear', Array(5).fill([1, 0, 0, 1]).flat());
       set('u_input_texture_offset', Array(10).fill(0));

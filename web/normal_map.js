@@ -1,7 +1,7 @@
 // A normal map on the page, as a host feeds one to an exported shader
 // (docs/INTEGRATION.md, "Per-pixel material inputs"): the map's LEAN
-// textures, slopes and second moments with box-mean mip chains, on the
-// export's inputs u_input_normal_slopes / u_input_normal_moments (mask bit 4).
+// texture, slopes and second moments with a box-mean mip chain, on the
+// export's input u_input_normal_slopes (mask bit 4).
 // The page's one map is procedural, so that the browser test can hand the
 // native renderer the same texels (web/tests/web_page_test.py bumps_normals).
 
@@ -23,27 +23,25 @@ export function bumpsNormals(size = BUMPS_SIZE) {
   return n;
 }
 
-// The LEAN textures' finest levels (RGBA): slopes s = (-x/z, -y/z), and the
-// second moments (s_x², s_y², s_x s_y) of the bilinear surface over each
+// The LEAN texture's finest level (RGBA): the slope s = (-x/z, -y/z) and
+// the second moments (s_x², s_y²) of the bilinear surface over each
 // texel's cell: its four half-texel squares, 2 x 2 Gauss–Legendre nodes in
-// each (exact for the products of bilinear slopes), repeating edges.
+// each (exact for the squares of bilinear slopes), repeating edges.
 export function leanTexels(normals, w, h) {
   const count = w * h;
   const sx = new Float32Array(count), sy = new Float32Array(count);
-  const slopes = new Float32Array(count * 4);
   for (let i = 0; i < count; ++i) {
     const z = Math.max(normals[i * 3 + 2], 0.05);
     sx[i] = -normals[i * 3] / z;
     sy[i] = -normals[i * 3 + 1] / z;
-    slopes.set([sx[i], sy[i], 0, 1], i * 4);
   }
   const at = (s, x, y) => s[(((y % h) + h) % h) * w + (((x % w) + w) % w)];
   const g = 0.25 / Math.sqrt(3);
   const nodes = [-0.25 - g, -0.25 + g, 0.25 - g, 0.25 + g];
-  const moments = new Float32Array(count * 4);
+  const texels = new Float32Array(count * 4);
   for (let y = 0; y < h; ++y)
     for (let x = 0; x < w; ++x) {
-      let mxx = 0, myy = 0, mxy = 0;
+      let mxx = 0, myy = 0;
       for (const oy of nodes)
         for (const ox of nodes) {
           const px = x + ox, py = y + oy;
@@ -57,11 +55,11 @@ export function leanTexels(normals, w, h) {
           const a = lerp2(sx), b = lerp2(sy);
           mxx += a * a;
           myy += b * b;
-          mxy += a * b;
         }
-      moments.set([mxx / 16, myy / 16, mxy / 16, 1], (y * w + x) * 4);
+      const i = y * w + x;
+      texels.set([sx[i], sy[i], mxx / 16, myy / 16], i * 4);
     }
-  return {slopes, moments};
+  return texels;
 }
 
 // Box-mean mip levels of a power-of-two RGBA float image.
@@ -101,18 +99,15 @@ function uploadMipmapped(gl, texels, w, h) {
   return t;
 }
 
-// The LEAN textures of a named map, made once per context.
+// The LEAN texture of a named map, made once per context.
 const cache = new WeakMap();
-export function leanTextures(gl, name) {
+export function leanTexture(gl, name) {
   let byName = cache.get(gl);
   if (!byName) cache.set(gl, byName = new Map());
   if (!byName.has(name)) {
     if (name !== 'bumps') throw new Error(`normal map ${name}: expected one of ${NORMAL_MAPS}`);
-    const lean = leanTexels(bumpsNormals(), BUMPS_SIZE, BUMPS_SIZE);
-    byName.set(name, {
-      slopes: uploadMipmapped(gl, lean.slopes, BUMPS_SIZE, BUMPS_SIZE),
-      moments: uploadMipmapped(gl, lean.moments, BUMPS_SIZE, BUMPS_SIZE),
-    });
+    byName.set(name, uploadMipmapped(gl, leanTexels(bumpsNormals(), BUMPS_SIZE, BUMPS_SIZE),
+                                     BUMPS_SIZE, BUMPS_SIZE));
   }
   return byName.get(name);
 }

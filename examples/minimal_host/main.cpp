@@ -16,7 +16,7 @@
 // export's input texture u_input_density as N = exp(ln N) with a mip chain
 // (docs/INTEGRATION.md "Per-pixel material inputs"). NORMAL_MAP.pfm
 // (optional): unit tangent-space normals (x, y, z) in glTF's convention,
-// LEAN-mapped here into the inputs u_input_normal_slopes/moments.
+// LEAN-mapped here into the input u_input_normal_slopes.
 //
 // What a host does with an export, in order:
 //  1. read MODEL.glsl.manifest.json: the fragment shader's file, the model's
@@ -251,16 +251,16 @@ std::vector<float> read_pfm_channel(const std::string& path, int* w, int* h) {
     return out;
 }
 
-// A float RGB texture with a full mip chain of box means (glGenerateMipmap
+// A float RGBA texture with a full mip chain of box means (glGenerateMipmap
 // on a power-of-two image), trilinear, repeating.
-GLuint mipmapped_texture(const std::vector<float>& rgb, int w, int h) {
+GLuint mipmapped_texture(const std::vector<float>& rgba, int w, int h) {
     int levels = 1;
     while ((std::max(w, h) >> levels) > 0) ++levels;
     GLuint tex = 0;
     glCreateTextures(GL_TEXTURE_2D, 1, &tex);
-    glTextureStorage2D(tex, levels, GL_RGB32F, w, h);
+    glTextureStorage2D(tex, levels, GL_RGBA32F, w, h);
     glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
-    glTextureSubImage2D(tex, 0, 0, 0, w, h, GL_RGB, GL_FLOAT, rgb.data());
+    glTextureSubImage2D(tex, 0, 0, 0, w, h, GL_RGBA, GL_FLOAT, rgba.data());
     glGenerateTextureMipmap(tex);
     glTextureParameteri(tex, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
     glTextureParameteri(tex, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
@@ -271,13 +271,12 @@ GLuint mipmapped_texture(const std::vector<float>& rgb, int w, int h) {
 
 // LEAN mapping of a tangent-space normal map (docs/INTEGRATION.md,
 // "Per-pixel material inputs"): `normals` holds unit normals (x, y, z),
-// rows from the top. Writes each texel's slope s = (-x/z, -y/z) and the
-// second moments (s_x^2, s_y^2, s_x s_y) of the surface a bilinear lookup
+// rows from the top. Returns per texel (s_x, s_y, m_xx, m_yy): the slope
+// s = (-x/z, -y/z) and the second moments of the surface a bilinear lookup
 // reconstructs, averaged over the texel's cell (its four half-texel
 // squares, each inside one bilinear patch where s^2 is of degree 2 per
 // coordinate: 2 x 2 Gauss-Legendre nodes per square integrate it exactly).
-void lean_map(const std::vector<float>& normals, int w, int h, std::vector<float>* slopes,
-              std::vector<float>* moments) {
+std::vector<float> lean_map(const std::vector<float>& normals, int w, int h) {
     const size_t count = static_cast<size_t>(w) * static_cast<size_t>(h);
     std::vector<float> sx(count), sy(count);
     for (size_t i = 0; i < count; ++i) {
@@ -285,18 +284,16 @@ void lean_map(const std::vector<float>& normals, int w, int h, std::vector<float
         sx[i] = -normals[i * 3] / z;
         sy[i] = -normals[i * 3 + 1] / z;
     }
-    slopes->assign(count * 3, 0.0f);
-    for (size_t i = 0; i < count; ++i) (*slopes)[i * 3] = sx[i], (*slopes)[i * 3 + 1] = sy[i];
     auto at = [&](const std::vector<float>& v, int x, int y) {
         return v[static_cast<size_t>(((y % h) + h) % h) * static_cast<size_t>(w) +
                  static_cast<size_t>(((x % w) + w) % w)];
     };
     const float g = 0.25f / std::sqrt(3.0f);
     const float nodes[4] = {-0.25f - g, -0.25f + g, 0.25f - g, 0.25f + g};
-    moments->assign(count * 3, 0.0f);
+    std::vector<float> out(count * 4);
     for (int y = 0; y < h; ++y)
         for (int x = 0; x < w; ++x) {
-            float m[3] = {0.0f, 0.0f, 0.0f};
+            float mxx = 0.0f, myy = 0.0f;
             for (const float oy : nodes)
                 for (const float ox : nodes) {
                     const float px = static_cast<float>(x) + ox, py = static_cast<float>(y) + oy;
@@ -310,13 +307,16 @@ void lean_map(const std::vector<float>& normals, int w, int h, std::vector<float
                         return top + fy * (bottom - top);
                     };
                     const float a = bilinear(sx), b = bilinear(sy);
-                    m[0] += a * a, m[1] += b * b, m[2] += a * b;
+                    mxx += a * a, myy += b * b;
                 }
-            float* out = &(*moments)[(static_cast<size_t>(y) * static_cast<size_t>(w) +
-                                      static_cast<size_t>(x)) *
-                                     3];
-            for (int c = 0; c < 3; ++c) out[c] = m[c] / 16.0f;
+            const size_t i =
+                static_cast<size_t>(y) * static_cast<size_t>(w) + static_cast<size_t>(x);
+            out[i * 4 + 0] = sx[i];
+            out[i * 4 + 1] = sy[i];
+            out[i * 4 + 2] = mxx / 16.0f;
+            out[i * 4 + 3] = myy / 16.0f;
         }
+    return out;
 }
 
 void write_pfm(const std::string& path, int w, int h, const std::vector<float>& rgb) {
@@ -451,23 +451,18 @@ int run(int argc, char** argv) {
         glBindTextureUnit(static_cast<GLuint>(unit), tex);
         input_mask |= 1;  // GLINT_INPUT_DENSITY
     }
-    for (const char* name :
-         {"u_input_density", "u_input_alpha", "u_input_color", "u_input_base_albedo",
-          "u_input_normal_slopes", "u_input_normal_moments"})
+    for (const char* name : {"u_input_density", "u_input_alpha", "u_input_color",
+                             "u_input_base_albedo", "u_input_normal_slopes"})
         glProgramUniform1i(program, glGetUniformLocation(program, name), unit);
-    // A normal map: its LEAN slope and moment chains on the next two units.
+    // A normal map: its LEAN chain on the next unit.
     if (argc == 9) {
         int nw = 0, nh = 0, channels = 0;
         const std::vector<float> normals = read_pfm(argv[8], &nw, &nh, &channels);
         if (channels != 3) die(std::string(argv[8]) + ": a normal map holds RGB = (x, y, z)");
-        std::vector<float> slopes, moments;
-        lean_map(normals, nw, nh, &slopes, &moments);
-        glBindTextureUnit(static_cast<GLuint>(unit + 1), mipmapped_texture(slopes, nw, nh));
-        glBindTextureUnit(static_cast<GLuint>(unit + 2), mipmapped_texture(moments, nw, nh));
+        glBindTextureUnit(static_cast<GLuint>(unit + 1),
+                          mipmapped_texture(lean_map(normals, nw, nh), nw, nh));
         glProgramUniform1i(program, glGetUniformLocation(program, "u_input_normal_slopes"),
                            unit + 1);
-        glProgramUniform1i(program, glGetUniformLocation(program, "u_input_normal_moments"),
-                           unit + 2);
         input_mask |= 1 << 4;  // GLINT_INPUT_NORMAL
     }
     set_uniform(program, types, "u_input_texture_mask", input_mask);

@@ -14,12 +14,14 @@
 const float kSlopeMomentLodBias = -0.79248125f;
 
 // Σ = E[s sᵀ] − s̄ s̄ᵀ from the filtered first and second moments, kept
-// positive semi-definite: (xx, yy, xy).
-vec3 slope_covariance(vec2 mean, vec3 second) {
+// positive semi-definite: (xx, yy, xy). `second_xy`: E[s_x s_y], or 0 with
+// `correlated` false where only the variances are wanted.
+vec3 slope_covariance(vec2 mean, vec2 second, float second_xy, bool correlated) {
     float xx = max(second.x - mean.x * mean.x, 0.0f);
     float yy = max(second.y - mean.y * mean.y, 0.0f);
+    if (!correlated) return vec3(xx, yy, 0.0f);
     float bound = sqrt(xx * yy);
-    return vec3(xx, yy, clamp(second.z - mean.x * mean.y, -bound, bound));
+    return vec3(xx, yy, clamp(second_xy - mean.x * mean.y, -bound, bound));
 }
 
 // Slope statistics of a map in glTF's tangent frame (x along ∂p/∂u, y along

@@ -58,10 +58,11 @@ struct GlintInputs {
     // A normal map over the footprint (LEAN mapping): its mean slope
     // (s_x, s_y) = (−x/z, −y/z) of the tangent-space normal, in the frame
     // (t, n × t, n) of glint_shade's v_dpdu and v_normal, and its slope
-    // covariance (xx, yy, xy); filter s and (s_x², s_y², s_x s_y), then
-    // Σ = E[s sᵀ] − s̄ s̄ᵀ. Zero: no normal map.
+    // variances (Σ_xx, Σ_yy); filter s and (s_x², s_y²), then
+    // Σ_ii = E[s_i²] − s̄_i². Σ_xy is not an input: the glint NDF's axes
+    // stay on the uv axes. Zero: no normal map.
     vec2 mean_slope;
-    vec3 slope_covariance;
+    vec2 slope_variance;
 };
 vec3 g_glint_color_input;
 vec3 g_glint_base_albedo_input;
@@ -75,21 +76,20 @@ GlintInputs glint_inputs_from_uniforms() {
     inputs.color = u_glint_color;
     inputs.base_albedo = u_glint_base_albedo;
     inputs.mean_slope = vec2(0.0f);
-    inputs.slope_covariance = vec3(0.0f);
+    inputs.slope_variance = vec2(0.0f);
     return inputs;
 }
 
 // Sets the inputs every later glint_shade / glint_eval reads. A normal
-// map's covariance widens the glint lobe (α² + 2Σ per axis; Σ's
-// correlation is dropped: the glint NDF's axes stay on the uv axes) for the
+// map's slope variances widen the glint lobe (α² + 2Σ_ii per axis) for the
 // models that read a per-pixel α; glint_shade tilts its frame to the mean
 // slope.
 void glint_set_inputs(GlintInputs inputs) {
     g_glint_log_density = inputs.log_density;
     vec2 alpha = clamp(inputs.alpha, vec2(1e-3f), vec2(1.0f));
 #ifdef GLINTLAB_GLINT_PER_PIXEL_ALPHA
-    alpha = vec2(slope_widened_alpha(alpha.x, max(inputs.slope_covariance.x, 0.0f), 1.0f),
-                 slope_widened_alpha(alpha.y, max(inputs.slope_covariance.y, 0.0f), 1.0f));
+    alpha = vec2(slope_widened_alpha(alpha.x, max(inputs.slope_variance.x, 0.0f), 1.0f),
+                 slope_widened_alpha(alpha.y, max(inputs.slope_variance.y, 0.0f), 1.0f));
 #endif
     g_glint_alpha = alpha;
     g_glint_color_input = inputs.color;
@@ -108,13 +108,12 @@ const int GLINT_INPUT_DENSITY = 0;  // N = exp(ln N), one channel
 const int GLINT_INPUT_ALPHA = 1;    // alpha² (isotropic), one channel
 const int GLINT_INPUT_COLOR = 2;    // linear RGB
 const int GLINT_INPUT_BASE = 3;     // linear RGB
-const int GLINT_INPUT_NORMAL = 4;   // two textures: slopes (s_x, s_y), moments (s_x², s_y², s_x s_y)
+const int GLINT_INPUT_NORMAL = 4;   // the normal map's (s_x, s_y, s_x², s_y²), RGBA
 uniform sampler2D u_input_density;
 uniform sampler2D u_input_alpha;
 uniform sampler2D u_input_color;
 uniform sampler2D u_input_base_albedo;
 uniform sampler2D u_input_normal_slopes;
-uniform sampler2D u_input_normal_moments;
 uniform int u_input_texture_mask;
 uniform mat2 u_input_texture_linear[5];
 uniform vec2 u_input_texture_offset[5];
@@ -122,9 +121,14 @@ uniform vec2 u_input_texture_offset[5];
 // runs along −(n × t).
 uniform bool u_input_uv_mirrored;
 
+vec4 glint_input_filtered4(sampler2D tex, int slot, Footprint fp, float lod_bias) {
+    return material_texture_filtered4(tex, vec2(textureSize(tex, 0)),
+                                      u_input_texture_linear[slot], u_input_texture_offset[slot],
+                                      fp, lod_bias);
+}
+
 vec3 glint_input_filtered(sampler2D tex, int slot, Footprint fp, float lod_bias) {
-    return material_texture_filtered(tex, vec2(textureSize(tex, 0)), u_input_texture_linear[slot],
-                                     u_input_texture_offset[slot], fp, lod_bias);
+    return glint_input_filtered4(tex, slot, fp, lod_bias).rgb;
 }
 
 // The uniforms' inputs with the textured ones replaced by their filtered values.
@@ -144,14 +148,13 @@ GlintInputs glint_inputs_from_textures(Footprint fp) {
         inputs.base_albedo = glint_input_filtered(u_input_base_albedo, GLINT_INPUT_BASE, fp, 0.0f);
     if ((mask & (1 << GLINT_INPUT_NORMAL)) != 0) {
         // LEAN mapping, read as the renderer reads its normal maps.
-        vec2 mean = glint_input_filtered(u_input_normal_slopes, GLINT_INPUT_NORMAL, fp,
-                                         kSlopeMomentLodBias).xy;
-        vec3 second = glint_input_filtered(u_input_normal_moments, GLINT_INPUT_NORMAL, fp,
-                                           kSlopeMomentLodBias);
-        vec3 cov = slope_covariance(mean, second);
+        vec4 first =
+            glint_input_filtered4(u_input_normal_slopes, GLINT_INPUT_NORMAL, fp, kSlopeMomentLodBias);
+        vec2 mean = first.xy;
+        vec3 cov = slope_covariance(mean, first.zw, 0.0f, false);
         slopes_in_shading_frame(false, u_input_uv_mirrored ? -1.0f : 1.0f, mean, cov);
         inputs.mean_slope = mean;
-        inputs.slope_covariance = cov;
+        inputs.slope_variance = cov.xy;
     }
     return inputs;
 }

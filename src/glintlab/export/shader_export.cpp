@@ -293,7 +293,7 @@ std::string header(const GlintModelDescriptor& d, ExportLanguage lang, const std
     h += fmt::format(
         "Per-pixel material inputs (docs/INTEGRATION.md \"Per-pixel material inputs\"):\n"
         "  struct GlintInputs {{ float log_density; vec2 alpha; vec3 color; vec3 base_albedo;\n"
-        "          vec2 mean_slope; vec3 slope_covariance; }}\n"
+        "          vec2 mean_slope; vec2 slope_variance; }}\n"
         "  void glint_set_inputs(GlintInputs): before glint_shade / glint_eval; the exported\n"
         "          main() passes glint_inputs_from_textures(fp), which starts from\n"
         "          glint_inputs_from_uniforms() (the u_glint_* above).\n"
@@ -310,14 +310,14 @@ std::string header(const GlintModelDescriptor& d, ExportLanguage lang, const std
          "          (0 density, 1 alpha, 2 color, 3 base_albedo, 4 normal map); uv' =\n"
          "          u_input_texture_linear[i] uv + u_input_texture_offset[i]. Point the unused\n"
          "          samplers at a unit holding any 2D texture that is not the render target.\n"
-         "  Normal map (LEAN mapping): u_input_normal_slopes holds each texel's slope\n"
-         "          s = (-x/z, -y/z) of its tangent-space unit normal, u_input_normal_moments\n"
-         "          (s_x^2, s_y^2, s_x s_y) of the bilinear surface over the texel's cell; both\n"
-         "          mip-mapped (box means). glint_shade tilts its frame to the footprint's mean\n"
-         "          normal; u_input_uv_mirrored: the mesh's tangent w is -1.\n";
+         "  Normal map (LEAN mapping): u_input_normal_slopes (RGBA) holds each texel's slope\n"
+         "          s = (-x/z, -y/z) of its tangent-space unit normal and (s_x^2, s_y^2) of the\n"
+         "          bilinear surface over the texel's cell, mip-mapped (box means).\n"
+         "          glint_shade tilts its frame to the footprint's mean normal;\n"
+         "          u_input_uv_mirrored: the mesh's tangent w is -1.\n";
     h += wrap_row("    normal map widens alpha   " +
                   (d.textured_roughness
-                       ? std::string("yes (alpha^2 + 2 Sigma per axis)")
+                       ? std::string("yes (alpha^2 + 2 Sigma_ii per axis)")
                        : fmt::format("no, the frame is tilted only ({})", d.untextured_reason)));
     h += fmt::format(
         "Parameters of {} (uniform, type, range, default: meaning; a name in\n"
@@ -726,18 +726,16 @@ std::vector<ExportedFile> export_model(const ExportOptions& o) {
           d->textured_roughness);
     input("color", "u_input_color", 2, "linear RGB", true);
     input("base_albedo", "u_input_base_albedo", 3, "linear RGB", true);
-    // The normal map (LEAN mapping): two textures under one bit and one uv
-    // transform, read at the moments' level-of-detail bias. Every model
-    // tilts its frame to the mean normal; those that read α per pixel also
-    // widen their lobe by the covariance.
+    // The normal map (LEAN mapping): one RGBA texture, read at the moments'
+    // level-of-detail bias. Every model tilts its frame to the mean normal;
+    // those that read α per pixel also widen their lobe by the variances.
     nlohmann::json normal = {
         {"key", "normal_map"},
         {"bit", 4},
-        {"samplers", {"u_input_normal_slopes", "u_input_normal_moments"}},
+        {"sampler", "u_input_normal_slopes"},
         {"stores",
-         {"slopes s = (-x/z, -y/z) of the tangent-space unit normal (RG or RGB)",
-          "second moments of the bilinear surface over each texel's cell (s_x^2, s_y^2, "
-          "s_x s_y; RGB)"}},
+         "RGBA: the slope s = (-x/z, -y/z) of the tangent-space unit normal, and (s_x^2, "
+         "s_y^2) of the bilinear surface over the texel's cell"},
         {"per_pixel", true},
         {"widens_alpha", d->textured_roughness},
         {"lod_bias", -0.79248125},

@@ -17,7 +17,9 @@
 #include "glintlab/glints/material.glsl"
 
 // Units 16 and 17 (forward_shaders.h kNormalMapUnit): the map's mip chains
-// of (s_x, s_y, 0) and (s_x², s_y², s_x s_y), one uv transform for both.
+// of (s_x, s_y, s_x², s_y²) and s_x s_y (the CPU's two chains, repacked
+// level by level), one uv transform for both. A glint lobe and an
+// anisotropic one take Σ's diagonal only: one lookup.
 layout(binding = 16) uniform sampler2D u_normal_slopes;
 layout(binding = 17) uniform sampler2D u_normal_moments;
 uniform mat2 u_normal_map_linear;
@@ -26,11 +28,11 @@ uniform vec2 u_normal_map_size;
 uniform int u_normal_map_filtering;     // 0: lean, 1: none (the finest level's normal)
 uniform int u_normal_map_widens_glint;  // the glint model reads a per-pixel α
 
-vec3 normal_map_fetch(sampler2D tex, Footprint fp, bool filtered) {
+vec4 normal_map_fetch(sampler2D tex, Footprint fp, bool filtered) {
     if (!filtered)
-        return textureLod(tex, u_normal_map_linear * fp.uv + u_normal_map_offset, 0.0f).rgb;
-    return material_texture_filtered(tex, u_normal_map_size, u_normal_map_linear,
-                                     u_normal_map_offset, fp, kSlopeMomentLodBias);
+        return textureLod(tex, u_normal_map_linear * fp.uv + u_normal_map_offset, 0.0f);
+    return material_texture_filtered4(tex, u_normal_map_size, u_normal_map_linear,
+                                      u_normal_map_offset, fp, kSlopeMomentLodBias);
 }
 
 // Tilts (t, b, n) to the footprint's mean normal and widens the material's
@@ -39,9 +41,16 @@ vec3 normal_map_fetch(sampler2D tex, Footprint fp, bool filtered) {
 void normal_map_shade(Footprint fp, bool back, float bitangent_sign, inout vec3 t, inout vec3 b,
                       inout vec3 n, inout SurfaceMaterial mat) {
     bool lean = u_normal_map_filtering == 0;
-    vec2 mean = normal_map_fetch(u_normal_slopes, fp, lean).xy;
+    vec4 first = normal_map_fetch(u_normal_slopes, fp, lean);
+    vec2 mean = first.xy;
     vec3 cov = vec3(0.0f);
-    if (lean) cov = slope_covariance(mean, normal_map_fetch(u_normal_moments, fp, true));
+    if (lean) {
+        // Σ's correlation matters to an isotropic lobe that is not a glint's.
+        bool correlated = mat.type != MATERIAL_GLINT && mat.type != MATERIAL_DIFFUSE &&
+                          mat.alpha_x == mat.alpha_y;
+        float second_xy = correlated ? normal_map_fetch(u_normal_moments, fp, true).x : 0.0f;
+        cov = slope_covariance(mean, first.zw, second_xy, correlated);
+    }
     slopes_in_shading_frame(back, bitangent_sign, mean, cov);
     tilt_frame_to_slope(mean, t, b, n);
     if (mat.type == MATERIAL_DIFFUSE) return;
