@@ -251,16 +251,17 @@ std::vector<float> read_pfm_channel(const std::string& path, int* w, int* h) {
     return out;
 }
 
-// A float RGBA texture with a full mip chain of box means (glGenerateMipmap
-// on a power-of-two image), trilinear, repeating.
-GLuint mipmapped_texture(const std::vector<float>& rgba, int w, int h) {
+// A float texture of 1 or 4 channels with a full mip chain of box means
+// (glGenerateMipmap on a power-of-two image), trilinear, repeating.
+GLuint mipmapped_texture(const std::vector<float>& texels, int w, int h, int channels) {
     int levels = 1;
     while ((std::max(w, h) >> levels) > 0) ++levels;
     GLuint tex = 0;
     glCreateTextures(GL_TEXTURE_2D, 1, &tex);
-    glTextureStorage2D(tex, levels, GL_RGBA32F, w, h);
+    glTextureStorage2D(tex, levels, channels == 1 ? GL_R32F : GL_RGBA32F, w, h);
     glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
-    glTextureSubImage2D(tex, 0, 0, 0, w, h, GL_RGBA, GL_FLOAT, rgba.data());
+    glTextureSubImage2D(tex, 0, 0, 0, w, h, channels == 1 ? GL_RED : GL_RGBA, GL_FLOAT,
+                        texels.data());
     glGenerateTextureMipmap(tex);
     glTextureParameteri(tex, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
     glTextureParameteri(tex, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
@@ -436,19 +437,7 @@ int run(int argc, char** argv) {
         int mw = 0, mh = 0;
         std::vector<float> n = read_pfm_channel(argv[7], &mw, &mh);
         for (float& v : n) v = std::exp(v);
-        int levels = 1;
-        while ((std::max(mw, mh) >> levels) > 0) ++levels;
-        GLuint tex = 0;
-        glCreateTextures(GL_TEXTURE_2D, 1, &tex);
-        glTextureStorage2D(tex, levels, GL_R32F, mw, mh);
-        glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
-        glTextureSubImage2D(tex, 0, 0, 0, mw, mh, GL_RED, GL_FLOAT, n.data());
-        glGenerateTextureMipmap(tex);
-        glTextureParameteri(tex, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
-        glTextureParameteri(tex, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-        glTextureParameteri(tex, GL_TEXTURE_WRAP_S, GL_REPEAT);
-        glTextureParameteri(tex, GL_TEXTURE_WRAP_T, GL_REPEAT);
-        glBindTextureUnit(static_cast<GLuint>(unit), tex);
+        glBindTextureUnit(static_cast<GLuint>(unit), mipmapped_texture(n, mw, mh, 1));
         input_mask |= 1;  // GLINT_INPUT_DENSITY
     }
     for (const char* name : {"u_input_density", "u_input_alpha", "u_input_color",
@@ -460,7 +449,7 @@ int run(int argc, char** argv) {
         const std::vector<float> normals = read_pfm(argv[8], &nw, &nh, &channels);
         if (channels != 3) die(std::string(argv[8]) + ": a normal map holds RGB = (x, y, z)");
         glBindTextureUnit(static_cast<GLuint>(unit + 1),
-                          mipmapped_texture(lean_map(normals, nw, nh), nw, nh));
+                          mipmapped_texture(lean_map(normals, nw, nh), nw, nh, 4));
         glProgramUniform1i(program, glGetUniformLocation(program, "u_input_normal_slopes"),
                            unit + 1);
         input_mask |= 1 << 4;  // GLINT_INPUT_NORMAL

@@ -15,6 +15,8 @@
 
 #include <cstdlib>
 #include <fstream>
+#include <functional>
+#include <optional>
 
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
@@ -101,6 +103,41 @@ nlohmann::json plane25_scene(const std::string& model) {
     return j;
 }
 
+// The export of `exported`'s glint material (--scene) drawn by the minimal
+// host (`host_args` after OUT.pfm) and the scene `rendered` drawn by the
+// OpenGL renderer; nullopt (with the host's log as a failure) when the host
+// fails. The export lands in dir/export, the host's image in `host_pfm`.
+struct HostAndRenderer {
+    Image host, gpu;
+};
+std::optional<HostAndRenderer> draw_both(const std::string& model, const nlohmann::json& exported,
+                                         const nlohmann::json& rendered,
+                                         const testing::ScratchDir& dir,
+                                         const std::string& host_args) {
+    const std::filesystem::path exported_file = dir / "exported.json";
+    const std::filesystem::path rendered_file = dir / "plane_25.json";
+    { std::ofstream(exported_file) << exported.dump(2); }
+    { std::ofstream(rendered_file) << rendered.dump(2); }
+    ExportOptions o;
+    o.model = model;
+    o.language = ExportLanguage::Glsl;
+    o.out_dir = dir / "export";
+    o.scene = exported_file;
+    export_model(o);
+    const std::filesystem::path pfm = dir / "host.pfm";
+    std::string log_text;
+    if (run_minimal_host(
+            fmt::format("{} {} {} {}", o.out_dir.string(), model, pfm.string(), host_args),
+            dir / "host.log", &log_text) != 0) {
+        ADD_FAILURE() << log_text;
+        return std::nullopt;
+    }
+    const Scene scene = parse_scene(rendered, rendered_file);
+    GpuRenderer renderer(scene);
+    renderer.render(scene);
+    return HostAndRenderer{read_pfm(pfm), renderer.read_image()};
+}
+
 TEST_P(MinimalHost, MatchesTheRendererOnPlane25) {
     GLINTLAB_REQUIRE_GL();
     const std::string model = GetParam();
@@ -109,26 +146,10 @@ TEST_P(MinimalHost, MatchesTheRendererOnPlane25) {
     // (--scene): its Fresnel, alpha, density, parameters and, for
     // kneiphof2025, the prefiltered maps of the scene's environment.
     const nlohmann::json scene_json = plane25_scene(model);
-    const std::filesystem::path scene_file = dir / "plane_25.json";
-    { std::ofstream(scene_file) << scene_json.dump(2); }
-    ExportOptions o;
-    o.model = model;
-    o.language = ExportLanguage::Glsl;
-    o.out_dir = dir / "export";
-    o.scene = scene_file;
-    export_model(o);
-    const std::filesystem::path pfm = dir / "host.pfm";
-    std::string log_text;
-    ASSERT_EQ(run_minimal_host(fmt::format("{} {} {}", o.out_dir.string(), model, pfm.string()),
-                               dir / "host.log", &log_text),
-              0)
-        << log_text;
-    const Image host = read_pfm(pfm);
-
-    const Scene scene = parse_scene(scene_json, scene_file);
-    GpuRenderer renderer(scene);
-    renderer.render(scene);
-    Image gpu = renderer.read_image();
+    std::optional<HostAndRenderer> both = draw_both(model, scene_json, scene_json, dir, "");
+    ASSERT_TRUE(both);
+    const Image& host = both->host;
+    Image& gpu = both->gpu;
     ASSERT_EQ(host.width, gpu.width);
     ASSERT_EQ(host.height, gpu.height);
     if (model == "kneiphof2025") {
@@ -160,6 +181,60 @@ TEST_P(MinimalHost, MatchesTheRendererOnPlane25) {
     EXPECT_LT(a.mismatch_fraction, 0.01);
 }
 
+// A PFM file (little-endian, rows from the bottom) of an RGB image whose
+// rows `texel(x, y)` gives from the top.
+void write_pfm_rgb(const std::filesystem::path& path, int w, int h,
+                   const std::function<glm::vec3(int, int)>& texel) {
+    std::vector<float> pfm(size_t(w) * size_t(h) * 3);
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x) {
+            const glm::vec3 v = texel(x, y);
+            for (int c = 0; c < 3; ++c)
+                pfm[(size_t(h - 1 - y) * size_t(w) + size_t(x)) * 3 + c] = v[c];
+        }
+    std::ofstream f(path, std::ios::binary);
+    f << "PF\n" << w << " " << h << "\n-1.0\n";
+    f.write(reinterpret_cast<const char*>(pfm.data()),
+            static_cast<std::streamsize>(pfm.size() * sizeof(float)));
+}
+
+struct InputLimits {
+    double mean, smoothed, mismatch;
+};
+
+// A host feeding the export's per-pixel inputs (`host_inputs`: the
+// minimal host's arguments after LOG_DENSITY) draws what the OpenGL
+// renderer draws for `textured` (the same maps as the material's own),
+// within `limits`; the host without the inputs draws another image.
+void expect_inputs_match_the_renderer(const std::string& model, const nlohmann::json& textured,
+                                      const testing::ScratchDir& dir,
+                                      const std::string& host_inputs, InputLimits limits) {
+    // The export takes numbers only: its material is the scene's untextured
+    // one; the host then adds the maps as inputs.
+    const nlohmann::json plain = plane25_scene(model);
+    std::optional<HostAndRenderer> both =
+        draw_both(model, plain, textured, dir, "128 128 12 " + host_inputs);
+    ASSERT_TRUE(both);
+    double mean_b = 0.0;
+    const ImageAgreement a = agreement_at_unit_mean(both->host, both->gpu, &mean_b);
+    ASSERT_GT(mean_b, 1e-4);
+    ::testing::Test::RecordProperty(model + "_mean_rel", std::to_string(a.mean_relative_error));
+    ::testing::Test::RecordProperty(model + "_smoothed", std::to_string(a.smoothed_relative_l1));
+    EXPECT_LT(a.mean_relative_error, limits.mean);
+    EXPECT_LT(a.smoothed_relative_l1, limits.smoothed);
+    EXPECT_LT(a.mismatch_fraction, limits.mismatch);
+    // The inputs matter: the host without them draws another image.
+    std::string log_text;
+    ASSERT_EQ(run_minimal_host(fmt::format("{} {} {} 128 128 12", (dir / "export").string(), model,
+                                           (dir / "plain.pfm").string()),
+                               dir / "plain.log", &log_text),
+              0)
+        << log_text;
+    const ImageAgreement without =
+        agreement_at_unit_mean(read_pfm(dir / "plain.pfm"), both->gpu, &mean_b);
+    EXPECT_GT(without.smoothed_relative_l1, 2.0 * a.smoothed_relative_l1 + 0.02);
+}
+
 // The export's per-pixel inputs (docs/INTEGRATION.md "Per-pixel material
 // inputs"): a host binding a density map through u_input_density draws what
 // the OpenGL renderer draws with the same map as the material's textured
@@ -171,143 +246,51 @@ TEST(MinimalHostInputs, DensityMapMatchesTheRenderer) {
         SCOPED_TRACE(model);
         testing::ScratchDir dir;
         // ln N 9 to 13 in steps across u, a finer checker in v: 64 x 64, tiled.
+        auto ln_n = [](int x, int y) { return 9.0f + float(x / 16) + ((y / 8) % 2 ? 0.5f : 0.0f); };
         Image map(64, 64);
-        std::vector<float> pfm(64 * 64 * 3);
         for (int y = 0; y < 64; ++y)
-            for (int x = 0; x < 64; ++x) {
-                const float ln = 9.0f + float(x / 16) + ((y / 8) % 2 ? 0.5f : 0.0f);
-                map.at(x, y) = glm::vec3(ln);
-                for (int c = 0; c < 3; ++c) pfm[(size_t(63 - y) * 64 + size_t(x)) * 3 + c] = ln;
-            }
+            for (int x = 0; x < 64; ++x) map.at(x, y) = glm::vec3(ln_n(x, y));
         write_exr(map, dir / "density.exr");
-        {
-            std::ofstream f(dir / "density.pfm", std::ios::binary);
-            f << "PF\n64 64\n-1.0\n";
-            f.write(reinterpret_cast<const char*>(pfm.data()),
-                    static_cast<std::streamsize>(pfm.size() * sizeof(float)));
-        }
+        write_pfm_rgb(dir / "density.pfm", 64, 64,
+                      [&](int x, int y) { return glm::vec3(ln_n(x, y)); });
         nlohmann::json scene_json = plane25_scene(model);
         scene_json["materials"][0]["log_density"] = {{"texture", "density.exr"}};
-        const std::filesystem::path scene_file = dir / "plane_25.json";
-        { std::ofstream(scene_file) << scene_json.dump(2); }
-        ExportOptions o;
-        o.model = model;
-        o.language = ExportLanguage::Glsl;
-        o.out_dir = dir / "export";
-        // The export takes numbers only: its material is the scene's with
-        // ln N 12; the host then replaces ln N by the map.
-        o.scene = dir / "plain.json";
-        { std::ofstream(o.scene) << plane25_scene(model).dump(2); }
-        export_model(o);
-        const std::filesystem::path out = dir / "host.pfm";
-        std::string log_text;
-        ASSERT_EQ(run_minimal_host(fmt::format("{} {} {} 128 128 12 {}", o.out_dir.string(), model,
-                                               out.string(), (dir / "density.pfm").string()),
-                                   dir / "host.log", &log_text),
-                  0)
-            << log_text;
-        const Image host = read_pfm(out);
-        const Scene scene = parse_scene(scene_json, scene_file);
-        GpuRenderer renderer(scene);
-        renderer.render(scene);
-        const Image gpu = renderer.read_image();
-        double mean_b = 0.0;
-        const ImageAgreement a = agreement_at_unit_mean(host, gpu, &mean_b);
-        ASSERT_GT(mean_b, 1e-4);
-        RecordProperty(model + "_mean_rel", std::to_string(a.mean_relative_error));
-        RecordProperty(model + "_smoothed", std::to_string(a.smoothed_relative_l1));
         const bool gated = model == "deliot2023";
-        EXPECT_LT(a.mean_relative_error, gated ? 0.05 : 0.03);
-        EXPECT_LT(a.smoothed_relative_l1, gated ? 0.10 : 0.05);
-        EXPECT_LT(a.mismatch_fraction, 0.01);
-        // The map matters: the host without it draws another image.
-        ASSERT_EQ(run_minimal_host(fmt::format("{} {} {} 128 128 12", o.out_dir.string(), model,
-                                               (dir / "plain.pfm").string()),
-                                   dir / "plain.log", &log_text),
-                  0)
-            << log_text;
-        const ImageAgreement without =
-            agreement_at_unit_mean(read_pfm(dir / "plain.pfm"), gpu, &mean_b);
-        EXPECT_GT(without.smoothed_relative_l1, 2.0 * a.smoothed_relative_l1 + 0.02);
+        expect_inputs_match_the_renderer(model, scene_json, dir, (dir / "density.pfm").string(),
+                                         {gated ? 0.05 : 0.03, gated ? 0.10 : 0.05, 0.01});
     }
 }
 
 // A normal map through the export's inputs: the host LEAN-maps it itself
-// (slopes and bilinear-cell moments, box-mean mip chains; the recipe of
-// docs/INTEGRATION.md) and draws what the OpenGL renderer draws with the
-// same map as the material's normal_map.
+// (slopes and bilinear-cell second moments, a box-mean mip chain; the recipe
+// of docs/INTEGRATION.md) and draws what the OpenGL renderer draws with the
+// same map as the material's normal_map. The same shader code on the same
+// mip chains (glGenerateMipmap's box means on a power-of-two map are the
+// renderer's levels): llvmpipe agrees to 1e-5 in the mean and 2e-4 in block
+// means; the bounds leave room for another driver's mipmap rounding.
 TEST(MinimalHostInputs, NormalMapMatchesTheRenderer) {
     GLINTLAB_REQUIRE_GL();
     for (const std::string model : {"smooth", "deliot2023", "chermain2020"}) {
         SCOPED_TRACE(model);
         testing::ScratchDir dir;
-        // Bumps: a periodic height field h = 0.35 (sin 2πu·2 + cos 2πv·3) / 2π
-        // on a 64 x 64 map, its normals tilted up to ~35°, tiled 8 times.
+        // Bumps: ridges along u and v on a 64 x 64 map, tilts up to ~35°,
+        // tiled 8 times.
+        auto normal = [](int x, int y) {
+            const float two_pi = 6.2831853f;
+            const float u = (float(x) + 0.5f) / 64.0f, v = (float(y) + 0.5f) / 64.0f;
+            return glm::normalize(glm::vec3(-0.7f * std::cos(two_pi * 2.0f * u),
+                                            -1.05f * std::sin(two_pi * 3.0f * v), 1.0f));
+        };
         Image map(64, 64);
-        std::vector<float> pfm(64 * 64 * 3);
-        const float two_pi = 6.2831853f;
         for (int y = 0; y < 64; ++y)
-            for (int x = 0; x < 64; ++x) {
-                const float u = (float(x) + 0.5f) / 64.0f, v = (float(y) + 0.5f) / 64.0f;
-                const float dhdu = 0.35f * 2.0f * std::cos(two_pi * 2.0f * u);
-                const float dhdv = -0.35f * 3.0f * std::sin(two_pi * 3.0f * v);
-                const glm::vec3 n = glm::normalize(glm::vec3(-dhdu, dhdv, 1.0f));
-                map.at(x, y) = n;
-                for (int c = 0; c < 3; ++c) pfm[(size_t(63 - y) * 64 + size_t(x)) * 3 + c] = n[c];
-            }
+            for (int x = 0; x < 64; ++x) map.at(x, y) = normal(x, y);
         write_exr(map, dir / "normals.exr");
-        {
-            std::ofstream f(dir / "normals.pfm", std::ios::binary);
-            f << "PF\n64 64\n-1.0\n";
-            f.write(reinterpret_cast<const char*>(pfm.data()),
-                    static_cast<std::streamsize>(pfm.size() * sizeof(float)));
-        }
+        write_pfm_rgb(dir / "normals.pfm", 64, 64, normal);
         nlohmann::json scene_json = plane25_scene(model);
         scene_json["materials"][0]["normal_map"] = {{"texture", "normals.exr"},
                                                     {"encoding", "signed"}};
-        const std::filesystem::path scene_file = dir / "plane_25.json";
-        { std::ofstream(scene_file) << scene_json.dump(2); }
-        ExportOptions o;
-        o.model = model;
-        o.language = ExportLanguage::Glsl;
-        o.out_dir = dir / "export";
-        o.scene = dir / "plain.json";
-        { std::ofstream(o.scene) << plane25_scene(model).dump(2); }
-        export_model(o);
-        const std::filesystem::path out = dir / "host.pfm";
-        std::string log_text;
-        ASSERT_EQ(run_minimal_host(fmt::format("{} {} {} 128 128 12 - {}", o.out_dir.string(),
-                                               model, out.string(), (dir / "normals.pfm").string()),
-                                   dir / "host.log", &log_text),
-                  0)
-            << log_text;
-        const Image host = read_pfm(out);
-        const Scene scene = parse_scene(scene_json, scene_file);
-        GpuRenderer renderer(scene);
-        renderer.render(scene);
-        const Image gpu = renderer.read_image();
-        double mean_b = 0.0;
-        const ImageAgreement a = agreement_at_unit_mean(host, gpu, &mean_b);
-        ASSERT_GT(mean_b, 1e-4);
-        RecordProperty(model + "_mean_rel", std::to_string(a.mean_relative_error));
-        RecordProperty(model + "_smoothed", std::to_string(a.smoothed_relative_l1));
-        // The same shader code on the same mip chains (the host's moments
-        // are the renderer's recipe; glGenerateMipmap's box means on a
-        // power-of-two map are the renderer's levels): llvmpipe agrees to
-        // 1e-5 in the mean and 2e-4 in block means; the bounds leave room
-        // for another driver's mipmap rounding.
-        EXPECT_LT(a.mean_relative_error, 0.01);
-        EXPECT_LT(a.smoothed_relative_l1, 0.02);
-        EXPECT_LT(a.mismatch_fraction, 0.01);
-        // The map matters: the host without it draws another image.
-        ASSERT_EQ(run_minimal_host(fmt::format("{} {} {} 128 128 12", o.out_dir.string(), model,
-                                               (dir / "plain.pfm").string()),
-                                   dir / "plain.log", &log_text),
-                  0)
-            << log_text;
-        const ImageAgreement without =
-            agreement_at_unit_mean(read_pfm(dir / "plain.pfm"), gpu, &mean_b);
-        EXPECT_GT(without.smoothed_relative_l1, 2.0 * a.smoothed_relative_l1 + 0.02);
+        expect_inputs_match_the_renderer(model, scene_json, dir,
+                                         "- " + (dir / "normals.pfm").string(), {0.01, 0.02, 0.01});
     }
 }
 
