@@ -3,6 +3,7 @@
 
 import {makeQuad, makeSphere} from './geometry.js';
 import {ExportedModel, fresnelDiffers, glintBlurTaps} from './model.js';
+import {MATERIAL_MAPS} from './material_maps.js';
 import {NORMAL_MAPS} from './normal_map.js';
 import {Renderer} from './renderer.js';
 
@@ -79,6 +80,7 @@ function stateFromUrl(search) {
       rotation: number(q.get('env_rotation') ?? '0', 'env_rotation', -360, 360) * Math.PI / 180,
     },
     normalMap: choice(q.get('normal_map') ?? 'none', 'normal_map', NORMAL_MAPS),
+    textures: choice(q.get('textures') ?? 'none', 'textures', MATERIAL_MAPS),
     exposure: number(q.get('exposure') ?? '-1', 'exposure', -20, 20),
     params: {},
     continuous: q.get('static') !== '1',
@@ -134,6 +136,7 @@ function urlFromState(s) {
   q.set('env_rotation', +(s.environment.rotation * 180 / Math.PI).toFixed(3));
   q.set('exposure', s.exposure);
   if (s.normalMap !== 'none') q.set('normal_map', s.normalMap);
+  if (s.textures !== 'none') q.set('textures', s.textures);
   for (const [k, v] of Object.entries(s.params)) q.set(`p.${k}`, v);
   if (!s.continuous) q.set('static', 1);
   if (s.exportBase !== 'export') q.set('export', s.exportBase);
@@ -430,6 +433,9 @@ class App {
     const normalSelect = document.getElementById('normal-map');
     normalSelect.value = s.normalMap;
     normalSelect.onchange = () => { s.normalMap = normalSelect.value; this.changed(); };
+    const texturesSelect = document.getElementById('textures');
+    texturesSelect.value = s.textures;
+    texturesSelect.onchange = () => { s.textures = texturesSelect.value; this.changed(); };
     const envBox = document.getElementById('environment');
     envBox.checked = s.environment.on;
     envBox.onchange = () => { s.environment.on = envBox.checked; this.changed(); };

@@ -5,6 +5,7 @@
 // export documents (which scene parameter goes to which uniform, the
 // host-computed uniforms listed below).
 
+import {materialTextures} from './material_maps.js';
 import {leanTexture} from './normal_map.js';
 
 // Model parameters the exported shader does not read under their own name
@@ -161,6 +162,10 @@ export class ExportedModel {
         (manifest.derived_uniforms ?? []).map((u) => [u.uniform, u.value]));
     model.environment = null;
     model.fixedMaterial = {};  // material keys the export fixes (wang2020)
+    // The input bits the model reads per pixel (the manifest's inputs:
+    // wang2020 and kneiphof2025 take density and roughness as uniforms only).
+    model.perPixelInputs = new Set(
+        (manifest.inputs?.textures ?? []).filter((i) => i.per_pixel).map((i) => i.bit));
     for (const r of manifest.resources) {
       const bytes = await (await fetchOk(`${base}/${r.file}`, 'resource')).arrayBuffer();
       const data = r.format.endsWith('UI') ? new Uint32Array(bytes) : new Float32Array(bytes);
@@ -290,6 +295,20 @@ export class ExportedModel {
     for (const name of ['u_input_density', 'u_input_alpha', 'u_input_color',
                         'u_input_base_albedo', 'u_input_normal_slopes']) set(name, inputUnit);
     let mask = 0;
+    if (state.textures !== 'none') {
+      // Density, roughness and colour maps on the next units (bits 0-2),
+      // for the models that read them per pixel (the manifest's inputs).
+      const maps = materialTextures(gl, state.textures);
+      const inputs = [['u_input_density', maps.density, 0], ['u_input_alpha', maps.alpha, 1],
+                      ['u_input_color', maps.color, 2]];
+      inputs.forEach(([name, texture, bit], i) => {
+        if (!this.perPixelInputs.has(bit)) return;
+        gl.activeTexture(gl.TEXTURE0 + inputUnit + 2 + i);
+        gl.bindTexture(gl.TEXTURE_2D, texture);
+        set(name, inputUnit + 2 + i);
+        mask |= 1 << bit;
+      });
+    }
     if (state.normalMap !== 'none') {
       // The normal map's LEAN texture on the next unit, its uv transform
       // the identity (the map tiles with the glint pattern's uv). Both
@@ -300,10 +319,11 @@ export class ExportedModel {
       gl.bindTexture(gl.TEXTURE_2D, leanTexture(gl, state.normalMap));
       set('u_input_normal_slopes', inputUnit + 1);
       set('u_input_uv_mirrored', 1);
-      set('u_input_texture_linear', Array(5).fill([1, 0, 0, 1]).flat());
-      set('u_input_texture_offset', Array(10).fill(0));
       mask |= 1 << 4;  // GLINT_INPUT_NORMAL
     }
+    // Every map tiles with the glint pattern's uv: identity transforms.
+    set('u_input_texture_linear', Array(5).fill([1, 0, 0, 1]).flat());
+    set('u_input_texture_offset', Array(10).fill(0));
     set('u_input_texture_mask', mask);
     gl.activeTexture(gl.TEXTURE0);
   }

@@ -5,6 +5,8 @@
 // The page's one map is procedural, so that the browser test can hand the
 // native renderer the same texels (web/tests/web_page_test.py bumps_normals).
 
+import {uploadMipmapped} from './mip_texture.js';
+
 export const NORMAL_MAPS = ['none', 'bumps'];
 export const BUMPS_SIZE = 64;
 
@@ -60,43 +62,6 @@ export function leanTexels(normals, w, h) {
       texels.set([sx[i], sy[i], mxx / 16, myy / 16], i * 4);
     }
   return texels;
-}
-
-// Box-mean mip levels of a power-of-two RGBA float image.
-function mipLevels(texels, w, h) {
-  const levels = [{data: texels, w, h}];
-  while (w > 1 || h > 1) {
-    const nw = Math.max(w >> 1, 1), nh = Math.max(h >> 1, 1);
-    const prev = levels[levels.length - 1].data;
-    const next = new Float32Array(nw * nh * 4);
-    for (let y = 0; y < nh; ++y)
-      for (let x = 0; x < nw; ++x)
-        for (let c = 0; c < 4; ++c) {
-          let sum = 0;
-          for (const [dx, dy] of [[0, 0], [1, 0], [0, 1], [1, 1]])
-            sum += prev[(Math.min(2 * y + dy, h - 1) * w + Math.min(2 * x + dx, w - 1)) * 4 + c];
-          next[(y * nw + x) * 4 + c] = sum / 4;
-        }
-    levels.push({data: next, w: nw, h: nh});
-    w = nw;
-    h = nh;
-  }
-  return levels;
-}
-
-// RGBA32F where OES_texture_float_linear makes it filterable, else RGBA16F
-// (filterable in every WebGL2); trilinear, repeating.
-function uploadMipmapped(gl, texels, w, h) {
-  const format = gl.getExtension('OES_texture_float_linear') ? gl.RGBA32F : gl.RGBA16F;
-  const t = gl.createTexture();
-  gl.bindTexture(gl.TEXTURE_2D, t);
-  mipLevels(texels, w, h).forEach((l, i) =>
-    gl.texImage2D(gl.TEXTURE_2D, i, format, l.w, l.h, 0, gl.RGBA, gl.FLOAT, l.data));
-  gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_MIN_FILTER, gl.LINEAR_MIPMAP_LINEAR);
-  gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_MAG_FILTER, gl.LINEAR);
-  gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_WRAP_S, gl.REPEAT);
-  gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_WRAP_T, gl.REPEAT);
-  return t;
 }
 
 // The LEAN texture of a named map, made once per context.

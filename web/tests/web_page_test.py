@@ -260,6 +260,35 @@ def bumps_normals(size=64):
     return (n / np.linalg.norm(n, axis=-1, keepdims=True)).astype(np.float32)
 
 
+def tiles_maps(size=64):
+    """web/material_maps.js tilesMaps: ln N (size, size), α (size, size),
+    linear colour (size, size, 3), row 0 at v = 0."""
+    import numpy as np
+    y, x = np.mgrid[0:size, 0:size]
+    ln_n = (14 + np.floor(4 * x / size)).astype(np.float32)
+    alpha = np.where(((x // 8) + (y // 8)) % 2 == 0, 0.2, 0.4).astype(np.float32)
+    t = (y + 0.5) / size
+    color = np.stack([0.9 - 0.6 * t, np.full_like(t, 0.6), 0.3 + 0.6 * t], -1).astype(np.float32)
+    return ln_n, alpha, color
+
+
+# Models compared with the page's textured parameters ("tiles": density,
+# roughness and colour maps through the export's inputs) against the native
+# renderer with the same texels as the material's textures, on both shapes,
+# and their limits. The footprint lookups' level of detail follows
+# SwiftShader's per-quad derivatives (see LIMITS): measured mismatching
+# 0.02 % (smooth), 1.8 % (chermain2020, plane), 1.5 % (deliot2023, sphere),
+# means within 1.9 %, smoothed L1 <= 0.035. The page without the maps
+# against the textured native frame measures smoothed 0.35-0.70 and
+# mismatching 9-71 %. chermain2020's pixel fraction gets 2x room over the
+# measured value, as its plain limit does.
+TEXTURED_LIMITS = {
+    "smooth": (0.03, 0.05, 0.01),
+    "chermain2020": (0.03, 0.05, 0.04),
+    "deliot2023": (0.05, 0.20, 0.20),
+}
+TEXTURED_MODELS = tuple(TEXTURED_LIMITS)
+
 # Models compared with the page's normal map ("bumps" through the export's
 # LEAN inputs) against the native renderer with the same texels as the
 # material's normal_map, on both shapes, and their limits. The LEAN lookup
@@ -279,7 +308,7 @@ NORMAL_MAP_LIMITS = {
 NORMAL_MAP_MODELS = tuple(NORMAL_MAP_LIMITS)
 
 
-def page_query(model, shape, env, mat, normal_map=False):
+def page_query(model, shape, env, mat, normal_map=False, textures=False):
     s = SHAPES[shape]
     q = {"model": model, "shape": shape, "w": VIEW["w"], "h": VIEW["h"], "seed": mat["seed"],
          "log_density": mat["log_density"], "roughness": mat["roughness"],
@@ -293,10 +322,12 @@ def page_query(model, shape, env, mat, normal_map=False):
         q["f0"] = ",".join(map(str, mat["fresnel"]["f0"]))
     if normal_map:
         q["normal_map"] = "bumps"
+    if textures:
+        q["textures"] = "tiles"
     return "&".join(f"{k}={v}" for k, v in q.items())
 
 
-def native_scene(model, shape, env_file, mat, normal_map=False):
+def native_scene(model, shape, env_file, mat, normal_map=False, textures=False):
     s = SHAPES[shape]
     material = {"name": "glitter", "type": "glint", "model": model,
                 "ndf": "ggx" if model == "kneiphof2025" else VIEW["ndf"],
@@ -305,6 +336,11 @@ def native_scene(model, shape, env_file, mat, normal_map=False):
                 "fresnel": mat["fresnel"]}
     if normal_map:
         material["normal_map"] = {"texture": bumps_normals(), "encoding": "signed"}
+    if textures:
+        ln_n, alpha, color = tiles_maps()
+        material["log_density"] = {"texture": ln_n}
+        material["roughness"] = {"texture": alpha}
+        material["color"] = {"texture": color}
     if shape == "plane":
         geometry = {"name": "plane", "type": "quad", "size": [8, 8], "uv_scale": [8, 8],
                     "material": "glitter"}
@@ -386,18 +422,21 @@ def test_compare(page, export_dir, models, env_file):
             ok = False
             continue
         shapes = ["sphere"] if model in ("kneiphof2025", "wang2020") else ["plane", "sphere"]
-        cases = [(shape, env_file if model == "kneiphof2025" else None, False)
+        cases = [(shape, env_file if model == "kneiphof2025" else None, "")
                  for shape in shapes]
         if model in NORMAL_MAP_MODELS:
-            cases += [(shape, None, True) for shape in shapes]
+            cases += [(shape, None, "normal map") for shape in shapes]
+        if model in TEXTURED_MODELS:
+            cases += [(shape, None, "textures") for shape in shapes]
         # wang2020 under the environment too: the page's §4.4 glint blur
         # (3 taps under "auto", one sample per pixel) against the native
         # renderer's post pass.
         if model == "wang2020" and env_file:
-            cases.append(("sphere", env_file, False))
+            cases.append(("sphere", env_file, ""))
         mat = material_view(model, export_dir)
-        for i, (shape, env, normal_map) in enumerate(cases):
-            query = page_query(model, shape, env is not None, mat, normal_map)
+        for i, (shape, env, maps) in enumerate(cases):
+            normal_map, textures = maps == "normal map", maps == "textures"
+            query = page_query(model, shape, env is not None, mat, normal_map, textures)
             state, log = page.open(query) if i == 0 else page.navigate(query)
             if state.get("error") or state.get("glErrors") or errors_in(log):
                 print(f"FAIL {model} {shape}: {state.get('error')} {state.get('glErrors')} "
@@ -405,8 +444,8 @@ def test_compare(page, export_dir, models, env_file):
                 ok = False
                 continue
             browser = page.hdr()
-            native = glintlab.render(native_scene(model, shape, env, mat, normal_map), gpu=True,
-                                     file=f"<{model} {shape} view of the page>")
+            native = glintlab.render(native_scene(model, shape, env, mat, normal_map, textures),
+                                     gpu=True, file=f"<{model} {shape} view of the page>")
             native = np.asarray(native, dtype=np.float32)
             # The environment's background is drawn from the prefiltered
             # map's finest layer on the page and from the map itself natively:
@@ -414,10 +453,11 @@ def test_compare(page, export_dir, models, env_file):
             mask = (browser[..., 3] > 0.5).astype(np.float32) if env else \
                 np.ones(browser.shape[:2], np.float32)
             r = compare(browser[..., :3], native, mask)
-            lim = NORMAL_MAP_LIMITS[model] if normal_map else LIMITS[model]
+            lim = (NORMAL_MAP_LIMITS if normal_map else TEXTURED_LIMITS if textures
+                   else LIMITS)[model]
             passed = r["mean_rel"] <= lim[0] and r["smoothed_l1"] <= lim[1] and \
                 r["mismatch"] <= lim[2]
-            view = shape + (" + environment" if env else "") + (" + normal map" if normal_map else "")
+            view = shape + (" + environment" if env else "") + (f" + {maps}" if maps else "")
             print(f"{model:13s} {view:20s} mean {r['mean_browser']:.5f} / {r['mean_native']:.5f} "
                   f"rel {r['mean_rel']:.4f} (<= {lim[0]})  smoothed {r['smoothed_l1']:.4f} "
                   f"(<= {lim[1]})  mismatching {100 * r['mismatch']:.2f}% (<= {100 * lim[2]:g}%)"
