@@ -15,6 +15,7 @@
 #include "glintlab/core/error.h"
 #include "glintlab/core/image.h"
 #include "glintlab/core/memory_limit.h"
+#include "glintlab/export/shader_export.h"
 #include "glintlab/glints/glint_bxdf.h"
 #include "glintlab/glints/registry.h"
 #include "glintlab/render/render_memory.h"
@@ -346,6 +347,31 @@ PYBIND11_MODULE(_glintlab, m) {
         py::arg("match_facet_extent") = true, py::arg("flicker_paths") = 4,
         py::arg("progress") = py::none(),
         "glintlab compare: the metrics.json document (docs/VALIDATION.md \"compare\")");
+    m.def(
+        "export_model",
+        [](const std::string& model, const std::string& output, const std::string& lang,
+           const std::string& scene, const std::string& material, const std::string& env,
+           bool resources) {
+            glintlab::ExportOptions o;
+            o.model = model;
+            o.language = glintlab::parse_export_language(lang);
+            o.out_dir = output;
+            o.scene = scene;
+            o.material = material;
+            o.environment = env;
+            o.resources = resources;
+            std::vector<std::string> files;
+            {
+                py::gil_scoped_release release;
+                for (const glintlab::ExportedFile& f : glintlab::export_model(o))
+                    files.push_back(f.name);
+            }
+            return files;
+        },
+        py::arg("model"), py::arg("output"), py::arg("lang"), py::arg("scene"), py::arg("material"),
+        py::arg("env"), py::arg("resources"),
+        "glintlab export: writes one model's shader, resources and manifest; returns the file "
+        "names (docs/INTEGRATION.md)");
     m.def(
         "read_image", [](const std::string& path) { return to_numpy(read_image(path)); },
         py::arg("path"), "Reads .exr/.hdr/.png/.jpg to a linear float32 (H, W, 3) array");

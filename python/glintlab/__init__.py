@@ -28,7 +28,8 @@ from ._progress import _Bar, progress_enabled, set_progress
 __all__ = [
     "Error", "SceneError", "OverrideError", "Scene", "parse_scene", "load_document",
     "apply_overrides", "set_model", "render", "models", "eval_brdf", "eval_ndf", "validate",
-    "validation_suites", "compare", "compare_table", "read_image", "write_image", "tonemap",
+    "validation_suites", "compare", "compare_table", "export", "read_image", "write_image",
+    "tonemap",
     "sweep", "set_progress", "progress_enabled", "with_gl", "__version__",
 ]
 __version__ = _glintlab.__version__  # the C++ library's version, as `glintlab --version`
@@ -401,6 +402,24 @@ def compare_table(result):
             columns.append(c + "_se")
     columns += [c for c in metrics if c not in columns]
     return table[columns] if rows else table
+
+
+def export(model, output, lang="glsl", scene=None, material=None, env=None, resources=True):
+    """`glintlab export MODEL -o OUTPUT`: writes one model's standalone
+    fragment shader (lang "glsl" 4.50, "glsles" 3.00 for WebGL2, "hlsl"
+    SM 5.0), its resources and a JSON manifest into the directory `output`
+    (docs/INTEGRATION.md). `scene` (a scene file) and `material` export that
+    glint material's values and resources instead of the model's defaults;
+    `env` an environment map for kneiphof2025's prefiltered maps;
+    `resources=False` writes the shaders and the manifest only. Returns the
+    manifest as a dict, with "files" the names written (manifest last)."""
+    files = _glintlab.export_model(str(model), os.fspath(output), str(lang),
+                                   os.fspath(scene) if scene else "", material or "",
+                                   os.fspath(env) if env else "", bool(resources))
+    with open(os.path.join(os.fspath(output), files[-1]), encoding="utf-8") as f:
+        manifest = json.load(f)
+    manifest["files"] = files
+    return manifest
 
 
 def read_image(path):

@@ -117,3 +117,16 @@ def test_sweep_realizations_give_standard_errors(tiny_scene):
     for bad in (0, 1.5, True, 2000):
         with pytest.raises(ValueError, match="realizations"):
             glintlab.sweep(tiny_scene, axes, client="serial", realizations=bad)
+
+
+def test_export_writes_the_shader_and_returns_the_manifest(tmp_path):
+    manifest = glintlab.export("chermain2020", tmp_path / "out", lang="glsles", resources=False)
+    assert manifest["model"] == "chermain2020" and manifest["language"] == "glsles"
+    assert manifest["files"][-1] == "chermain2020.glsles.manifest.json"
+    for name in manifest["files"]:
+        assert (tmp_path / "out" / name).is_file()
+    assert manifest["resources"] == []
+    with pytest.raises(glintlab.Error, match="explicit.*exportable"):
+        glintlab.export("explicit", tmp_path / "x")
+    with pytest.raises(glintlab.Error, match="hlsl"):
+        glintlab.export("smooth", tmp_path / "y", lang="cuda")
