@@ -35,8 +35,8 @@ std::vector<Row> box_weights(int m, int n) {
 MipTexture::MipTexture(int width, int height, int channels, std::vector<float> texels,
                        TextureWrap wrap)
     : channels_(channels), wrap_(wrap) {
-    if (width < 1 || height < 1 || (channels != 1 && channels != 3))
-        fail("texture: {}x{} with {} channels (need a size of at least 1x1 and 1 or 3 channels)",
+    if (width < 1 || height < 1 || (channels != 1 && channels != 3 && channels != 4))
+        fail("texture: {}x{} with {} channels (need a size of at least 1x1 and 1, 3 or 4 channels)",
              width, height, channels);
     if (texels.size() != size_t(width) * size_t(height) * size_t(channels))
         fail("texture: {} texels given for {}x{}x{}", texels.size(), width, height, channels);
@@ -97,13 +97,13 @@ int MipTexture::wrap_index(int i, int n) const {
     return k < 0 ? k + n : k;
 }
 
-glm::vec3 MipTexture::bilinear(int level, glm::vec2 uv) const {
+glm::vec4 MipTexture::bilinear(int level, glm::vec2 uv) const {
     level = std::clamp(level, 0, level_count() - 1);
     const Level& l = levels_[size_t(level)];
     // Far-out coordinates (a huge uv_transform scale) lose the fraction in
     // float; the wrap of a double keeps it for repeat and mirror.
     const double x = double(uv.x) * l.width - 0.5, y = double(uv.y) * l.height - 0.5;
-    if (!std::isfinite(x) || !std::isfinite(y)) return glm::vec3(0.0f);
+    if (!std::isfinite(x) || !std::isfinite(y)) return glm::vec4(0.0f);
     const double fx0 = std::floor(x), fy0 = std::floor(y);
     const float tx = float(x - fx0), ty = float(y - fy0);
     // Indices of the two texels around f (texel units) under the wrap mode;
@@ -121,7 +121,7 @@ glm::vec3 MipTexture::bilinear(int level, glm::vec2 uv) const {
     int cx[2], cy[2];
     indices(fx0, l.width, cx);
     indices(fy0, l.height, cy);
-    glm::vec3 out(0.0f);
+    glm::vec4 out(0.0f);
     for (int ch = 0; ch < channels_; ++ch) {
         auto t = [&](int i, int j) {
             return l.texels[(size_t(cy[j]) * size_t(l.width) + size_t(cx[i])) * size_t(channels_) +
@@ -134,17 +134,17 @@ glm::vec3 MipTexture::bilinear(int level, glm::vec2 uv) const {
     return out;
 }
 
-glm::vec3 MipTexture::trilinear(float lod, glm::vec2 uv) const {
+glm::vec4 MipTexture::trilinear(float lod, glm::vec2 uv) const {
     if (!(lod > 0.0f)) return bilinear(0, uv);  // magnification: GL_LINEAR
     const float top = float(level_count() - 1);
     if (lod >= top) return bilinear(level_count() - 1, uv);
     const int l0 = int(lod);
     const float f = lod - float(l0);
-    const glm::vec3 a = bilinear(l0, uv);
+    const glm::vec4 a = bilinear(l0, uv);
     return f > 0.0f ? a + f * (bilinear(l0 + 1, uv) - a) : a;
 }
 
-glm::vec3 MipTexture::filtered(glm::vec2 uv, glm::vec2 duvdx, glm::vec2 duvdy,
+glm::vec4 MipTexture::filtered(glm::vec2 uv, glm::vec2 duvdx, glm::vec2 duvdy,
                                float lod_bias) const {
     const glm::vec2 size = glm::vec2(float(width()), float(height()));
     const float px = glm::length(duvdx * size), py = glm::length(duvdy * size);
@@ -155,7 +155,7 @@ glm::vec3 MipTexture::filtered(glm::vec2 uv, glm::vec2 duvdx, glm::vec2 duvdy,
         int(std::min<float>(float(kMaxAnisotropy), std::ceil(pmax / std::max(pmin, pmax * 1e-6f))));
     const float lod = std::log2(pmax / float(n)) + lod_bias;
     const glm::vec2 major = px >= py ? duvdx : duvdy;
-    glm::vec3 sum(0.0f);
+    glm::vec4 sum(0.0f);
     for (int i = 0; i < n; ++i)
         sum += trilinear(lod, uv + major * ((float(i) + 0.5f) / float(n) - 0.5f));
     return sum / float(n);

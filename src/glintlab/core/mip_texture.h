@@ -1,4 +1,4 @@
-// A texture of 1 or 3 float channels with its mip chain and the filtered
+// A texture of 1, 3 or 4 float channels with its mip chain and the filtered
 // lookups the CPU renderer makes over a pixel footprint. The lookups follow
 // OpenGL's (4.5 core §8.14, and the anisotropic filtering of
 // EXT_texture_filter_anisotropic as ARB_texture_filter_anisotropic leaves
@@ -47,18 +47,18 @@ class MipTexture {
 
     // Bilinear interpolation of one level at uv (wrap mode applied). The
     // unused channels of the result are 0.
-    glm::vec3 bilinear(int level, glm::vec2 uv) const;
+    glm::vec4 bilinear(int level, glm::vec2 uv) const;
     // Bilinear between the two levels around a fractional level of detail
     // (GL_LINEAR_MIPMAP_LINEAR), lod clamped to [0, level_count − 1].
-    glm::vec3 trilinear(float lod, glm::vec2 uv) const;
+    glm::vec4 trilinear(float lod, glm::vec2 uv) const;
     // The filtered value over the footprint uv + s·duvdx + t·duvdy: the
     // trilinear probes of the anisotropic filter (N = ⌈Pmax/Pmin⌉ ≤ 16 probes
     // along the longer derivative, λ = log2(Pmax/N) in texels).
     // `lod_bias` is added to λ (OpenGL's TEXTURE_LOD_BIAS); the probes'
     // positions stay.
-    glm::vec3 filtered(glm::vec2 uv, glm::vec2 duvdx, glm::vec2 duvdy, float lod_bias = 0.0f) const;
+    glm::vec4 filtered(glm::vec2 uv, glm::vec2 duvdx, glm::vec2 duvdy, float lod_bias = 0.0f) const;
     // The largest texel value of level 0 in each channel.
-    glm::vec3 max_value() const { return max_; }
+    glm::vec4 max_value() const { return max_; }
 
   private:
     struct Level {
@@ -69,7 +69,7 @@ class MipTexture {
     std::vector<Level> levels_;
     int channels_ = 1;
     TextureWrap wrap_ = TextureWrap::Repeat;
-    glm::vec3 max_{0.0f};
+    glm::vec4 max_{0.0f};
 };
 
 }  // namespace glintlab

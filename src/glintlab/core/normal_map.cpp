@@ -23,17 +23,23 @@ constexpr float kMomentLodBias = -0.79248125f;
 SlopeStatistics NormalMap::lookup(glm::vec2 uv, const Footprint* footprint) const {
     const Footprint* fp = filtering == Filtering::Lean ? footprint : nullptr;
     SlopeStatistics s;
-    const glm::vec3 first = slopes->lookup(uv, fp, kMomentLodBias);
+    const glm::vec4 first = slopes->lookup4(uv, fp, kMomentLodBias);
     s.mean = glm::vec2(first.x, first.y);
     if (!fp) return s;  // one point of the bilinear surface: no spread to keep
-    const glm::vec3 second = moments->lookup(uv, fp, kMomentLodBias);
-    // Σ = E[s sᵀ] − s̄ s̄ᵀ; rounding can leave it slightly indefinite.
-    float xx = std::max(second.x - s.mean.x * s.mean.x, 0.0f);
-    float yy = std::max(second.y - s.mean.y * s.mean.y, 0.0f);
-    const float bound = std::sqrt(xx * yy);
-    const float xy = std::clamp(second.z - s.mean.x * s.mean.y, -bound, bound);
-    s.covariance = glm::vec3(xx, yy, xy);
+    // Σ_ii = E[s_i²] − s̄_i²; rounding can leave it slightly negative.
+    s.covariance = glm::vec3(std::max(first.z - s.mean.x * s.mean.x, 0.0f),
+                             std::max(first.w - s.mean.y * s.mean.y, 0.0f), 0.0f);
     return s;
+}
+
+float NormalMap::covariance_xy(glm::vec2 uv, const Footprint* footprint,
+                               const SlopeStatistics& s) const {
+    const Footprint* fp = filtering == Filtering::Lean ? footprint : nullptr;
+    if (!fp) return 0.0f;
+    const float second = cross_moment->lookup4(uv, fp, kMomentLodBias).x;
+    // Kept where Σ stays positive semi-definite.
+    const float bound = std::sqrt(s.covariance.x * s.covariance.y);
+    return std::clamp(second - s.mean.x * s.mean.y, -bound, bound);
 }
 
 glm::vec2 NormalMap::slope_at(glm::vec2 uv) const {

@@ -1,6 +1,6 @@
 // A tangent-space normal map as the renderers read it (docs/MODELS.md,
 // "Normal maps"): its texels turned into slopes and LEAN-mapped (Olano &
-// Baker, "LEAN Mapping", I3D 2010): two mip chains hold the first moments
+// Baker, "LEAN Mapping", I3D 2010): mip chains hold the first moments
 // (s_x, s_y) and the second moments (s_x², s_y², s_x s_y) of the slopes, so
 // the filtered lookup over a pixel footprint gives the footprint's mean
 // slope and its slope covariance Σ = E[s sᵀ] − s̄ s̄ᵀ.
@@ -40,12 +40,19 @@ struct NormalMap {
     // forward renderer: the aliasing the filter removes stays measurable).
     enum class Filtering { Lean, None };
     Filtering filtering = Filtering::Lean;
-    std::shared_ptr<const TextureInput> slopes;   // channels s_x, s_y, 0
-    std::shared_ptr<const TextureInput> moments;  // channels s_x², s_y², s_x s_y
+    // Channels s_x, s_y, s_x², s_y²: the mean and the variances in one
+    // lookup, all a glint or anisotropic lobe reads.
+    std::shared_ptr<const TextureInput> slopes;
+    // Channel s_x s_y: read only where Σ's correlation matters (an
+    // isotropic lobe, rotated to Σ's principal axes).
+    std::shared_ptr<const TextureInput> cross_moment;
 
     // The statistics over the footprint at uv (the finest level's bilinear
-    // values without a footprint, or with Filtering::None).
+    // values without a footprint, or with Filtering::None), covariance.z
+    // (the correlation) left 0.
     SlopeStatistics lookup(glm::vec2 uv, const Footprint* footprint) const;
+    // Σ_xy over the same footprint, for the statistics `s` lookup gave.
+    float covariance_xy(glm::vec2 uv, const Footprint* footprint, const SlopeStatistics& s) const;
     // The finest level's bilinear slope at uv (the ground truth's per-facet normal).
     glm::vec2 slope_at(glm::vec2 uv) const;
 };

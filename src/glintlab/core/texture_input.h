@@ -41,10 +41,14 @@ struct TextureInput {
     // later bounces carry none).
     // A one-channel texture's value is repeated in all three (a grey colour).
     glm::vec3 lookup(glm::vec2 uv, const Footprint* footprint, float lod_bias = 0.0f) const {
+        return grey_or_rgb(lookup4(uv, footprint, lod_bias));
+    }
+    // Every channel (a 4-channel texture's fourth; unused ones 0).
+    glm::vec4 lookup4(glm::vec2 uv, const Footprint* footprint, float lod_bias = 0.0f) const {
         const glm::vec2 st = transform.apply(uv);
-        if (!footprint) return grey_or_rgb(texture->bilinear(0, st));
-        return grey_or_rgb(texture->filtered(st, transform.apply_vector(footprint->duvdx),
-                                             transform.apply_vector(footprint->duvdy), lod_bias));
+        if (!footprint) return texture->bilinear(0, st);
+        return texture->filtered(st, transform.apply_vector(footprint->duvdx),
+                                 transform.apply_vector(footprint->duvdy), lod_bias);
     }
     // The finest level's bilinear value at uv (the ground truth's per-facet value).
     glm::vec3 at(glm::vec2 uv) const {
@@ -52,8 +56,8 @@ struct TextureInput {
     }
 
   private:
-    glm::vec3 grey_or_rgb(glm::vec3 v) const {
-        return texture->channels() == 1 ? glm::vec3(v.x) : v;
+    glm::vec3 grey_or_rgb(glm::vec4 v) const {
+        return texture->channels() == 1 ? glm::vec3(v.x) : glm::vec3(v);
     }
 };
 

@@ -482,9 +482,8 @@ struct GpuRenderer::Impl {
             // shaders/normal_map.glsl: slopes and moments share the map's
             // transform and size.
             const TextureInput& slopes = *map->slopes;
-            const NormalMapTextures& textures = normal_map_textures(m.normal_map);
-            glBindTextureUnit(gl::kNormalMapUnit, textures.first.get());
-            glBindTextureUnit(gl::kNormalMapUnit + 1, textures.correlation.get());
+            glBindTextureUnit(gl::kNormalMapUnit, material_texture(slopes.texture));
+            glBindTextureUnit(gl::kNormalMapUnit + 1, material_texture(map->cross_moment->texture));
             const glm::mat2 map_linear(slopes.transform.apply_vector({1.0f, 0.0f}),
                                        slopes.transform.apply_vector({0.0f, 1.0f}));
             glProgramUniformMatrix2fv(p, loc("u_normal_map_linear"), 1, GL_FALSE,
@@ -505,53 +504,6 @@ struct GpuRenderer::Impl {
         }
     }
 
-    // A normal map's two GL textures (shaders/normal_map.glsl), made on first
-    // use from the CPU's chains level by level (a box mean is per channel,
-    // so repacking keeps every level exact): RGBA (s_x, s_y, s_x², s_y²)
-    // and R s_x s_y.
-    struct NormalMapTextures {
-        std::shared_ptr<const NormalMap> map;  // kept alive so the key stays unique
-        gl::Texture first, correlation;
-    };
-    std::map<const NormalMap*, NormalMapTextures> normal_map_textures_;
-    const NormalMapTextures& normal_map_textures(const std::shared_ptr<const NormalMap>& map) {
-        auto it = normal_map_textures_.find(map.get());
-        if (it != normal_map_textures_.end()) return it->second;
-        const MipTexture& s = *map->slopes->texture;
-        const MipTexture& m = *map->moments->texture;
-        NormalMapTextures t{map, gl::make_texture(GL_TEXTURE_2D), gl::make_texture(GL_TEXTURE_2D)};
-        glTextureStorage2D(t.first.get(), s.level_count(), GL_RGBA32F, s.width(), s.height());
-        glTextureStorage2D(t.correlation.get(), s.level_count(), GL_R32F, s.width(), s.height());
-        glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
-        for (int level = 0; level < s.level_count(); ++level) {
-            const std::vector<float>& a = s.level_texels(level);
-            const std::vector<float>& b = m.level_texels(level);
-            const size_t count = a.size() / 3;
-            std::vector<float> rgba(count * 4), r(count);
-            for (size_t i = 0; i < count; ++i) {
-                rgba[i * 4 + 0] = a[i * 3 + 0];
-                rgba[i * 4 + 1] = a[i * 3 + 1];
-                rgba[i * 4 + 2] = b[i * 3 + 0];
-                rgba[i * 4 + 3] = b[i * 3 + 1];
-                r[i] = b[i * 3 + 2];
-            }
-            glTextureSubImage2D(t.first.get(), level, 0, 0, s.width(level), s.height(level),
-                                GL_RGBA, GL_FLOAT, rgba.data());
-            glTextureSubImage2D(t.correlation.get(), level, 0, 0, s.width(level), s.height(level),
-                                GL_RED, GL_FLOAT, r.data());
-        }
-        const GLint wrap = s.wrap() == TextureWrap::Clamp    ? GL_CLAMP_TO_EDGE
-                           : s.wrap() == TextureWrap::Mirror ? GL_MIRRORED_REPEAT
-                                                             : GL_REPEAT;
-        for (const gl::Texture* tex : {&t.first, &t.correlation}) {
-            glTextureParameteri(tex->get(), GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
-            glTextureParameteri(tex->get(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-            glTextureParameteri(tex->get(), GL_TEXTURE_WRAP_S, wrap);
-            glTextureParameteri(tex->get(), GL_TEXTURE_WRAP_T, wrap);
-        }
-        return normal_map_textures_.emplace(map.get(), std::move(t)).first->second;
-    }
-
     // A material texture's GL texture, uploaded on first use with the CPU's
     // mip chain (exact box means), trilinear, the texture's wrap mode; one
     // channel is read as grey (swizzle r, r, r).
@@ -560,12 +512,13 @@ struct GpuRenderer::Impl {
         if (it != material_textures.end()) return it->second.second.get();
         gl::Texture t = gl::make_texture(GL_TEXTURE_2D);
         const bool grey = tex->channels() == 1;
-        glTextureStorage2D(t.get(), tex->level_count(), grey ? GL_R32F : GL_RGB32F, tex->width(),
-                           tex->height());
+        const GLenum internal = grey ? GL_R32F : tex->channels() == 4 ? GL_RGBA32F : GL_RGB32F;
+        const GLenum format = grey ? GL_RED : tex->channels() == 4 ? GL_RGBA : GL_RGB;
+        glTextureStorage2D(t.get(), tex->level_count(), internal, tex->width(), tex->height());
         glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
         for (int level = 0; level < tex->level_count(); ++level)
-            glTextureSubImage2D(t.get(), level, 0, 0, tex->width(level), tex->height(level),
-                                grey ? GL_RED : GL_RGB, GL_FLOAT, tex->level_texels(level).data());
+            glTextureSubImage2D(t.get(), level, 0, 0, tex->width(level), tex->height(level), format,
+                                GL_FLOAT, tex->level_texels(level).data());
         glTextureParameteri(t.get(), GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
         glTextureParameteri(t.get(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
         const GLint wrap = tex->wrap() == TextureWrap::Clamp    ? GL_CLAMP_TO_EDGE

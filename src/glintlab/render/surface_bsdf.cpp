@@ -23,7 +23,8 @@ MicrofacetDistribution distribution(NdfType ndf, float ax, float ay) {
 // "Normal maps"): the footprint's mean slope and slope covariance, and the
 // signs that carry the map's (x, y) onto the frame's (t, b).
 struct LocalBump {
-    SlopeStatistics slopes;
+    SlopeStatistics map_slopes;  // in the map's axes, as NormalMap::lookup gives them
+    SlopeStatistics slopes;      // in the shading frame's axes
     glm::vec2 axes{1.0f};
 };
 
@@ -40,9 +41,9 @@ LocalBump local_bump(const NormalMap& map, const SurfaceHit& hit, const ShadingF
     // Seen from behind, the surface's normal is −n: the map's normal (x, y,
     // z) becomes (−x, y, z) in the flipped frame (t, −b, −n).
     if (back) bump.axes.x = -1.0f;
-    bump.slopes = map.lookup(hit.uv, footprint);
+    bump.map_slopes = map.lookup(hit.uv, footprint);
+    bump.slopes = bump.map_slopes;
     bump.slopes.mean *= bump.axes;
-    bump.slopes.covariance.z *= bump.axes.x * bump.axes.y;
     return bump;
 }
 
@@ -124,7 +125,10 @@ SurfaceBsdf make_surface_bsdf(const MaterialDesc& m, const SurfaceHit& hit, glm:
             alpha_y = std::sqrt(std::max(t.alpha_y_sq->lookup(hit.uv, footprint).x, 0.0f));
     }
     if (bump && m.type != MaterialDesc::Type::Diffuse && m.type != MaterialDesc::Type::Glint) {
-        const glm::vec3 c = bump->slopes.covariance;
+        glm::vec3 c = bump->slopes.covariance;
+        if (alpha_x == alpha_y)
+            c.z = m.normal_map->covariance_xy(hit.uv, footprint, bump->map_slopes) * bump->axes.x *
+                  bump->axes.y;
         if (alpha_x == alpha_y && c.z != 0.0f) {
             // An isotropic lobe widened by a correlated covariance is the
             // lobe of covariance α²/2 I + Σ exactly: along Σ's principal axes.

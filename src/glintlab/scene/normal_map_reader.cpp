@@ -104,9 +104,7 @@ std::shared_ptr<const NormalMap> read_normal_map(JsonObject& material, std::stri
             where);
 
     const size_t count = image->texels.size();
-    std::vector<float> first;
     std::vector<glm::vec2> slopes;
-    first.reserve(count * 3);
     slopes.reserve(count);
     size_t clamped = 0;
     for (size_t i = 0; i < count; ++i) {
@@ -133,9 +131,7 @@ std::shared_ptr<const NormalMap> read_normal_map(JsonObject& material, std::stri
             n = glm::vec3(dir * s, kMinNormalZ);
             ++clamped;
         }
-        const float sx = -n.x / n.z, sy = -n.y / n.z;
-        first.insert(first.end(), {sx, sy, 0.0f});
-        slopes.emplace_back(sx, sy);
+        slopes.emplace_back(-n.x / n.z, -n.y / n.z);
     }
     if (clamped > 0)
         fmt::print(stderr,
@@ -146,16 +142,26 @@ std::shared_ptr<const NormalMap> read_normal_map(JsonObject& material, std::stri
 
     auto map = std::make_shared<NormalMap>();
     map->filtering = filtering == "lean" ? NormalMap::Filtering::Lean : NormalMap::Filtering::None;
-    auto make = [&](std::vector<float> texels) {
+    auto make = [&](std::vector<float> texels, int channels) {
         auto input = std::make_shared<TextureInput>();
         input->transform = transform;
         input->source = file.string();
-        input->texture = std::make_shared<const MipTexture>(image->width, image->height, 3,
+        input->texture = std::make_shared<const MipTexture>(image->width, image->height, channels,
                                                             std::move(texels), wrap);
         return input;
     };
-    map->slopes = make(std::move(first));
-    map->moments = make(bilinear_cell_moments(slopes, image->width, image->height, wrap));
+    const std::vector<float> moments =
+        bilinear_cell_moments(slopes, image->width, image->height, wrap);
+    std::vector<float> first(count * 4), cross(count);
+    for (size_t i = 0; i < count; ++i) {
+        first[i * 4 + 0] = slopes[i].x;
+        first[i * 4 + 1] = slopes[i].y;
+        first[i * 4 + 2] = moments[i * 3 + 0];
+        first[i * 4 + 3] = moments[i * 3 + 1];
+        cross[i] = moments[i * 3 + 2];
+    }
+    map->slopes = make(std::move(first), 4);
+    map->cross_moment = make(std::move(cross), 1);
     return map;
 }
 

@@ -106,6 +106,36 @@ TEST(NormalMapReader, LeanMomentsGiveTheFootprintsMeanAndCovariance) {
     EXPECT_EQ(unfiltered.covariance, glm::vec3(0.0f));
 }
 
+TEST(NormalMapReader, CrossMomentGivesTheCorrelationOfDiagonalRidges) {
+    ScratchDir dir;
+    // Ridges along the diagonal x = −y: s_x = s_y = ±0.2 in alternate
+    // diagonal bands of texels, so over a footprint of many texels the
+    // slopes are perfectly correlated: Σ_xy = Σ_xx = Σ_yy. The bilinear
+    // surface between the bands keeps that (both components interpolate
+    // alike), and lookup leaves Σ_xy to covariance_xy.
+    Image n(64, 64);
+    for (int y = 0; y < 64; ++y)
+        for (int x = 0; x < 64; ++x) {
+            const float v = ((x + y) / 2) % 2 ? 0.2f : -0.2f;
+            n.at(x, y) = glm::normalize(glm::vec3(-v, -v, 1.0f));
+        }
+    write_exr(n, dir / "n.exr");
+    const Scene scene =
+        parse_scene(scene_with({{"texture", "n.exr"}, {"encoding", "signed"}}), dir / "s.json");
+    const NormalMap& map = *scene.materials[0].normal_map;
+    Footprint fp;
+    fp.uv = glm::vec2(0.5f);
+    fp.duvdx = glm::vec2(0.25f, 0.0f);
+    fp.duvdy = glm::vec2(0.0f, 0.25f);
+    const SlopeStatistics s = map.lookup(fp.uv, &fp);
+    EXPECT_EQ(s.covariance.z, 0.0f);
+    EXPECT_GT(s.covariance.x, 0.01f);
+    EXPECT_NEAR(s.covariance.y, s.covariance.x, 1e-5f);
+    EXPECT_NEAR(map.covariance_xy(fp.uv, &fp, s), s.covariance.x, 1e-5f);
+    // Without a footprint there is no spread, hence no correlation.
+    EXPECT_EQ(map.covariance_xy(fp.uv, nullptr, s), 0.0f);
+}
+
 TEST(NormalMapReader, BadMapsNameTheFileTheTexelAndTheRange) {
     ScratchDir dir;
     Image black(3, 2, glm::vec3(128, 128, 255));

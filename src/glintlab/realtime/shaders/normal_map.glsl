@@ -17,8 +17,8 @@
 #include "glintlab/glints/material.glsl"
 
 // Units 16 and 17 (forward_shaders.h kNormalMapUnit): the map's mip chains
-// of (s_x, s_y, s_x², s_y²) and s_x s_y (the CPU's two chains, repacked
-// level by level), one uv transform for both. A glint lobe and an
+// of (s_x, s_y, s_x², s_y²) and s_x s_y (NormalMap's slopes and
+// cross_moment), one uv transform for both. A glint lobe and an
 // anisotropic one take Σ's diagonal only: one lookup.
 layout(binding = 16) uniform sampler2D u_normal_slopes;
 layout(binding = 17) uniform sampler2D u_normal_moments;
