@@ -5,7 +5,7 @@
 // procedural, so that the browser test can hand the native renderer the
 // same texels (web/tests/web_page_test.py tiles_maps).
 
-import {uploadMipmapped} from './mip_texture.js';
+import {oncePerContext, uploadMipmapped} from './mip_texture.js';
 
 export const MATERIAL_MAPS = ['none', 'tiles'];
 export const TILES_SIZE = 64;
@@ -36,19 +36,15 @@ function rgba(size, texel) {
 
 // The input textures of a named set, made once per context: density (N),
 // alpha (α²) and color (linear RGB).
-const cache = new WeakMap();
 export function materialTextures(gl, name) {
-  let byName = cache.get(gl);
-  if (!byName) cache.set(gl, byName = new Map());
-  if (!byName.has(name)) {
-    if (name !== 'tiles') throw new Error(`textures ${name}: expected one of ${MATERIAL_MAPS}`);
+  if (name !== 'tiles') throw new Error(`textures ${name}: expected one of ${MATERIAL_MAPS}`);
+  return oncePerContext(gl, `textures ${name}`, () => {
     const n = TILES_SIZE, m = tilesMaps(n);
-    byName.set(name, {
+    return {
       // N reaches e^17 ≈ 2.4e7, past half floats: 32-bit filtering or an error.
       density: uploadMipmapped(gl, rgba(n, (i) => [Math.exp(m.lnN[i]), 0, 0, 1]), n, n, true),
       alpha: uploadMipmapped(gl, rgba(n, (i) => [m.alpha[i] ** 2, 0, 0, 1]), n, n),
       color: uploadMipmapped(gl, rgba(n, (i) => [...m.color.subarray(i * 3, i * 3 + 3), 1]), n, n),
-    });
-  }
-  return byName.get(name);
+    };
+  });
 }

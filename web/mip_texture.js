@@ -45,3 +45,12 @@ export function uploadMipmapped(gl, texels, w, h, float32 = false) {
   return t;
 }
 
+
+// The value make() returns for (gl, name), made once per context.
+const perContext = new WeakMap();
+export function oncePerContext(gl, name, make) {
+  let byName = perContext.get(gl);
+  if (!byName) perContext.set(gl, byName = new Map());
+  if (!byName.has(name)) byName.set(name, make());
+  return byName.get(name);
+}

@@ -5,7 +5,7 @@
 // The page's one map is procedural, so that the browser test can hand the
 // native renderer the same texels (web/tests/web_page_test.py bumps_normals).
 
-import {uploadMipmapped} from './mip_texture.js';
+import {oncePerContext, uploadMipmapped} from './mip_texture.js';
 
 export const NORMAL_MAPS = ['none', 'bumps'];
 export const BUMPS_SIZE = 64;
@@ -65,14 +65,8 @@ export function leanTexels(normals, w, h) {
 }
 
 // The LEAN texture of a named map, made once per context.
-const cache = new WeakMap();
 export function leanTexture(gl, name) {
-  let byName = cache.get(gl);
-  if (!byName) cache.set(gl, byName = new Map());
-  if (!byName.has(name)) {
-    if (name !== 'bumps') throw new Error(`normal map ${name}: expected one of ${NORMAL_MAPS}`);
-    byName.set(name, uploadMipmapped(gl, leanTexels(bumpsNormals(), BUMPS_SIZE, BUMPS_SIZE),
-                                     BUMPS_SIZE, BUMPS_SIZE));
-  }
-  return byName.get(name);
+  if (name !== 'bumps') throw new Error(`normal map ${name}: expected one of ${NORMAL_MAPS}`);
+  return oncePerContext(gl, `normal_map ${name}`, () => uploadMipmapped(
+      gl, leanTexels(bumpsNormals(), BUMPS_SIZE, BUMPS_SIZE), BUMPS_SIZE, BUMPS_SIZE));
 }

@@ -5,6 +5,7 @@
 
 #include <cmath>
 #include <fstream>
+#include <functional>
 #include <string>
 
 #include <nlohmann/json.hpp>
@@ -67,6 +68,25 @@ TEST(NormalMapReader, EightBitCodesDecodeToUnitNormalsAndScaleMultipliesXY) {
     }
 }
 
+// The scene whose material's normal map is the 64 × 64 map of unit normals
+// `normal(x, y)` (signed EXR in `dir`), and a footprint of 16 × 16 texels
+// at its centre.
+Scene scene_of_map(const ScratchDir& dir, const std::function<glm::vec3(int, int)>& normal) {
+    Image n(64, 64);
+    for (int y = 0; y < 64; ++y)
+        for (int x = 0; x < 64; ++x) n.at(x, y) = normal(x, y);
+    write_exr(n, dir / "n.exr");
+    return parse_scene(scene_with({{"texture", "n.exr"}, {"encoding", "signed"}}), dir / "s.json");
+}
+
+Footprint wide_footprint() {
+    Footprint fp;
+    fp.uv = glm::vec2(0.5f);
+    fp.duvdx = glm::vec2(0.25f, 0.0f);
+    fp.duvdy = glm::vec2(0.0f, 0.25f);
+    return fp;
+}
+
 TEST(NormalMapReader, LeanMomentsGiveTheFootprintsMeanAndCovariance) {
     ScratchDir dir;
     // A 64 × 64 checker of two normals tilted ±0.3 in slope along x, and
@@ -74,20 +94,12 @@ TEST(NormalMapReader, LeanMomentsGiveTheFootprintsMeanAndCovariance) {
     // is (0, s_y) and the covariance that of the bilinear surface the
     // lookups reconstruct, s_x = 0.3 (1 − 2f_x)(1 − 2f_y) between texel
     // centres: E[s_x²] = 0.09 / 9 (not the texels' 0.09), uncorrelated.
-    Image n(64, 64);
-    for (int y = 0; y < 64; ++y)
-        for (int x = 0; x < 64; ++x) {
-            const float sx = ((x + y) % 2) ? 0.3f : -0.3f, sy = 0.1f;
-            n.at(x, y) = glm::normalize(glm::vec3(-sx, -sy, 1.0f));
-        }
-    write_exr(n, dir / "n.exr");
-    const Scene scene =
-        parse_scene(scene_with({{"texture", "n.exr"}, {"encoding", "signed"}}), dir / "s.json");
+    const Scene scene = scene_of_map(dir, [](int x, int y) {
+        const float sx = ((x + y) % 2) ? 0.3f : -0.3f, sy = 0.1f;
+        return glm::normalize(glm::vec3(-sx, -sy, 1.0f));
+    });
     const NormalMap& map = *scene.materials[0].normal_map;
-    Footprint fp;
-    fp.uv = glm::vec2(0.5f);
-    fp.duvdx = glm::vec2(0.25f, 0.0f);
-    fp.duvdy = glm::vec2(0.0f, 0.25f);
+    const Footprint fp = wide_footprint();
     const SlopeStatistics s = map.lookup(fp.uv, &fp);
     EXPECT_NEAR(s.mean.x, 0.0f, 1e-4f);
     EXPECT_NEAR(s.mean.y, 0.1f, 1e-4f);
@@ -113,20 +125,12 @@ TEST(NormalMapReader, CrossMomentGivesTheCorrelationOfDiagonalRidges) {
     // slopes are perfectly correlated: Σ_xy = Σ_xx = Σ_yy. The bilinear
     // surface between the bands keeps that (both components interpolate
     // alike), and lookup leaves Σ_xy to covariance_xy.
-    Image n(64, 64);
-    for (int y = 0; y < 64; ++y)
-        for (int x = 0; x < 64; ++x) {
-            const float v = ((x + y) / 2) % 2 ? 0.2f : -0.2f;
-            n.at(x, y) = glm::normalize(glm::vec3(-v, -v, 1.0f));
-        }
-    write_exr(n, dir / "n.exr");
-    const Scene scene =
-        parse_scene(scene_with({{"texture", "n.exr"}, {"encoding", "signed"}}), dir / "s.json");
+    const Scene scene = scene_of_map(dir, [](int x, int y) {
+        const float v = ((x + y) / 2) % 2 ? 0.2f : -0.2f;
+        return glm::normalize(glm::vec3(-v, -v, 1.0f));
+    });
     const NormalMap& map = *scene.materials[0].normal_map;
-    Footprint fp;
-    fp.uv = glm::vec2(0.5f);
-    fp.duvdx = glm::vec2(0.25f, 0.0f);
-    fp.duvdy = glm::vec2(0.0f, 0.25f);
+    const Footprint fp = wide_footprint();
     const SlopeStatistics s = map.lookup(fp.uv, &fp);
     EXPECT_EQ(s.covariance.z, 0.0f);
     EXPECT_GT(s.covariance.x, 0.01f);
