@@ -163,16 +163,19 @@ def test_load(page, export_dir):
         print(f"FAIL: no exported model in {export_dir}")
         return False
     ok = True
-    views = [(m, shape, "default") for m in models for shape in ("sphere", "plane")]
+    views = [(m, shape, "default", "") for m in models for shape in ("sphere", "plane")]
     # The other fragment stages of the exports (deliot2023's noise_texture).
     for m in models:
         with open(os.path.join(export_dir, f"{m}.glsles.manifest.json")) as f:
-            views += [(m, "sphere", s["variant"]) for s in json.load(f)["shaders"]
+            views += [(m, "sphere", s["variant"], "") for s in json.load(f)["shaders"]
                       if s["stage"] == "fragment" and s["variant"] != "default"]
-    for model, shape, variant in sorted(views, key=lambda v: models.index(v[0])):
+    # Every model with the page's maps through the export's inputs (those
+    # that take density and roughness as uniforms bind the colour map only).
+    views += [(m, "plane", "default", "&textures=tiles&normal_map=bumps") for m in models]
+    for model, shape, variant, maps in sorted(views, key=lambda v: models.index(v[0])):
         # A fresh page per model (its own console), its other views in it.
-        query = f"model={model}&shape={shape}&variant={variant}&w=64&h=64&static=1"
-        first = (shape, variant) == ("sphere", "default")
+        query = f"model={model}&shape={shape}&variant={variant}&w=64&h=64&static=1{maps}"
+        first = (shape, variant, maps) == ("sphere", "default", "")
         state, log = page.open(query) if first else page.navigate(query)
         problems = []
         if state.get("error"):
@@ -201,7 +204,8 @@ def test_load(page, export_dir):
                 off = np.abs(shown - want).max()
                 if off > 1.0:
                     problems.append(f"canvas differs from the tone-mapped frame by {off:.0f}/255")
-        print(f"{model:13s} {shape:6s} {variant:13s} {'ok' if not problems else 'FAIL'}")
+        print(f"{model:13s} {shape:6s} {variant:13s} {'maps ' if maps else ''}"
+              f"{'ok' if not problems else 'FAIL'}")
         for p in problems:
             print(f"    {p}")
         ok = ok and not problems
