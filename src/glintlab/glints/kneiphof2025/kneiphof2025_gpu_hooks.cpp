@@ -21,7 +21,7 @@ constexpr GpuModelOption kOptions[] = {
      false},
     {"dynamic_full_resolution",
      "dynamic environment: filter every prefiltered layer at full resolution (the CPU's values) "
-     "instead of the rough layers on coarser grids, upsampled (faster; issue 17)",
+     "instead of the rough layers on coarser grids, upsampled (the faster default)",
      false},
 };
 
