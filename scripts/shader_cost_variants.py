@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Builds glintlab binaries with one part of a GPU shader replaced by a cheap
-stand-in, to measure where a glint model's frame time goes (issue 17,
-docs/BENCHMARKS.md "Where the time goes on a GPU"). The images of a variant
+stand-in, to measure where a glint model's frame time goes
+(docs/BENCHMARKS.md "Where the time goes on a GPU"). The images of a variant
 are WRONG; only its frame time means something, next to the unmodified
 binary's ("full") in the same run on the same machine.
 

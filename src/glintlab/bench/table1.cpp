@@ -64,7 +64,7 @@ nlohmann::json scene_json(const std::string& name) {
                         {"uv_scale", {4, 2}},
                         {"material", "g"}}};
     } else if (name == kPeerChermain2020) {
-        // The configuration of chermain2020's official viewer (issue 17):
+        // The configuration of chermain2020's official viewer:
         // UV sphere of radius 1 seen from (0, 0, 2.2) down -z, 60 deg
         // vertical fov, one point light at (5, 5, 5) of intensity 100; the
         // material (Beckmann alpha 0.5, zeta = 2) in table1_scene_json.

@@ -47,7 +47,7 @@ TEST_P(GpuMeshScenes, MatchCpu) {
 
 INSTANTIATE_TEST_SUITE_P(Models, GpuMeshScenes, ::testing::Values("smooth", "chermain2020"));
 
-// The bench scene of chermain2020's official viewer (issue 17) has the
+// The bench scene of chermain2020's official viewer has the
 // viewer's configuration: sphere of radius 1 seen from (0, 0, 2.2) towards
 // the origin, 60 deg vertical fov, one point light at (5, 5, 5) of
 // intensity 100, Beckmann alpha 0.5, zeta = 2 for chermain2020.

@@ -1,8 +1,8 @@
-// `glintlab compare` (issue 15): one scene rendered with every glint model
-// that can shade its lights, each against the `explicit` ground truth, with
-// the pixel-level metrics of compare/metrics.h (docs/VALIDATION.md
-// "compare"). The CLI (src/cmd/compare_command.cpp), `glintlab validate
-// compare` (compare/validate_compare.h) and tests call run_compare().
+// `glintlab compare`: one scene rendered with every glint model that can
+// shade its lights, each against the `explicit` ground truth, with the
+// pixel-level metrics of compare/metrics.h (docs/VALIDATION.md "compare").
+// The CLI (src/cmd/compare_command.cpp), `glintlab validate compare`
+// (compare/validate_compare.h) and tests call run_compare().
 #pragma once
 
 #include <cstdint>

@@ -123,7 +123,7 @@ TEST(Compare, FlickerIsMeasuredOverSeveralCameraPaths) {
 // (facet_extent.h): deliot2023, zirr2016 and kneiphof2025 the R of
 // explicit's 1-degree cone, chermain2020 (whose dictionary fixes its lobes)
 // a truth of its lobes' extent. Their sparkles then flicker as the truth's
-// over the camera path (ratio in the issue's [1/2, 2], docs/VALIDATION.md
+// over the camera path (ratio in the bound's [1/2, 2], docs/VALIDATION.md
 // "compare": 0.64-1.0 here, 0.55-0.93 over seeds 1-5 at 8 spp), while with
 // the models' defaults they are frozen (0.15-0.25: 29x wider facets
 // average the sparkle away), so the bound separates the two.

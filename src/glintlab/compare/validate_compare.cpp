@@ -69,7 +69,7 @@ std::filesystem::path default_scene_dir() {
     return std::filesystem::path(GLINTLAB_SOURCE_DIR) / "scenes" / "compare";
 }
 
-// The models whose image mean the issue bounds on a scene: under an
+// The models whose image mean the suite bounds on a scene: under an
 // environment the ones made for it (kneiphof2025, wang2020) and the smooth
 // BRDF; under point, directional and sphere lights every model.
 bool mean_bounded(const std::string& model, bool environment) {

@@ -1,7 +1,6 @@
-// `glintlab validate compare` (issue 15): the compare scenes of
-// scenes/compare/ at small size, every model against the explicit ground
-// truth (compare/compare.h), with the bounds of docs/VALIDATION.md
-// "compare".
+// `glintlab validate compare`: the compare scenes of scenes/compare/ at
+// small size, every model against the explicit ground truth
+// (compare/compare.h), with the bounds of docs/VALIDATION.md "compare".
 #pragma once
 
 #include <cstdint>

@@ -113,7 +113,7 @@ struct SingleGatedLaw {
     float scale;   // 1 here; the conditional form's mean correction (Law 5b)
 };
 // (binomial_single_gated_law: below, with its conditional form.)
-// The gate first (issue 17): a closed gate returns 0 without the normal
+// The gate first: a closed gate returns 0 without the normal
 // quantile, the same value as evaluating both and selecting; where the gates
 // of a pixel block are closed (sparse footprints, the NDF's tails) the block
 // skips the quantile.
@@ -134,9 +134,9 @@ float standard_normal_cdf(float x) {
 // and E[(X - hi)+]); mean is clamped to [lo, hi] first, so a <= 0 <= b, and
 // a, b are kept within 40 of 0, where both terms are 0 in fp32 (sd -> 0 and
 // hi = 1e35 stay finite).
-// A bound 6 or more standard deviations away contributes 0 (issue 17: the
-// GPU cost of the conditional law is these erf and exp, which every vertex
-// of a dense footprint evaluated for nothing): there the term is below
+// A bound 6 or more standard deviations away contributes 0 (the GPU cost of
+// the conditional law is these erf and exp, which every vertex of a dense
+// footprint would evaluate for nothing): there the term is below
 // phi(6) / 36 = 1.7e-10 (phi(a) + a Phi(a) < phi(a) / a^2), while its fp32
 // evaluation is the difference of two numbers ~1e-9 carrying erf_approx's
 // absolute error 1e-7 times |a|, so 0 is the closer value.
@@ -300,9 +300,9 @@ vec2 binomial_interior_moments_large(float n, float p, float pow_pos, float pow_
 // Both laws in one function (Law 6 where !conditional, Law 6b where
 // conditional): the gates are the same, and the Gaussian's mean and
 // variance are chosen before the one normal quantile the Gaussian needs
-// (issue 17: SIMD back ends such as llvmpipe run every side of a branch
-// for a block of pixels, so callers that chose between the two laws, and
-// the laws' own cases, paid for every quantile and power of each). The
+// (SIMD back ends such as llvmpipe run every side of a branch for a block
+// of pixels, so callers that chose between two laws, and the laws' own
+// cases, would pay for every quantile and power of each). The
 // operations on the values are those of each law as written, so the counts
 // are the same bit for bit (DualGatedLaw.BothLawsAsWritten, laws_as_written_test.cpp).
 vec2 binomial_dual_gated_law(float N, float p, float xi1, float xi2, bool integer_gaussian,

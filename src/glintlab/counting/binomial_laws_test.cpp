@@ -1,4 +1,4 @@
-// Statistical and numerical properties of the shared counting laws (issue 3).
+// Statistical and numerical properties of the shared counting laws.
 // The grid statistics are computed once (20000 Latin-hypercube samples per
 // cell, fixed seeds) and shared by the tests below.
 #include <gtest/gtest.h>
@@ -51,8 +51,8 @@ const Grid& grid() {
     return g;
 }
 
-// Issue 3: "mean within 1 % (or 1e-3 absolute) of N p", checked where the
-// gated Gaussians' construction allows it (see in_mean_domain in
+// The laws' contract, mean within 1 % (or 1e-3 absolute) of N p, checked
+// where the gated Gaussians' construction allows it (see in_mean_domain in
 // validate_counting.cpp for the derivation): N p >= 200 (bias <= 1 count =
 // 0.5 %), N >= 1 with N p <= 0.01 (bias ~ N p / 2 relative), and N < 1 for
 // the 003 laws (exact by Eq. 23 / Appendix B). Noise: with Latin-hypercube
@@ -104,12 +104,13 @@ TEST(CountingLaws, DualGatedCloserToBinomialThanSingleGatedForSmallN) {
     EXPECT_LT(dual, single);
 }
 
-// Issue 3: TV <= 0.02 for N >= 10 where the Gaussian regime applies, taken as
-// N p (1 - p) >= 625 (sigma >= 25): each law is the binomial's Gaussian shifted
-// by at most one count, which moves it by TV <= 1 / (sigma sqrt(2 pi)) <= 0.016,
-// plus the binomial's own skewness error ~|1 - 2p| / (6 sigma) <= 0.007:
-// together <= 0.5 / sigma = 0.02. Sampling noise of the estimate with ~5 bins
-// per sigma and Latin-hypercube uniforms is ~0.003 (exact sampler: 1e-4).
+// The laws' contract, TV <= 0.02 for N >= 10 where the Gaussian regime applies,
+// taken as N p (1 - p) >= 625 (sigma >= 25): each law is the binomial's
+// Gaussian shifted by at most one count, which moves it by
+// TV <= 1 / (sigma sqrt(2 pi)) <= 0.016, plus the binomial's own skewness error
+// ~|1 - 2p| / (6 sigma) <= 0.007: together <= 0.5 / sigma = 0.02. Sampling
+// noise of the estimate with ~5 bins per sigma and Latin-hypercube uniforms is
+// ~0.003 (exact sampler: 1e-4).
 TEST(CountingLaws, AllLawsCloseToBinomialInTheGaussianRegime) {
     int checked = 0;
     for (CountingLaw law : all_counting_laws()) {

@@ -1,4 +1,4 @@
-// Nanoseconds per sample of each counting law across N (issue 3): the gated
+// Nanoseconds per sample of each counting law across N: the gated
 // laws must cost the same for every N; zirr2016 loops over up to 16 Bernoulli
 // trials while N p <= 5 (000 §7.1), so its cost grows with N up to there.
 // Uniforms are pre-generated so that only the law is timed; each law is one

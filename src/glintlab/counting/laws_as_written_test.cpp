@@ -1,10 +1,10 @@
 // The gated laws of counting/binomial_laws.glsl evaluate each law and its
-// conditional form in one function (issue 17: one normal quantile, one gate
-// power): binomial_dual_gated_law (Algorithm 1 of Kneiphof & Klein 2025,
-// 003, and Law 6b) and binomial_single_gated_law_of (003 Eq. 23 and Law
-// 5b). These tests check that the results are, bit for bit, those of the
-// laws as they were written before as separate functions (the references
-// below, kept verbatim apart from their names), over N from below one
+// conditional form in one function (one normal quantile, one gate power):
+// binomial_dual_gated_law (Algorithm 1 of Kneiphof & Klein 2025, 003, and
+// Law 6b) and binomial_single_gated_law_of (003 Eq. 23 and Law 5b). These
+// tests check that the results are, bit for bit, those of the laws written
+// as separate functions (the references below, verbatim apart from their
+// names), over N from below one
 // trial to past the n^2 overflow bound, p from 1e-12 to 1.
 #include <gtest/gtest.h>
 

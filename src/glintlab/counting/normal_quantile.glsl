@@ -20,7 +20,7 @@ float normal_quantile(float u) {
     // One polynomial, its coefficients selected per lane, instead of an
     // if/else over the two: the same operations on the same values in each
     // case, but SIMD back ends that run both sides of a branch for a block of
-    // pixels (llvmpipe) evaluate one polynomial instead of two (issue 17).
+    // pixels (llvmpipe) evaluate one polynomial instead of two.
     bool central = w < 5.0f;  // |z| below ~2.5 standard deviations; else the tails
     float t = central ? w - 2.5f : sqrt(w) - 3.0f;
     float p = central ? 2.81022636e-08f : -0.000200214257f;

@@ -23,12 +23,12 @@
 namespace glintlab {
 namespace {
 
-// The grid of issue 3.
+// The (N, p) grid of the counting contract (docs/VALIDATION.md "counting").
 constexpr std::array<double, 13> kGridN = {0.3, 0.7, 1, 1.5, 2, 3, 5, 10, 30, 100, 1e3, 1e4, 1e6};
 constexpr std::array<double, 7> kGridP = {1e-7, 1e-4, 1e-2, 0.1, 0.3, 0.5, 0.9};
 
 // Mean error of a cell: |mean - N p| / max(N p, 0.1), i.e. <= 0.01 iff the
-// mean is within 1 % of N p or within 1e-3 absolute (issue 3).
+// mean is within 1 % of N p or within 1e-3 absolute (the laws' contract).
 double mean_error(const CellStatistics& s) {
     return std::abs(s.mean - s.ref_mean) / std::max(s.ref_mean, 0.1);
 }

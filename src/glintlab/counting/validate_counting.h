@@ -1,5 +1,5 @@
 // `glintlab validate counting`: statistical and numerical validation of the
-// counting laws (issue 3). The CLI prints report.to_text() or
+// counting laws. The CLI prints report.to_text() or
 // report.to_json().dump(2) and exits 0 iff report.passed().
 // Contract and check domains: docs/VALIDATION.md, section "counting".
 #pragma once

@@ -64,8 +64,8 @@ TEST(MicrofacetFresnel, ConductorNormalIncidenceAndGrazing) {
 }
 
 // eta = 1, k = 0 is no interface: F = 0 at every angle. The numerators
-// cancel there; rounding once made F ~ -1e-8 and rendered negative pixels
-// (issue 15). Never negative, and 0 to fp32 rounding of the cancellation.
+// cancel there, and unclamped rounding gives F ~ -1e-8, which renders as
+// negative pixels. Never negative, and 0 to fp32 rounding of the cancellation.
 TEST(MicrofacetFresnel, ConductorWithoutInterfaceIsZeroNeverNegative) {
     for (int i = 0; i <= 100000; ++i) {
         const float c = static_cast<float>(i) / 100000.0f;

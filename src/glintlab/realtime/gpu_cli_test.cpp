@@ -293,8 +293,8 @@ TEST(GpuViewer, ScreenshotUnderXvfbMatchesTheHeadlessRender) {
 // sun channel, so the default "lobe_sun" reads the lobe with the sun in the
 // maps there (docs/MODELS.md kneiphof2025, smooth term). With the option
 // dynamic_full_resolution: the default dynamic prefilter filters the rough
-// layers on coarser grids (issue 17; kneiphof2025_prefilter_gpu.h), which
-// moved 1.4 % of these pixels by more than 2/255 (measured) — past
+// layers on coarser grids (kneiphof2025_prefilter_gpu.h), which moves
+// 1.4 % of these pixels by more than 2/255 (measured) — past
 // expect_same_frame's 8-bit limit, which is about the viewer reproducing
 // the render, not about the prefilter; that mode's own image limits are
 // GpuKneiphof2025Prefilter.DynamicEnvironmentRendersTheStaticImage's.
@@ -420,7 +420,7 @@ TEST(GpuViewer, PanelFitsTheWindowUnderXvfb) {
     }
 }
 
-// `glintlab compare --gpu` (issue 15): every real-time model of a point +
+// `glintlab compare --gpu`: every real-time model of a point +
 // directional light scene renders on the GPU (backend "gpu"), the truth on
 // the CPU, and each GPU row's masked mean equals the same model's CPU row:
 // at 1 spp both shade the pixel centres, so they differ by the GPU ports'

@@ -1,6 +1,6 @@
-// Environment images read from files (issues 14, 15): negative texels are
-// clamped with one warning, texels beyond the radiance limit and non-finite
-// texels are errors naming the file and the texel.
+// Environment images read from files: negative texels are clamped with one
+// warning, texels beyond the radiance limit and non-finite texels are errors
+// naming the file and the texel.
 #include <gtest/gtest.h>
 
 #include <algorithm>

@@ -577,9 +577,9 @@ TEST_F(MeshGltf, MirroringNodeFlipsWinding) {
         EXPECT_GT(glm::dot(geometric_normal(m, t), m.normals[m.triangles[t].x]), 0.0f);
 }
 
-// Issue 14: a 60,000-deep chain of nodes (each translating by 1e-4 along x)
-// with the quad at the leaf. A recursive walk overflowed the stack; the
-// iterative one must place the quad at x + 60000·1e-4 = x + 6.
+// A 60,000-deep chain of nodes (each translating by 1e-4 along x) with the
+// quad at the leaf. A recursive walk would overflow the stack; the iterative
+// one must place the quad at x + 60000·1e-4 = x + 6.
 TEST_F(MeshGltf, DeepNodeChainLoads) {
     constexpr int kDepth = 60000;
     Asset a = quad_asset(kU16);

@@ -1,4 +1,4 @@
-// Generated uv projections (issue 14): meshes without uvs can wear glint
+// Generated uv projections: meshes without uvs can wear glint
 // materials. The glint density of a material is per unit uv area, so the
 // density per unit surface area is |∂u/∂p × ∂v/∂p| times it; these tests
 // check that Jacobian (S² where the projection does not stretch), the seams

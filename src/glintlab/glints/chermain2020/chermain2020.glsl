@@ -20,11 +20,11 @@
 #ifndef GLINTLAB_CPP
 #ifdef GLINTLAB_CHERMAIN2020_DICT_PAIRS
 // RG32F texture, width table_size, height n_dists * n_levels: texel `bin`
-// holds the samples bin and bin + 1 of its row (0 past the row's end), so
-// the linear interpolation of chermain2020_marginal reads one texel instead
-// of two (issue 17: the fetches were a third of the cost per cell on
-// llvmpipe); the same values, so the same results. Set by the forward
-// pass's glue (chermain2020_gpu.glsl).
+// holds the samples bin and bin + 1 of its row (0 past the row's end), so the
+// linear interpolation of chermain2020_marginal reads one texel instead of
+// two (two fetches cost a third of a cell's time on llvmpipe:
+// docs/BENCHMARKS.md); the same values, so the same results. Set by the
+// forward pass's glue (chermain2020_gpu.glsl).
 uniform sampler2D chermain2020_dictionary;
 float chermain2020_dict_fetch(int row, int bin) {
     return texelFetch(chermain2020_dictionary, ivec2(bin, row), 0).r;
@@ -204,7 +204,7 @@ Chermain2020Lookup chermain2020_lookup(vec2 slope, Chermain2020Dict d, float alp
 
 // One cell's (P^22, U_c) in the cell loop: chermain2020_cell followed by
 // chermain2020_cell_p22, drawing the same stream in the same order, but
-// evaluated lazily (issue 17): a discarded cell stops after its first
+// evaluated lazily: a discarded cell stops after its first
 // number, a cell outside the dictionary's support before its rotation, and
 // the second marginal is not fetched where the first is 0. The same
 // operations on the same values, so the sums are those of the eager form
@@ -301,7 +301,7 @@ vec3 chermain2020_level_p22(vec2 slope, vec2 uv, vec3 ellipse, int level, Cherma
     // test of the loop's own r^2 at each end settles (non-finite roots keep
     // the bounding box). The r^2 < 1 test still decides every cell, so the
     // sums are those of the whole bounding box, bit for bit, in the same
-    // order. Why flat (issue 17): SIMD back ends such as llvmpipe run a
+    // order. Why flat: SIMD back ends such as llvmpipe run a
     // block of pixels through the loop until its last pixel is done, so a
     // loop over rows with one over each row's cells costs, per row, the
     // widest row of the block; one loop costs the block's largest number

@@ -26,7 +26,7 @@ TEST(Chermain2020, ConvergesToBeckmann) {
     // 1.6e4-3.3e4 lobes, kernel noise ~2.8 % each), ~1.5 % for the smallest
     // footprints, so the mean is within 0.3 % (3 sigma over 300); the
     // dictionary's own bias (kernel smoothing, 192 marginals) is < 0.5 %.
-    // 2 % is the bound.
+    // 2 % is the convergence bound, well above both.
     for (const auto& c : chermain2020_convergence(300, 7))
         EXPECT_LE(c.rel_err, 0.02) << c.alpha_x << " " << c.alpha_y << " " << c.tan_theta << " "
                                    << c.phi << " mean " << c.mean_dp << " target " << c.target;

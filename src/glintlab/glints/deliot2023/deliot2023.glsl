@@ -49,7 +49,7 @@ const float DELIOT2023_LN2 = 0.69314718f;
 // Vectors, not arrays: the loops over the 4 grids are too large to be
 // unrolled, and Mesa's compiler keeps a local array read at a non-constant
 // index in scratch memory (a gather per read), where a vector read so becomes
-// selects (issue 17: deliot2023 ~20 % cheaper on llvmpipe). Grid i is
+// selects (about 20 % cheaper on llvmpipe: docs/BENCHMARKS.md). Grid i is
 // id (lod[i], ratio_level[i], bin[i]) (deliot2023_grid_id).
 struct Deliot2023Grids {
     ivec4 lod;
@@ -221,11 +221,11 @@ Deliot2023Grids deliot2023_select_grids(float lod, float ratio, float angle, boo
 // end defines GLINTLAB_DELIOT2023_NOISE_TEXTURE, a precomputed noise texture
 // read through its fetch function `vec2 deliot2023_noise_fetch(uint
 // cell_hash)` at hash_cell(corner, vs). 000 leaves the source of these
-// numbers open (hash or texture). Issue 17: the corners' hashing was the
-// largest part of a GPU frame; pcg3d replaced hash_cell (two xxHash32
-// rounds) and two pcg_hash rounds, which cost 28 % of deliot2023's pass on
-// an H200 against 0.3 % for pcg3d (docs/BENCHMARKS.md); the uniforms'
-// independence is tested in Deliot2023.CornerUniformsAreUniformAndIndependent.
+// numbers open (hash or texture). Why pcg3d: the corners' hashing is the
+// largest part of a GPU frame, and hash_cell (two xxHash32 rounds) with two
+// pcg_hash rounds costs 28 % of deliot2023's pass on an H200 against 0.3 %
+// for pcg3d (docs/BENCHMARKS.md); the uniforms' independence is tested in
+// Deliot2023.CornerUniformsAreUniformAndIndependent.
 vec2 deliot2023_corner_uniforms(ivec2 corner, uint vs) {
 #ifdef GLINTLAB_DELIOT2023_NOISE_TEXTURE
     // The texture holds 4096 pairs: their empirical CDF misses N p by a
@@ -352,8 +352,8 @@ float deliot2023_vertex_count(float N, vec2 angular_offset, uint vs, vec2 slope,
     // to [0, N] instead of N - 1, floored after the gate's success (Eq. 18).
     // Both laws draw their Gaussian from one normal quantile of the corner's
     // second uniform, so a corner evaluates one quantile, not one per law
-    // (issue 17: SIMD back ends such as llvmpipe run both sides of a choice
-    // between two law functions for a block of pixels); the counts are bit
+    // (SIMD back ends such as llvmpipe run both sides of a choice between
+    // two law functions for a block of pixels); the counts are bit
     // for bit those of the laws as written
     // (Deliot2023CornerLaw.OneQuantilePerCornerGivesTheLawsCounts).
     float lo = 1.0f;
@@ -401,7 +401,7 @@ vec2 deliot2023_grid_counts(ivec3 id, float weight, vec2 uv, vec2 slope, float p
     return acc;
 }
 
-// The part of D_P that does not depend on the half vector (issue 17): the
+// The part of D_P that does not depend on the half vector: the
 // footprint's 4 grids and, for each, its 3 simplex vertices' barycentric
 // weights, trials, angular offsets and streams. A pixel lit by several
 // lights needs it once: the GPU glue keeps it per footprint
@@ -530,7 +530,7 @@ Deliot2023Grids deliot2023_footprint_grids(Footprint fp, float screen_space_scal
     return deliot2023_select_grids(lod, ratio, ellipse.z, original_defects);
 }
 
-// Early exits of the GPU glue (issue 17), compiled in where the back end
+// Early exits of the GPU glue, compiled in where the back end
 // defines GLINTLAB_DELIOT2023_EXPECTATION_EXITS (the GPU glues; the CPU
 // keeps the plain evaluation, so its renders are unchanged): D_P is replaced
 // by the value the counts take but with a probability below fp32's
@@ -677,7 +677,7 @@ float deliot2023_ndf(vec3 h, Footprint fp, int ndf, float alpha_x, float alpha_y
     return acc.y > 0.0f ? d_n / R * (acc.x / acc.y) : d_h;
 }
 
-// Stochastic grid selection (the GPU option "stochastic_grid", issue 17; a
+// Stochastic grid selection (the GPU option "stochastic_grid"; a
 // separate option for renderers with temporal accumulation, never the
 // model's default): of the 4 grids of the footprint, ONE is evaluated, grid
 // i with probability weight_i, drawn with the pixel's uniform u in [0, 1),

@@ -1,6 +1,6 @@
 // deliot2023_vertex_count draws its 4 corners' counts with one normal
-// quantile per corner for every law (issue 17: a SIMD back end ran the
-// shipped law and the fixed one side by side). This checks that the counts
+// quantile per corner for every law (a SIMD back end would run the shipped
+// law and the fixed one side by side). This checks that the counts
 // are, bit for bit, those of the laws as written: the shipped law below
 // for `original_defects`, binomial_single_gated_draw of the single-gated
 // (003 Eq. 23) or conditional law otherwise, blended as Eq. 14 blends them.
@@ -14,8 +14,8 @@
 GLINTLAB_SHADER_FUNCTIONS_BEGIN
 #include "glintlab/glints/deliot2023/deliot2023.glsl"
 
-// The original HLSL's gated Gaussian (000 Eq. 16-18 as shipped), as the
-// shader wrote it as a function of its own before issue 17: naive fp32
+// The original HLSL's gated Gaussian (000 Eq. 16-18 as shipped), written as
+// a function of its own: naive fp32
 // (1 - p)^N, the gate 1 - (1 - p)^N also for N < 1, and the Gaussian for the
 // N - 1 remaining trials clamped to N instead of N - 1.
 float deliot2023_original_law(float N, float p, float xi0, float xi1) {
@@ -31,8 +31,8 @@ namespace {
 
 using namespace shader;
 
-// Eq. 14 over the 4 corners with one law call per corner (the form before
-// issue 17's change).
+// Eq. 14 over the 4 corners with one law call per corner (the laws as
+// written, one quantile per law call).
 float vertex_count_per_corner_law(float N, glm::vec2 angular_offset, uint vs, glm::vec2 slope,
                                   float p, bool original_defects, bool conditional) {
     glm::vec2 a = glm::mod(slope + angular_offset, DELIOT2023_LATTICE_PERIOD);

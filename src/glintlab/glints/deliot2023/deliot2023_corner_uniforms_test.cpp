@@ -1,5 +1,5 @@
 // The uniforms of deliot2023's angular corners (deliot2023_corner_uniforms,
-// one pcg3d of (corner, vertex stream) since issue 17): uniform, and
+// one pcg3d of (corner, vertex stream)): uniform, and
 // independent between the pair's two numbers, between neighbouring corners
 // and between vertices. The gated law needs all three: the gate and the
 // Gaussian of one corner share the pair, the bilinear blend of Eq. 14 mixes

@@ -1,5 +1,5 @@
 // The GPU glue's early exits of deliot2023 (deliot2023.glsl
-// deliot2023_expectation_exit, issue 17) against the full evaluation they
+// deliot2023_expectation_exit) against the full evaluation they
 // replace, on the CPU: this file compiles the shared source with
 // GLINTLAB_DELIOT2023_EXPECTATION_EXITS, as the GPU glue does.
 #include <gtest/gtest.h>

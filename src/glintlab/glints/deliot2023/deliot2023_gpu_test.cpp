@@ -1,6 +1,6 @@
-// deliot2023's GPU option "stochastic_grid" (issue 17): one of the 4 grids
-// per pixel and frame, chosen by its weight; over frames its image has the
-// mean of the default 4-grid blend. And the GPU glues' per-footprint cache
+// deliot2023's GPU option "stochastic_grid": one of the 4 grids per pixel
+// and frame, chosen by its weight; over frames its image has the mean of the
+// default 4-grid blend. And the GPU glues' per-footprint cache
 // of D_P's half-vector-free part (deliot2023.glsl
 // deliot2023_cached_pixel_part): several lights shade as each alone.
 #include <gtest/gtest.h>

@@ -184,7 +184,7 @@ void kneiphof2025_probabilities(vec4 w_a, vec4 w_b, int levels, float p_visible,
 // arrays: a level loop bounded by the uniform K is not unrolled, and a local
 // array indexed by a non-constant k is kept in scratch memory by Mesa's
 // compiler (a gather per read), where a vector indexed so becomes selects
-// (issue 17; the zirr2016 mat4 was the same case). Same values.
+// (zirr2016_cell_law drops its 4 x 4 matrix for the same reason). Same values.
 float kneiphof2025_level(vec4 a, vec4 b, int k) {
     return k < 4 ? a[k & 3] : b[k & 3];
 }
@@ -211,8 +211,8 @@ float kneiphof2025_weighted_multinomial_scaled(float N, float scale, int levels,
         float q = rest_k > 0.0f ? clamp(kneiphof2025_level(p_a, p_b, k) / rest_k, 0.0f, 1.0f) : 0.0f;
         float xi1 = hash_random(vs);
         float xi2 = hash_random(vs);
-        // One law evaluation whichever case (issue 17: a SIMD back end runs
-        // every side of a branch for a block of pixels): the complement's
+        // One law evaluation whichever case (a SIMD back end runs every
+        // side of a branch for a block of pixels): the complement's
         // probability where the conditional law draws the complement.
         bool complement = conditional && q > 0.5f;
         float q_rest = rest_k > 0.0f
@@ -514,7 +514,7 @@ vec3 kneiphof2025_lobe_radiance_of(vec3 n, vec3 wr, float cos_o, float alpha, bo
     vec3 wo_world = 2.0f * cos_o * n - wr;
     vec3 wo = normalize(vec3(dot(wo_world, t), dot(wo_world, b), max(cos_o, 1e-4f)));
     float roughness = sqrt(alpha);
-    // What every sample shares, computed once (issue 17: the lobe is
+    // What every sample shares, computed once (the lobe is
     // arithmetic-bound on a GPU): G1(wo)'s Lambda, and the visible-normal
     // sampler's frame. The same operations as G1_Smith, G2_SmithCorrelated
     // and sample_vndf_ggx, so the values are theirs.

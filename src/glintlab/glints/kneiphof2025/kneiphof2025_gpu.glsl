@@ -18,7 +18,7 @@
 // (deliot2023.glsl deliot2023_expectation_exit; the CPU evaluates in full).
 #define GLINTLAB_DELIOT2023_EXPECTATION_EXITS 1
 // The half-vector-free part of D_P once per footprint, not once per light
-// (deliot2023.glsl deliot2023_cached_pixel_part; issue 17).
+// (deliot2023.glsl deliot2023_cached_pixel_part).
 #define GLINTLAB_DELIOT2023_PIXEL_CACHE 1
 #include "glintlab/glints/glint_uniforms.glsl"
 #include "glintlab/microfacet/ndf.glsl"

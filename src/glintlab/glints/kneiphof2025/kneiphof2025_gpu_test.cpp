@@ -212,7 +212,7 @@ TEST(GpuKneiphof2025PrefilterReduced, ShiftsFollowTheKernelLods) {
 // EqualsTheCpuPrefilter (64 x 32: layers 4-6 reduced, the 2000x sun patch
 // the worst case of a bilinear reconstruction) and, at the default
 // 256 x 128, on forest.exr and sunrise.exr (the map with the largest
-// differences of the 8 studio lights, docs/BENCHMARKS.md issue 17).
+// differences of the 8 studio lights, docs/BENCHMARKS.md).
 // Measured (llvmpipe): see the limits' comments.
 TEST_P(GpuKneiphof2025Prefilter, ReducedResolutionIsCloseToTheCpuPrefilter) {
     GLINTLAB_REQUIRE_GL();
@@ -304,7 +304,7 @@ TEST_P(GpuKneiphof2025Prefilter, ReducedResolutionIsCloseToTheCpuPrefilter) {
     }
 }
 
-// The survey of docs/BENCHMARKS.md (issue 17): every studio light, K = 4
+// The survey of docs/BENCHMARKS.md: every studio light, K = 4
 // and 8, both resolutions, per layer. Slow (16 CPU prefilters at 256 x 128);
 // run with --gtest_also_run_disabled_tests.
 TEST(GpuKneiphof2025PrefilterReduced, DISABLED_SurveyOfTheStudioLights) {
@@ -423,7 +423,7 @@ TEST(GpuKneiphof2025Prefilter, DynamicEnvironmentRendersTheStaticImage) {
     EXPECT_LT(a.mismatch_fraction, 0.01);
 
     // The default dynamic prefilter (Resolution::Reduced: the rough layers
-    // on coarser grids, upsampled; issue 17). Measured (llvmpipe): mean
+    // on coarser grids, upsampled). Measured (llvmpipe): mean
     // 1.09e-3, mismatch 4.1e-3 (15x and 38x the full resolution's): roughness 0.3
     // blends layers 1 (exact) and 2 (filtered at 128 x 64), whose texels
     // near the sun differ from the CPU's by the slope breaks of the kernel's

@@ -17,13 +17,12 @@ namespace {
 
 constexpr int kGroup = 8;  // 8 x 8 invocations per work group
 
-// Resolution::Reduced: the largest shift s_m (a grid 4 x 4 times coarser
-// than the base, 64 x 32 at the default 256 x 128). Measured on the 8
-// Blender studio lights (docs/BENCHMARKS.md, issue 17): with s_m = 3, 4
-// (32 x 16, 16 x 8) for sqrt(alpha) >= 1/2 the mean difference to the CPU
-// layers reached 2.7 % of a channel's range (layer 6); capped at 2 it stays
-// <= 0.6 %, for a cost (layers 4-6 at 1/16 of a full layer each) within the
-// timing noise.
+// Resolution::Reduced: the largest shift s_m (a grid 4 x 4 times coarser than
+// the base, 64 x 32 at the default 256 x 128). Measured on the 8 Blender
+// studio lights (docs/BENCHMARKS.md): with s_m = 3, 4 (32 x 16, 16 x 8) for
+// sqrt(alpha) >= 1/2 the mean difference to the CPU layers reaches 2.7 % of a
+// channel's range (layer 6); capped at 2 it stays <= 0.6 %, for a cost
+// (layers 4-6 at 1/16 of a full layer each) within the timing noise.
 constexpr int kMaxReducedShift = 2;
 
 GLuint compile(const char* pass, const char* what) {

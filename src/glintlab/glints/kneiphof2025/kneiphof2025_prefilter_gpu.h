@@ -20,8 +20,8 @@
 // The arrays are what kneiphof2025.glsl's GLSL fetch functions read.
 //
 // Resolution of pass 5. Full: every layer filtered at W x H, the CPU's
-// values (up to fp32 rounding). Reduced (the renderer's dynamic default,
-// issue 17): layer m is filtered on the 2^-s_m coarser grid, s_m = floor of
+// values (up to fp32 rounding). Reduced (the renderer's dynamic default):
+// layer m is filtered on the 2^-s_m coarser grid, s_m = floor of
 // the smallest LOD of its kernel's samples (at most 2, and so that the grid
 // keeps >= 4 rows), and upsampled bilinearly (u wraps, v clamps at texel
 // centres: the sampling the forward shader itself does within a layer). Every sample of layer m
@@ -37,7 +37,7 @@
 // bilinearly, so the full-resolution layer has slope breaks at that level's
 // texel edges (part of the estimator's own error), which the coarse grid
 // does not reproduce. Measured on the 8 Blender studio lights
-// (docs/BENCHMARKS.md, issue 17): mean difference to the CPU layers <= 0.6 %
+// (docs/BENCHMARKS.md): mean difference to the CPU layers <= 0.6 %
 // of a channel's range, single texels next to small bright sources up to
 // 32 %; against the kernel integral itself (Kneiphof et al. 2025, Eq. 11,
 // 21, summed over every base texel) the reduced layers are as close as the full-resolution ones.

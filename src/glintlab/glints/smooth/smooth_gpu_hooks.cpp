@@ -1,6 +1,6 @@
 // The smooth glint model (D_P = D) on the GPU: the hooks of
-// glints/gpu_model_hooks.h. Option "split_sum_environment" (issue 17): under
-// an environment, shade the smooth material as a real-time engine does, with
+// glints/gpu_model_hooks.h. Option "split_sum_environment": under an
+// environment, shade the smooth material as a real-time engine does, with
 // one split-sum lookup of a GGX-prefiltered radiance map (glue
 // smooth_split_sum_gpu.glsl over kneiphof2025's prefiltered maps and DFG
 // table, kneiphof2025_gpu.h), instead of the forward pass's 48-sample filtered

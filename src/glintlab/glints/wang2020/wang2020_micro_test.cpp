@@ -92,10 +92,10 @@ Stats footprint_stats(const Wang2020Model& model, int side, const glm::dvec3& n,
     return st;
 }
 
-// Test (3) of issue 15: under a constant environment every micro footprint
-// holding a particle is lit (each facet reflects some environment direction);
-// the printed Eq. 20 leaves most of them black (acceptance probability
-// P̂ ≈ σ(Ωo) = 0.034 per particle at γ = 6°).
+// Under a constant environment every micro footprint holding a particle is lit
+// (each facet reflects some environment direction); the printed Eq. 20 leaves
+// most of them black (acceptance probability P̂ ≈ σ(Ωo) = 0.034 per particle
+// at γ = 6°).
 TEST(Wang2020PerParticle, ConstantEnvironmentLightsEveryMicroFootprintWithAParticle) {
     const glm::dvec3 n(0, 0, 1), o = spherical_dir(30 * kDeg, 0.7);
     auto white = [](const glm::dvec3&) { return glm::vec3(1.0f); };
@@ -123,13 +123,13 @@ TEST(Wang2020PerParticle, ConstantEnvironmentLightsEveryMicroFootprintWithAParti
     EXPECT_NEAR(a.mean, b.mean, 5.0 * std::hypot(a.se, b.se) + 0.03 * a.mean);
 }
 
-// Test (1) of issue 15, at the model level: a density sweep at a fixed view
-// (n, o) and footprint size (64 × 64 footprints per tile, two quadtree
-// seeds), with N set so that the expected count straddles the thresholds 4
-// and 64. The mean has no jump larger than 4 standard errors of the
-// difference (se = sd over footprints / sqrt(8192)), and the texture (the
-// relative sd over footprints) changes continuously with per_particle, while
-// as_published jumps (×6 at 4, to 0 at 64).
+// At the model level, a density sweep at a fixed view (n, o) and footprint
+// size (64 × 64 footprints per tile, two quadtree seeds), with N set so that
+// the expected count straddles the thresholds 4 and 64. The mean has no jump
+// larger than 4 standard errors of the difference (se = sd over footprints /
+// sqrt(8192)), and the texture (the relative sd over footprints) changes
+// continuously with per_particle, while as_published jumps (×6 at 4, to 0
+// at 64).
 TEST(Wang2020PerParticle, MeanAndTextureAreContinuousAcrossTheScaleThresholds) {
     const glm::dvec3 n = glm::normalize(glm::dvec3(0.2, -0.1, 1.0));
     glm::dvec3 t, b;
@@ -178,18 +178,18 @@ TEST(Wang2020PerParticle, MeanAndTextureAreContinuousAcrossTheScaleThresholds) {
     }
 }
 
-// Test (2) of issue 15: the micro/meso boundary region against the explicit
-// ground truth (same scene, the model switched to explicit). A 96 × 96
-// sphere under a constant environment with N = e^11.5 = 98700 particles per uv
-// tile puts the expected count per pixel at ~2-8 over the central disk
-// (radius 18 px), the blend band of the micro/meso boundary. One render per
-// model; the pixel means of that disk (~1000 pixels) are compared within 4
-// standard errors of their difference (se = sd over the disk's pixels /
-// sqrt(pixels); count noise ≈ 50 % per pixel, so se ≈ 1.6 % each) plus a 3 %
-// bound for what differs by construction (wang2020's meso term reads the
-// DPF and prefilter tables). A constant environment, because Blender's
-// 'forest' map makes the se 25-35 % (a few pixels reflect its bright sky):
-// measured there, 0.3527 vs 0.3528 (docs/VALIDATION.md).
+// The micro/meso boundary region against the explicit ground truth (same
+// scene, the model switched to explicit). A 96 × 96 sphere under a constant
+// environment with N = e^11.5 = 98700 particles per uv tile puts the expected
+// count per pixel at ~2-8 over the central disk (radius 18 px), the blend
+// band of the micro/meso boundary. One render per model; the pixel means of
+// that disk (~1000 pixels) are compared within 4 standard errors of their
+// difference (se = sd over the disk's pixels / sqrt(pixels); count noise
+// ≈ 50 % per pixel, so se ≈ 1.6 % each) plus a 3 % bound for what differs by
+// construction (wang2020's meso term reads the DPF and prefilter tables). A
+// constant environment, because Blender's 'forest' map makes the se 25-35 %
+// (a few pixels reflect its bright sky): measured there, 0.3527 vs 0.3528
+// (docs/VALIDATION.md).
 TEST(Wang2020PerParticle, BoundaryRegionMeanMatchesTheExplicitGroundTruth) {
     auto scene = [&](const std::string& model, int seed) {
         nlohmann::json mat = {{"name", "g"},      {"type", "glint"},

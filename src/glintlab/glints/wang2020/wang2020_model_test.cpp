@@ -51,7 +51,7 @@ TEST(Wang2020Model, ReadsItsBlockAndRejectsBadInput) {
     EXPECT_DOUBLE_EQ(p.gamma_deg, 3.0);
     EXPECT_EQ(p.depth, 9);
     EXPECT_EQ(p.dpf_theta, 90);         // Table 2 default
-    EXPECT_TRUE(p.micro_per_particle);  // issue 15 defaults
+    EXPECT_TRUE(p.micro_per_particle);  // defaults, not as published
     EXPECT_TRUE(p.prefilter_mis);
     const Scene pub = parse_scene(
         scene_with(glint_material({{"micro", "as_published"}, {"prefilter", "as_published"}})),

@@ -29,7 +29,7 @@ Footprint axis_footprint(glm::vec2 uv, float minor, float ratio) {
 // N p >= 4900 for every case (p >= R D(h)/D(n) = 0.025 e^-4 at tan = 2 alpha),
 // so one footprint's relative noise is <= 1/sqrt(4900) = 1.4 % and the mean
 // of 100 is within 0.15 % (1 sigma); Eq. 15's floor biases by 1/(2 N p) < 1e-4.
-// 2 % is the limit, > 10 sigma away from noise.
+// The 2 % limit is > 10 sigma away from noise.
 TEST(Zirr2016, ConvergesToSmoothNdfAtHighDensity) {
     for (const Zirr2016ConvergenceCase& c : zirr2016_convergence(30.0f, 100, 7)) {
         EXPECT_LE(c.rel_err, 0.02)
