@@ -22,7 +22,7 @@
 // RG32F texture, width table_size, height n_dists * n_levels: texel `bin`
 // holds the samples bin and bin + 1 of its row (0 past the row's end), so the
 // linear interpolation of chermain2020_marginal reads one texel instead of
-// two (two fetches cost a third of a cell's time on llvmpipe:
+// two (the dictionary fetch is a large share of a cell's time on llvmpipe:
 // docs/BENCHMARKS.md); the same values, so the same results. Set by the
 // forward pass's glue (chermain2020_gpu.glsl).
 uniform sampler2D chermain2020_dictionary;

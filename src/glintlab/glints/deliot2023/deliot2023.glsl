@@ -49,8 +49,7 @@ const float DELIOT2023_LN2 = 0.69314718f;
 // Vectors, not arrays: the loops over the 4 grids are too large to be
 // unrolled, and Mesa's compiler keeps a local array read at a non-constant
 // index in scratch memory (a gather per read), where a vector read so becomes
-// selects (about 20 % cheaper on llvmpipe: docs/BENCHMARKS.md). Grid i is
-// id (lod[i], ratio_level[i], bin[i]) (deliot2023_grid_id).
+// selects. Grid i is id (lod[i], ratio_level[i], bin[i]) (deliot2023_grid_id).
 struct Deliot2023Grids {
     ivec4 lod;
     ivec4 ratio_level;
