@@ -62,7 +62,9 @@ def main():
     print(f"{args.notebook}: {cells} code cells ran in {time.perf_counter() - start:.1f} s "
           f"on {sys.executable}")
     if args.output:
+        os.makedirs(os.path.dirname(os.path.abspath(args.output)), exist_ok=True)
         nbformat.write(nb, args.output)
+        print(f"wrote {args.output}")
     return 0
 
 
