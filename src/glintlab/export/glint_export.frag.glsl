@@ -23,10 +23,10 @@
 
 const int GLINT_MAX_LIGHTS = 4;
 
-in vec3 v_position;  // world position
-in vec3 v_normal;    // world shading normal (normalized here)
-in vec2 v_uv;        // the glint pattern's coordinates (its density is per unit uv area)
-in vec3 v_dpdu;      // world dp/du: the tangent of the shading frame
+in vec3 v_position;   // world position
+in vec3 v_normal;     // world shading normal (normalized here)
+in vec2 v_uv;         // the glint pattern's coordinates (its density is per unit uv area)
+in vec3 v_dpdu;       // world dp/du: the tangent of the shading frame
 out vec4 o_radiance;  // linear radiance, alpha 1
 
 uniform vec3 u_eye;  // world camera position
@@ -122,9 +122,8 @@ uniform vec2 u_input_texture_offset[5];
 uniform bool u_input_uv_mirrored;
 
 vec4 glint_input_filtered4(sampler2D tex, int slot, Footprint fp, float lod_bias) {
-    return material_texture_filtered4(tex, vec2(textureSize(tex, 0)),
-                                      u_input_texture_linear[slot], u_input_texture_offset[slot],
-                                      fp, lod_bias);
+    return material_texture_filtered4(tex, vec2(textureSize(tex, 0)), u_input_texture_linear[slot],
+                                      u_input_texture_offset[slot], fp, lod_bias);
 }
 
 vec3 glint_input_filtered(sampler2D tex, int slot, Footprint fp, float lod_bias) {
@@ -136,20 +135,19 @@ GlintInputs glint_inputs_from_textures(Footprint fp) {
     GlintInputs inputs = glint_inputs_from_uniforms();
     int mask = u_input_texture_mask;
     if ((mask & (1 << GLINT_INPUT_DENSITY)) != 0)
-        inputs.log_density =
-            log(max(glint_input_filtered(u_input_density, GLINT_INPUT_DENSITY, fp, 0.0f).x,
-                    1e-30f));
+        inputs.log_density = log(
+            max(glint_input_filtered(u_input_density, GLINT_INPUT_DENSITY, fp, 0.0f).x, 1e-30f));
     if ((mask & (1 << GLINT_INPUT_ALPHA)) != 0)
-        inputs.alpha = vec2(sqrt(
-            max(glint_input_filtered(u_input_alpha, GLINT_INPUT_ALPHA, fp, 0.0f).x, 0.0f)));
+        inputs.alpha = vec2(
+            sqrt(max(glint_input_filtered(u_input_alpha, GLINT_INPUT_ALPHA, fp, 0.0f).x, 0.0f)));
     if ((mask & (1 << GLINT_INPUT_COLOR)) != 0)
         inputs.color = glint_input_filtered(u_input_color, GLINT_INPUT_COLOR, fp, 0.0f);
     if ((mask & (1 << GLINT_INPUT_BASE)) != 0)
         inputs.base_albedo = glint_input_filtered(u_input_base_albedo, GLINT_INPUT_BASE, fp, 0.0f);
     if ((mask & (1 << GLINT_INPUT_NORMAL)) != 0) {
         // LEAN mapping, read as the renderer reads its normal maps.
-        vec4 first =
-            glint_input_filtered4(u_input_normal_slopes, GLINT_INPUT_NORMAL, fp, kSlopeMomentLodBias);
+        vec4 first = glint_input_filtered4(u_input_normal_slopes, GLINT_INPUT_NORMAL, fp,
+                                           kSlopeMomentLodBias);
         vec2 mean = first.xy;
         vec3 cov = slope_covariance(mean, first.zw, 0.0f, false);
         slopes_in_shading_frame(false, u_input_uv_mirrored ? -1.0f : 1.0f, mean, cov);
@@ -176,8 +174,8 @@ GlintMaterial glint_material() {
 
 // The pixel footprint in uv (ARCHITECTURE.md §3): uv derivatives per pixel
 // step, x to the right and y DOWN the image (hence -dFdy in OpenGL window
-// coordinates; fine derivatives as the renderer, dFdx/dFdy in GLSL ES). Derivatives are undefined in non-uniform control flow: call
-// this at the top of main, before any branch on per-pixel data.
+// coordinates; fine derivatives as the renderer, dFdx/dFdy in GLSL ES). Derivatives are undefined
+// in non-uniform control flow: call this at the top of main, before any branch on per-pixel data.
 Footprint glint_footprint(vec2 uv) {
     Footprint fp;
     fp.uv = uv;
@@ -226,18 +224,40 @@ vec3 glint_shade(vec3 p, vec3 n, vec3 dpdu, Footprint fp) {
     }
     vec3 wo = vec3(dot(wo_world, t), dot(wo_world, b), dot(wo_world, n));
     vec3 radiance = vec3(0.0f);
-    for (int i = 0; i < GLINT_MAX_LIGHTS; ++i) {
-        if (i >= u_point_count) break;
-        vec3 d = u_point_position[i] - p;
-        float r2 = dot(d, d);
-        vec3 w = d * inversesqrt(r2);
-        vec3 wi = vec3(dot(w, t), dot(w, b), dot(w, n));
-        if (wi.z <= 0.0f) continue;
+    // The point lights, then the directional lights, in one do-while loop:
+    // SIMD back ends that run a block of pixels in lock-step (llvmpipe,
+    // SwiftShader) run a loop's body once more after its last iteration, and
+    // a loop of no iteration once, so two for loops over the light kinds
+    // cost one or two glint evaluations more than there are lights (a third
+    // of an llvmpipe frame under one light).
+    int points = clamp(u_point_count, 0, GLINT_MAX_LIGHTS);
+    int lights = points + clamp(u_directional_count, 0, GLINT_MAX_LIGHTS);
+    if (lights > 0) {
+        int k = 0;
+        do {
+            bool point = k < points;
+            int i = point ? k : k - points;
+            vec3 w;
+            float r2 = 1.0f;
+            if (point) {
+                vec3 d = u_point_position[i] - p;
+                r2 = dot(d, d);
+                w = d * inversesqrt(r2);
+            } else {
+                w = u_directional_direction[i];
+            }
+            vec3 wi = vec3(dot(w, t), dot(w, b), dot(w, n));
+            if (wi.z > 0.0f) {
 #ifdef GLINTLAB_GLINT_OWN_LIGHTS
-        radiance += g_glint_color_input * glint_own_light(wo, wi, u_point_intensity[i] / r2, fp);
+                vec3 irradiance = point ? u_point_intensity[i] / r2 : u_directional_irradiance[i];
+                radiance += g_glint_color_input * glint_own_light(wo, wi, irradiance, fp);
 #else
-        radiance += glint_eval(wo, wi, fp) * u_point_intensity[i] / r2;
+                vec3 f = glint_eval(wo, wi, fp);
+                radiance += point ? f * u_point_intensity[i] / r2 : f * u_directional_irradiance[i];
 #endif
+            }
+            ++k;
+        } while (k < lights);
     }
 #ifdef GLINTLAB_GLINT_OWN_LIGHTS
     if (u_environment_on) radiance += g_glint_color_input * glint_own_environment(n, wo_world, fp);
@@ -245,17 +265,6 @@ vec3 glint_shade(vec3 p, vec3 n, vec3 dpdu, Footprint fp) {
 #ifdef GLINTLAB_GLINT_SHADES_ENVIRONMENT
     if (u_environment_on) radiance += glint_environment(wo, t, b, n, g_glint_color_input, fp);
 #endif
-    for (int i = 0; i < GLINT_MAX_LIGHTS; ++i) {
-        if (i >= u_directional_count) break;
-        vec3 w = u_directional_direction[i];
-        vec3 wi = vec3(dot(w, t), dot(w, b), dot(w, n));
-        if (wi.z <= 0.0f) continue;
-#ifdef GLINTLAB_GLINT_OWN_LIGHTS
-        radiance += g_glint_color_input * glint_own_light(wo, wi, u_directional_irradiance[i], fp);
-#else
-        radiance += glint_eval(wo, wi, fp) * u_directional_irradiance[i];
-#endif
-    }
     // Non-finite results are dropped, as the renderers do.
     if (any(isnan(radiance)) || any(isinf(radiance))) radiance = vec3(0.0f);
     return radiance;

@@ -44,6 +44,15 @@ const int DELIOT2023_LATTICE_MASK = 1048575;
 const float DELIOT2023_LATTICE_PERIOD = 1048576.0f;
 const float DELIOT2023_LN2 = 0.69314718f;
 
+// DELIOT2023 loops. The hot loops (over the 4 grids, over a grid's distinct
+// laws and trials) are do-while loops, and work that is needed only in some
+// cases sits in a loop whose trip count says so, not behind a branch. SIMD
+// back ends that run a block of pixels in lock-step, such as llvmpipe, run
+// both sides of every branch for the whole block, and leave a loop only after
+// a pass in which no lane is left in it: a for loop of n iterations costs
+// n + 1 passes there, a do-while loop n (-8 % of a deliot2023 frame on
+// llvmpipe). GPUs branch over code no lane runs either way.
+
 // The 4 grids of one lookup: id = (LOD, ratio level k, orientation bin j), and
 // each grid's share of the footprint's trials (barycentric, sums to 1).
 // Vectors, not arrays: the loops over the 4 grids are too large to be
@@ -312,10 +321,13 @@ Deliot2023Simplex deliot2023_simplex(ivec3 id, float weight, vec2 uv, float log_
 
 // Trials of one vertex: the per-cell jitter of the log density (std-dev
 // density_randomization) draws the first number of the vertex's stream `vs`.
+// Without jitter (the default) the quantile is skipped: log_trials + 0 z is
+// log_trials for any finite z, so the trials are the same bits, and the
+// stream advances as with jitter.
 float deliot2023_vertex_trials(float log_trials, float density_randomization, INOUT(uint) vs) {
-    float z = normal_quantile(hash_random(vs));
-    return exp(clamp(log_trials + density_randomization * z, -DELIOT2023_MAX_LOG_TRIALS,
-                     DELIOT2023_MAX_LOG_TRIALS));
+    float xi = hash_random(vs);
+    float jitter = density_randomization != 0.0f ? density_randomization * normal_quantile(xi) : 0.0f;
+    return exp(clamp(log_trials + jitter, -DELIOT2023_MAX_LOG_TRIALS, DELIOT2023_MAX_LOG_TRIALS));
 }
 
 // The half-vector-free draws of one vertex from its stream `vs`: its trials
@@ -330,40 +342,40 @@ vec3 deliot2023_vertex_draws(float log_trials, float density_randomization, INOU
     return vec3(N, angular_offset_x, angular_offset_y);
 }
 
-// The blended count of one vertex (Eq. 14): the angular grid over the
-// projected half vector `slope` (units of R), offset per vertex so that
-// angular cells do not align across space, its 4 corners' counts from the
-// gated law of (N, p) blended bilinearly. `vs`: the vertex's stream after
-// deliot2023_vertex_draws.
-float deliot2023_vertex_count(float N, vec2 angular_offset, uint vs, vec2 slope, float p,
-                              bool original_defects, bool conditional) {
-    vec2 a = slope + angular_offset;
-    a = mod(a, DELIOT2023_LATTICE_PERIOD);
-    vec2 af = floor(a);
-    ivec2 ac = ivec2(af);
-    vec2 at = clamp(a - af, 0.0f, 1.0f);
-    // The 4 corners share (N, p): the gate's power (and the conditional
-    // law's moments and mean correction) once per vertex.
+// The gated law of a vertex's N trials of probability p, shared by its 4
+// corners (the gate's power, and the conditional law's moments and mean
+// correction): in the original HLSL's terms when original_defects.
+SingleGatedLaw deliot2023_vertex_law(float N, float p, bool original_defects, bool conditional) {
     SingleGatedLaw law = binomial_single_gated_law_of(N, p, conditional);
     // The original HLSL's gated Gaussian (Eq. 16-18 as shipped) in the same
     // terms: the gate 1 - (1 - p)^N with the naive fp32 power (Eq. 16), also
     // for N < 1, and the Gaussian of the N - 1 other trials (Eq. 17) clamped
     // to [0, N] instead of N - 1, floored after the gate's success (Eq. 18).
-    // Both laws draw their Gaussian from one normal quantile of the corner's
-    // second uniform, so a corner evaluates one quantile, not one per law
-    // (SIMD back ends such as llvmpipe run both sides of a choice between
-    // two law functions for a block of pixels); the counts are bit
-    // for bit those of the laws as written
-    // (Deliot2023CornerLaw.OneQuantilePerCornerGivesTheLawsCounts).
-    float lo = 1.0f;
     if (original_defects) {
         float rest = max(N - 1.0f, 0.0f);
         law.p_gate = 1.0f - pow_one_minus_naive(p, N);
         law.mean = rest * p;
         law.sd = sqrt(max(rest * p * (1.0f - p), 0.0f));
         law.top = N;
-        lo = 0.0f;
     }
+    return law;
+}
+
+// deliot2023_vertex_count with the vertex's law given (deliot2023_vertex_law).
+float deliot2023_vertex_count_of_law(SingleGatedLaw law, vec2 angular_offset, uint vs, vec2 slope,
+                                     bool original_defects) {
+    vec2 a = slope + angular_offset;
+    a = mod(a, DELIOT2023_LATTICE_PERIOD);
+    vec2 af = floor(a);
+    ivec2 ac = ivec2(af);
+    vec2 at = clamp(a - af, 0.0f, 1.0f);
+    // Both laws draw their Gaussian from one normal quantile of the corner's
+    // second uniform, so a corner evaluates one quantile, not one per law
+    // (SIMD back ends such as llvmpipe run both sides of a choice between
+    // two law functions for a block of pixels); the counts are bit
+    // for bit those of the laws as written
+    // (Deliot2023CornerLaw.OneQuantilePerCornerGivesTheLawsCounts).
+    float lo = original_defects ? 0.0f : 1.0f;
     float count = 0.0f;
     for (int c = 0; c < 4; ++c) {
         ivec2 corner = ac + ivec2(c & 1, c >> 1);
@@ -379,6 +391,17 @@ float deliot2023_vertex_count(float N, vec2 angular_offset, uint vs, vec2 slope,
         count += wc * b;
     }
     return count;
+}
+
+// The blended count of one vertex (Eq. 14): the angular grid over the
+// projected half vector `slope` (units of R), offset per vertex so that
+// angular cells do not align across space, its 4 corners' counts from the
+// gated law of (N, p) blended bilinearly. `vs`: the vertex's stream after
+// deliot2023_vertex_draws.
+float deliot2023_vertex_count(float N, vec2 angular_offset, uint vs, vec2 slope, float p,
+                              bool original_defects, bool conditional) {
+    return deliot2023_vertex_count_of_law(deliot2023_vertex_law(N, p, original_defects, conditional),
+                                          angular_offset, vs, slope, original_defects);
 }
 
 // Counts of one grid (Eq. 14 per simplex vertex), accumulated into
@@ -447,38 +470,57 @@ Deliot2023PixelPart deliot2023_pixel_part(Deliot2023Grids grids, vec2 uv, float 
     px.stream0 = uvec4(0u);
     px.stream1 = uvec4(0u);
     px.stream2 = uvec4(0u);
-    for (int i = 0; i < 4; ++i) {
-        if (grids.weight[i] <= 0.0f) continue;
+    // Without density jitter the 3 vertices of a grid hold the same trials:
+    // one pass of the loop below draws them for all 3 (see
+    // deliot2023_counts_of_part for why a loop and not a branch).
+    int distinct_trials = density_randomization != 0.0f ? 3 : 1;
+    int i = 0;
+    do {  // over the 4 grids; do-while: see DELIOT2023 loops above
+        if (!(grids.weight[i] > 0.0f)) {
+            ++i;
+            continue;
+        }
         Deliot2023Simplex s =
             deliot2023_simplex(deliot2023_grid_id(grids, i), grids.weight[i], uv, log_density, seed);
+        // Each vertex's stream: its trials' number first (deliot2023_vertex_trials),
+        // then its angular offset (deliot2023_vertex_draws).
         uint vs0 = s.vertex_seed[0];
         uint vs1 = s.vertex_seed[1];
         uint vs2 = s.vertex_seed[2];
+        vec3 trials = vec3(0.0f);
+        int v = 0;
+        do {
+            uint vs = v == 0 ? vs0 : (v == 1 ? vs1 : vs2);
+            trials[v] = deliot2023_vertex_trials(s.log_trials, density_randomization, vs);
+            ++v;
+        } while (v < distinct_trials);
+        if (distinct_trials == 1) trials = vec3(trials.x);
+        hash_random(vs0);
+        hash_random(vs1);
+        hash_random(vs2);
         if (s.beta[0] > 0.0f) {
-            vec3 d = deliot2023_vertex_draws(s.log_trials, density_randomization, vs0);
             px.beta0[i] = s.beta[0];
-            px.trials0[i] = d.x;
-            px.offset_x0[i] = d.y;
-            px.offset_y0[i] = d.z;
+            px.trials0[i] = trials.x;
+            px.offset_x0[i] = hash_random(vs0);
+            px.offset_y0[i] = hash_random(vs0);
             px.stream0[i] = vs0;
         }
         if (s.beta[1] > 0.0f) {
-            vec3 d = deliot2023_vertex_draws(s.log_trials, density_randomization, vs1);
             px.beta1[i] = s.beta[1];
-            px.trials1[i] = d.x;
-            px.offset_x1[i] = d.y;
-            px.offset_y1[i] = d.z;
+            px.trials1[i] = trials.y;
+            px.offset_x1[i] = hash_random(vs1);
+            px.offset_y1[i] = hash_random(vs1);
             px.stream1[i] = vs1;
         }
         if (s.beta[2] > 0.0f) {
-            vec3 d = deliot2023_vertex_draws(s.log_trials, density_randomization, vs2);
             px.beta2[i] = s.beta[2];
-            px.trials2[i] = d.x;
-            px.offset_x2[i] = d.y;
-            px.offset_y2[i] = d.z;
+            px.trials2[i] = trials.z;
+            px.offset_x2[i] = hash_random(vs2);
+            px.offset_y2[i] = hash_random(vs2);
             px.stream2[i] = vs2;
         }
-    }
+        ++i;
+    } while (i < 4);
     return px;
 }
 
@@ -488,29 +530,59 @@ Deliot2023PixelPart deliot2023_pixel_part(Deliot2023Grids grids, vec2 uv, float 
 vec2 deliot2023_counts_of_part(Deliot2023PixelPart px, vec2 slope, float p, bool original_defects,
                                bool conditional) {
     vec2 acc = vec2(0.0f);
-    for (int i = 0; i < 4; ++i) {
-        if (px.grids.weight[i] <= 0.0f) continue;
+    int i = 0;
+    do {  // over the 4 grids; do-while: see DELIOT2023 loops above
+        if (!(px.grids.weight[i] > 0.0f)) {
+            ++i;
+            continue;
+        }
+        // A vertex's law depends on its trials and p only. Without density
+        // jitter the 3 vertices of a grid hold the same trials (a vertex of
+        // barycentric weight 0 holds 0 and is not counted), so one law serves
+        // them: 4 laws per pixel instead of 12 (the conditional law's mean
+        // correction, with its erf and exp, is most of a law's cost). A loop
+        // whose trip count is the number of laws, not a branch (see
+        // DELIOT2023 loops above).
+        float t0 = px.beta0[i] > 0.0f ? px.trials0[i] : -1.0f;
+        float t1 = px.beta1[i] > 0.0f ? px.trials1[i] : t0;
+        float t2 = px.beta2[i] > 0.0f ? px.trials2[i] : t0;
+        if (t0 < 0.0f) t0 = t1 >= 0.0f ? t1 : t2;
+        int laws = (t1 == t0 && t2 == t0) ? 1 : 3;
+        SingleGatedLaw law0;
+        SingleGatedLaw law1;
+        SingleGatedLaw law2;
+        int v = 0;
+        do {
+            float t = v == 0 ? t0 : (v == 1 ? t1 : t2);
+            SingleGatedLaw law = deliot2023_vertex_law(t, p, original_defects, conditional);
+            if (v == 0) law0 = law;
+            if (v == 1) law1 = law;
+            if (v == 2) law2 = law;
+            ++v;
+        } while (v < laws);
+        if (laws == 1) {
+            law1 = law0;
+            law2 = law0;
+        }
         vec2 grid = vec2(0.0f);  // one grid's sum first, as deliot2023_grid_counts
         if (px.beta0[i] > 0.0f)
-            grid += px.beta0[i] * vec2(deliot2023_vertex_count(px.trials0[i],
-                                                               vec2(px.offset_x0[i], px.offset_y0[i]),
-                                                               px.stream0[i], slope, p,
-                                                               original_defects, conditional),
-                                       px.trials0[i]);
+            grid += px.beta0[i] *
+                    vec2(deliot2023_vertex_count_of_law(law0, vec2(px.offset_x0[i], px.offset_y0[i]),
+                                                        px.stream0[i], slope, original_defects),
+                         px.trials0[i]);
         if (px.beta1[i] > 0.0f)
-            grid += px.beta1[i] * vec2(deliot2023_vertex_count(px.trials1[i],
-                                                               vec2(px.offset_x1[i], px.offset_y1[i]),
-                                                               px.stream1[i], slope, p,
-                                                               original_defects, conditional),
-                                       px.trials1[i]);
+            grid += px.beta1[i] *
+                    vec2(deliot2023_vertex_count_of_law(law1, vec2(px.offset_x1[i], px.offset_y1[i]),
+                                                        px.stream1[i], slope, original_defects),
+                         px.trials1[i]);
         if (px.beta2[i] > 0.0f)
-            grid += px.beta2[i] * vec2(deliot2023_vertex_count(px.trials2[i],
-                                                               vec2(px.offset_x2[i], px.offset_y2[i]),
-                                                               px.stream2[i], slope, p,
-                                                               original_defects, conditional),
-                                       px.trials2[i]);
+            grid += px.beta2[i] *
+                    vec2(deliot2023_vertex_count_of_law(law2, vec2(px.offset_x2[i], px.offset_y2[i]),
+                                                        px.stream2[i], slope, original_defects),
+                         px.trials2[i]);
         acc += grid;
-    }
+        ++i;
+    } while (i < 4);
     return acc;
 }
 
