@@ -39,10 +39,10 @@ VARIANTS = {
           "    Deliot2023PixelPart px =\n        deliot2023_cached_pixel_part(",
           "    return d_h;\n    Deliot2023PixelPart px =\n        deliot2023_cached_pixel_part(")]),
     "d_nocorners": (
-        "deliot2023: per vertex N p instead of the 4 corners' draws (hash, law, quantile)",
+        "deliot2023: per vertex p_gate x mean instead of the 4 corners' draws (their hashes and quantiles)",
         [(DELIOT,
-          "    float count = 0.0f;\n    for (int c = 0; c < 4; ++c) {",
-          "    float count = N * p + at.x * 1e-30f;\n    for (int c = 0; c < 0; ++c) {")]),
+          "    float count = 0.0f;\n    do {\n",
+          "    float count = law.p_gate * law.mean + at.x * 1e-30f;\n    open = 0;\n    do {\n")]),
     "d_nohash": (
         "deliot2023: the corners' uniform pair from a fract() of the corner, not hashed",
         [(DELIOT,
@@ -51,8 +51,8 @@ VARIANTS = {
     "d_noquantile": (
         "deliot2023 corners: a linear stand-in for the gated law's normal quantile",
         [(DELIOT,
-          "            float g = clamp(law.mean + law.sd * normal_quantile(xi.y), lo, law.top);\n",
-          "            float g = clamp(law.mean + law.sd * (3.0f * xi.y - 1.5f), lo, law.top);\n")]),
+          "            float g = clamp(law.mean + law.sd * normal_quantile(gauss_xi[c]), lo, law.top);\n",
+          "            float g = clamp(law.mean + law.sd * (3.0f * gauss_xi[c] - 1.5f), lo, law.top);\n")]),
     "d_unrollall": (
         "deliot2023: NVIDIA's #pragma optionNV(unroll all) (nothing removed)",
         [(DELIOT_GPU,

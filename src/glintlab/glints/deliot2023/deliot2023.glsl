@@ -44,14 +44,15 @@ const int DELIOT2023_LATTICE_MASK = 1048575;
 const float DELIOT2023_LATTICE_PERIOD = 1048576.0f;
 const float DELIOT2023_LN2 = 0.69314718f;
 
-// DELIOT2023 loops. The hot loops (over the 4 grids, over a grid's distinct
-// laws and trials) are do-while loops, and work that is needed only in some
-// cases sits in a loop whose trip count says so, not behind a branch. SIMD
-// back ends that run a block of pixels in lock-step, such as llvmpipe, run
-// both sides of every branch for the whole block, and leave a loop only after
-// a pass in which no lane is left in it: a for loop of n iterations costs
-// n + 1 passes there, a do-while loop n (-8 % of a deliot2023 frame on
-// llvmpipe). GPUs branch over code no lane runs either way.
+// DELIOT2023 loops. The hot loops (over the 4 grids, a grid's distinct laws
+// and trials, a vertex's open corners) are do-while loops, and work that is
+// needed only in some cases sits in a loop whose trip count says so, not
+// behind a branch. SIMD back ends that run a block of pixels in lock-step,
+// such as llvmpipe, run both sides of every branch for the whole block, and
+// leave a loop only after a pass in which no lane is left in it: a for loop
+// of n iterations costs n + 1 passes there, a do-while loop n. The results
+// are bit for bit those of the plain loops; GPUs branch over code no lane
+// runs either way.
 
 // The 4 grids of one lookup: id = (LOD, ratio level k, orientation bin j), and
 // each grid's share of the footprint's trials (barycentric, sums to 1).
@@ -376,20 +377,35 @@ float deliot2023_vertex_count_of_law(SingleGatedLaw law, vec2 angular_offset, ui
     // for bit those of the laws as written
     // (Deliot2023CornerLaw.OneQuantilePerCornerGivesTheLawsCounts).
     float lo = original_defects ? 0.0f : 1.0f;
-    float count = 0.0f;
+    vec4 weight;
+    vec4 gate_xi;
+    vec4 gauss_xi;
     for (int c = 0; c < 4; ++c) {
         ivec2 corner = ac + ivec2(c & 1, c >> 1);
-        float wc = ((c & 1) == 1 ? at.x : 1.0f - at.x) * ((c >> 1) == 1 ? at.y : 1.0f - at.y);
+        weight[c] = ((c & 1) == 1 ? at.x : 1.0f - at.x) * ((c >> 1) == 1 ? at.y : 1.0f - at.y);
         vec2 xi = deliot2023_corner_uniforms(corner & ivec2(DELIOT2023_LATTICE_MASK), vs);
-        // The gate first: a closed gate skips the quantile where the back end
-        // branches (the CPU: -16 % of a deliot2023 render, docs/BENCHMARKS.md).
-        float b = 0.0f;
-        if (xi.x < law.p_gate) {
-            float g = clamp(law.mean + law.sd * normal_quantile(xi.y), lo, law.top);
-            b = original_defects ? floor(1.0f + g) : g * law.scale;
-        }
-        count += wc * b;
+        gate_xi[c] = xi.x;
+        gauss_xi[c] = xi.y;
     }
+    // The gates first, then a quantile for each open gate only: one pass of
+    // a do-while loop per open corner (at least one; see DELIOT2023 loops),
+    // so a block of pixels pays for as many quantiles as its lane with the
+    // most open corners, not 4 (sparse footprints and the NDF's tails open
+    // few). Back ends that branch skip the closed corners' quantiles either
+    // way (the CPU: -16 % of a deliot2023 render, docs/BENCHMARKS.md).
+    int open = (gate_xi.x < law.p_gate ? 1 : 0) | (gate_xi.y < law.p_gate ? 2 : 0) |
+               (gate_xi.z < law.p_gate ? 4 : 0) | (gate_xi.w < law.p_gate ? 8 : 0);
+    // Summed in corner order, as the counts always were (a closed corner
+    // added 0).
+    float count = 0.0f;
+    do {
+        int c = (open & 1) != 0 ? 0 : ((open & 2) != 0 ? 1 : ((open & 4) != 0 ? 2 : 3));
+        if (open != 0) {
+            float g = clamp(law.mean + law.sd * normal_quantile(gauss_xi[c]), lo, law.top);
+            count += weight[c] * (original_defects ? floor(1.0f + g) : g * law.scale);
+        }
+        open &= open - 1;
+    } while (open != 0);
     return count;
 }
 
@@ -475,7 +491,7 @@ Deliot2023PixelPart deliot2023_pixel_part(Deliot2023Grids grids, vec2 uv, float 
     // deliot2023_counts_of_part for why a loop and not a branch).
     int distinct_trials = density_randomization != 0.0f ? 3 : 1;
     int i = 0;
-    do {  // over the 4 grids; do-while: see DELIOT2023 loops above
+    do {  // over the 4 grids (see DELIOT2023 loops)
         if (!(grids.weight[i] > 0.0f)) {
             ++i;
             continue;
@@ -531,7 +547,7 @@ vec2 deliot2023_counts_of_part(Deliot2023PixelPart px, vec2 slope, float p, bool
                                bool conditional) {
     vec2 acc = vec2(0.0f);
     int i = 0;
-    do {  // over the 4 grids; do-while: see DELIOT2023 loops above
+    do {  // over the 4 grids (see DELIOT2023 loops)
         if (!(px.grids.weight[i] > 0.0f)) {
             ++i;
             continue;
@@ -630,14 +646,19 @@ vec2 deliot2023_trial_bounds(Deliot2023Grids grids, float log_density, float den
     float jitter = abs(density_randomization) * DELIOT2023_MAX_JITTER_Z;
     float most = 0.0f;
     float least = 3.4e38f;
-    for (int i = 0; i < 4; ++i) {
-        if (grids.weight[i] <= 0.0f) continue;
+    int i = 0;
+    do {  // over the 4 grids (see DELIOT2023 loops)
+        if (!(grids.weight[i] > 0.0f)) {
+            ++i;
+            continue;
+        }
         float lt = log_density + log(grids.weight[i]) +
                    float(2 * deliot2023_grid_id(grids, i).x + deliot2023_grid_id(grids, i).y) * DELIOT2023_LN2;
         most += 3.0f * exp(clamp(lt + jitter, -DELIOT2023_MAX_LOG_TRIALS, DELIOT2023_MAX_LOG_TRIALS));
         least = min(least, exp(clamp(lt - jitter, -DELIOT2023_MAX_LOG_TRIALS,
                                      DELIOT2023_MAX_LOG_TRIALS)));
-    }
+        ++i;
+    } while (i < 4);
     return vec2(most, least);
 }
 // 0: no exit; 1: exit (a), D_P = 0; 2: exit (b), D_P = D(h).
