@@ -84,19 +84,20 @@ def _shift_glint_seeds(doc, realization):
 
 
 def _render_task(doc_text, file, values, seed, res, spp, threads, realization=0):
-    """One render: the point's overrides (axis "model" switches every glint
-    material's model) on the base document, then realization r's glint
-    seeds. Returns (image, seconds)."""
+    """One render: the point's model (axis "model" switches every glint
+    material's model), then its overrides, on the base document, as
+    glintlab.render applies them; then realization r's glint seeds.
+    Returns (image, seconds)."""
     import glintlab
-    overrides = {k: v for k, v in values.items() if k != "model"}
     doc = json.loads(doc_text)
+    if values.get("model") is not None:
+        glintlab.set_model(doc, values["model"])
+    glintlab.apply_overrides(doc, {k: v for k, v in values.items() if k != "model"})
     if realization:
-        glintlab.apply_overrides(doc, overrides)
-        overrides = None
         _shift_glint_seeds(doc, realization)
     start = time.perf_counter()
-    image = glintlab.render(doc, model=values.get("model"), overrides=overrides, spp=spp,
-                            seed=seed, res=res, threads=threads, file=file, progress=False)
+    image = glintlab.render(doc, spp=spp, seed=seed, res=res, threads=threads, file=file,
+                            progress=False)
     return image, time.perf_counter() - start
 
 

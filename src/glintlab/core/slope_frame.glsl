@@ -28,10 +28,12 @@ vec3 slope_covariance(vec2 mean, vec2 second, float second_xy, bool correlated) 
 // bitangent_sign (n × t)) expressed in the shading frame (t, b = n × t, n),
 // after the two-sided flip that negates n and b (`back`): the slope's x
 // changes sign with the flip, its y with a mirrored bitangent.
+vec2 mean_slope_in_shading_frame(bool back, float bitangent_sign, vec2 mean) {
+    return mean * vec2(back ? -1.0f : 1.0f, bitangent_sign);
+}
 void slopes_in_shading_frame(bool back, float bitangent_sign, inout vec2 mean, inout vec3 cov) {
-    vec2 axes = vec2(back ? -1.0f : 1.0f, bitangent_sign);
-    mean *= axes;
-    cov.z *= axes.x * axes.y;
+    mean = mean_slope_in_shading_frame(back, bitangent_sign, mean);
+    cov.z *= (back ? -1.0f : 1.0f) * bitangent_sign;
 }
 
 // Tilts the frame (t, b, n) to the normal of slope `mean` in it,

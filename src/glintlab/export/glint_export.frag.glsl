@@ -217,10 +217,7 @@ vec3 glint_shade(vec3 p, vec3 n, vec3 dpdu, Footprint fp) {
     }
     if (g_glint_mean_slope != vec2(0.0f)) {
         // The normal map's mean normal (glint_set_inputs widened the lobe).
-        vec2 mean = g_glint_mean_slope;
-        vec3 unused = vec3(0.0f);
-        slopes_in_shading_frame(back, 1.0f, mean, unused);
-        tilt_frame_to_slope(mean, t, b, n);
+        tilt_frame_to_slope(mean_slope_in_shading_frame(back, 1.0f, g_glint_mean_slope), t, b, n);
     }
     vec3 wo = vec3(dot(wo_world, t), dot(wo_world, b), dot(wo_world, n));
     vec3 radiance = vec3(0.0f);
