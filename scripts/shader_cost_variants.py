@@ -78,9 +78,9 @@ VARIANTS = {
     "k_factor1": (
         "kneiphof2025 IBL: the glint factor replaced by 1 (smooth term and weight fetches kept)",
         [(KNEIPHOF,
-          "        factor = kneiphof2025_ibl_factor(fp, log_density, seed, screen_space_scale,\n"
-          "                                         density_randomization, levels, p_a, p_b, L_a, L_b,\n"
-          "                                         conditional);",
+          "        factor =\n"
+          "            kneiphof2025_ibl_factor(fp, log_density, seed, screen_space_scale,\n"
+          "                                    density_randomization, levels, p_a, p_b, L_a, L_b, conditional);",
           "        factor = min(1.0f, 1.0f + p_a.x + p_b.x + 1e-30f * float(seed));")]),
     "k_lobe_onelayer": (
         "kneiphof2025: the layer fetches read one layer (no blend of two)",

@@ -110,7 +110,9 @@ vec3 kneiphof2025_dfg_fetch(float cos_o, float roughness) {
 // A forward shader has no per-pixel stream: the midpoint of each stratum
 // (deterministic; differs from the CPU's jittered strata by the quadrature
 // error of 64 strata).
-vec2 kneiphof2025_cone_jitter() { return vec2(0.5f, 0.5f); }
+vec2 kneiphof2025_cone_jitter() {
+    return vec2(0.5f, 0.5f);
+}
 #endif
 
 const int KNEIPHOF2025_VARIANT_OURS = 0;
@@ -206,23 +208,31 @@ float kneiphof2025_weighted_multinomial_scaled(float N, float scale, int levels,
     float remaining = max(N, 0.0f);
     if (conditional) remaining = floor(remaining + hash_random(vs));
     float value = 0.0f;
-    for (int k = 0; k < levels - 1; ++k) {
-        float rest_k = kneiphof2025_level(rest_a, rest_b, k);
-        float q = rest_k > 0.0f ? clamp(kneiphof2025_level(p_a, p_b, k) / rest_k, 0.0f, 1.0f) : 0.0f;
-        float xi1 = hash_random(vs);
-        float xi2 = hash_random(vs);
-        // One law evaluation whichever case (a SIMD back end runs every
-        // side of a branch for a block of pixels): the complement's
-        // probability where the conditional law draws the complement.
-        bool complement = conditional && q > 0.5f;
-        float q_rest = rest_k > 0.0f
-                           ? clamp(kneiphof2025_level(rest_a, rest_b, k + 1) / rest_k, 0.0f, 1.0f)
-                           : 0.0f;
-        vec2 c = binomial_dual_gated_law(remaining, complement ? q_rest : q, xi1, xi2, true,
-                                         conditional);
-        if (complement) c = vec2(c.y, c.x);
-        value += kneiphof2025_level(L_a, L_b, k) * (c.x * scale);
-        remaining = c.y;
+    // do-while loops here and below: a for loop costs SIMD back ends one
+    // masked pass more (docs/ARCHITECTURE.md, "Writing shared code that SIMD
+    // back ends run fast").
+    if (levels > 1) {
+        int k = 0;
+        do {
+            float rest_k = kneiphof2025_level(rest_a, rest_b, k);
+            float q =
+                rest_k > 0.0f ? clamp(kneiphof2025_level(p_a, p_b, k) / rest_k, 0.0f, 1.0f) : 0.0f;
+            float xi1 = hash_random(vs);
+            float xi2 = hash_random(vs);
+            // One law evaluation whichever case (a SIMD back end runs every
+            // side of a branch for a block of pixels): the complement's
+            // probability where the conditional law draws the complement.
+            bool complement = conditional && q > 0.5f;
+            float q_rest = rest_k > 0.0f ? clamp(kneiphof2025_level(rest_a, rest_b, k + 1) / rest_k,
+                                                 0.0f, 1.0f)
+                                         : 0.0f;
+            vec2 c = binomial_dual_gated_law(remaining, complement ? q_rest : q, xi1, xi2, true,
+                                             conditional);
+            if (complement) c = vec2(c.y, c.x);
+            value += kneiphof2025_level(L_a, L_b, k) * (c.x * scale);
+            remaining = c.y;
+            ++k;
+        } while (k < levels - 1);
     }
     return value + kneiphof2025_level(L_a, L_b, levels - 1) * (remaining * scale);
 }
@@ -271,17 +281,20 @@ vec3 kneiphof2025_grid_multinomial(ivec3 id, float weight, vec2 uv, float log_de
                                    vec4 L_a, vec4 L_b, bool conditional) {
     Deliot2023Simplex s = deliot2023_simplex(id, weight, uv, log_density, seed);
     vec3 acc = vec3(0.0f);
-    for (int v = 0; v < 3; ++v) {
+    int v = 0;
+    do {
         float bv = s.beta[v];
-        if (bv <= 0.0f) continue;
-        uint vs = s.vertex_seed[v];
-        float N = deliot2023_vertex_trials(s.log_trials, density_randomization, vs);
-        float e = kneiphof2025_count_exponent(N);
-        float scale = ldexp(1.0f, -int(e));
-        float value = kneiphof2025_weighted_multinomial_scaled(N, scale, levels, p_a, p_b, L_a,
-                                                               L_b, conditional, vs);
-        acc = kneiphof2025_scaled_add(acc, bv * vec2(value, N * scale), e);
-    }
+        if (!(bv <= 0.0f)) {
+            uint vs = s.vertex_seed[v];
+            float N = deliot2023_vertex_trials(s.log_trials, density_randomization, vs);
+            float e = kneiphof2025_count_exponent(N);
+            float scale = ldexp(1.0f, -int(e));
+            float value = kneiphof2025_weighted_multinomial_scaled(N, scale, levels, p_a, p_b, L_a,
+                                                                   L_b, conditional, vs);
+            acc = kneiphof2025_scaled_add(acc, bv * vec2(value, N * scale), e);
+        }
+        ++v;
+    } while (v < 3);
     return acc;
 }
 
@@ -289,19 +302,22 @@ vec3 kneiphof2025_grid_multinomial(ivec3 id, float weight, vec2 uv, float log_de
 // its expected value; mean 1 over realisations (Eq. 33). 1 where nothing
 // reflects (then the smooth radiance is 0 as well).
 float kneiphof2025_ibl_factor(Footprint fp, float log_density, uint seed, float screen_space_scale,
-                              float density_randomization, int levels, vec4 p_a, vec4 p_b,
-                              vec4 L_a, vec4 L_b, bool conditional) {
+                              float density_randomization, int levels, vec4 p_a, vec4 p_b, vec4 L_a,
+                              vec4 L_b, bool conditional) {
     float expected = dot(p_a, L_a) + (levels > 4 ? dot(p_b, L_b) : 0.0f);
     if (!(expected > 0.0f)) return 1.0f;
     Deliot2023Grids grids = deliot2023_footprint_grids(fp, screen_space_scale, false);
     vec3 acc = vec3(0.0f);
-    for (int i = 0; i < 4; ++i) {
-        if (grids.weight[i] <= 0.0f) continue;
-        vec3 g = kneiphof2025_grid_multinomial(deliot2023_grid_id(grids, i), grids.weight[i], fp.uv, log_density,
-                                               seed, density_randomization, levels, p_a, p_b, L_a,
-                                               L_b, conditional);
-        acc = kneiphof2025_scaled_add(acc, vec2(g.x, g.y), g.z);
-    }
+    int i = 0;
+    do {
+        if (!(grids.weight[i] <= 0.0f)) {
+            vec3 g = kneiphof2025_grid_multinomial(deliot2023_grid_id(grids, i), grids.weight[i],
+                                                   fp.uv, log_density, seed, density_randomization,
+                                                   levels, p_a, p_b, L_a, L_b, conditional);
+            acc = kneiphof2025_scaled_add(acc, vec2(g.x, g.y), g.z);
+        }
+        ++i;
+    } while (i < 4);
     return acc.y > 0.0f ? kneiphof2025_count_ratio(acc.x, acc.y, expected) : 1.0f;
 }
 
@@ -318,9 +334,14 @@ float kneiphof2025_binomial_factor_no_h(Footprint fp, float p, float log_density
     if (!(p > 0.0f)) return 1.0f;
     Deliot2023Grids grids = deliot2023_footprint_grids(fp, screen_space_scale, false);
     vec2 acc = vec2(0.0f);
-    for (int i = 0; i < 4; ++i) {
-        if (grids.weight[i] <= 0.0f) continue;
-        Deliot2023Simplex s = deliot2023_simplex(deliot2023_grid_id(grids, i), grids.weight[i], fp.uv, log_density, seed);
+    int i = 0;
+    do {
+        if (grids.weight[i] <= 0.0f) {
+            ++i;
+            continue;
+        }
+        Deliot2023Simplex s = deliot2023_simplex(deliot2023_grid_id(grids, i), grids.weight[i],
+                                                 fp.uv, log_density, seed);
         for (int v = 0; v < 3; ++v) {
             float bv = s.beta[v];
             if (bv <= 0.0f) continue;
@@ -334,7 +355,8 @@ float kneiphof2025_binomial_factor_no_h(Footprint fp, float p, float log_density
             vec2 c = binomial_dual_gated_law(n_trials, p, xi1, xi2, conditional, conditional);
             acc += bv * vec2(c.x, N);
         }
-    }
+        ++i;
+    } while (i < 4);
     return acc.y > 0.0f ? kneiphof2025_count_ratio(acc.x, acc.y, p) : 1.0f;
 }
 
@@ -351,11 +373,14 @@ float kneiphof2025_area_factor(vec3 h_center, Footprint fp, float p, float log_d
     Deliot2023Grids grids = deliot2023_footprint_grids(fp, screen_space_scale, false);
     vec2 slope = vec2(h_center.x, h_center.y) / microfacet_roughness;
     vec2 acc = vec2(0.0f);
-    for (int i = 0; i < 4; ++i) {
-        if (grids.weight[i] <= 0.0f) continue;
-        acc += deliot2023_grid_counts(deliot2023_grid_id(grids, i), grids.weight[i], fp.uv, slope, p, log_density, seed,
-                                      density_randomization, false, conditional);
-    }
+    int i = 0;
+    do {
+        if (!(grids.weight[i] <= 0.0f))
+            acc += deliot2023_grid_counts(deliot2023_grid_id(grids, i), grids.weight[i], fp.uv,
+                                          slope, p, log_density, seed, density_randomization, false,
+                                          conditional);
+        ++i;
+    } while (i < 4);
     return acc.y > 0.0f ? kneiphof2025_count_ratio(acc.x, acc.y, p) : 1.0f;
 }
 
@@ -441,7 +466,8 @@ vec3 kneiphof2025_area_light(vec3 axis, float cos_max, vec3 radiance, vec3 t, ve
     vec3 L = kneiphof2025_integrate_cone(axis, cos_max, radiance, t, b, n, wo, alpha, f0, color, p,
                                          h_center);
     if ((L.x == 0.0f && L.y == 0.0f && L.z == 0.0f) || h_center.z <= 0.0f) return vec3(0.0f);
-    float grid_r = kneiphof2025_area_grid_roughness(cos_max, microfacet_roughness, light_sized_grid);
+    float grid_r =
+        kneiphof2025_area_grid_roughness(cos_max, microfacet_roughness, light_sized_grid);
     return L * kneiphof2025_area_factor(h_center, fp, p, log_density, seed, grid_r,
                                         screen_space_scale, density_randomization, conditional);
 }
@@ -535,8 +561,8 @@ vec3 kneiphof2025_lobe_radiance_of(vec3 n, vec3 wr, float cos_o, float alpha, bo
         float pdf = g1 * D_Microfacet(NDF_GGX, h, alpha, alpha) / (4.0f * wo.z);
         float omega = 1.0f / (float(KNEIPHOF2025_LOBE_SAMPLES) * max(pdf, 1e-6f));
         float level = min(sqrt(sqrt(omega / (4.0f * PI))), roughness);
-        sum += g2 * kneiphof2025_lobe_fetch(wi.x * t + wi.y * b + wi.z * n, level, residual,
-                                            sun_color);
+        sum += g2 *
+               kneiphof2025_lobe_fetch(wi.x * t + wi.y * b + wi.z * n, level, residual, sun_color);
         weight += g2;
     }
     if (!(weight > 0.0f))
@@ -592,10 +618,10 @@ vec3 kneiphof2025_smooth_radiance(vec3 n, vec3 wr, float cos_o, float alpha, vec
         return e_rho * kneiphof2025_lobe_radiance_of(n, wr, cos_o, alpha, true, sun_color) +
                color * kneiphof2025_sun_radiance(n, wr, cos_o, alpha, f0);
     }
-    vec3 radiance = smooth_mode == KNEIPHOF2025_SMOOTH_LOBE
-                        ? kneiphof2025_lobe_radiance(n, wr, cos_o, alpha)
-                        : kneiphof2025_radiance_fetch(kneiphof2025_lookup_direction(n, wr, alpha),
-                                                      roughness);
+    vec3 radiance =
+        smooth_mode == KNEIPHOF2025_SMOOTH_LOBE
+            ? kneiphof2025_lobe_radiance(n, wr, cos_o, alpha)
+            : kneiphof2025_radiance_fetch(kneiphof2025_lookup_direction(n, wr, alpha), roughness);
     return e_rho * radiance;
 }
 
@@ -607,8 +633,8 @@ vec3 kneiphof2025_smooth_radiance(vec3 n, vec3 wr, float cos_o, float alpha, vec
 // gamma_solid_angle around the mirror direction; conditional: the Gaussian
 // moments of binomial_dual_gated_conditional instead of Algorithm 1's;
 // smooth_mode: KNEIPHOF2025_SMOOTH_SPLIT_SUM, _LOBE or _LOBE_SUN (the smooth term).
-vec3 kneiphof2025_environment(vec3 n, vec3 wr, float cos_o, float alpha, vec3 f0, vec3 color, Footprint fp,
-                              float log_density, uint seed, float screen_space_scale,
+vec3 kneiphof2025_environment(vec3 n, vec3 wr, float cos_o, float alpha, vec3 f0, vec3 color,
+                              Footprint fp, float log_density, uint seed, float screen_space_scale,
                               float density_randomization, int levels, vec4 L_a, vec4 L_b,
                               int variant, float gamma_solid_angle, bool conditional,
                               int smooth_mode) {
@@ -624,8 +650,8 @@ vec3 kneiphof2025_environment(vec3 n, vec3 wr, float cos_o, float alpha, vec3 f0
         // mirror direction, p = D(n) Omega_gamma / (4 cos_o D_H) (Eq. 8-9 with
         // h = n), capped by the visible reflecting area.
         float d_n = 1.0f / (PI * alpha * alpha);
-        float p = min(d_n * gamma_solid_angle / (4.0f * cos_o * kneiphof2025_total_facet_area(alpha)),
-                      dfg.z);
+        float p = min(
+            d_n * gamma_solid_angle / (4.0f * cos_o * kneiphof2025_total_facet_area(alpha)), dfg.z);
         factor = kneiphof2025_binomial_factor_no_h(fp, p, log_density, seed, screen_space_scale,
                                                    density_randomization, conditional);
     } else {
@@ -634,9 +660,9 @@ vec3 kneiphof2025_environment(vec3 n, vec3 wr, float cos_o, float alpha, vec3 f0
         vec4 p_a;
         vec4 p_b;
         kneiphof2025_probabilities(w_a, w_b, levels, dfg.z, p_a, p_b);
-        factor = kneiphof2025_ibl_factor(fp, log_density, seed, screen_space_scale,
-                                         density_randomization, levels, p_a, p_b, L_a, L_b,
-                                         conditional);
+        factor =
+            kneiphof2025_ibl_factor(fp, log_density, seed, screen_space_scale,
+                                    density_randomization, levels, p_a, p_b, L_a, L_b, conditional);
     }
     return smooth_radiance * factor;
 }

@@ -78,7 +78,16 @@ float zirr2016_cell_law(float N, float p, uint cell_hash) {
     int trials = int(min(ceil(n), 16.0f));
     float q = trials > 0 ? n * p / float(trials) : 0.0f;
     float count = 0.0f;
-    for (int k = 0; k < trials; ++k) count += hash_random(s) < q ? 1.0f : 0.0f;
+    // do-while loops here and below: a for loop costs SIMD back ends one
+    // masked pass more (docs/ARCHITECTURE.md, "Writing shared code that SIMD
+    // back ends run fast").
+    if (trials > 0) {
+        int k = 0;
+        do {
+            count += hash_random(s) < q ? 1.0f : 0.0f;
+            ++k;
+        } while (k < trials);
+    }
     return count;
 }
 
@@ -95,12 +104,15 @@ float zirr2016_texel_count(ivec2 t, int l, vec2 slope, float N, float p, uint se
     ivec2 ac = ivec2(af);
     vec2 f = clamp(a - af, 0.0f, 1.0f);
     float count = 0.0f;
-    for (int c = 0; c < 4; ++c) {
+    int c = 0;
+    do {
         ivec2 corner = ac + ivec2(c & 1, c >> 1);
         float wc = ((c & 1) == 1 ? f.x : 1.0f - f.x) * ((c >> 1) == 1 ? f.y : 1.0f - f.y);
-        if (wc <= 0.0f) continue;
-        count += wc * zirr2016_cell_law(N, p, hash_cell(corner & ivec2(ZIRR2016_LATTICE_MASK), ts));
-    }
+        if (!(wc <= 0.0f))
+            count +=
+                wc * zirr2016_cell_law(N, p, hash_cell(corner & ivec2(ZIRR2016_LATTICE_MASK), ts));
+        ++c;
+    } while (c < 4);
     return count;
 }
 
@@ -137,8 +149,8 @@ float zirr2016_ndf(vec3 h, Footprint fp, int ndf, float alpha_x, float alpha_y, 
     // Trials per texel: density x texel area 2^(2l) (004 §2).
     float log_bottom = log_density + float(2 * l0) * ZIRR2016_LN2;
     float n_bottom = exp(clamp(log_bottom, -ZIRR2016_MAX_LOG_TRIALS, ZIRR2016_MAX_LOG_TRIALS));
-    float n_top = exp(clamp(log_bottom + 2.0f * ZIRR2016_LN2, -ZIRR2016_MAX_LOG_TRIALS,
-                            ZIRR2016_MAX_LOG_TRIALS));
+    float n_top = exp(
+        clamp(log_bottom + 2.0f * ZIRR2016_LN2, -ZIRR2016_MAX_LOG_TRIALS, ZIRR2016_MAX_LOG_TRIALS));
 
 #ifdef GLINTLAB_ZIRR2016_EXPECTATION_EXIT
     // GPU glue: where the footprint's 2 x 4 x steps angular cells hold fewer
@@ -153,7 +165,8 @@ float zirr2016_ndf(vec3 h, Footprint fp, int ndf, float alpha_x, float alpha_y, 
     vec2 slope = vec2(h.x, h.y) / R;
     vec2 dir = vec2(cos(axes.z), sin(axes.z));
     float count = 0.0f;
-    for (int k = 0; k < steps; ++k) {
+    int k = 0;
+    do {  // steps >= 1
         vec2 uv = fp.uv + dir * (major * ((float(k) + 0.5f) / float(steps) - 0.5f));
         float c_bottom = 0.0f;
         float c_top = 0.0f;
@@ -164,7 +177,8 @@ float zirr2016_ndf(vec3 h, Footprint fp, int ndf, float alpha_x, float alpha_y, 
             c_top = zirr2016_texel_count(zirr2016_texel(uv, l0 + 1), l0 + 1, slope, n_top, p, seed);
         }
         count += mix(c_bottom, c_top, w);  // Eq. 7: output blending
-    }
+        ++k;
+    } while (k < steps);
     float trials = float(steps) * mix(n_bottom, n_top, w);
     // Eq. 3-4: D(n)/R x count/trials, whose mean is D(h) up to Eq. 15's floor (Eq. 5-6).
     return trials > 0.0f ? d_n / R * (count / trials) : d_h;
