@@ -129,6 +129,17 @@ BENCHMARK(BM_Jakob2014IntegralTable)
     ->Arg(810)
     ->Unit(benchmark::kMillisecond);
 
+// One-thread renders of `scene` per iteration, counted in samples.
+void render_for(benchmark::State& state, const Scene& scene) {
+    const Accelerator accel(scene);
+    for (auto _ : state) {
+        Image image = render_scene(scene, accel, RenderOptions{1, true});
+        benchmark::DoNotOptimize(image.pixels.data());
+    }
+    state.SetItemsProcessed(state.iterations() * scene.camera.width * scene.camera.height *
+                            scene.render.spp);
+}
+
 // scenes/jakob2014_plane.json at 192 x 128, 4 spp, one thread: jakob2014 vs
 // the same scene with every glint material switched to `smooth`.
 void BM_Jakob2014Render(benchmark::State& state, bool smooth) {
@@ -143,13 +154,7 @@ void BM_Jakob2014Render(benchmark::State& state, bool smooth) {
                 m.glint.model_id = GlintModelId::Smooth;
                 m.glint.params = SmoothParams{};
             }
-    const Accelerator accel(scene);
-    for (auto _ : state) {
-        Image image = render_scene(scene, accel, RenderOptions{1, true});
-        benchmark::DoNotOptimize(image.pixels.data());
-    }
-    state.SetItemsProcessed(state.iterations() * scene.camera.width * scene.camera.height *
-                            scene.render.spp);
+    render_for(state, scene);
 }
 BENCHMARK_CAPTURE(BM_Jakob2014Render, jakob2014, false)->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(BM_Jakob2014Render, smooth, true)->Unit(benchmark::kMillisecond);
@@ -173,13 +178,7 @@ void BM_Jakob2014DefaultScene(benchmark::State& state, bool smooth) {
                 p.query_area = 1e-4;
                 m.glint.params = p;
             }
-    const Accelerator accel(scene);
-    for (auto _ : state) {
-        Image image = render_scene(scene, accel, RenderOptions{1, true});
-        benchmark::DoNotOptimize(image.pixels.data());
-    }
-    state.SetItemsProcessed(state.iterations() * scene.camera.width * scene.camera.height *
-                            scene.render.spp);
+    render_for(state, scene);
 }
 BENCHMARK_CAPTURE(BM_Jakob2014DefaultScene, jakob2014, false)->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(BM_Jakob2014DefaultScene, smooth, true)->Unit(benchmark::kMillisecond);

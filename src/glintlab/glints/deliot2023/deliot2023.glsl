@@ -124,7 +124,8 @@ int deliot2023_orientation_bins(int k) {
 // neighbouring cells, so the weights are continuous everywhere.
 // LOD and ratio coordinates are linear in cell AREA, as Eq. 10 distributes the
 // footprint area P between P_bottom and P_top = 4 P_bottom (Eq. 13): t = (P/P_bottom - 1)/3.
-Deliot2023Grids deliot2023_select_grids(float lod, float ratio, float angle, bool original_defects) {
+Deliot2023Grids deliot2023_select_grids(float lod, float ratio, float angle,
+                                        bool original_defects) {
     int l0;
     float f;
     if (original_defects) {
@@ -136,7 +137,8 @@ Deliot2023Grids deliot2023_select_grids(float lod, float ratio, float angle, boo
     }
     float t_lod = (exp2(2.0f * f) - 1.0f) / 3.0f;
 
-    int max_level = original_defects ? DELIOT2023_MAX_RATIO_LEVEL_ORIGINAL : DELIOT2023_MAX_RATIO_LEVEL;
+    int max_level =
+        original_defects ? DELIOT2023_MAX_RATIO_LEVEL_ORIGINAL : DELIOT2023_MAX_RATIO_LEVEL;
     float r = clamp(ratio, 1.0f, exp2(float(max_level)));
     int k = min(int(floor(log2(r))), max_level);
     float t_r = k >= max_level ? 0.0f : clamp(r / exp2(float(k)) - 1.0f, 0.0f, 1.0f);
@@ -264,7 +266,8 @@ struct Deliot2023Simplex {
     float log_trials;
 };
 
-Deliot2023Simplex deliot2023_simplex(ivec3 id, float weight, vec2 uv, float log_density, uint seed) {
+Deliot2023Simplex deliot2023_simplex(ivec3 id, float weight, vec2 uv, float log_density,
+                                     uint seed) {
     int l = id.x;
     int k = id.y;
     float phi = float(id.z) * PI / float(deliot2023_orientation_bins(k));
@@ -274,7 +277,8 @@ Deliot2023Simplex deliot2023_simplex(ivec3 id, float weight, vec2 uv, float log_
     float inv_s = exp2(-float(l));
     float inv_r = exp2(-float(k));
     vec2 major_dir = vec2(cos(phi), sin(phi));
-    vec2 q = vec2(dot(uv, major_dir) * inv_r * inv_s, (uv.y * major_dir.x - uv.x * major_dir.y) * inv_s);
+    vec2 q =
+        vec2(dot(uv, major_dir) * inv_r * inv_s, (uv.y * major_dir.x - uv.x * major_dir.y) * inv_s);
     // §6.2: unit-area triangular lattice with basis (a, 0), (a/2, a sqrt(3)/2),
     // a = sqrt(2/sqrt(3)); g = lattice coordinates, plus a per-grid offset so
     // that vertices of different grids do not line up.
@@ -327,7 +331,8 @@ Deliot2023Simplex deliot2023_simplex(ivec3 id, float weight, vec2 uv, float log_
 // stream advances as with jitter.
 float deliot2023_vertex_trials(float log_trials, float density_randomization, INOUT(uint) vs) {
     float xi = hash_random(vs);
-    float jitter = density_randomization != 0.0f ? density_randomization * normal_quantile(xi) : 0.0f;
+    float jitter =
+        density_randomization != 0.0f ? density_randomization * normal_quantile(xi) : 0.0f;
     return exp(clamp(log_trials + jitter, -DELIOT2023_MAX_LOG_TRIALS, DELIOT2023_MAX_LOG_TRIALS));
 }
 
@@ -416,8 +421,9 @@ float deliot2023_vertex_count_of_law(SingleGatedLaw law, vec2 angular_offset, ui
 // deliot2023_vertex_draws.
 float deliot2023_vertex_count(float N, vec2 angular_offset, uint vs, vec2 slope, float p,
                               bool original_defects, bool conditional) {
-    return deliot2023_vertex_count_of_law(deliot2023_vertex_law(N, p, original_defects, conditional),
-                                          angular_offset, vs, slope, original_defects);
+    return deliot2023_vertex_count_of_law(
+        deliot2023_vertex_law(N, p, original_defects, conditional), angular_offset, vs, slope,
+        original_defects);
 }
 
 // Counts of one grid (Eq. 14 per simplex vertex), accumulated into
@@ -496,8 +502,8 @@ Deliot2023PixelPart deliot2023_pixel_part(Deliot2023Grids grids, vec2 uv, float 
             ++i;
             continue;
         }
-        Deliot2023Simplex s =
-            deliot2023_simplex(deliot2023_grid_id(grids, i), grids.weight[i], uv, log_density, seed);
+        Deliot2023Simplex s = deliot2023_simplex(deliot2023_grid_id(grids, i), grids.weight[i], uv,
+                                                 log_density, seed);
         // Each vertex's stream: its trials' number first (deliot2023_vertex_trials),
         // then its angular offset (deliot2023_vertex_draws).
         uint vs0 = s.vertex_seed[0];
@@ -582,20 +588,20 @@ vec2 deliot2023_counts_of_part(Deliot2023PixelPart px, vec2 slope, float p, bool
         }
         vec2 grid = vec2(0.0f);  // one grid's sum first, as deliot2023_grid_counts
         if (px.beta0[i] > 0.0f)
-            grid += px.beta0[i] *
-                    vec2(deliot2023_vertex_count_of_law(law0, vec2(px.offset_x0[i], px.offset_y0[i]),
-                                                        px.stream0[i], slope, original_defects),
-                         px.trials0[i]);
+            grid += px.beta0[i] * vec2(deliot2023_vertex_count_of_law(
+                                           law0, vec2(px.offset_x0[i], px.offset_y0[i]),
+                                           px.stream0[i], slope, original_defects),
+                                       px.trials0[i]);
         if (px.beta1[i] > 0.0f)
-            grid += px.beta1[i] *
-                    vec2(deliot2023_vertex_count_of_law(law1, vec2(px.offset_x1[i], px.offset_y1[i]),
-                                                        px.stream1[i], slope, original_defects),
-                         px.trials1[i]);
+            grid += px.beta1[i] * vec2(deliot2023_vertex_count_of_law(
+                                           law1, vec2(px.offset_x1[i], px.offset_y1[i]),
+                                           px.stream1[i], slope, original_defects),
+                                       px.trials1[i]);
         if (px.beta2[i] > 0.0f)
-            grid += px.beta2[i] *
-                    vec2(deliot2023_vertex_count_of_law(law2, vec2(px.offset_x2[i], px.offset_y2[i]),
-                                                        px.stream2[i], slope, original_defects),
-                         px.trials2[i]);
+            grid += px.beta2[i] * vec2(deliot2023_vertex_count_of_law(
+                                           law2, vec2(px.offset_x2[i], px.offset_y2[i]),
+                                           px.stream2[i], slope, original_defects),
+                                       px.trials2[i]);
         acc += grid;
         ++i;
     } while (i < 4);
@@ -604,7 +610,8 @@ vec2 deliot2023_counts_of_part(Deliot2023PixelPart px, vec2 slope, float p, bool
 
 // The 4 grids of a pixel footprint (§5.1-5.2): ellipse axes, anisotropy
 // ratio and LOD, then deliot2023_select_grids. Shared with kneiphof2025.
-Deliot2023Grids deliot2023_footprint_grids(Footprint fp, float screen_space_scale, bool original_defects) {
+Deliot2023Grids deliot2023_footprint_grids(Footprint fp, float screen_space_scale,
+                                           bool original_defects) {
     vec3 ellipse = deliot2023_footprint_ellipse(fp.duvdx, fp.duvdy, original_defects);
     float major = max(ellipse.y, 1e-30f);
     float minor = max(ellipse.x, major * 1e-30f);
@@ -642,7 +649,8 @@ Deliot2023Grids deliot2023_footprint_grids(Footprint fp, float screen_space_scal
 const float DELIOT2023_MAX_JITTER_Z = 5.3f;  // normal_quantile(1 - 2^-24) = 5.29
 // (bound above of the sum of the vertices' trials, bound below of one
 // vertex's trials): the half-vector-free part of the exit test.
-vec2 deliot2023_trial_bounds(Deliot2023Grids grids, float log_density, float density_randomization) {
+vec2 deliot2023_trial_bounds(Deliot2023Grids grids, float log_density,
+                             float density_randomization) {
     float jitter = abs(density_randomization) * DELIOT2023_MAX_JITTER_Z;
     float most = 0.0f;
     float least = 3.4e38f;
@@ -653,10 +661,12 @@ vec2 deliot2023_trial_bounds(Deliot2023Grids grids, float log_density, float den
             continue;
         }
         float lt = log_density + log(grids.weight[i]) +
-                   float(2 * deliot2023_grid_id(grids, i).x + deliot2023_grid_id(grids, i).y) * DELIOT2023_LN2;
-        most += 3.0f * exp(clamp(lt + jitter, -DELIOT2023_MAX_LOG_TRIALS, DELIOT2023_MAX_LOG_TRIALS));
-        least = min(least, exp(clamp(lt - jitter, -DELIOT2023_MAX_LOG_TRIALS,
-                                     DELIOT2023_MAX_LOG_TRIALS)));
+                   float(2 * deliot2023_grid_id(grids, i).x + deliot2023_grid_id(grids, i).y) *
+                       DELIOT2023_LN2;
+        most +=
+            3.0f * exp(clamp(lt + jitter, -DELIOT2023_MAX_LOG_TRIALS, DELIOT2023_MAX_LOG_TRIALS));
+        least = min(least,
+                    exp(clamp(lt - jitter, -DELIOT2023_MAX_LOG_TRIALS, DELIOT2023_MAX_LOG_TRIALS)));
         ++i;
     } while (i < 4);
     return vec2(most, least);
@@ -672,7 +682,8 @@ int deliot2023_bounds_exit(vec2 bounds, float p) {
 }
 int deliot2023_expectation_exit(Deliot2023Grids grids, float p, float log_density,
                                 float density_randomization) {
-    return deliot2023_bounds_exit(deliot2023_trial_bounds(grids, log_density, density_randomization), p);
+    return deliot2023_bounds_exit(
+        deliot2023_trial_bounds(grids, log_density, density_randomization), p);
 }
 // D_P at an exit.
 float deliot2023_exit_value(int exit_kind, float d_h) {
@@ -783,8 +794,8 @@ float deliot2023_ndf(vec3 h, Footprint fp, int ndf, float alpha_x, float alpha_y
 // noisier (one grid's counts over a share of the trials).
 float deliot2023_ndf_stochastic(vec3 h, Footprint fp, int ndf, float alpha_x, float alpha_y,
                                 float log_density, uint seed, float microfacet_roughness,
-                                float screen_space_scale, float density_randomization, bool conditional,
-                                float u) {
+                                float screen_space_scale, float density_randomization,
+                                bool conditional, float u) {
     float d_h = D_Microfacet(ndf, h, alpha_x, alpha_y);
     if (!(d_h > 0.0f)) return 0.0f;
     float d_n = D_Microfacet(ndf, vec3(0.0f, 0.0f, 1.0f), alpha_x, alpha_y);
