@@ -2,6 +2,7 @@
 // hooks (window.glintlab). docs/WEB.md describes the URL parameters.
 
 import {makeQuad, makeSphere} from './geometry.js';
+import {AssetError, readGlb} from './gltf_asset.js';
 import {ExportedModel, fresnelDiffers, glintBlurTaps} from './model.js';
 import {MATERIAL_MAPS} from './material_maps.js';
 import {NORMAL_MAPS} from './normal_map.js';
@@ -207,6 +208,10 @@ class App {
     this.canvas = document.getElementById('canvas');
     this.errorBox = document.getElementById('error');
     this.readout = document.getElementById('frame-time');
+    this.assetStatus = document.getElementById('asset-status');
+    this.asset = null;          // a loaded .glb (gltf_asset.js), drawn in place of the shape
+    this.assetError = null;
+    this.assetLoading = false;
     this.models = new Map();  // name -> ExportedModel (loaded)
     this.info = null;         // glintlab info --json, written beside the exports
     this.dirty = true;
@@ -282,8 +287,44 @@ class App {
 
   setShape(shape) {
     this.state.shape = shape;
+    this.asset = null;
+    this.assetStatus.textContent = '';
     this.renderer.setMesh(SHAPES[shape].mesh());
     this.dirty = true;
+  }
+
+  // A user's .glb (file picker or drop): drawn with its materials' maps in
+  // place of the shape, framed by the camera. A file the page cannot read
+  // is an error in the page's error box; the current view stays.
+  async loadAsset(file) {
+    this.assetError = null;
+    this.assetLoading = true;
+    try {
+      const asset = await readGlb(await file.arrayBuffer(), file.name);
+      this.renderer.setMesh(asset);
+      this.asset = asset;
+      const {centre, radius} = asset.bounds;
+      const s = this.state;
+      s.camera.target = centre.slice();
+      s.camera.eye = [centre[0], centre[1] + 0.9 * radius, centre[2] + 2.4 * radius];
+      // The plane's light: from behind the asset, so that its upward faces
+      // reflect it towards the camera as the plane's glints do.
+      s.light.direction = SHAPES.plane.light.slice();
+      s.light.irradiance = SHAPES.plane.irradiance;
+      this.assetStatus.textContent = `${file.name}: ${asset.triangles} triangles, ` +
+          `${asset.parts.length} material${asset.parts.length > 1 ? 's' : ''}, whose colour ` +
+          'and roughness replace the panel\'s' +
+          (asset.warnings.length ? ` (${asset.warnings.join('; ')})` : '');
+      this.errorBox.hidden = true;
+      this.changed();
+    } catch (e) {
+      if (!(e instanceof AssetError)) console.error(e);
+      this.assetError = e instanceof Error ? e.message : String(e);
+      this.errorBox.hidden = false;
+      this.errorBox.textContent = this.assetError;
+    } finally {
+      this.assetLoading = false;
+    }
   }
 
   async setModel(name) {
@@ -368,7 +409,7 @@ class App {
       : null;
     this.renderer.render({
       camera: s.camera, exposure: s.exposure, environment: env,
-      bindResources: (r, prog, part) => this.model.bind(r, prog, s, part),
+      bindResources: (r, prog, part, k) => this.model.bind(r, prog, s, part, this.asset?.parts[k]),
       // The glint layer only where the environment lights the model.
       glintBlurTaps: s.environment.on && this.model.environmentLit
         ? glintBlurTaps(this.model, s.params) : 1,
@@ -433,6 +474,18 @@ class App {
     const normalSelect = document.getElementById('normal-map');
     normalSelect.value = s.normalMap;
     normalSelect.onchange = () => { s.normalMap = normalSelect.value; this.changed(); };
+    // A .glb by the file picker or dropped on the image.
+    const assetInput = document.getElementById('asset');
+    assetInput.onchange = () => {
+      if (assetInput.files.length) this.loadAsset(assetInput.files[0]);
+    };
+    const dropZone = document.getElementById('view');
+    dropZone.ondragover = (e) => e.preventDefault();
+    dropZone.ondrop = (e) => {
+      e.preventDefault();
+      const file = e.dataTransfer?.files?.[0];
+      if (file) this.loadAsset(file);
+    };
     const texturesSelect = document.getElementById('textures');
     texturesSelect.value = s.textures;
     texturesSelect.onchange = () => { s.textures = texturesSelect.value; this.changed(); };
@@ -614,7 +667,17 @@ function parseParam(p, raw) {
 // Test hooks (web/tests): readiness, errors, frame count, the HDR frame.
 const app = new App();
 window.glintlab = {
-  get ready() { return app.ready && app.frames > 0 && !app.dirty; },
+  get ready() { return app.ready && app.frames > 0 && !app.dirty && !app.assetLoading; },
+  // The loaded glTF asset (null without one) and the last asset error.
+  get asset() {
+    const a = app.asset;
+    return a ? {name: a.name, triangles: a.triangles, uvMirrored: a.uvMirrored,
+                warnings: a.warnings.slice(),
+                materials: a.parts.map((p) => ({name: p.material.name,
+                                                maps: Object.keys(p.material.maps)}))}
+             : null;
+  },
+  get assetError() { return app.assetError ?? null; },
   get error() { return app.error ?? null; },
   get glErrors() { return app.glErrors.slice(); },
   get frames() { return app.frames; },

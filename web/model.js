@@ -6,6 +6,7 @@
 // host-computed uniforms listed below).
 
 import {materialTextures} from './material_maps.js';
+import {oncePerContext, uploadMipmapped} from './mip_texture.js';
 import {leanTexture} from './normal_map.js';
 
 // Model parameters the exported shader does not read under their own name
@@ -227,21 +228,41 @@ export class ExportedModel {
   // binds the resources; called by Renderer.render before the draw, for
   // `part` of the lighting: 'all', 'lights' (no environment) or
   // 'environment' (only it: wang2020's glint layer).
-  bind(renderer, prog, state, part = 'all') {
+  bind(renderer, prog, state, part = 'all', asset = null) {
     const gl = renderer.gl;
     const set = (name, value) => renderer.setUniform(prog, name, value);
     const m = state.material;
     set('u_glint_ndf', m.ndf === 'ggx' ? 1 : 0);
-    set('u_glint_alpha', m.roughness);
     set('u_glint_log_density', m.log_density);
     set('u_glint_seed', m.seed);
-    set('u_glint_color', m.color);
-    set('u_glint_base_albedo', [0, 0, 0]);
-    set('u_fresnel_mode', FRESNEL_MODE[m.fresnel.type]);
-    set('u_fresnel_f0', m.fresnel.f0 ?? [0, 0, 0]);
-    const eta = m.fresnel.eta ?? 1.5;
+    // A glTF asset's part (gltf_asset.js): its material's colour, roughness,
+    // base albedo and Fresnel (a map's mean where the model reads no map per
+    // pixel), unless the export fixes them (wang2020's tables).
+    const am = asset?.material ?? null;
+    const maps = am?.maps ?? {};
+    const perPixel = (bit, map) => map && this.perPixelInputs.has(bit);
+    let color = m.color, alpha = m.roughness;
+    if (am && !('color' in this.fixedMaterial))
+      color = maps.color && !perPixel(2, maps.color) ? meanRgb(maps.color) : am.color;
+    if (am && !('roughness' in this.fixedMaterial)) {
+      const a = maps.alpha && !perPixel(1, maps.alpha) ? Math.sqrt(meanR(maps.alpha)) : am.alpha;
+      alpha = [a, a];
+    }
+    set('u_glint_alpha', alpha);
+    set('u_glint_color', color);
+    // A dielectric asset material: its base colour as the base albedo under
+    // its own dielectric Fresnel.
+    let baseAlbedo = [0, 0, 0];
+    if (am?.baseAlbedo)
+      baseAlbedo = maps.baseAlbedo && !perPixel(3, maps.baseAlbedo) ? meanRgb(maps.baseAlbedo)
+                                                                    : am.baseAlbedo;
+    set('u_glint_base_albedo', baseAlbedo);
+    const fresnel = am?.fresnel && !('fresnel' in this.fixedMaterial) ? am.fresnel : m.fresnel;
+    set('u_fresnel_mode', FRESNEL_MODE[fresnel.type]);
+    set('u_fresnel_f0', fresnel.f0 ?? [0, 0, 0]);
+    const eta = fresnel.eta ?? 1.5;
     set('u_fresnel_eta', Array.isArray(eta) ? eta : [eta, eta, eta]);
-    set('u_fresnel_k', m.fresnel.k ?? [0, 0, 0]);
+    set('u_fresnel_k', fresnel.k ?? [0, 0, 0]);
     // chermain2020's P-NDF has the V-cavity masking (004 Eq. 14-16), every
     // other model the height-correlated Smith G2 (the export's header).
     set('u_glint_g2', this.name === 'chermain2020' ? 1 : 0);
@@ -295,7 +316,23 @@ export class ExportedModel {
     for (const name of ['u_input_density', 'u_input_alpha', 'u_input_color',
                         'u_input_base_albedo', 'u_input_normal_slopes']) set(name, inputUnit);
     let mask = 0;
-    if (state.textures !== 'none') {
+    const linear = Array(5).fill([1, 0, 0, 1]), offset = Array(5).fill([0, 0]);
+    if (am) {
+      // The asset's maps on the units after the placeholder, with their uv
+      // transforms (KHR_texture_transform); its handedness for the normal map.
+      const slots = [['u_input_alpha', maps.alpha, 1], ['u_input_color', maps.color, 2],
+                     ['u_input_base_albedo', maps.baseAlbedo, 3], ['u_input_normal_slopes', maps.normal, 4]];
+      slots.forEach(([name, map, bit], i) => {
+        if (!perPixel(bit, map) && !(bit === 4 && map)) return;
+        gl.activeTexture(gl.TEXTURE0 + inputUnit + 1 + i);
+        gl.bindTexture(gl.TEXTURE_2D, oncePerContext(gl, map, () => uploadMipmapped(gl, map.texels, map.w, map.h)));
+        set(name, inputUnit + 1 + i);
+        linear[bit] = map.linear;
+        offset[bit] = map.offset;
+        mask |= 1 << bit;
+      });
+      set('u_input_uv_mirrored', asset.uvMirrored ? 1 : 0);
+    } else if (state.textures !== 'none') {
       // Density, roughness and colour maps on the next units (bits 0-2),
       // for the models that read them per pixel (the manifest's inputs).
       const maps = materialTextures(gl, state.textures);
@@ -309,7 +346,7 @@ export class ExportedModel {
         mask |= 1 << bit;
       });
     }
-    if (state.normalMap !== 'none') {
+    if (!am && state.normalMap !== 'none') {
       // The normal map's LEAN texture on the next unit, its uv transform
       // the identity (the map tiles with the glint pattern's uv). Both
       // meshes' v runs along n x t (the plane's v along -z, the sphere's
@@ -321,9 +358,10 @@ export class ExportedModel {
       set('u_input_uv_mirrored', 1);
       mask |= 1 << 4;  // GLINT_INPUT_NORMAL
     }
-    // Every map tiles with the glint pattern's uv: identity transforms.
-    set('u_input_texture_linear', Array(5).fill([1, 0, 0, 1]).flat());
-    set('u_input_texture_offset', Array(10).fill(0));
+    // The page's own maps tile with the glint pattern's uv (identity
+    // transforms); an asset's carry theirs.
+    set('u_input_texture_linear', linear.flat());
+    set('u_input_texture_offset', offset.flat());
     set('u_input_texture_mask', mask);
     gl.activeTexture(gl.TEXTURE0);
   }
@@ -343,6 +381,18 @@ function inputPlaceholder(gl) {
     placeholders.set(gl, t);
   }
   return t;
+}
+
+// Means of an asset map's texels (RGBA float): colour, first channel.
+function meanRgb(map) {
+  const sum = [0, 0, 0];
+  for (let i = 0; i < map.w * map.h; ++i) for (let c = 0; c < 3; ++c) sum[c] += map.texels[4 * i + c];
+  return sum.map((x) => x / (map.w * map.h));
+}
+function meanR(map) {
+  let sum = 0;
+  for (let i = 0; i < map.w * map.h; ++i) sum += map.texels[4 * i];
+  return sum / (map.w * map.h);
 }
 
 function normalize3(v) {

@@ -259,7 +259,10 @@ export class Renderer {
     gl.bindBuffer(gl.ELEMENT_ARRAY_BUFFER, ibo);
     gl.bufferData(gl.ELEMENT_ARRAY_BUFFER, mesh.indices, gl.STATIC_DRAW);
     gl.bindVertexArray(null);
-    this.mesh = {vao, vbo, ibo, count: mesh.indices.length, bounds: mesh.bounds};
+    // Draw parts (a glTF asset: one per material), each drawn with its own
+    // resources: the whole index list for the page's shapes.
+    const parts = mesh.parts ?? [{first: 0, count: mesh.indices.length}];
+    this.mesh = {vao, vbo, ibo, parts, bounds: mesh.bounds};
   }
 
   // A texture from raw data: `format` RGBA32F | RGB32F | RG32F | R32F
@@ -406,11 +409,13 @@ export class Renderer {
     const drawShapes = (part) => {
       this.setUniform(f, 'u_view_projection', vp);
       this.setUniform(f, 'u_eye', camera.eye);
-      bindResources(this, f, part);
-      gl.useProgram(f.handle);
-      gl.bindVertexArray(this.mesh.vao);
-      gl.drawElements(gl.TRIANGLES, this.mesh.count, gl.UNSIGNED_INT, 0);
-      gl.bindVertexArray(null);
+      this.mesh.parts.forEach((p, k) => {
+        bindResources(this, f, part, k);
+        gl.useProgram(f.handle);
+        gl.bindVertexArray(this.mesh.vao);
+        gl.drawElements(gl.TRIANGLES, p.count, gl.UNSIGNED_INT, 4 * p.first);
+        gl.bindVertexArray(null);
+      });
     };
     drawShapes(layered ? 'lights' : 'all');
     this.output = this.frame;

@@ -3,6 +3,7 @@
 
     web_page_test.py load    --export DIR            every exported model loads without error
     web_page_test.py compare --export DIR [MODEL...] browser frame vs `render --gpu`
+    web_page_test.py asset   --export DIR            a .glb through the file picker
 
 DIR holds the files of scripts/export_web.sh (the `glintlab export ... --lang
 glsles` output and models.json). The page is served from a Python
@@ -511,10 +512,182 @@ def check_glint_blur(page, query, browser, native, mat, env, mask):
     return passed and refused
 
 
+# ---- (c) a user's .glb through the file picker -----------------------------
+
+GLB = os.path.join(os.path.dirname(WEB_DIR), "scenes", "gltf", "glint_tiles.glb")
+
+
+def glb_summary(path):
+    """(triangles, material names by first use) of a .glb's default scene,
+    read here independently of the page (header, JSON chunk, accessors)."""
+    import struct
+    with open(path, "rb") as f:
+        data = f.read()
+    length, kind = struct.unpack_from("<II", data, 12)
+    assert kind == 0x4E4F534A
+    g = json.loads(data[20:20 + length])
+    triangles, names = 0, []
+
+    def visit(i):
+        nonlocal triangles
+        node = g["nodes"][i]
+        if "mesh" in node:
+            for p in g["meshes"][node["mesh"]]["primitives"]:
+                a = g["accessors"][p["indices"] if "indices" in p else p["attributes"]["POSITION"]]
+                triangles += a["count"] // 3
+                name = g["materials"][p["material"]]["name"] if "material" in p else "default"
+                if name not in names:
+                    names.append(name)
+        for c in node.get("children", []):
+            visit(c)
+    for i in g["scenes"][g.get("scene", 0)]["nodes"]:
+        visit(i)
+    return triangles, names
+
+
+def pick_file(page, path, timeout=40.0):
+    """Hands `path` to the page's file input and waits for its frame;
+    returns (asset, assetError)."""
+    from selenium.webdriver.common.by import By
+    page.driver.find_element(By.ID, "asset").send_keys(path)
+    deadline = time.monotonic() + timeout
+    while time.monotonic() < deadline:
+        r = page.driver.execute_script(
+            "const g = window.glintlab; return {asset: g.asset, error: g.assetError, ready: g.ready};")
+        if r["error"] or (r["asset"] and r["asset"]["name"] == os.path.basename(path) and r["ready"]):
+            return r["asset"], r["error"]
+        time.sleep(0.05)
+    return None, f"no frame within {timeout} s"
+
+
+def warm_and_blue(hdr):
+    """Fractions of the covered, lit pixels whose colour is clearly warm
+    (red over blue by 1.5) and clearly blue (blue over red by 1.5)."""
+    import numpy as np
+    rgb, cover = hdr[..., :3], hdr[..., 3] > 0.5
+    lit = cover & (rgb.sum(axis=-1) > 1e-3)
+    n = max(int(lit.sum()), 1)
+    warm = lit & (rgb[..., 0] > 1.5 * rgb[..., 2])
+    blue = lit & (rgb[..., 2] > 1.5 * rgb[..., 0])
+    return warm.sum() / n, blue.sum() / n, lit.sum() / cover.size
+
+
+def test_asset(page, export_dir):
+    """scenes/gltf/glint_tiles.glb (scripts/make_gltf_asset.py: a plate whose
+    base colour is a blue/orange checker, with roughness and normal maps,
+    and a ball with factors only) loads through the file picker: the page
+    draws the file's triangles with its two materials, names what it does
+    not read, and the plate's colour map reaches the frame (blue pixels,
+    which the page's own warm default colour cannot make). A truncated and
+    a non-GLB file are errors naming the file, and the page keeps drawing."""
+    ok = True
+    triangles, names = glb_summary(GLB)
+    for model in ["smooth", "deliot2023"]:
+        if model not in exported_models(export_dir):
+            continue
+        state, log = page.open(f"model={model}&w=256&h=192&env=1")
+        if state["error"]:
+            print(f"FAIL {model}: the page: {state['error']}")
+            ok = False
+            continue
+        import numpy as np
+        before = warm_and_blue(page.hdr())
+        asset, error = pick_file(page, GLB)
+        if error or not asset:
+            print(f"FAIL {model}: {GLB}: {error}")
+            ok = False
+            continue
+        after = warm_and_blue(page.hdr())
+        got_names = [m["name"] for m in asset["materials"]]
+        checks = [
+            (asset["triangles"] == triangles, f"triangles {asset['triangles']}, the file has {triangles}"),
+            (got_names == names, f"materials {got_names}, the file's {names}"),
+            (asset["materials"][0]["maps"] == ["color", "alpha", "normal"] if names[0] == "Paint" else True,
+             f"Paint's maps {asset['materials'][0]['maps']}, expected colour, roughness, normal"),
+            (any("KHR_materials_sheen" in w for w in asset["warnings"]),
+             f"warnings {asset['warnings']} do not name KHR_materials_sheen"),
+            # The page's default colour (0.9, 0.85, 0.75) is warm: no blue
+            # pixel before; the checker's blue cells give blue ones after.
+            (before[1] < 0.01, f"blue fraction {before[1]:.3f} before the asset (expected none)"),
+            (after[1] > 0.05, f"blue fraction {after[1]:.3f} with the asset's colour map (expected > 0.05)"),
+            (after[2] > 0.05, f"the asset covers {after[2]:.3f} of the frame lit (expected > 0.05)"),
+            (not errors_in(page.driver.get_log("browser")), "browser console errors"),
+        ]
+        # The same view natively: the file's materials turned into the page's
+        # glint material by material_overrides (docs/SCENE_FORMAT.md, "glTF
+        # materials"), the camera and the light the page chose, compared as
+        # `compare` compares the page's own shapes (the same limits).
+        import glintlab
+        query = (f"model={model}&w={VIEW['w']}&h={VIEW['h']}&seed={VIEW['seed']}"
+                 f"&log_density={VIEW['log_density']}&ndf={VIEW['ndf']}&fresnel=schlick"
+                 f"&f0={','.join(map(str, VIEW['f0']))}&env=0&exposure=0&static=1")
+        page.open(query)
+        pick_file(page, GLB)
+        st = page.driver.execute_script("return window.glintlab.state;")
+        browser = page.hdr()
+        glint = {"type": "glint", "model": model, "ndf": VIEW["ndf"],
+                 "log_density": VIEW["log_density"], "seed": VIEW["seed"],
+                 "fresnel": {"type": "schlick", "f0": VIEW["f0"]}}
+        scene = {"film": {"width": VIEW["w"], "height": VIEW["h"], "exposure": 0.0},
+                 "camera": {"eye": st["camera"]["eye"], "target": st["camera"]["target"],
+                            "fov_deg": st["camera"]["fovDeg"]},
+                 "render": {"integrator": "direct", "spp": 1, "seed": VIEW["seed"]},
+                 "materials": [],
+                 "shapes": [{"type": "gltf", "name": "tiles", "file": GLB,
+                             "material_overrides": {n: glint for n in names}}],
+                 "lights": [{"type": "directional", "direction": st["light"]["direction"],
+                             "irradiance": st["light"]["irradiance"]}]}
+        native = np.asarray(glintlab.render(scene, gpu=True, file="<the page's asset view>"),
+                            dtype=np.float32)
+        # The page draws no shadows (docs/WEB.md, "Limitations"); the native
+        # renderer's ball shadows the plate. Its shadow is left out: pixels
+        # lit on the page (luminance > 0.01) where the native image has less
+        # than a tenth of it, at most a tenth of the frame (measured 3-5 %).
+        lb, ln = luminance(browser[..., :3]), luminance(native)
+        shadow = (lb > 0.01) & (ln < 0.1 * lb)
+        r = compare(browser[..., :3], native, (~shadow).astype(np.float32))
+        lim = LIMITS[model]
+        checks.append((shadow.mean() <= 0.1, f"{100 * shadow.mean():.1f}% of the frame dark "
+                       "natively and lit on the page (expected only the ball's shadow, <= 10%)"))
+        checks.append((r["mean_rel"] <= lim[0] and r["smoothed_l1"] <= lim[1] and
+                       r["mismatch"] <= lim[2],
+                       f"against render --gpu: mean {r['mean_browser']:.5f} / {r['mean_native']:.5f} "
+                       f"rel {r['mean_rel']:.4f} (<= {lim[0]}), smoothed {r['smoothed_l1']:.4f} "
+                       f"(<= {lim[1]}), mismatching {100 * r['mismatch']:.2f}% (<= {100 * lim[2]:g}%)"))
+        print(f"      asset {model} against render --gpu: rel {r['mean_rel']:.4f}, smoothed "
+              f"{r['smoothed_l1']:.4f}, mismatching {100 * r['mismatch']:.2f}%, shadow "
+              f"{100 * shadow.mean():.1f}%")
+        failed = [m for good, m in checks if not good]
+        print(f"{'FAIL' if failed else 'ok  '} asset {model}: {triangles} triangles, materials "
+              f"{got_names}, warm/blue fractions before {before[0]:.3f}/{before[1]:.3f}, after "
+              f"{after[0]:.3f}/{after[1]:.3f}" + (f": {'; '.join(failed)}" if failed else ""))
+        ok = ok and not failed
+    # Hostile files: the page names the file and the fault, and keeps its view.
+    tmp = tempfile.mkdtemp(prefix="glintlab_asset_")
+    try:
+        with open(GLB, "rb") as f:
+            data = f.read()
+        cases = {"truncated.glb": (data[:len(data) // 2], "truncated"),
+                 "not_a_glb.glb": (b"solid cube\nendsolid cube\n" * 4, "not a binary glTF")}
+        for name, (content, expected) in cases.items():
+            path = os.path.join(tmp, name)
+            with open(path, "wb") as f:
+                f.write(content)
+            state, _ = page.open("model=smooth&w=128&h=96&env=0")
+            asset, error = pick_file(page, path)
+            frames = page.driver.execute_script("return window.glintlab.frames;")
+            good = bool(error) and name in error and expected in error and asset is None
+            print(f"{'ok  ' if good else 'FAIL'} asset {name}: {error} (frames {frames})")
+            ok = ok and good
+    finally:
+        shutil.rmtree(tmp, ignore_errors=True)
+    return ok
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__,
                                  formatter_class=argparse.RawDescriptionHelpFormatter)
-    ap.add_argument("what", choices=["load", "compare"])
+    ap.add_argument("what", choices=["load", "compare", "asset"])
     ap.add_argument("models", nargs="*")
     ap.add_argument("--export", required=True, help="directory written by scripts/export_web.sh")
     ap.add_argument("--env", default="", help="environment map the export used (kneiphof2025)")
@@ -526,6 +699,8 @@ def main():
     try:
         if args.what == "load":
             ok = test_load(page, args.export)
+        elif args.what == "asset":
+            ok = test_asset(page, args.export)
         else:
             models = args.models or [m for m in exported_models(args.export) if m in LIMITS]
             missing = [m for m in models if m not in exported_models(args.export)]
