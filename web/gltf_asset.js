@@ -73,13 +73,13 @@ class Reader {
       offset = start + chunkLength + ((4 - (chunkLength % 4)) % 4);
     }
     if (!this.json || typeof this.json !== 'object') throw this.error('', 'no JSON chunk');
-    const required = this.json.extensionsRequired ?? [];
+    const required = this.list(this.json.extensionsRequired, 'extensionsRequired');
     const unreadRequired = required.filter((e) => !READ_EXTENSIONS.includes(e));
     if (unreadRequired.length)
       throw this.error('extensionsRequired', `${unreadRequired.join(', ')}: not read by the page ` +
                        '(write the file without them, e.g. without mesh compression)');
     // Named by readGlb, after the materials have named theirs.
-    this.unreadUsed = (this.json.extensionsUsed ?? []).filter((e) => !READ_EXTENSIONS.includes(e));
+    this.unreadUsed = this.list(this.json.extensionsUsed, 'extensionsUsed').filter((e) => !READ_EXTENSIONS.includes(e));
   }
 
   error(path, message) {
@@ -90,7 +90,25 @@ class Reader {
     const list = this.json[array];
     if (!Number.isInteger(index) || !Array.isArray(list) || index < 0 || index >= list.length)
       throw this.error(path, `${array} index ${index} out of range [0, ${Array.isArray(list) ? list.length : 0})`);
-    return list[index];
+    const it = list[index];
+    if (it === null || typeof it !== 'object' || Array.isArray(it))
+      throw this.error(`${array}[${index}]`, 'not an object');
+    return it;
+  }
+
+  // An optional array member (absent: empty).
+  list(value, path) {
+    if (value === undefined) return [];
+    if (!Array.isArray(value)) throw this.error(path, 'not an array');
+    return value;
+  }
+
+  // An optional array of n finite numbers (absent: the fallback).
+  numbers(value, n, path, fallback) {
+    if (value === undefined) return fallback;
+    if (!Array.isArray(value) || value.length !== n || !value.every((x) => typeof x === 'number' && Number.isFinite(x)))
+      throw this.error(path, `expected ${n} finite numbers`);
+    return value;
   }
 
   bufferViewBytes(index, path) {
@@ -117,15 +135,18 @@ class Reader {
     if (!Type) throw this.error(where, `componentType ${a.componentType} is not a glTF component type`);
     if (a.sparse) throw this.error(where, 'sparse accessors are not read by the page');
     const count = a.count;
-    if (!Number.isInteger(count) || count < 0) throw this.error(where, `count ${count} is not a count`);
-    const out = indices ? new Uint32Array(count) : new Float32Array(count * n);
-    if (a.bufferView === undefined) return out;  // all zeros (glTF 3.6.2.3)
+    if (!Number.isInteger(count) || count < 0 || count > 3 * MAX_TRIANGLES)
+      throw this.error(where, `count ${count}: expected an integer in [0, ${3 * MAX_TRIANGLES}]`);
+    if (a.bufferView === undefined)  // all zeros (glTF 3.6.2.3)
+      return indices ? new Uint32Array(count) : new Float32Array(count * n);
     const {bytes, stride} = this.bufferViewBytes(a.bufferView, where);
     const size = Type.BYTES_PER_ELEMENT;
     const step = stride || size * n;
     const offset = a.byteOffset ?? 0;
-    if (count > 0 && offset + (count - 1) * step + size * n > bytes.length)
-      throw this.error(where, `${count} elements past the end of bufferView ${a.bufferView} (${bytes.length} bytes)`);
+    if (!Number.isInteger(offset) || offset < 0 || !Number.isInteger(step) || step <= 0 ||
+        (count > 0 && offset + (count - 1) * step + size * n > bytes.length))
+      throw this.error(where, `${count} elements from byte ${offset} (stride ${step}) past the end of bufferView ${a.bufferView} (${bytes.length} bytes)`);
+    const out = indices ? new Uint32Array(count) : new Float32Array(count * n);
     const view = new DataView(bytes.buffer, bytes.byteOffset, bytes.byteLength);
     const get = {
       5120: (o) => view.getInt8(o), 5121: (o) => view.getUint8(o),
@@ -153,16 +174,16 @@ function multiply(a, b) {
       for (let k = 0; k < 4; ++k) r[c * 4 + row] += a[k * 4 + row] * b[c * 4 + k];
   return r;
 }
-function localMatrix(node) {
-  if (Array.isArray(node.matrix) && node.matrix.length === 16) return node.matrix.slice();
-  const [tx, ty, tz] = node.translation ?? [0, 0, 0];
-  const [x, y, z, w] = node.rotation ?? [0, 0, 0, 1];
-  const [sx, sy, sz] = node.scale ?? [1, 1, 1];
-  const r = [1 - 2 * (y * y + z * z), 2 * (x * y + z * w), 2 * (x * z - y * w),
+function localMatrix(r, node, path) {
+  if (node.matrix !== undefined) return r.numbers(node.matrix, 16, `${path}.matrix`).slice();
+  const [tx, ty, tz] = r.numbers(node.translation, 3, `${path}.translation`, [0, 0, 0]);
+  const [x, y, z, w] = r.numbers(node.rotation, 4, `${path}.rotation`, [0, 0, 0, 1]);
+  const [sx, sy, sz] = r.numbers(node.scale, 3, `${path}.scale`, [1, 1, 1]);
+  const q = [1 - 2 * (y * y + z * z), 2 * (x * y + z * w), 2 * (x * z - y * w),
              2 * (x * y - z * w), 1 - 2 * (x * x + z * z), 2 * (y * z + x * w),
              2 * (x * z + y * w), 2 * (y * z - x * w), 1 - 2 * (x * x + y * y)];
-  return [r[0] * sx, r[1] * sx, r[2] * sx, 0, r[3] * sy, r[4] * sy, r[5] * sy, 0,
-          r[6] * sz, r[7] * sz, r[8] * sz, 0, tx, ty, tz, 1];
+  return [q[0] * sx, q[1] * sx, q[2] * sx, 0, q[3] * sy, q[4] * sy, q[5] * sy, 0,
+          q[6] * sz, q[7] * sz, q[8] * sz, 0, tx, ty, tz, 1];
 }
 function transformPoint(m, p) {
   return [0, 1, 2].map((i) => m[i] * p[0] + m[4 + i] * p[1] + m[8 + i] * p[2] + m[12 + i]);
@@ -193,18 +214,19 @@ function flatten(r) {
   const g = r.json;
   const sceneIndex = g.scene ?? 0;
   const roots = Array.isArray(g.scenes) && g.scenes.length
-      ? (r.item('scenes', sceneIndex, 'scene').nodes ?? [])
-      : (g.nodes ?? []).map((_, i) => i);
+      ? r.list(r.item('scenes', sceneIndex, 'scene').nodes, `scenes[${sceneIndex}].nodes`)
+      : r.list(g.nodes, 'nodes').map((_, i) => i);
   const byMaterial = new Map();  // material index -> [{positions, normals, uvs, tangents, indices}]
   let triangles = 0;
   const visit = (index, parent, depth) => {
     if (depth > 64) throw r.error(`nodes[${index}]`, 'the node hierarchy is deeper than 64 (a cycle?)');
     const node = r.item('nodes', index, 'nodes');
-    const m = multiply(parent, localMatrix(node));
+    const m = multiply(parent, localMatrix(r, node, `nodes[${index}]`));
     if (node.mesh !== undefined) {
       const mesh = r.item('meshes', node.mesh, `nodes[${index}].mesh`);
-      (mesh.primitives ?? []).forEach((p, k) => {
+      r.list(mesh.primitives, `meshes[${node.mesh}].primitives`).forEach((p, k) => {
         const path = `meshes[${node.mesh}].primitives[${k}]`;
+        if (p === null || typeof p !== 'object') throw r.error(path, 'not an object');
         const mode = p.mode ?? 4;
         if (mode !== 4) {
           r.warnings.push(`${path}: mode ${mode} (not triangles) is not drawn`);
@@ -245,7 +267,7 @@ function flatten(r) {
         byMaterial.get(key).push({P, N, T, uvs, indices, path, hasNormals: !!normals});
       });
     }
-    for (const child of node.children ?? []) visit(child, m, depth + 1);
+    for (const child of r.list(node.children, `nodes[${index}].children`)) visit(child, m, depth + 1);
   };
   const identity = [1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1];
   roots.forEach((n) => visit(n, identity, 0));
@@ -368,12 +390,12 @@ async function readMaterial(r, index) {
   const path = `materials[${index}]`;
   const m = r.item('materials', index, path);
   const pbr = m.pbrMetallicRoughness ?? {};
-  const factor = pbr.baseColorFactor ?? [1, 1, 1, 1];
-  const roughness = pbr.roughnessFactor ?? 1;
+  const factor = r.numbers(pbr.baseColorFactor, 4, `${path}.pbrMetallicRoughness.baseColorFactor`, [1, 1, 1, 1]);
+  const roughness = r.numbers([pbr.roughnessFactor ?? 1], 1, `${path}.pbrMetallicRoughness.roughnessFactor`)[0];
   const out = {name: m.name || `material ${index}`, color: factor.slice(0, 3), alpha: roughness * roughness, maps: {}};
   const unread = Object.keys(m.extensions ?? {}).filter((e) => !READ_EXTENSIONS.includes(e));
   if (unread.length) r.warnings.push(`${path} "${out.name}": extensions not read: ${unread.join(', ')}`);
-  const metallic = pbr.metallicFactor ?? 1;
+  const metallic = r.numbers([pbr.metallicFactor ?? 1], 1, `${path}.pbrMetallicRoughness.metallicFactor`)[0];
   if (pbr.metallicRoughnessTexture || (metallic > 0 && metallic < 1))
     r.warnings.push(`${path} "${out.name}": a glint has no metal/dielectric mix: ` +
                     `${metallic >= 0.5 ? 'metallic' : 'dielectric'} (metallicFactor ${metallic})`);
@@ -420,6 +442,16 @@ async function readMaterial(r, index) {
 // The asset of a .glb file's bytes: geometry, one part per material and the
 // materials' maps; `warnings` lists what the page does not read.
 export async function readGlb(buffer, name) {
+  try {
+    return await read(buffer, name);
+  } catch (e) {
+    if (e instanceof AssetError) throw e;
+    // A member of an unexpected type where no check names it.
+    throw new AssetError(`${name}: not a well-formed glTF (${e.message})`);
+  }
+}
+
+async function read(buffer, name) {
   const r = new Reader(buffer, name);
   const geometry = flatten(r);
   const materials = [];

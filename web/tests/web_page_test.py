@@ -572,14 +572,76 @@ def warm_and_blue(hdr):
     return warm.sum() / n, blue.sum() / n, lit.sum() / cover.size
 
 
+# 600 mutations of a .glb (its bytes truncated or overwritten, or members of
+# its JSON replaced by values of other types), each read by readGlb.
+FUZZ_SCRIPT = r"""
+const [b64, n, done] = arguments;
+import('./gltf_asset.js').then(async ({readGlb, AssetError}) => {
+  const base = Uint8Array.from(atob(b64), (c) => c.charCodeAt(0));
+  const jlen = new DataView(base.buffer).getUint32(12, true);
+  const json = JSON.parse(new TextDecoder().decode(base.subarray(20, 20 + jlen)));
+  const bin = base.subarray(20 + jlen);
+  let seed = 7;
+  const rand = () => { seed = (seed * 1103515245 + 12345) & 0x7fffffff; return seed / 0x7fffffff; };
+  const VALUES = [null, 5, -1, 'x', [], {}, 1e9, 0.5, [1, 2], true];
+  const paths = (o, p = [], out = []) => {
+    if (o && typeof o === 'object') for (const k of Object.keys(o)) { out.push([...p, k]); paths(o[k], [...p, k], out); }
+    return out;
+  };
+  const all = paths(json);
+  const glb = (j) => {
+    const t0 = new TextEncoder().encode(JSON.stringify(j));
+    const t = new Uint8Array(t0.length + (4 - t0.length % 4) % 4).fill(32); t.set(t0);
+    const out = new Uint8Array(20 + t.length + bin.length);
+    const v = new DataView(out.buffer);
+    v.setUint32(0, 0x46546c67, true); v.setUint32(4, 2, true); v.setUint32(8, out.length, true);
+    v.setUint32(12, t.length, true); v.setUint32(16, 0x4e4f534a, true);
+    out.set(t, 20); out.set(bin, 20 + t.length);
+    return out.buffer;
+  };
+  const r = {asset: 0, ok: 0, other: 0, examples: []};
+  for (let it = 0; it < n; ++it) {
+    let buf;
+    if (it % 3 === 0) {
+      buf = base.slice(0, Math.floor(rand() * base.length)).buffer;
+    } else if (it % 3 === 1) {
+      const bytes = base.slice();
+      for (let k = 0; k < 8; ++k) bytes[Math.floor(rand() * bytes.length)] = Math.floor(rand() * 256);
+      buf = bytes.buffer;
+    } else {
+      const j = JSON.parse(JSON.stringify(json));
+      for (let k = 0; k < 3; ++k) {
+        const p = all[Math.floor(rand() * all.length)];
+        let o = j;
+        for (let i = 0; i < p.length - 1 && o && typeof o === 'object'; ++i) o = o[p[i]];
+        if (o && typeof o === 'object') o[p[p.length - 1]] = VALUES[Math.floor(rand() * VALUES.length)];
+      }
+      buf = glb(j);
+    }
+    try {
+      await readGlb(buf, 'mutant.glb');
+      r.ok++;
+    } catch (e) {
+      if (e instanceof AssetError && e.message.startsWith('mutant.glb: ')) r.asset++;
+      else { r.other++; if (r.examples.length < 3) r.examples.push(`${e.constructor.name}: ${e.message}`); }
+    }
+  }
+  done(r);
+}, (e) => done({asset: 0, ok: 0, other: 1, examples: [String(e)]}));
+"""
+
+
 def test_asset(page, export_dir):
     """scenes/gltf/glint_tiles.glb (scripts/make_gltf_asset.py: a plate whose
     base colour is a blue/orange checker, with roughness and normal maps,
     and a ball with factors only) loads through the file picker: the page
     draws the file's triangles with its two materials, names what it does
     not read, and the plate's colour map reaches the frame (blue pixels,
-    which the page's own warm default colour cannot make). A truncated and
-    a non-GLB file are errors naming the file, and the page keeps drawing."""
+    which the page's own warm default colour cannot make), and matches the
+    native render of the same view. 600 mutations of the file are each read
+    or refused with an error naming the file; a truncated and a non-GLB file
+    through the picker are errors naming the file and the page keeps
+    drawing."""
     ok = True
     triangles, names = glb_summary(GLB)
     for model in ["smooth", "deliot2023"]:
@@ -662,6 +724,19 @@ def test_asset(page, export_dir):
               f"{got_names}, warm/blue fractions before {before[0]:.3f}/{before[1]:.3f}, after "
               f"{after[0]:.3f}/{after[1]:.3f}" + (f": {'; '.join(failed)}" if failed else ""))
         ok = ok and not failed
+    # Mutations of the asset, read by the page's reader in the browser: every
+    # failure must be an AssetError naming the file (never a TypeError or a
+    # RangeError, never a hang).
+    page.open("model=smooth&w=64&h=64&env=0")
+    page.driver.set_script_timeout(240)
+    with open(GLB, "rb") as f:
+        glb_b64 = base64.b64encode(f.read()).decode()
+    r = page.driver.execute_async_script(FUZZ_SCRIPT, glb_b64, 600)
+    page.driver.set_script_timeout(30)
+    good = r["other"] == 0 and r["asset"] > 0
+    print(f"{'ok  ' if good else 'FAIL'} asset mutations: {r['asset']} errors naming the file, "
+          f"{r['ok']} read, {r['other']} other exceptions {r['examples']}")
+    ok = ok and good
     # Hostile files: the page names the file and the fault, and keeps its view.
     tmp = tempfile.mkdtemp(prefix="glintlab_asset_")
     try:
