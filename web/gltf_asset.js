@@ -358,6 +358,14 @@ async function decodeImage(r, index, path) {
   return {data: ctx.getImageData(0, 0, w, h).data, w, h};
 }
 
+// A map of the page's inputs: RGBA float texels, their mean (what a model
+// that reads the input as a uniform takes), size and uv transform.
+function inputMap(texels, w, h, t) {
+  const mean = [0, 0, 0, 0];
+  for (let i = 0; i < w * h; ++i) for (let c = 0; c < 4; ++c) mean[c] += texels[4 * i + c];
+  return {texels, w, h, mean: mean.map((x) => x / (w * h)), linear: t.linear, offset: t.offset};
+}
+
 // A textureInfo's image and uv transform (st = linear uv + offset, the
 // export's u_input_texture_linear / _offset).
 async function textureOf(r, info, path) {
@@ -405,7 +413,7 @@ async function readMaterial(r, index) {
     const texels = new Float32Array(w * h * 4);
     for (let i = 0; i < w * h; ++i)
       for (let c = 0; c < 3; ++c) texels[4 * i + c] = factor[c] * srgbDecode(data[4 * i + c] / 255);
-    out.maps.color = {texels, w, h, linear: t.linear, offset: t.offset};
+    out.maps.color = inputMap(texels, w, h, t);
   }
   if (pbr.metallicRoughnessTexture) {
     const t = await textureOf(r, pbr.metallicRoughnessTexture, `${path}.pbrMetallicRoughness.metallicRoughnessTexture`);
@@ -413,7 +421,7 @@ async function readMaterial(r, index) {
     const texels = new Float32Array(w * h * 4);
     // α = (roughness factor G)², stored as α² (the quantity the footprint filters).
     for (let i = 0; i < w * h; ++i) texels[4 * i] = (roughness * data[4 * i + 1] / 255) ** 4;
-    out.maps.alpha = {texels, w, h, linear: t.linear, offset: t.offset};
+    out.maps.alpha = inputMap(texels, w, h, t);
   }
   if (m.normalTexture) {
     const t = await textureOf(r, m.normalTexture, `${path}.normalTexture`);
@@ -425,7 +433,7 @@ async function readMaterial(r, index) {
                            2 * data[4 * i + 2] / 255 - 1], [0, 0, 1]);
       normals.set(n, 3 * i);
     }
-    out.maps.normal = {texels: leanTexels(normals, w, h), w, h, linear: t.linear, offset: t.offset};
+    out.maps.normal = inputMap(leanTexels(normals, w, h), w, h, t);
   }
   if (metallic < 0.5) {
     out.baseAlbedo = out.color;

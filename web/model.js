@@ -243,9 +243,9 @@ export class ExportedModel {
     const perPixel = (bit, map) => map && this.perPixelInputs.has(bit);
     let color = m.color, alpha = m.roughness;
     if (am && !('color' in this.fixedMaterial))
-      color = maps.color && !perPixel(2, maps.color) ? meanRgb(maps.color) : am.color;
+      color = maps.color && !perPixel(2, maps.color) ? maps.color.mean.slice(0, 3) : am.color;
     if (am && !('roughness' in this.fixedMaterial)) {
-      const a = maps.alpha && !perPixel(1, maps.alpha) ? Math.sqrt(meanR(maps.alpha)) : am.alpha;
+      const a = maps.alpha && !perPixel(1, maps.alpha) ? Math.sqrt(maps.alpha.mean[0]) : am.alpha;
       alpha = [a, a];
     }
     set('u_glint_alpha', alpha);
@@ -254,7 +254,7 @@ export class ExportedModel {
     // its own dielectric Fresnel.
     let baseAlbedo = [0, 0, 0];
     if (am?.baseAlbedo)
-      baseAlbedo = maps.baseAlbedo && !perPixel(3, maps.baseAlbedo) ? meanRgb(maps.baseAlbedo)
+      baseAlbedo = maps.baseAlbedo && !perPixel(3, maps.baseAlbedo) ? maps.baseAlbedo.mean.slice(0, 3)
                                                                     : am.baseAlbedo;
     set('u_glint_base_albedo', baseAlbedo);
     const fresnel = am?.fresnel && !('fresnel' in this.fixedMaterial) ? am.fresnel : m.fresnel;
@@ -381,18 +381,6 @@ function inputPlaceholder(gl) {
     placeholders.set(gl, t);
   }
   return t;
-}
-
-// Means of an asset map's texels (RGBA float): colour, first channel.
-function meanRgb(map) {
-  const sum = [0, 0, 0];
-  for (let i = 0; i < map.w * map.h; ++i) for (let c = 0; c < 3; ++c) sum[c] += map.texels[4 * i + c];
-  return sum.map((x) => x / (map.w * map.h));
-}
-function meanR(map) {
-  let sum = 0;
-  for (let i = 0; i < map.w * map.h; ++i) sum += map.texels[4 * i];
-  return sum / (map.w * map.h);
 }
 
 function normalize3(v) {
