@@ -267,8 +267,32 @@ vec3 glint_shade(vec3 p, vec3 n, vec3 dpdu, Footprint fp) {
     return radiance;
 }
 
+// The slope variances (Σ_xx, Σ_yy) over the pixel from the surface's own
+// curvature (docs/MODELS.md, "Curved surfaces"): the unit normal's change per
+// pixel step, in glint_shade's frame (t along dpdu), gives the slope's
+// change g = −(t·∂n, b·∂n); over the pixel's uniform footprint its variance
+// is (g_x² + g_y²)/12 per axis. Zero on a flat surface. Derivatives: call it
+// at the top of main, in uniform control flow; add it to the inputs'
+// slope_variance (a host that does not want it leaves it out).
+vec2 glint_curvature_slope_variance(vec3 n, vec3 dpdu) {
+    vec3 dndx = dFdxFine(n);
+    vec3 dndy = -dFdyFine(n);
+    vec3 t = dpdu - n * dot(n, dpdu);
+    float len = length(t);
+    if (!(len > 1e-12f) || isinf(len)) return vec2(0.0f);
+    t = t / len;
+    vec3 b = cross(n, t);
+    vec2 gx = vec2(dot(t, dndx), dot(b, dndx));
+    vec2 gy = vec2(dot(t, dndy), dot(b, dndy));
+    return (gx * gx + gy * gy) / 12.0f;
+}
+
 void main() {
     Footprint fp = glint_footprint(v_uv);
-    glint_set_inputs(glint_inputs_from_textures(fp));
-    o_radiance = vec4(glint_shade(v_position, normalize(v_normal), v_dpdu, fp), 1.0f);
+    vec3 n = normalize(v_normal);
+    vec2 curvature_variance = glint_curvature_slope_variance(n, v_dpdu);
+    GlintInputs inputs = glint_inputs_from_textures(fp);
+    inputs.slope_variance += curvature_variance;
+    glint_set_inputs(inputs);
+    o_radiance = vec4(glint_shade(v_position, n, v_dpdu, fp), 1.0f);
 }

@@ -442,7 +442,7 @@ std::vector<std::pair<std::string, std::string>> asset_scenes() {
   "film": {"width": 16, "height": 16},
   "render": {"integrator": "path", "spp": 1, "max_depth": 3},
   "materials": [
-    {"name": "glint", "type": "glint", "model": "explicit", "log_density": 8,
+    {"name": "glint", "type": "glint", "model": "explicit", "log_density": 8, "curvature": "footprint",
      "normal_map": {"texture": "normal.png", "scale": 1.5, "encoding": "unorm", "filtering": "lean",
                     "wrap": "mirror", "uv_transform": {"scale": 3, "rotation_deg": 20}}},
     {"name": "metal", "type": "conductor", "roughness": 0.2,

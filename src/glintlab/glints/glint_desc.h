@@ -89,6 +89,18 @@ struct GlintDesc {
     // map's widening): every pixel may hold another α, and models that
     // build a table per α (jakob2014) snap it to a grid instead.
     bool alpha_varies = false;
+    // The surface's own turning over a footprint (the material's
+    // "curvature" key; docs/MODELS.md, "Curved surfaces"): true
+    // ("footprint"), `explicit` composes each facet with the macro normal at
+    // its own position and the filtered models widen their NDF by the
+    // footprint's normal covariance; false ("none", the default), one normal
+    // per footprint.
+    bool curvature = false;
+    // Set by the renderers at each hit for `explicit` only: the macro normal's
+    // slope (microfacet convention, normal_map.h) as a linear function of the
+    // uv offset from the footprint's centre, columns ∂s/∂u and ∂s/∂v in the
+    // hit's local frame. Zero: a flat footprint.
+    glm::mat2 slope_gradient{0.0f};
     // The active model's parameters, as read through its descriptor's
     // parameter table. (The block as written in the scene file is not kept:
     // nothing needs it once it is read, and a second copy could disagree.)

@@ -170,6 +170,12 @@ struct GlintModelDescriptor {
     // quotes it).
     bool textured_density = true, textured_roughness = true;
     std::string untextured_reason;
+    // The renderers widen the model's α per hit by the footprint's normal
+    // covariance from the surface's curvature (docs/MODELS.md, "Curved
+    // surfaces"). False where α is fixed per material (textured_roughness
+    // false), where a per-hit α builds a table per pixel (jakob2014), and
+    // for `explicit`, which composes each facet with the curved surface.
+    bool filters_curvature = true;
     GlintValidationSuite validation;  // name empty: no suite
     // Set (set_export): `glintlab export` writes the model (its GPU back end).
     std::optional<GlintModelExport> shader_export;

@@ -15,7 +15,8 @@ std::string ProgramKey::name() const {
     return fmt::format(
         "forward[{}{}, {} point, {} directional, {}{}{}]", info ? info->name : "?", options,
         point_lights, directional_lights, environment ? "environment" : "no environment",
-        material_textures ? ", textured material" : "", normal_map ? ", normal map" : "");
+        material_textures ? ", textured material" : "",
+        std::string(normal_map ? ", normal map" : "") + (curvature ? ", curvature" : ""));
 }
 
 AssembledShader shadow_vertex_shader() {
@@ -37,8 +38,10 @@ AssembledShader forward_fragment_shader(const ProgramKey& key) {
         "#define GLINTLAB_ENV_DIFFUSE_SAMPLES {}\n#define GLINTLAB_ENV_SUN_SAMPLES {}\n",
         key.point_lights, key.directional_lights, key.environment ? 1 : 0,
         kEnvironmentSpecularSamples, kEnvironmentDiffuseSamples, kEnvironmentSunSamples);
-    if (key.material_textures || key.normal_map) text += "#define GLINTLAB_MATERIAL_TEXTURES 1\n";
+    if (key.material_textures || key.normal_map || key.curvature)
+        text += "#define GLINTLAB_MATERIAL_TEXTURES 1\n";
     if (key.normal_map) text += "#define GLINTLAB_NORMAL_MAP 1\n";
+    if (key.curvature) text += "#define GLINTLAB_GLINT_CURVATURE 1\n";
     text += glint_model_glsl(key.model, key.model_options);
     text += "#include \"glintlab/realtime/shaders/forward.frag.glsl\"\n";
     return assemble_shader(text, true);

@@ -26,6 +26,10 @@ struct ProgramKey {
     // The material has a normal map (shaders/normal_map.glsl; implies
     // material_textures: the map widens the per-fragment α).
     bool normal_map = false;
+    // A glint material on a curved surface widens its per-fragment α by the
+    // footprint's normal covariance (GLINTLAB_GLINT_CURVATURE in
+    // shaders/forward.frag.glsl; implies material_textures).
+    bool curvature = false;
     auto operator<=>(const ProgramKey&) const = default;
     std::string name() const;  // "forward[deliot2023, 1 point, 0 directional, no environment]"
 };

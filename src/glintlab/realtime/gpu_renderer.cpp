@@ -73,6 +73,17 @@ GpuShape upload_shape(const Shape& shape, int sphere_segments) {
     return g;
 }
 
+// The shape's normal turns over its surface (a sphere, a mesh whose vertex
+// normals differ): a glint material on it widens its α by the footprint's
+// normal covariance (docs/MODELS.md, "Curved surfaces").
+bool shape_is_curved(const Shape& shape) {
+    if (std::holds_alternative<SphereGeometry>(shape.geometry)) return true;
+    const TriangleMesh& mesh = std::get<TriangleMesh>(shape.geometry);
+    for (const glm::vec3& n : mesh.normals)
+        if (glm::dot(n - mesh.normals.front(), n - mesh.normals.front()) > 1e-12f) return true;
+    return false;
+}
+
 // `model_options`: the renderer's option mask of each model (set_model_option).
 gl::ProgramKey program_key(const Scene& scene, const Shape& shape,
                            const std::map<GlintModelId, unsigned>& model_options) {
@@ -82,6 +93,8 @@ gl::ProgramKey program_key(const Scene& scene, const Shape& shape,
         if (m.type == MaterialDesc::Type::Glint) key.model = m.glint.model_id;
         key.material_textures = m.textures != nullptr || m.glint.textures != nullptr;
         key.normal_map = m.normal_map != nullptr;
+        key.curvature = m.type == MaterialDesc::Type::Glint && m.glint.curvature &&
+                        glint_model(m.glint.model_id).filters_curvature && shape_is_curved(shape);
     }
     const auto it = model_options.find(key.model);
     const GpuModelHooks* hooks = find_gpu_model_hooks(key.model);

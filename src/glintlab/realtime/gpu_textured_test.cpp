@@ -172,5 +172,52 @@ TEST(GpuTextured, NormalMappedMaterialsMatchTheCpu) {
     }
 }
 
+// A curved surface's own normal spread over the pixel ("curvature":
+// "footprint"; docs/MODELS.md, "Curved surfaces"): the CPU widens α by the
+// interpolated normal's uv derivatives over the footprint, the GPU by the
+// unit normal's pixel differences. A sphere about 20 pixels across, so the
+// normal turns ~0.16 rad per pixel and the widening is large against α 0.05;
+// without it the images differ far beyond the agreement tolerances.
+TEST(GpuTextured, CurvatureWidenedGlintsMatchTheCpu) {
+    GLINTLAB_REQUIRE_GL();
+    const TexturedScenes t;
+    for (const char* model : {"smooth", "deliot2023"}) {
+        auto scene = [&](const char* curvature) {
+            const nlohmann::json doc = {
+                {"camera", {{"eye", {0.0, 1.27, 2.72}}, {"target", {0, 0.15, 0}}, {"fov_deg", 20}}},
+                {"film", {{"width", 96}, {"height", 72}}},
+                {"render", {{"integrator", "direct"}, {"spp", 1}, {"seed", 1}}},
+                {"materials",
+                 {{{"name", "m"},
+                   {"type", "glint"},
+                   {"model", model},
+                   {"ndf", "ggx"},
+                   {"roughness", 0.05},
+                   {"log_density", 16},
+                   {"curvature", curvature}}}},
+                {"shapes",
+                 {{{"type", "sphere"},
+                   {"center", {0, 0.15, 0}},
+                   {"radius", 0.15},
+                   {"material", "m"}}}},
+                {"lights",
+                 {{{"type", "directional"}, {"direction", {0.3, 0.8, 0.6}}, {"irradiance", 2.0}},
+                  {{"type", "point"}, {"position", {1.0, 1.5, 0.5}}, {"intensity", 1.0}}}}};
+            return parse_scene(doc, t.dir / "sphere.json");
+        };
+        SCOPED_TRACE(model);
+        const Scene widened = scene("footprint");
+        const bool counting = std::string(model) != "smooth";
+        expect_agreement(std::string(model) + "_curvature", widened, counting ? 0.05 : 0.03,
+                         counting ? 0.10 : 0.05);
+        const ImageAgreement off =
+            compare_images(render_scene(scene("none"), RenderOptions{1, true}),
+                           render_scene(widened, RenderOptions{1, true}), 8, 0.02f, 0.1f);
+        ::testing::Test::RecordProperty(std::string(model) + "_none_vs_footprint_smoothed",
+                                        std::to_string(off.smoothed_relative_l1));
+        EXPECT_GT(off.smoothed_relative_l1, counting ? 0.10 : 0.05);
+    }
+}
+
 }  // namespace
 }  // namespace glintlab

@@ -53,6 +53,9 @@ SurfaceHit sphere_hit(const SphereGeometry& s, glm::vec3 p_raw) {
         const glm::vec3 a = std::abs(n.x) < 0.9f ? glm::vec3(1, 0, 0) : glm::vec3(0, 0, 1);
         h.dpdu = glm::normalize(glm::cross(n, a)) * s.radius * 1e-3f;
     }
+    // n = (p − c)/r: the normal turns as the point moves.
+    h.dndu = h.dpdu / s.radius;
+    h.dndv = h.dpdv / s.radius;
     h.has_uv = true;
     return h;
 }
@@ -94,10 +97,25 @@ SurfaceHit triangle_hit(const TriangleMesh& m, unsigned prim, float bu, float bv
                               b0 * t0.w + bu * t1.w + bv * t2.w < 0.0f ? -1.0f : 1.0f);
     }
     if (m.has_normals()) {
-        const glm::vec3 n = b0 * m.normals[tri.x] + bu * m.normals[tri.y] + bv * m.normals[tri.z];
-        h.ns = glm::length(n) > 0.0f ? glm::normalize(n) : h.ng;
+        const glm::vec3 n0 = m.normals[tri.x], n1 = m.normals[tri.y], n2 = m.normals[tri.z];
+        const glm::vec3 n = b0 * n0 + bu * n1 + bv * n2;
+        const float len = glm::length(n);
+        h.ns = len > 0.0f ? n / len : h.ng;
         // The geometric normal follows the shading normal's side.
         if (glm::dot(h.ng, h.ns) < 0.0f) h.ng = -h.ng;
+        if (len > 0.0f && !degenerate) {
+            // ∂n/∂(u, v) of the interpolated normal by the same uv solve as
+            // ∂p/∂(u, v); the unit normal's derivative is its part
+            // orthogonal to ns, divided by |n|.
+            const float inv = 1.0f / det;
+            const glm::vec3 dn02 = n0 - n2, dn12 = n1 - n2;
+            const glm::vec3 dndu = (duv12.y * dn02 - duv02.y * dn12) * inv;
+            const glm::vec3 dndv = (duv02.x * dn12 - duv12.x * dn02) * inv;
+            h.dndu = (dndu - h.ns * glm::dot(h.ns, dndu)) / len;
+            h.dndv = (dndv - h.ns * glm::dot(h.ns, dndv)) / len;
+            if (!std::isfinite(h.dndu.x + h.dndu.y + h.dndu.z + h.dndv.x + h.dndv.y + h.dndv.z))
+                h.dndu = h.dndv = glm::vec3(0.0f);
+        }
     } else {
         h.ns = h.ng;
     }

@@ -21,6 +21,11 @@ struct SurfaceHit {
     glm::vec3 ns{0.0f};  // unit shading normal (interpolated vertex normals, or ng)
     glm::vec2 uv{0.0f};
     glm::vec3 dpdu{0.0f}, dpdv{0.0f};
+    // ∂ns/∂u, ∂ns/∂v of the unit shading normal (pbrt-v4's dndu, dndv, made
+    // orthogonal to ns): how the surface turns over a footprint, which the
+    // ground truth composes with each facet and the filters widen by
+    // (docs/MODELS.md, "Curved surfaces"). Zero on a flat triangle.
+    glm::vec3 dndu{0.0f}, dndv{0.0f};
     // The interpolated vertex tangent (xyz, unnormalised) and glTF's
     // bitangent sign (w); w = 0: the mesh has none (mesh_tangents.h).
     glm::vec4 tangent{0.0f};

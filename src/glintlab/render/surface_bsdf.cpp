@@ -67,6 +67,29 @@ float widened(float alpha, float slope_variance, float max_alpha) {
     return std::min(std::sqrt(alpha * alpha + 2.0f * slope_variance), max_alpha);
 }
 
+// The surface's own turning over the footprint (docs/MODELS.md, "Curved
+// surfaces"): the macro normal's slope in the local frame (t, b, n) as a
+// linear function of the uv offset, columns ∂s/∂u and ∂s/∂v. At the hit the
+// slope is 0 and ∂s = −(t·∂n, b·∂n) (s = (−x/z, −y/z), normal_map.h).
+// `back`: the frame was flipped to the side of wo, so the normal is −ns.
+glm::mat2 macro_slope_gradient(const SurfaceHit& hit, const ShadingFrame& frame, bool back) {
+    const float sign = back ? 1.0f : -1.0f;
+    const glm::vec3 du = sign * hit.dndu, dv = sign * hit.dndv;
+    return glm::mat2(glm::vec2(glm::dot(frame.t, du), glm::dot(frame.b, du)),
+                     glm::vec2(glm::dot(frame.t, dv), glm::dot(frame.b, dv)));
+}
+
+// The covariance (xx, yy, xy) of slopes J Δ over the footprint's
+// parallelogram, Δ uniform over {a duvdx + b duvdy : a, b in [−½, ½]}:
+// J (duvdx duvdxᵀ + duvdy duvdyᵀ) Jᵀ / 12 (a uniform variable on a unit
+// interval has variance 1/12).
+glm::vec3 footprint_slope_covariance(const glm::mat2& J, const Footprint& fp) {
+    const glm::vec2 gx = J * fp.duvdx, gy = J * fp.duvdy;
+    return glm::vec3(gx.x * gx.x + gy.x * gy.x, gx.y * gx.y + gy.y * gy.y,
+                     gx.x * gx.y + gy.x * gy.y) /
+           12.0f;
+}
+
 template <typename... Ts>
 struct Overloaded : Ts... {
     using Ts::operator()...;
@@ -104,6 +127,18 @@ SurfaceBsdf make_surface_bsdf(const MaterialDesc& m, const SurfaceHit& hit, glm:
         frame.n = -frame.n;
         frame.b = -frame.b;  // keeps (t, b, n) right-handed
     }
+    // The glint material's curvature over the footprint, in the base frame.
+    glm::mat2 slope_gradient(0.0f);
+    glm::vec3 curvature_cov(0.0f);
+    if (m.type == MaterialDesc::Type::Glint && m.glint.curvature && footprint) {
+        slope_gradient = macro_slope_gradient(hit, frame, back);
+        curvature_cov = footprint_slope_covariance(slope_gradient, *footprint);
+        if (!std::isfinite(curvature_cov.x + curvature_cov.y + curvature_cov.z)) {
+            slope_gradient = glm::mat2(0.0f);
+            curvature_cov = glm::vec3(0.0f);
+        }
+    }
+    const bool curved = slope_gradient != glm::mat2(0.0f);
     // The frame every lobe but the ground truth's sees: tilted to the
     // footprint's mean normal. (`explicit` keeps the base frame and
     // composes each facet with the map at its own position.)
@@ -190,20 +225,30 @@ SurfaceBsdf make_surface_bsdf(const MaterialDesc& m, const SurfaceHit& hit, glm:
         g.has_footprint = true;
         g.footprint = *footprint;
     }
-    if (!m.glint.textures && !bump) return SurfaceBsdf(frame, g);
+    const GlintModelDescriptor& model = glint_model(m.glint.model_id);
+    const bool is_explicit = m.glint.model_id == GlintModelId::Explicit;
+    const bool widens_curvature = curved && model.filters_curvature;
+    if (!m.glint.textures && !bump && !widens_curvature && !(curved && is_explicit))
+        return SurfaceBsdf(frame, g);
     auto resolved = std::make_shared<GlintDesc>(resolve_glint_textures(m.glint, hit.uv, footprint));
-    if (!bump) return SurfaceBsdf(frame, g, std::move(resolved));
-    if (resolved->model_id == GlintModelId::Explicit) {
-        resolved->normal_map = m.normal_map;
-        resolved->normal_map_axes = bump->axes;
+    if (is_explicit) {
+        // The ground truth composes each facet with the map and the curved
+        // surface at its own position, in the base frame.
+        if (bump) {
+            resolved->normal_map = m.normal_map;
+            resolved->normal_map_axes = bump->axes;
+        }
+        resolved->slope_gradient = slope_gradient;
         return SurfaceBsdf(base_frame, g, std::move(resolved));
     }
     // Models whose precomputed tables hold one roughness (wang2020,
     // kneiphof2025: glint_model_descriptor.h) take the mean normal only.
-    if (glint_model(resolved->model_id).textured_roughness) {
+    const bool map_widens = bump && model.textured_roughness;
+    if (map_widens || widens_curvature) {
+        glm::vec3 c = widens_curvature ? curvature_cov : glm::vec3(0.0f);
+        if (map_widens) c += bump->slopes.covariance;
         // Glint NDF axes stay on the uv axes (the models' grids follow
         // them): Σ's correlation is dropped, as for anisotropic lobes.
-        const glm::vec3 c = bump->slopes.covariance;
         resolved->alpha_x = widened(resolved->alpha_x, c.x, 1.0f);
         resolved->alpha_y = widened(resolved->alpha_y, c.y, 1.0f);
         resolved->alpha_varies = true;

@@ -180,6 +180,7 @@ GlintDesc read_glint(JsonObject& o, TextureFileCache& files) {
                 "a diffuse base lies under a dielectric coating: it needs \"fresnel\": "
                 "{\"type\": \"dielectric\", \"eta\": ...} (the coating's interface)");
     g.seed = static_cast<uint32_t>(o.number("seed", 0.0, 0.0, 4294967295.0));
+    g.curvature = o.string("curvature", "none", {"none", "footprint"}) == "footprint";
     // Before the model's own checks, which read the numbers a texture replaces.
     const GlintModelDescriptor& model = glint_model(g.model_id);
     auto refuse = [&](const char* key) {

@@ -93,6 +93,8 @@ TEST(SceneLoader, MalformedScenesGiveClearErrors) {
          {"/materials/1/model", "unknown glint model \"zirr2099\"", "smooth"}},
         {"unknown ndf", [](auto& j) { j["materials"][1]["ndf"] = "phong"; },
          {"/materials/1/ndf", "phong", "beckmann, ggx"}},
+        {"unknown curvature", [](auto& j) { j["materials"][1]["curvature"] = "lean"; },
+         {"/materials/1/curvature", "lean", "none, footprint"}},
         {"unknown material type", [](auto& j) { j["materials"][0]["type"] = "velvet"; },
          {"/materials/0/type", "velvet", "diffuse"}},
         {"duplicate material", [](auto& j) { j["materials"][1]["name"] = "floor"; },

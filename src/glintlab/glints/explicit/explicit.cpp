@@ -78,12 +78,12 @@ float explicit_footprint_ndf(const ExplicitFacetField& field, const Footprint& f
     // with a normal map by its area relative to a facet of the base surface,
     // (wo·n)(m·n) / ((wo·n_map)(m·n_map)) (explicit_facet_weight's ratio).
     double count = 0.0;
-    if ((field.textures && field.textures->density) || field.normal_map) {
+    if ((field.textures && field.textures->density) || field.has_macro_normals()) {
         const float cos_gamma = std::cos(gamma_rad);
         for_each_explicit_facet(field, fp, [&](const ExplicitFacet& f) {
             if (!(glm::dot(wo, f.m) > 0.0f && glm::dot(mirror(wo, f.m), wi) >= cos_gamma)) return;
             double c = f.weight;
-            if (field.normal_map) {
+            if (field.has_macro_normals()) {
                 const double on = glm::dot(wo, f.n_map), mn = glm::dot(f.m, f.n_map);
                 if (!(on > 0.0 && mn > 0.0)) return;
                 c *= double(wo.z) * double(f.m.z) / (on * mn);
@@ -136,7 +136,7 @@ double explicit_direction_probability(const ExplicitFacetField& field, glm::vec3
 
 float explicit_facet_weight(const ExplicitFacetField& field, glm::vec3 wo, const ExplicitFacet& f,
                             glm::vec3& r) {
-    if (!field.normal_map) return explicit_facet_weight(field, wo, f.m, r);
+    if (!field.has_macro_normals()) return explicit_facet_weight(field, wo, f.m, r);
     const glm::vec3 t = f.t_map, b = glm::cross(f.n_map, t);
     auto to_map = [&](glm::vec3 v) {
         return glm::vec3(glm::dot(v, t), glm::dot(v, b), glm::dot(v, f.n_map));

@@ -72,6 +72,17 @@ struct ExplicitFacetField {
     // carries the map's (x, y) onto the local frame (GlintDesc). Null: none.
     const NormalMap* normal_map = nullptr;
     glm::vec2 normal_map_axes{1.0f};
+    // A curved surface (docs/MODELS.md, "Curved surfaces"): the macro
+    // normal's slope at a facet is slope_gradient (uv − slope_origin) in the
+    // local frame, added to the normal map's there (slopes add to first
+    // order, as LEAN's covariances do), and the facet composes with that
+    // normal as with a map's. Zero: a flat footprint.
+    glm::mat2 slope_gradient{0.0f};
+    glm::vec2 slope_origin{0.0f};
+    // The facets are composed with a macro normal of their own.
+    bool has_macro_normals() const {
+        return normal_map != nullptr || slope_gradient != glm::mat2(0.0f);
+    }
 };
 
 struct ExplicitFacet {

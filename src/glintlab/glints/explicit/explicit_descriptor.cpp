@@ -61,6 +61,7 @@ GlintModelDescriptor explicit_descriptor() {
                    "a footprint above max_facets_per_footprint: fail naming it, or enumerate one "
                    "of K x K equal parts (unbiased; for grazing and silhouette footprints)"),
     };
+    d.filters_curvature = false;  // composes each facet with the curved surface instead
     d.check = check_explicit;
     d.fit_material = fit_explicit;
     d.shades_light = GLINTLAB_SHADES_LIGHT_HOOK(explicit_shades_light);

@@ -31,7 +31,7 @@ struct Cone {
 
 glm::vec3 cone_radiance(const GlintLightingContext& ctx, const Cone& cone) {
     const GlintDesc& desc = *ctx.desc;
-    const ExplicitFacetField field = explicit_field(desc);
+    const ExplicitFacetField field = explicit_field(desc, ctx.footprint);
     const Footprint fp = explicit_enumerated_footprint(field, ctx.footprint);
     const double area = explicit_footprint_area(fp);
     if (!(area > 0.0)) return glm::vec3(0.0f);
@@ -52,7 +52,7 @@ glm::vec3 cone_radiance(const GlintLightingContext& ctx, const Cone& cone) {
 
 }  // namespace
 
-ExplicitFacetField explicit_field(const GlintDesc& desc) {
+ExplicitFacetField explicit_field(const GlintDesc& desc, const Footprint& footprint) {
     ExplicitFacetField f;
     f.ndf = desc.ndf;
     f.alpha_x = desc.alpha_x;
@@ -71,6 +71,8 @@ ExplicitFacetField explicit_field(const GlintDesc& desc) {
     }
     f.normal_map = desc.normal_map.get();
     f.normal_map_axes = desc.normal_map_axes;
+    f.slope_gradient = desc.slope_gradient;
+    f.slope_origin = footprint.uv;
     return f;
 }
 
@@ -80,7 +82,7 @@ float explicit_gamma_rad(const GlintDesc& desc) {
 
 float explicit_footprint_ndf(glm::vec3 wo, glm::vec3 wi, const Footprint& footprint,
                              const GlintDesc& desc) {
-    const ExplicitFacetField field = explicit_field(desc);
+    const ExplicitFacetField field = explicit_field(desc, footprint);
     return explicit_footprint_ndf(field, explicit_enumerated_footprint(field, footprint), wo, wi,
                                   explicit_gamma_rad(desc));
 }
@@ -103,7 +105,7 @@ glm::vec3 explicit_light_radiance(const GlintLightingContext& ctx, int light) {
         // visible environment, ∫ f V L cos dwi, as the integrators' light
         // sampling computes it for every other BSDF. Without V, concave or
         // self-shadowing shapes (the compare blob) were too bright.
-        const ExplicitFacetField field = explicit_field(desc);
+        const ExplicitFacetField field = explicit_field(desc, ctx.footprint);
         const glm::vec3 L = explicit_environment_radiance(
             field, explicit_enumerated_footprint(field, ctx.footprint), ctx.wo,
             [&](glm::vec3 r) {

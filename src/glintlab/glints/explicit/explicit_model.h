@@ -25,7 +25,9 @@ struct GlintDesc;
 struct GlintLightingContext;
 struct Scene;
 
-ExplicitFacetField explicit_field(const GlintDesc& desc);
+// The facet field of a glint material shaded at a footprint (its centre is
+// the origin of the curved surface's slope, GlintDesc::slope_gradient).
+ExplicitFacetField explicit_field(const GlintDesc& desc, const Footprint& footprint);
 float explicit_gamma_rad(const GlintDesc& desc);
 
 // GlintBxdf's D_P (explicit_footprint_ndf with the material's γ).

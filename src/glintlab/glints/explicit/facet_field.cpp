@@ -160,9 +160,11 @@ struct Walker {
                 if (t->alpha_y_sq) ay = alpha_from_squared(t->alpha_y_sq->at(f.uv).x);
             }
             f.m = sample_explicit_normal(field.ndf, ax, ay, u1, u2);
-            if (field.normal_map) {
-                f.n_map =
-                    normal_from_slope(field.normal_map->slope_at(f.uv) * field.normal_map_axes);
+            if (field.has_macro_normals()) {
+                glm::vec2 slope = field.slope_gradient * (f.uv - field.slope_origin);
+                if (field.normal_map)
+                    slope += field.normal_map->slope_at(f.uv) * field.normal_map_axes;
+                f.n_map = normal_from_slope(slope);
                 glm::vec3 b;
                 tangent_frame_around(f.n_map, &f.t_map, &b);
                 f.m = glm::normalize(f.m.x * f.t_map + f.m.y * b + f.m.z * f.n_map);

@@ -73,6 +73,8 @@ GlintModelDescriptor jakob2014_descriptor() {
                    "E[A(query)] of 002 Eq. 11: the expected uv area of one query",
                    GlintParamUi::Log),
     };
+    // A per-hit α would build one NDF integral table per pixel (snapped_alpha).
+    d.filters_curvature = false;
     d.check = check_jakob2014;
     d.fit_material = fit_jakob2014;
     d.match_facet_cone = match_jakob2014_facet_cone;

@@ -103,7 +103,7 @@ GlintModelDescriptor kneiphof2025_descriptor() {
         gp::number("density_randomization", &P::density_randomization, 0.0, 50.0, "",
                    "deliot2023's std-dev of the per-cell jitter of ln(density)"),
     };
-    d.textured_density = d.textured_roughness = false;
+    d.textured_density = d.textured_roughness = d.filters_curvature = false;
     d.untextured_reason =
         "its prefiltered environment and smooth term (003 §4) are computed for one roughness and "
         "one density per material";

@@ -148,7 +148,7 @@ GlintModelDescriptor wang2020_descriptor() {
                    "image has one sample per pixel (GPU, CPU at 1 spp) and none where the CPU "
                    "supersamples (default), never, or always as published"),
     };
-    d.textured_density = d.textured_roughness = false;
+    d.textured_density = d.textured_roughness = d.filters_curvature = false;
     d.untextured_reason =
         "its quadtree tables (001 §5) are built for one roughness and one facet count per material";
     d.check = check_wang2020;

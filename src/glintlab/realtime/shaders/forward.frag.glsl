@@ -20,6 +20,9 @@
 #include "glintlab/microfacet/vndf.glsl"
 #include "glintlab/glints/glint_uniforms.glsl"
 #include "glintlab/glints/material.glsl"
+// Unconditionally: the assembly includes a file once, where it first
+// appears, and normal_map.glsl includes it inside its own #ifdef.
+#include "glintlab/core/slope_frame.glsl"
 
 in vec3 v_position;
 in vec3 v_normal;
@@ -327,6 +330,11 @@ void main() {
 #endif
     vec3 n = u_has_normals ? normalize(v_normal) : ng;
     if (u_has_normals && dot(ng, n) < 0.0f) ng = -ng;
+#ifdef GLINTLAB_GLINT_CURVATURE
+    // The unit normal's change per pixel step (x right, y down the image, as
+    // the footprint's): here, in uniform control flow.
+    vec3 dndx = dFdxFine(n), dndy = -dFdyFine(n);
+#endif
     // Emitters: sphere lights shine from their outer side (integrators.cpp emitted()).
     if (dot(ng, wo_world) > 0.0f) radiance += u_emission;
 
@@ -360,6 +368,19 @@ void main() {
             n = -n;
             b = -b;
         }
+#ifdef GLINTLAB_GLINT_CURVATURE
+        if (mat.type == MATERIAL_GLINT) {
+            // render/surface_bsdf.cpp footprint_slope_covariance: the slope
+            // changes per pixel step are −(t·∂n, b·∂n); over the pixel's
+            // uniform footprint the variance is their squares' sum / 12.
+            vec2 gx = vec2(dot(t, dndx), dot(b, dndx));
+            vec2 gy = vec2(dot(t, dndy), dot(b, dndy));
+            vec2 variance = (gx * gx + gy * gy) / 12.0f;
+            mat.glint.alpha_x = slope_widened_alpha(mat.glint.alpha_x, variance.x, 1.0f);
+            mat.glint.alpha_y = slope_widened_alpha(mat.glint.alpha_y, variance.y, 1.0f);
+            g_glint_alpha = vec2(mat.glint.alpha_x, mat.glint.alpha_y);
+        }
+#endif
 #ifdef GLINTLAB_NORMAL_MAP
         normal_map_shade(fp, back_side, v_dpdu.w < 0.0f ? -1.0f : 1.0f, t, b, n, mat);
 #endif
