@@ -34,6 +34,9 @@ uniform vec3 u_eye;  // world camera position
 // under a dielectric coat, masking (GLINT_G2_*); its Fresnel u_fresnel_*
 // (GLINT_FRESNEL_*) is declared in glint_uniforms.glsl.
 uniform vec3 u_glint_color;
+// 1: the material's "curvature" is "footprint" (main() adds the surface's
+// curvature to the slope variance); 0: "none", the default.
+uniform int u_glint_curvature;
 uniform vec3 u_glint_base_albedo;
 uniform int u_glint_g2;
 // Lights: directional (world direction towards the light, irradiance) and
@@ -292,7 +295,7 @@ void main() {
     vec3 n = normalize(v_normal);
     vec2 curvature_variance = glint_curvature_slope_variance(n, v_dpdu);
     GlintInputs inputs = glint_inputs_from_textures(fp);
-    inputs.slope_variance += curvature_variance;
+    if (u_glint_curvature != 0) inputs.slope_variance += curvature_variance;
     glint_set_inputs(inputs);
     o_radiance = vec4(glint_shade(v_position, n, v_dpdu, fp), 1.0f);
 }

@@ -267,6 +267,8 @@ std::string header(const GlintModelDescriptor& d, ExportLanguage lang, const std
         "  u_glint_log_density       float ln(microfacets per unit uv area), scene "
         "\"log_density\"\n"
         "  u_glint_seed              uint pattern seed\n"
+        "  u_glint_curvature         int 1: main() widens by the surface's curvature (scene\n"
+        "                            \"curvature\": \"footprint\"), 0: not (\"none\")\n"
         "  u_glint_color             vec3 tint, u_glint_base_albedo vec3 diffuse base (0: none)\n"
         "  u_fresnel_mode            int 0 none, 1 Schlick (u_fresnel_f0), 2 conductor\n"
         "                            (u_fresnel_eta, u_fresnel_k), 3 dielectric (u_fresnel_eta.x)\n"
@@ -701,6 +703,7 @@ std::vector<ExportedFile> export_model(const ExportOptions& o) {
           {"u_glint_alpha", {g.alpha_x, g.alpha_y}},
           {"u_glint_log_density", g.log_density},
           {"u_glint_seed", g.seed},
+          {"u_glint_curvature", g.curvature ? 1 : 0},
           {"u_glint_color", v3(g.color)},
           {"u_glint_base_albedo", v3(g.base_albedo)},
           {"u_fresnel_mode", static_cast<int>(g.fresnel.mode)},
