@@ -9,6 +9,8 @@ x along +u, y up in the image, i.e. along -v, z out of the surface):
   scratches.exr  256 x 256, high frequency: 48 straight V-grooves 3 texels wide in
                  random directions that wrap around the tile, walls at 27
                  degrees; flat between them
+  ridges.exr     128 x 128, diagonal: 16 sinusoidal ridges along u = v, slopes up to
+                 0.3 with s_x = -s_y, so the footprint's slopes are correlated
 
 Both tile with period 1 in u and v. Run from the repository root with the
 Python module on the path:
@@ -62,9 +64,17 @@ def scratches(u, v):
     return normals(grad_u, grad_v)
 
 
+def ridges(u, v):
+    # h = a sin(2 pi 16 (u + v)) / (2 pi 16): the gradient is (c, c) in uv,
+    # (c, -c) in the tangent frame (y along -v): perfectly anti-correlated.
+    c = 0.3 * np.cos(2 * np.pi * 16 * (u + v))
+    return normals(c, c)
+
+
 def main():
     os.makedirs(OUT, exist_ok=True)
-    for name, size, make in (("bumps.exr", 128, bumps), ("scratches.exr", N, scratches)):
+    for name, size, make in (("bumps.exr", 128, bumps), ("scratches.exr", N, scratches),
+                             ("ridges.exr", 128, ridges)):
         v, u = np.mgrid[0:size, 0:size].astype(np.float64)
         glintlab.write_image(os.path.join(OUT, name), make((u + 0.5) / size, (v + 0.5) / size))
 

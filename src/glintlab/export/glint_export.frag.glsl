@@ -89,6 +89,8 @@ GlintInputs glint_inputs_from_uniforms() {
 // slope.
 void glint_set_inputs(GlintInputs inputs) {
     g_glint_log_density = inputs.log_density;
+    // Σ_xy is not an input: the exported chermain2020 is uncorrelated.
+    g_glint_slope_correlation = 0.0f;
     vec2 alpha = clamp(inputs.alpha, vec2(1e-3f), vec2(1.0f));
 #ifdef GLINTLAB_GLINT_PER_PIXEL_ALPHA
     alpha = vec2(slope_widened_alpha(alpha.x, max(inputs.slope_variance.x, 0.0f), 1.0f),

@@ -101,6 +101,10 @@ struct GlintDesc {
     // uv offset from the footprint's centre, columns ∂s/∂u and ∂s/∂v in the
     // hit's local frame. Zero: a flat footprint.
     glm::mat2 slope_gradient{0.0f};
+    // Set by the renderers at each hit for the models whose descriptor
+    // reads it: the correlation of the footprint's slopes, Σ_xy / (σ_x σ_y)
+    // with σ_i² = α_i²/2 of the widened α, in [−0.99, 0.99].
+    float slope_correlation = 0.0f;
     // The active model's parameters, as read through its descriptor's
     // parameter table. (The block as written in the scene file is not kept:
     // nothing needs it once it is read, and a second copy could disagree.)

@@ -176,6 +176,9 @@ struct GlintModelDescriptor {
     // false), where a per-hit α builds a table per pixel (jakob2014), and
     // for `explicit`, which composes each facet with the curved surface.
     bool filters_curvature = true;
+    // The material's model reads the correlation of the footprint's slopes
+    // (GlintDesc::slope_correlation) as well as the widened α; null: no.
+    std::function<bool(const GlintDesc&)> reads_slope_correlation;
     GlintValidationSuite validation;  // name empty: no suite
     // Set (set_export): `glintlab export` writes the model (its GPU back end).
     std::optional<GlintModelExport> shader_export;

@@ -450,6 +450,12 @@ struct GpuRenderer::Impl {
         glProgramUniform3fv(p, loc("u_fresnel_eta"), 1, glm::value_ptr(g.fresnel.eta));
         glProgramUniform3fv(p, loc("u_fresnel_k"), 1, glm::value_ptr(g.fresnel.k));
         glProgramUniform1i(p, loc("u_glint_g2"), glint_g2_mode(g.model_id));
+        // Programs with a per-fragment α (textures, a normal map, curvature):
+        // the model shears its target by the slopes' correlation.
+        const GlintModelDescriptor& model = glint_model(g.model_id);
+        glProgramUniform1i(
+            p, loc("u_glint_reads_correlation"),
+            model.reads_slope_correlation && model.reads_slope_correlation(g) ? 1 : 0);
         if (GpuModelState* state = model_state(g.model_id))
             state->prepare(p, uniforms, g, frame(scene), options_of(g.model_id));
     }

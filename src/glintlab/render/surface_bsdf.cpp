@@ -90,6 +90,14 @@ glm::vec3 footprint_slope_covariance(const glm::mat2& J, const Footprint& fp) {
            12.0f;
 }
 
+// Σ_xy / (σ_x σ_y), σ_i² = α_i²/2 of the widened lobe, kept within
+// [−0.99, 0.99] as Chermain et al. 2021's shader keeps theirs (the slope
+// transform divides by √(1 − ρ²)).
+float correlation_of(float covariance_xy, float alpha_x, float alpha_y) {
+    const float rho = 2.0f * covariance_xy / (alpha_x * alpha_y);
+    return std::isfinite(rho) ? std::clamp(rho, -0.99f, 0.99f) : 0.0f;
+}
+
 template <typename... Ts>
 struct Overloaded : Ts... {
     using Ts::operator()...;
@@ -248,10 +256,19 @@ SurfaceBsdf make_surface_bsdf(const MaterialDesc& m, const SurfaceHit& hit, glm:
         glm::vec3 c = widens_curvature ? curvature_cov : glm::vec3(0.0f);
         if (map_widens) c += bump->slopes.covariance;
         // Glint NDF axes stay on the uv axes (the models' grids follow
-        // them): Σ's correlation is dropped, as for anisotropic lobes.
+        // them): Σ's correlation is dropped, as for anisotropic lobes,
+        // unless the model shears its target by it (chermain2020 with
+        // Chermain et al. 2021's slope correlation).
+        const bool correlated =
+            model.reads_slope_correlation && model.reads_slope_correlation(*resolved);
+        if (correlated && map_widens)
+            c.z += m.normal_map->covariance_xy(hit.uv, footprint, bump->map_slopes) * bump->axes.x *
+                   bump->axes.y;
         resolved->alpha_x = widened(resolved->alpha_x, c.x, 1.0f);
         resolved->alpha_y = widened(resolved->alpha_y, c.y, 1.0f);
         resolved->alpha_varies = true;
+        if (correlated && c.z != 0.0f)
+            resolved->slope_correlation = correlation_of(c.z, resolved->alpha_x, resolved->alpha_y);
     }
     return SurfaceBsdf(frame, g, std::move(resolved));
 }

@@ -69,6 +69,7 @@ Chermain2020Target target_of(const GlintDesc& desc) {
     Chermain2020Target t;
     t.alpha_x = desc.alpha_x;
     t.alpha_y = desc.alpha_y;
+    t.rho = desc.slope_correlation;
     t.log_density = desc.log_density;
     t.seed = desc.seed;
     return t;
@@ -79,28 +80,34 @@ Chermain2020Target target_of(const GlintDesc& desc) {
 glm::vec3 chermain2020_ndf_rgb(glm::vec3 h, const Footprint& footprint,
                                const Chermain2020Target& target, const Chermain2020Params& params) {
     return shader::chermain2020_ndf_rgb(h, footprint, shape(), target.alpha_x, target.alpha_y,
-                                        target.log_density, target.seed, params.relative_area,
-                                        params.max_anisotropy, params.density_randomization,
-                                        to_shader(params));
+                                        target.rho, target.log_density, target.seed,
+                                        params.relative_area, params.max_anisotropy,
+                                        params.density_randomization, to_shader(params));
 }
 
 float chermain2020_ndf(glm::vec3 h, const Footprint& footprint, const Chermain2020Target& target,
                        const Chermain2020Params& params) {
-    return shader::chermain2020_ndf(h, footprint, shape(), target.alpha_x, target.alpha_y,
-                                    target.log_density, target.seed, params.relative_area,
-                                    params.max_anisotropy, params.density_randomization);
+    return shader::chermain2020_ndf(
+        h, footprint, shape(), target.alpha_x, target.alpha_y, target.rho, target.log_density,
+        target.seed, params.relative_area, params.max_anisotropy, params.density_randomization);
 }
 
 glm::vec3 chermain2020_level_sdf(glm::vec2 slope, glm::vec2 uv, glm::vec3 ellipse, int level,
                                  const Chermain2020Target& target,
                                  const Chermain2020Params& params) {
-    return shader::chermain2020_level_p22(
-        slope, uv, ellipse, level, shape(), target.alpha_x, target.alpha_y, target.log_density,
-        params.relative_area, params.density_randomization, target.seed, to_shader(params));
+    return shader::chermain2020_level_p22(slope, uv, ellipse, level, shape(), target.alpha_x,
+                                          target.alpha_y, target.rho, target.log_density,
+                                          params.relative_area, params.density_randomization,
+                                          target.seed, to_shader(params));
 }
 
 float chermain2020_target_ndf(glm::vec3 h, const Chermain2020Target& target) {
-    return shader::D_Beckmann(h, target.alpha_x, target.alpha_y);
+    if (target.rho == 0.0f) return shader::D_Beckmann(h, target.alpha_x, target.alpha_y);
+    if (h.z <= 0.0f) return 0.0f;
+    const float c2 = h.z * h.z;
+    return shader::chermain2020_target_p22(glm::vec2(-h.x / h.z, -h.y / h.z), target.alpha_x,
+                                           target.alpha_y, target.rho) /
+           (c2 * c2);
 }
 
 Chermain2020CellInfo chermain2020_cell(glm::ivec2 cell, int level, const Chermain2020Target& target,
@@ -114,13 +121,13 @@ Chermain2020CellInfo chermain2020_cell(glm::ivec2 cell, int level, const Chermai
 float chermain2020_cell_p22(const Chermain2020CellInfo& cell, glm::vec2 slope,
                             const Chermain2020Target& target) {
     return shader::chermain2020_cell_p22(to_shader(cell), slope, shape(), target.alpha_x,
-                                         target.alpha_y);
+                                         target.alpha_y, target.rho);
 }
 
 glm::vec2 chermain2020_dict_slope(const Chermain2020CellInfo& cell, glm::vec2 slope,
                                   const Chermain2020Target& target) {
     return shader::chermain2020_dict_slope(to_shader(cell), slope, shape(), target.alpha_x,
-                                           target.alpha_y);
+                                           target.alpha_y, target.rho);
 }
 
 float chermain2020_footprint_ndf(glm::vec3 h, const Footprint& footprint, const GlintDesc& desc) {

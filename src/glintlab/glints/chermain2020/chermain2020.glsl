@@ -123,10 +123,36 @@ float chermain2020_marginal(Chermain2020Dict d, int dist, int level, float x) {
 }
 
 // The anisotropic Beckmann SDF the hierarchy converges to (004 §4.3).
-float chermain2020_target_p22(vec2 slope, float alpha_x, float alpha_y) {
+// With a slope correlation rho (Chermain et al. 2021, their Eq. 17's
+// non-axis-aligned Beckmann in our α = √2 σ): the bivariate Gaussian of
+// correlation rho; rho = 0 is 004's target, the same operations.
+float chermain2020_target_p22(vec2 slope, float alpha_x, float alpha_y, float rho) {
     float x = slope.x / alpha_x;
     float y = slope.y / alpha_y;
-    return exp(-(x * x + y * y)) / (PI * alpha_x * alpha_y);
+    if (rho == 0.0f) return exp(-(x * x + y * y)) / (PI * alpha_x * alpha_y);
+    float one_minus_rho2 = 1.0f - rho * rho;
+    return exp(-(x * x - 2.0f * rho * x * y + y * y) / one_minus_rho2) /
+           (PI * alpha_x * alpha_y * sqrt(one_minus_rho2));
+}
+
+// S^-1 s in the dictionary's scale (Eq. 9-11's scale), or with a slope
+// correlation rho Chermain et al. 2021's Eq. 18: the upper-triangular
+// M^-1 = alpha_dict [[1/(alpha_x c), -rho/(alpha_y c)], [0, 1/alpha_y]],
+// c = sqrt(1 - rho^2), which maps the correlated Gaussian of
+// chermain2020_target_p22 onto the dictionary's isotropic one.
+vec2 chermain2020_unscaled_slope(vec2 slope, float alpha_dict, float alpha_x, float alpha_y,
+                                 float rho) {
+    if (rho == 0.0f) return vec2(slope.x * alpha_dict / alpha_x, slope.y * alpha_dict / alpha_y);
+    float c = sqrt(1.0f - rho * rho);
+    return vec2((slope.x / alpha_x - rho * slope.y / alpha_y) * alpha_dict / c,
+                slope.y * alpha_dict / alpha_y);
+}
+
+// |det M^-1|: the Jacobian of the slope transform.
+float chermain2020_unscaled_jacobian(float alpha_dict, float alpha_x, float alpha_y, float rho) {
+    float jac = alpha_dict * alpha_dict / (alpha_x * alpha_y);
+    if (rho == 0.0f) return jac;
+    return jac / sqrt(1.0f - rho * rho);
 }
 
 // Slope-space coordinates of `slope` in the dictionary frame of cell c:
@@ -134,8 +160,8 @@ float chermain2020_target_p22(vec2 slope, float alpha_x, float alpha_y) {
 // docs/MODELS.md: this order keeps anisotropic alpha converging to the
 // anisotropic target, the printed S^-1 R^-1 only does for alpha_x = alpha_y).
 vec2 chermain2020_dict_slope(Chermain2020Cell c, vec2 slope, Chermain2020Dict d, float alpha_x,
-                             float alpha_y) {
-    vec2 q = vec2(slope.x * d.alpha_dict / alpha_x, slope.y * d.alpha_dict / alpha_y);
+                             float alpha_y, float rho) {
+    vec2 q = chermain2020_unscaled_slope(slope, d.alpha_dict, alpha_x, alpha_y, rho);
     float cs = cos(c.theta);
     float sn = sin(c.theta);
     return vec2(cs * q.x + sn * q.y, -sn * q.x + cs * q.y);
@@ -143,11 +169,11 @@ vec2 chermain2020_dict_slope(Chermain2020Cell c, vec2 slope, Chermain2020Dict d,
 
 // P^22_theta,alpha(slope, l, s0) of one cell (Eq. 11, Algorithm 3).
 float chermain2020_cell_p22(Chermain2020Cell c, vec2 slope, Chermain2020Dict d, float alpha_x,
-                            float alpha_y) {
+                            float alpha_y, float rho) {
     if (!c.kept) return 0.0f;
-    if (c.dist_level >= d.n_levels) return chermain2020_target_p22(slope, alpha_x, alpha_y);
-    vec2 q = chermain2020_dict_slope(c, slope, d, alpha_x, alpha_y);
-    float jac = d.alpha_dict * d.alpha_dict / (alpha_x * alpha_y);  // Jacobian of S_alpha
+    if (c.dist_level >= d.n_levels) return chermain2020_target_p22(slope, alpha_x, alpha_y, rho);
+    vec2 q = chermain2020_dict_slope(c, slope, d, alpha_x, alpha_y, rho);
+    float jac = chermain2020_unscaled_jacobian(d.alpha_dict, alpha_x, alpha_y, rho);
     return chermain2020_marginal(d, c.dist_x, c.dist_level, q.x) *
            chermain2020_marginal(d, c.dist_y, c.dist_level, q.y) * jac;
 }
@@ -193,11 +219,12 @@ struct Chermain2020Lookup {
     // every dictionary cell's SDF is 0 and its rotation and fetches are skipped.
     bool in_support;
 };
-Chermain2020Lookup chermain2020_lookup(vec2 slope, Chermain2020Dict d, float alpha_x, float alpha_y) {
+Chermain2020Lookup chermain2020_lookup(vec2 slope, Chermain2020Dict d, float alpha_x, float alpha_y,
+                                       float rho) {
     Chermain2020Lookup k;
-    k.q = vec2(slope.x * d.alpha_dict / alpha_x, slope.y * d.alpha_dict / alpha_y);
-    k.jac = d.alpha_dict * d.alpha_dict / (alpha_x * alpha_y);
-    k.target_p22 = chermain2020_target_p22(slope, alpha_x, alpha_y);
+    k.q = chermain2020_unscaled_slope(slope, d.alpha_dict, alpha_x, alpha_y, rho);
+    k.jac = chermain2020_unscaled_jacobian(d.alpha_dict, alpha_x, alpha_y, rho);
+    k.target_p22 = chermain2020_target_p22(slope, alpha_x, alpha_y, rho);
     k.in_support = dot(k.q, k.q) < 2.002f * d.slope_max * d.slope_max;
     return k;
 }
@@ -277,8 +304,9 @@ ivec2 chermain2020_row_range(Chermain2020Ellipse e, int y) {
 // the analytic target (line 10) keep their colour too, so the tint does not
 // vanish when the density passes the dictionary's last level.
 vec3 chermain2020_level_p22(vec2 slope, vec2 uv, vec3 ellipse, int level, Chermain2020Dict d,
-                            float alpha_x, float alpha_y, float log_density, float relative_area,
-                            float density_randomization, uint seed, Chermain2020Colours colours) {
+                            float alpha_x, float alpha_y, float rho, float log_density,
+                            float relative_area, float density_randomization, uint seed,
+                            Chermain2020Colours colours) {
     float scale = exp2(float(d.n_levels - 1 - level));  // cells per uv unit at this level
     vec2 centre = uv * scale;
     float major = ellipse.x * scale;
@@ -321,7 +349,7 @@ vec3 chermain2020_level_p22(vec2 slope, vec2 uv, vec3 ellipse, int level, Cherma
     e.q0 = sa * sa * im2 + ca * ca * in2;
     e.x0 = x0;
     e.x1 = x1;
-    Chermain2020Lookup lookup = chermain2020_lookup(slope, d, alpha_x, alpha_y);
+    Chermain2020Lookup lookup = chermain2020_lookup(slope, d, alpha_x, alpha_y, rho);
     vec3 sum_p = vec3(0.0f);
     float sum_w = 0.0f;
     int y = y0;
@@ -358,8 +386,9 @@ vec3 chermain2020_level_p22(vec2 slope, vec2 uv, vec3 ellipse, int level, Cherma
 // RGB D_P(h) of Eq. 13 over the footprint (Algorithm 1) with coloured glints,
 // h in the local frame.
 vec3 chermain2020_ndf_rgb(vec3 h, Footprint fp, Chermain2020Dict d, float alpha_x, float alpha_y,
-                          float log_density, uint seed, float relative_area, float max_anisotropy,
-                          float density_randomization, Chermain2020Colours colours) {
+                          float rho, float log_density, uint seed, float relative_area,
+                          float max_anisotropy, float density_randomization,
+                          Chermain2020Colours colours) {
     if (h.z <= 0.0f) return vec3(0.0f);
     vec2 slope = vec2(-h.x / h.z, -h.y / h.z);  // normalToSlope (Eq. 1)
     vec3 ellipse = chermain2020_footprint_ellipse(fp.duvdx, fp.duvdy, max_anisotropy);
@@ -368,10 +397,11 @@ vec3 chermain2020_ndf_rgb(vec3 h, Footprint fp, Chermain2020Dict d, float alpha_
     float lod = clamp(float(d.n_levels - 1) + log2(ellipse.y), 0.0f, 28.0f);
     int l0 = int(floor(lod));
     float w = lod - float(l0);
-    vec3 p = chermain2020_level_p22(slope, fp.uv, ellipse, l0, d, alpha_x, alpha_y, log_density,
-                                    relative_area, density_randomization, seed, colours);
+    vec3 p = chermain2020_level_p22(slope, fp.uv, ellipse, l0, d, alpha_x, alpha_y, rho,
+                                    log_density, relative_area, density_randomization, seed,
+                                    colours);
     if (w > 0.0f) {  // line 8: lerp of the two discrete P-SDFs (Eq. 12)
-        vec3 p1 = chermain2020_level_p22(slope, fp.uv, ellipse, l0 + 1, d, alpha_x, alpha_y,
+        vec3 p1 = chermain2020_level_p22(slope, fp.uv, ellipse, l0 + 1, d, alpha_x, alpha_y, rho,
                                          log_density, relative_area, density_randomization, seed,
                                          colours);
         p = mix(p, p1, w);
@@ -382,12 +412,12 @@ vec3 chermain2020_ndf_rgb(vec3 h, Footprint fp, Chermain2020Dict d, float alpha_
 
 // Scalar D_P(h) of Eq. 13 (no colour table), h in the local frame.
 float chermain2020_ndf(vec3 h, Footprint fp, Chermain2020Dict d, float alpha_x, float alpha_y,
-                       float log_density, uint seed, float relative_area, float max_anisotropy,
-                       float density_randomization) {
+                       float rho, float log_density, uint seed, float relative_area,
+                       float max_anisotropy, float density_randomization) {
     Chermain2020Colours none;
     none.count = 0;
     for (int i = 0; i < CHERMAIN2020_MAX_COLOURS; ++i) none.table[i] = vec3(1.0f);
-    return chermain2020_ndf_rgb(h, fp, d, alpha_x, alpha_y, log_density, seed, relative_area,
+    return chermain2020_ndf_rgb(h, fp, d, alpha_x, alpha_y, rho, log_density, seed, relative_area,
                                 max_anisotropy, density_randomization, none)
         .x;
 }

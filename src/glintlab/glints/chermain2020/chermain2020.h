@@ -18,6 +18,10 @@ struct GlintDesc;
 struct Chermain2020Target {
     float alpha_x = 0.5f;
     float alpha_y = 0.5f;
+    // The slopes' correlation, in (−1, 1) (Chermain et al. 2021): a normal
+    // map's or a curved surface's Σ_xy when the model's "slope_correlation"
+    // is "chermain2021"; 0 is 004's axis-aligned target.
+    float rho = 0.0f;
     float log_density = 27.0f;  // ln(facets per unit uv area); authors' UI default
     uint32_t seed = 0;
 };

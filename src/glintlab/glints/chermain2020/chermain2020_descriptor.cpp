@@ -75,6 +75,13 @@ GlintModelDescriptor chermain2020_descriptor() {
         // zeta in dictionary levels; 8 levels is a factor 4^8 in density already.
         gp::number("density_randomization", &P::density_randomization, 0.0, 8.0, "levels",
                    "zeta (004 §7.1, Alg. 3 line 8): std-dev of the distribution LOD"),
+        gp::choice("slope_correlation", &P::slope_correlation,
+                   {{"chermain2021", true}, {"none", false}},
+                   "a normal map's or curved surface's slope correlation shears the target NDF "
+                   "(Chermain et al. 2021, Eq. 18), or is dropped (004)"),
+    };
+    d.reads_slope_correlation = [](const GlintDesc& g) {
+        return std::get<P>(g.params).slope_correlation;
     };
     GlintExtraKey colours;
     colours.key = "colours";

@@ -12,6 +12,7 @@ struct Chermain2020ConvergenceCase {
     float alpha_x = 0.0f, alpha_y = 0.0f;
     float tan_theta = 0.0f;  // of h, in units of alpha along the azimuth phi
     float phi = 0.0f;
+    float rho = 0.0f;  // slope correlation (Chermain et al. 2021)
     double mean_dp = 0.0, target = 0.0, rel_err = 0.0;
 };
 std::vector<Chermain2020ConvergenceCase> chermain2020_convergence(int footprints, uint64_t seed);

@@ -31,7 +31,8 @@ vec3 glint_ndf(vec3 h, Footprint fp) {
     Chermain2020Colours colours;
     colours.count = u_chermain2020_colour_count;
     for (int i = 0; i < CHERMAIN2020_MAX_COLOURS; ++i) colours.table[i] = u_chermain2020_colours[i];
-    return chermain2020_ndf_rgb(h, fp, d, u_glint_alpha.x, u_glint_alpha.y, u_glint_log_density,
+    return chermain2020_ndf_rgb(h, fp, d, u_glint_alpha.x, u_glint_alpha.y,
+                                g_glint_slope_correlation, u_glint_log_density,
                                 u_glint_seed, u_chermain2020_relative_area,
                                 u_chermain2020_max_anisotropy,
                                 u_chermain2020_density_randomization, colours);

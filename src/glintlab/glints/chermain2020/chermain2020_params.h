@@ -17,6 +17,10 @@ struct Chermain2020Params {
     float max_anisotropy = 8.0f;
     // zeta (004 §7.1, Alg. 3 line 8): std-dev of the distribution LOD, [0, 8].
     float density_randomization = 0.0f;
+    // A normal map's and a curved surface's slope correlation Σ_xy shears the
+    // target (Chermain et al. 2021, Eq. 18): "chermain2021" (true) or
+    // dropped as 004 has no correlation ("none", false).
+    bool slope_correlation = true;
     // Coloured glints (004 §7.1, Alg. 3 lines 11-12, 19): each cell tints its
     // SDF with colour_table[floor(colour_count * U_c)]; 0 colours = white.
     int colour_count = 0;

@@ -28,8 +28,9 @@ TEST(Chermain2020, ConvergesToBeckmann) {
     // dictionary's own bias (kernel smoothing, 192 marginals) is < 0.5 %.
     // 2 % is the convergence bound, well above both.
     for (const auto& c : chermain2020_convergence(300, 7))
-        EXPECT_LE(c.rel_err, 0.02) << c.alpha_x << " " << c.alpha_y << " " << c.tan_theta << " "
-                                   << c.phi << " mean " << c.mean_dp << " target " << c.target;
+        EXPECT_LE(c.rel_err, 0.02)
+            << c.alpha_x << " " << c.alpha_y << " " << c.tan_theta << " " << c.phi << " rho "
+            << c.rho << " mean " << c.mean_dp << " target " << c.target;
 }
 
 TEST(Chermain2020, WeakWhiteFurnace) {

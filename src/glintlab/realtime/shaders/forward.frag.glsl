@@ -368,6 +368,9 @@ void main() {
             n = -n;
             b = -b;
         }
+#ifdef GLINTLAB_MATERIAL_TEXTURES
+        float glint_cov_xy = 0.0f;  // the footprint's Σ_xy (render/surface_bsdf.cpp)
+#endif
 #ifdef GLINTLAB_GLINT_CURVATURE
         if (mat.type == MATERIAL_GLINT) {
             // render/surface_bsdf.cpp footprint_slope_covariance: the slope
@@ -376,13 +379,23 @@ void main() {
             vec2 gx = vec2(dot(t, dndx), dot(b, dndx));
             vec2 gy = vec2(dot(t, dndy), dot(b, dndy));
             vec2 variance = (gx * gx + gy * gy) / 12.0f;
+            glint_cov_xy += (gx.x * gx.y + gy.x * gy.y) / 12.0f;
             mat.glint.alpha_x = slope_widened_alpha(mat.glint.alpha_x, variance.x, 1.0f);
             mat.glint.alpha_y = slope_widened_alpha(mat.glint.alpha_y, variance.y, 1.0f);
             g_glint_alpha = vec2(mat.glint.alpha_x, mat.glint.alpha_y);
         }
 #endif
 #ifdef GLINTLAB_NORMAL_MAP
-        normal_map_shade(fp, back_side, v_dpdu.w < 0.0f ? -1.0f : 1.0f, t, b, n, mat);
+        normal_map_shade(fp, back_side, v_dpdu.w < 0.0f ? -1.0f : 1.0f, t, b, n, mat,
+                         glint_cov_xy);
+#endif
+#ifdef GLINTLAB_MATERIAL_TEXTURES
+        if (mat.type == MATERIAL_GLINT && u_glint_reads_correlation != 0 && glint_cov_xy != 0.0f) {
+            // render/surface_bsdf.cpp correlation_of.
+            float rho = 2.0f * glint_cov_xy / (mat.glint.alpha_x * mat.glint.alpha_y);
+            g_glint_slope_correlation =
+                isnan(rho) || isinf(rho) ? 0.0f : clamp(rho, -0.99f, 0.99f);
+        }
 #endif
         vec3 wo = vec3(dot(wo_world, t), dot(wo_world, b), dot(wo_world, n));
 #if GLINTLAB_POINT_LIGHTS > 0

@@ -32,6 +32,10 @@ uniform int u_material_texture_mask;  // bit i: slot i is textured
 uniform mat2 u_material_texture_linear[6];
 uniform vec2 u_material_texture_offset[6];
 uniform vec2 u_material_texture_size[6];
+// The glint model shears its target by the slopes' correlation
+// (GlintModelDescriptor::reads_slope_correlation: chermain2020), which the
+// normal map and the curvature add up per fragment.
+uniform int u_glint_reads_correlation;
 
 // One line: the texture of `slot` over the footprint (a constant slot indexes the sampler array).
 #define MATERIAL_TEXTURE(slot, fp) material_texture_filtered(u_material_texture[slot], u_material_texture_size[slot], u_material_texture_linear[slot], u_material_texture_offset[slot], fp, 0.0f)
@@ -51,6 +55,7 @@ void resolve_material_textures(Footprint fp) {
     g_glint_base_albedo = u_glint_base_albedo;
     g_glint_alpha = glint_alpha_uniform();
     g_glint_log_density = glint_log_density_uniform();
+    g_glint_slope_correlation = 0.0f;
     int mask = u_material_texture_mask;
     bool glint = u_material_type == 4;
     if ((mask & (1 << MATERIAL_TEXTURE_DENSITY)) != 0)

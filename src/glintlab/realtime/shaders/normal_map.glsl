@@ -38,16 +38,19 @@ vec4 normal_map_fetch(sampler2D tex, Footprint fp, bool filtered) {
 // Tilts (t, b, n) to the footprint's mean normal and widens the material's
 // α by the slope covariance, as make_surface_bsdf does. `back`: the frame
 // was flipped to the side of wo; `bitangent_sign`: the tangent's w.
+// `glint_cov_xy` gains the map's Σ_xy in the shading frame where the glint
+// model reads the slopes' correlation (u_glint_reads_correlation).
 void normal_map_shade(Footprint fp, bool back, float bitangent_sign, inout vec3 t, inout vec3 b,
-                      inout vec3 n, inout SurfaceMaterial mat) {
+                      inout vec3 n, inout SurfaceMaterial mat, inout float glint_cov_xy) {
     bool lean = u_normal_map_filtering == 0;
     vec4 first = normal_map_fetch(u_normal_slopes, fp, lean);
     vec2 mean = first.xy;
     vec3 cov = vec3(0.0f);
     if (lean) {
         // Σ's correlation matters to an isotropic lobe that is not a glint's.
-        bool correlated = mat.type != MATERIAL_GLINT && mat.type != MATERIAL_DIFFUSE &&
-                          mat.alpha_x == mat.alpha_y;
+        bool correlated = mat.type == MATERIAL_GLINT
+                              ? u_normal_map_widens_glint != 0 && u_glint_reads_correlation != 0
+                              : mat.type != MATERIAL_DIFFUSE && mat.alpha_x == mat.alpha_y;
         float second_xy = correlated ? normal_map_fetch(u_normal_moments, fp, true).x : 0.0f;
         cov = slope_covariance(mean, first.zw, second_xy, correlated);
     }
@@ -60,6 +63,7 @@ void normal_map_shade(Footprint fp, bool back, float bitangent_sign, inout vec3 
             mat.glint.alpha_x = slope_widened_alpha(mat.glint.alpha_x, cov.x, 1.0f);
             mat.glint.alpha_y = slope_widened_alpha(mat.glint.alpha_y, cov.y, 1.0f);
             g_glint_alpha = vec2(mat.glint.alpha_x, mat.glint.alpha_y);
+            glint_cov_xy += cov.z;
         }
         return;
     }
