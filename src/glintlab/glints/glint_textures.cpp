@@ -19,7 +19,11 @@ GlintDesc resolve_glint_textures(const GlintDesc& desc, glm::vec2 uv, const Foot
         d.log_density = std::log(std::max(n, 1e-30f));
     }
     if (t.alpha_x_sq) d.alpha_x = alpha_from_squared(t.alpha_x_sq->lookup(uv, footprint).x);
-    if (t.alpha_y_sq) d.alpha_y = alpha_from_squared(t.alpha_y_sq->lookup(uv, footprint).x);
+    // An isotropic roughness map is one texture on both axes: one lookup.
+    if (t.alpha_y_sq && t.alpha_y_sq == t.alpha_x_sq)
+        d.alpha_y = d.alpha_x;
+    else if (t.alpha_y_sq)
+        d.alpha_y = alpha_from_squared(t.alpha_y_sq->lookup(uv, footprint).x);
     if (t.alpha_x_sq || t.alpha_y_sq) d.alpha_varies = true;
     if (t.color) d.color = t.color->lookup(uv, footprint);
     if (t.base_albedo) d.base_albedo = t.base_albedo->lookup(uv, footprint);

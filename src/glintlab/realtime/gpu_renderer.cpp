@@ -474,6 +474,9 @@ struct GpuRenderer::Impl {
             slots[0] = t->density, slots[1] = t->alpha_x_sq, slots[2] = t->alpha_y_sq;
             slots[3] = t->color, slots[4] = t->base_albedo;
         }
+        // An isotropic roughness map (one texture on both axes) is read once.
+        const bool alpha_isotropic = slots[1] && slots[2] == slots[1];
+        if (alpha_isotropic) slots[2] = nullptr;
         int mask = 0;
         glm::mat2 linear[gl::kMaterialTextureSlots];
         glm::vec2 offset[gl::kMaterialTextureSlots], size[gl::kMaterialTextureSlots];
@@ -491,6 +494,7 @@ struct GpuRenderer::Impl {
         }
         auto loc = [&](const char* name) { return uniforms.location(p, name); };
         glProgramUniform1i(p, loc("u_material_texture_mask"), mask);
+        glProgramUniform1i(p, loc("u_material_texture_alpha_isotropic"), alpha_isotropic ? 1 : 0);
         glProgramUniformMatrix2fv(p, loc("u_material_texture_linear"), gl::kMaterialTextureSlots,
                                   GL_FALSE, glm::value_ptr(linear[0]));
         glProgramUniform2fv(p, loc("u_material_texture_offset"), gl::kMaterialTextureSlots,

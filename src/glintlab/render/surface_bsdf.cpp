@@ -164,7 +164,9 @@ SurfaceBsdf make_surface_bsdf(const MaterialDesc& m, const SurfaceHit& hit, glm:
         // Conductors and dielectrics take α in [0, 1] (0: a mirror).
         if (t.alpha_x_sq)
             alpha_x = std::sqrt(std::max(t.alpha_x_sq->lookup(hit.uv, footprint).x, 0.0f));
-        if (t.alpha_y_sq)
+        if (t.alpha_y_sq && t.alpha_y_sq == t.alpha_x_sq)  // an isotropic map: one lookup
+            alpha_y = alpha_x;
+        else if (t.alpha_y_sq)
             alpha_y = std::sqrt(std::max(t.alpha_y_sq->lookup(hit.uv, footprint).x, 0.0f));
     }
     if (bump && m.type != MaterialDesc::Type::Diffuse && m.type != MaterialDesc::Type::Glint) {

@@ -157,7 +157,10 @@ struct Walker {
                     f.weight = float(n_field / density);
                 }
                 if (t->alpha_x_sq) ax = alpha_from_squared(t->alpha_x_sq->at(f.uv).x);
-                if (t->alpha_y_sq) ay = alpha_from_squared(t->alpha_y_sq->at(f.uv).x);
+                if (t->alpha_y_sq && t->alpha_y_sq == t->alpha_x_sq)  // an isotropic map
+                    ay = ax;
+                else if (t->alpha_y_sq)
+                    ay = alpha_from_squared(t->alpha_y_sq->at(f.uv).x);
             }
             f.m = sample_explicit_normal(field.ndf, ax, ay, u1, u2);
             if (field.has_macro_normals()) {

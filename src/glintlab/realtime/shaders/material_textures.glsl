@@ -28,6 +28,8 @@ const int MATERIAL_TEXTURE_BASE = 4;     // glint base_albedo
 const int MATERIAL_TEXTURE_METALLIC = 5; // metallic-roughness metallic
 layout(binding = 10) uniform sampler2D u_material_texture[6];
 uniform int u_material_texture_mask;  // bit i: slot i is textured
+// Slot 1 holds an isotropic roughness map: α_y is α_x (slot 2 is unset).
+uniform int u_material_texture_alpha_isotropic;
 // uv' = linear · uv + offset (KHR_texture_transform), level 0's size in texels.
 uniform mat2 u_material_texture_linear[6];
 uniform vec2 u_material_texture_offset[6];
@@ -66,6 +68,12 @@ void resolve_material_textures(Footprint fp) {
             g_glint_alpha.x = clamp(sqrt(a2), 1e-3f, 1.0f);  // glint_textures.cpp alpha_from_squared
         else
             g_alpha.x = sqrt(a2);
+        if (u_material_texture_alpha_isotropic != 0) {
+            if (glint)
+                g_glint_alpha.y = g_glint_alpha.x;
+            else
+                g_alpha.y = g_alpha.x;
+        }
     }
     if ((mask & (1 << MATERIAL_TEXTURE_ALPHA_Y)) != 0) {
         float a2 = max(MATERIAL_TEXTURE(MATERIAL_TEXTURE_ALPHA_Y, fp).x, 0.0f);
