@@ -17,6 +17,7 @@
 #include "glintlab/realtime/gpu_renderer.h"
 #include "glintlab/realtime/gpu_test_util.h"
 #include "glintlab/realtime/image_compare.h"
+#include "glintlab/render/curvature_test_util.h"
 #include "glintlab/render/renderer.h"
 #include "glintlab/scene/scene_loader.h"
 
@@ -207,35 +208,16 @@ TEST(GpuTextured, SlopeCorrelatedChermain2020MatchesTheCpu) {
 // A curved surface's own normal spread over the pixel ("curvature":
 // "footprint"; docs/MODELS.md, "Curved surfaces"): the CPU widens α by the
 // interpolated normal's uv derivatives over the footprint, the GPU by the
-// unit normal's pixel differences. A sphere about 20 pixels across, so the
-// normal turns ~0.16 rad per pixel and the widening is large against α 0.05;
-// without it the images differ far beyond the agreement tolerances.
+// unit normal's pixel differences. On the small sphere of
+// curvature_test_util.h the widening is large against α 0.05; without it
+// the images differ far beyond the agreement tolerances.
 TEST(GpuTextured, CurvatureWidenedGlintsMatchTheCpu) {
     GLINTLAB_REQUIRE_GL();
     const TexturedScenes t;
     for (const char* model : {"smooth", "deliot2023"}) {
         auto scene = [&](const char* curvature) {
-            const nlohmann::json doc = {
-                {"camera", {{"eye", {0.0, 1.27, 2.72}}, {"target", {0, 0.15, 0}}, {"fov_deg", 20}}},
-                {"film", {{"width", 96}, {"height", 72}}},
-                {"render", {{"integrator", "direct"}, {"spp", 1}, {"seed", 1}}},
-                {"materials",
-                 {{{"name", "m"},
-                   {"type", "glint"},
-                   {"model", model},
-                   {"ndf", "ggx"},
-                   {"roughness", 0.05},
-                   {"log_density", 16},
-                   {"curvature", curvature}}}},
-                {"shapes",
-                 {{{"type", "sphere"},
-                   {"center", {0, 0.15, 0}},
-                   {"radius", 0.15},
-                   {"material", "m"}}}},
-                {"lights",
-                 {{{"type", "directional"}, {"direction", {0.3, 0.8, 0.6}}, {"irradiance", 2.0}},
-                  {{"type", "point"}, {"position", {1.0, 1.5, 0.5}}, {"intensity", 1.0}}}}};
-            return parse_scene(doc, t.dir / "sphere.json");
+            return parse_scene(testing::small_curved_sphere(model, curvature),
+                               t.dir / "sphere.json");
         };
         SCOPED_TRACE(model);
         const Scene widened = scene("footprint");

@@ -1,6 +1,6 @@
 // Curved surfaces under glints through the CPU renderer (docs/MODELS.md,
-// "Curved surfaces"). A sphere about 20 pixels across turns its normal by
-// ~0.16 rad per pixel, against a lobe of α 0.05: the footprint's mixture of
+// "Curved surfaces"). The small sphere of curvature_test_util.h turns its
+// normal by ~0.16 rad per pixel, against a lobe of α 0.05: the footprint's mixture of
 // lobes is wider than one. The ground truth composing each facet with the
 // sphere's normal at the facet's position and the smooth lobe widened by
 // the footprint's normal covariance change the image mean alike.
@@ -12,6 +12,7 @@
 #include <nlohmann/json.hpp>
 
 #include "glintlab/core/image.h"
+#include "glintlab/render/curvature_test_util.h"
 #include "glintlab/render/renderer.h"
 #include "glintlab/scene/scene_loader.h"
 
@@ -19,23 +20,7 @@ namespace glintlab {
 namespace {
 
 Scene small_sphere(const char* model, const char* curvature) {
-    nlohmann::json doc = {
-        {"camera", {{"eye", {0.0, 1.27, 2.72}}, {"target", {0, 0.15, 0}}, {"fov_deg", 20}}},
-        {"film", {{"width", 96}, {"height", 72}}},
-        {"render", {{"integrator", "direct"}, {"spp", 1}, {"seed", 1}}},
-        {"materials",
-         {{{"name", "m"},
-           {"type", "glint"},
-           {"model", model},
-           {"ndf", "ggx"},
-           {"roughness", 0.05},
-           {"log_density", 16},
-           {"curvature", curvature}}}},
-        {"shapes",
-         {{{"type", "sphere"}, {"center", {0, 0.15, 0}}, {"radius", 0.15}, {"material", "m"}}}},
-        {"lights",
-         {{{"type", "directional"}, {"direction", {0.3, 0.8, 0.6}}, {"irradiance", 2.0}},
-          {{"type", "point"}, {"position", {1.0, 1.5, 0.5}}, {"intensity", 1.0}}}}};
+    nlohmann::json doc = testing::small_curved_sphere(model, curvature);
     // Silhouette footprints hold millions of facets: one part of each.
     if (std::string(model) == "explicit")
         doc["materials"][0]["explicit"] = {{"over_budget", "subsample"}};
