@@ -87,6 +87,9 @@ function stateFromUrl(search) {
     continuous: q.get('static') !== '1',
     explicit: [...q.keys()],
     exportBase: q.get('export') ?? 'export',
+    // A .glb to draw in place of the shape, fetched from this URL (relative
+    // to the page); a file picked or dropped has no URL and is not kept.
+    assetUrl: q.get('asset'),
   };
   if (q.has('roughness')) {
     const r = numbers(q.get('roughness'), 'roughness', [1, 2]);
@@ -138,6 +141,7 @@ function urlFromState(s) {
   q.set('exposure', s.exposure);
   if (s.normalMap !== 'none') q.set('normal_map', s.normalMap);
   if (s.textures !== 'none') q.set('textures', s.textures);
+  if (s.assetUrl) q.set('asset', s.assetUrl);
   for (const [k, v] of Object.entries(s.params)) q.set(`p.${k}`, v);
   if (!s.continuous) q.set('static', 1);
   if (s.exportBase !== 'export') q.set('export', s.exportBase);
@@ -248,6 +252,7 @@ class App {
     await this.setModel(this.state.model);
     this.buildControls();
     this.installOrbit();
+    if (this.state.assetUrl) await this.loadAssetUrl(this.state.assetUrl);
     this.ready = true;
     this.schedule();
   }
@@ -279,6 +284,7 @@ class App {
     this.setShape(state.shape);
     await this.setModel(state.model);
     this.buildControls();
+    if (state.assetUrl) await this.loadAssetUrl(state.assetUrl);
     this.dirty = true;
     this.lastFrame = null;
     this.cpuMs = null;
@@ -297,10 +303,31 @@ class App {
   // place of the shape, framed by the camera. A file the page cannot read
   // is an error in the page's error box; the current view stays.
   async loadAsset(file) {
+    this.state.assetUrl = null;  // a local file has no URL to keep
+    await this.showAsset(file.name, () => file.arrayBuffer());
+  }
+
+  // The .glb of the URL's `asset` parameter. A fetch that fails is an error
+  // naming the parameter, the URL and the HTTP status.
+  async loadAssetUrl(url) {
+    const name = decodeURIComponent(url.split(/[?#]/)[0].split('/').pop() || url);
+    await this.showAsset(name, async () => {
+      let r;
+      try {
+        r = await fetch(url);
+      } catch (e) {
+        throw new AssetError(`URL parameter asset=${url}: cannot fetch it (${e.message})`);
+      }
+      if (!r.ok) throw new AssetError(`URL parameter asset=${url}: HTTP ${r.status}`);
+      return r.arrayBuffer();
+    });
+  }
+
+  async showAsset(name, bytes) {
     this.assetError = null;
     this.assetLoading = true;
     try {
-      const asset = await readGlb(await file.arrayBuffer(), file.name);
+      const asset = await readGlb(await bytes(), name);
       this.renderer.setMesh(asset);
       this.asset = asset;
       const {centre, radius} = asset.bounds;
@@ -311,7 +338,7 @@ class App {
       // reflect it towards the camera as the plane's glints do.
       s.light.direction = SHAPES.plane.light.slice();
       s.light.irradiance = SHAPES.plane.irradiance;
-      this.assetStatus.textContent = `${file.name}: ${asset.triangles} triangles, ` +
+      this.assetStatus.textContent = `${name}: ${asset.triangles} triangles, ` +
           `${asset.parts.length} material${asset.parts.length > 1 ? 's' : ''}, whose colour ` +
           'and roughness replace the panel\'s' +
           (asset.warnings.length ? ` (${asset.warnings.join('; ')})` : '');
@@ -463,6 +490,7 @@ class App {
     const shapeSelect = document.getElementById('shape');
     shapeSelect.value = s.shape;
     shapeSelect.onchange = () => {
+      s.assetUrl = null;  // the shape replaces the asset
       this.setShape(shapeSelect.value);
       s.camera.eye = SHAPES[s.shape].eye.slice();
       s.camera.target = SHAPES[s.shape].target.slice();

@@ -45,6 +45,9 @@ class Handler(http.server.SimpleHTTPRequestHandler):
 
     def translate_path(self, path):
         path = path.split("?", 1)[0].split("#", 1)[0]
+        if path.startswith("/gltf/"):  # the repository's glTF assets (the asset URL test)
+            rel = path[len("/gltf/"):]
+            return os.path.join(os.path.dirname(GLB), *[p for p in rel.split("/") if p not in ("", "..")])
         if path.startswith("/export/"):
             rel = path[len("/export/"):]
             return os.path.join(self.export_dir, *[p for p in rel.split("/") if p not in ("", "..")])
@@ -736,6 +739,28 @@ def test_asset(page, export_dir):
     good = r["other"] == 0 and r["asset"] > 0
     print(f"{'ok  ' if good else 'FAIL'} asset mutations: {r['asset']} errors naming the file, "
           f"{r['ok']} read, {r['other']} other exceptions {r['examples']}")
+    ok = ok and good
+    # The same file by URL (`asset=`): fetched as the page starts, kept in
+    # the page's own URL; a missing file is an error naming the parameter
+    # and the HTTP status, and the page keeps drawing its shape.
+    url = "/gltf/" + os.path.basename(GLB)
+    state, _ = page.open(f"model=smooth&w=128&h=96&env=0&asset={url}")
+    time.sleep(0.5)  # the page writes its URL 200 ms after a change
+    r = page.driver.execute_script(
+        "const g = window.glintlab; return {asset: g.asset, error: g.assetError, "
+        "search: decodeURIComponent(location.search), frames: g.frames};")
+    good = (not state["error"] and not r["error"] and r["asset"] is not None
+            and r["asset"]["triangles"] == triangles and f"asset={url}" in r["search"])
+    print(f"{'ok  ' if good else 'FAIL'} asset by URL {url}: "
+          f"{r['asset']['triangles'] if r['asset'] else None} triangles, error {r['error']}, "
+          f"URL keeps it: {f'asset={url}' in r['search']}")
+    ok = ok and good
+    state, _ = page.open("model=smooth&w=128&h=96&env=0&asset=/gltf/missing.glb")
+    r = page.driver.execute_script(
+        "const g = window.glintlab; return {asset: g.asset, error: g.assetError, frames: g.frames};")
+    good = (r["asset"] is None and r["error"] is not None and "asset=/gltf/missing.glb" in r["error"]
+            and "404" in r["error"] and not state["error"])
+    print(f"{'ok  ' if good else 'FAIL'} asset by URL, missing: {r['error']} (frames {r['frames']})")
     ok = ok and good
     # Hostile files: the page names the file and the fault, and keeps its view.
     tmp = tempfile.mkdtemp(prefix="glintlab_asset_")
