@@ -433,7 +433,9 @@ async function readMaterial(r, index) {
                            2 * data[4 * i + 2] / 255 - 1], [0, 0, 1]);
       normals.set(n, 3 * i);
     }
-    out.maps.normal = inputMap(leanTexels(normals, w, h), w, h, t);
+    const cross = new Float32Array(w * h * 4);
+    out.maps.normal = inputMap(leanTexels(normals, w, h, cross), w, h, t);
+    out.maps.normal.cross = inputMap(cross, w, h, t);  // s_x s_y, for the slopes' correlation
   }
   if (metallic < 0.5) {
     out.baseAlbedo = out.color;

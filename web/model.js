@@ -15,6 +15,9 @@ import {leanTexture} from './normal_map.js';
 // files were exported (`baked`: changing them means exporting again).
 
 const HOST_PARAMS = {
+  chermain2020: {
+    slope_correlation: {uniform: 'u_chermain2020_correlated', value: (v) => (v === 'chermain2021' ? 1 : 0)},
+  },
   deliot2023: {
     gaussian: {uniform: 'u_deliot2023_conditional', value: (v) => (v === 'conditional' ? 1 : 0)},
   },
@@ -314,21 +317,26 @@ export class ExportedModel {
     gl.activeTexture(gl.TEXTURE0 + inputUnit);
     gl.bindTexture(gl.TEXTURE_2D, inputPlaceholder(gl));
     for (const name of ['u_input_density', 'u_input_alpha', 'u_input_color',
-                        'u_input_base_albedo', 'u_input_normal_slopes']) set(name, inputUnit);
+                        'u_input_base_albedo', 'u_input_normal_slopes', 'u_input_normal_cross'])
+      set(name, inputUnit);
     let mask = 0;
     const linear = Array(5).fill([1, 0, 0, 1]), offset = Array(5).fill([0, 0]);
     if (am) {
       // The asset's maps on the units after the placeholder, with their uv
       // transforms (KHR_texture_transform); its handedness for the normal map.
+      // The normal map's s_x s_y (bit 5) shares its uv transform (slot 4).
       const slots = [['u_input_alpha', maps.alpha, 1], ['u_input_color', maps.color, 2],
-                     ['u_input_base_albedo', maps.baseAlbedo, 3], ['u_input_normal_slopes', maps.normal, 4]];
+                     ['u_input_base_albedo', maps.baseAlbedo, 3], ['u_input_normal_slopes', maps.normal, 4],
+                     ['u_input_normal_cross', maps.normal?.cross, 5]];
       slots.forEach(([name, map, bit], i) => {
         if (!perPixel(bit, map) && !(bit === 4 && map)) return;
         gl.activeTexture(gl.TEXTURE0 + inputUnit + 1 + i);
         gl.bindTexture(gl.TEXTURE_2D, oncePerContext(gl, map, () => uploadMipmapped(gl, map.texels, map.w, map.h)));
         set(name, inputUnit + 1 + i);
-        linear[bit] = map.linear;
-        offset[bit] = map.offset;
+        if (bit < 5) {
+          linear[bit] = map.linear;
+          offset[bit] = map.offset;
+        }
         mask |= 1 << bit;
       });
       set('u_input_uv_mirrored', asset.uvMirrored ? 1 : 0);
@@ -352,11 +360,20 @@ export class ExportedModel {
       // meshes' v runs along n x t (the plane's v along -z, the sphere's
       // towards its south pole), so glTF's bitangent, up the image, is
       // -(n x t): tangent w = -1.
+      // (Made on first use, which binds on the active unit: this one.)
       gl.activeTexture(gl.TEXTURE0 + inputUnit + 1);
-      gl.bindTexture(gl.TEXTURE_2D, leanTexture(gl, state.normalMap));
+      const lean = leanTexture(gl, state.normalMap);
+      gl.bindTexture(gl.TEXTURE_2D, lean.slopes);
       set('u_input_normal_slopes', inputUnit + 1);
       set('u_input_uv_mirrored', 1);
       mask |= 1 << 4;  // GLINT_INPUT_NORMAL
+      if (this.perPixelInputs.has(5)) {  // the model reads the slopes' correlation
+        // After the page's own maps (units + 2 to + 4).
+        gl.activeTexture(gl.TEXTURE0 + inputUnit + 5);
+        gl.bindTexture(gl.TEXTURE_2D, lean.cross);
+        set('u_input_normal_cross', inputUnit + 5);
+        mask |= 1 << 5;  // GLINT_INPUT_NORMAL_CROSS
+      }
     }
     // The page's own maps tile with the glint pattern's uv (identity
     // transforms); an asset's carry theirs.

@@ -29,7 +29,10 @@ export function bumpsNormals(size = BUMPS_SIZE) {
 // the second moments (s_x², s_y²) of the bilinear surface over each
 // texel's cell: its four half-texel squares, 2 x 2 Gauss–Legendre nodes in
 // each (exact for the squares of bilinear slopes), repeating edges.
-export function leanTexels(normals, w, h) {
+// `cross`, when given (RGBA, w h texels), receives s_x s_y the same way in
+// R: the export's u_input_normal_cross for the models that read the
+// slopes' correlation.
+export function leanTexels(normals, w, h, cross = null) {
   const count = w * h;
   const sx = new Float32Array(count), sy = new Float32Array(count);
   for (let i = 0; i < count; ++i) {
@@ -43,7 +46,7 @@ export function leanTexels(normals, w, h) {
   const texels = new Float32Array(count * 4);
   for (let y = 0; y < h; ++y)
     for (let x = 0; x < w; ++x) {
-      let mxx = 0, myy = 0;
+      let mxx = 0, myy = 0, mxy = 0;
       for (const oy of nodes)
         for (const ox of nodes) {
           const px = x + ox, py = y + oy;
@@ -57,16 +60,22 @@ export function leanTexels(normals, w, h) {
           const a = lerp2(sx), b = lerp2(sy);
           mxx += a * a;
           myy += b * b;
+          mxy += a * b;
         }
       const i = y * w + x;
       texels.set([sx[i], sy[i], mxx / 16, myy / 16], i * 4);
+      if (cross) cross.set([mxy / 16, 0, 0, 1], i * 4);
     }
   return texels;
 }
 
-// The LEAN texture of a named map, made once per context.
+// The LEAN textures of a named map, made once per context: {slopes, cross}.
 export function leanTexture(gl, name) {
   if (name !== 'bumps') throw new Error(`normal map ${name}: expected one of ${NORMAL_MAPS}`);
-  return oncePerContext(gl, `normal_map ${name}`, () => uploadMipmapped(
-      gl, leanTexels(bumpsNormals(), BUMPS_SIZE, BUMPS_SIZE), BUMPS_SIZE, BUMPS_SIZE));
+  return oncePerContext(gl, `normal_map ${name}`, () => {
+    const cross = new Float32Array(BUMPS_SIZE * BUMPS_SIZE * 4);
+    const slopes = leanTexels(bumpsNormals(), BUMPS_SIZE, BUMPS_SIZE, cross);
+    return {slopes: uploadMipmapped(gl, slopes, BUMPS_SIZE, BUMPS_SIZE),
+            cross: uploadMipmapped(gl, cross, BUMPS_SIZE, BUMPS_SIZE)};
+  });
 }

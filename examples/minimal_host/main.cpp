@@ -277,7 +277,10 @@ GLuint mipmapped_texture(const std::vector<float>& texels, int w, int h, int cha
 // reconstructs, averaged over the texel's cell (its four half-texel
 // squares, each inside one bilinear patch where s^2 is of degree 2 per
 // coordinate: 2 x 2 Gauss-Legendre nodes per square integrate it exactly).
-std::vector<float> lean_map(const std::vector<float>& normals, int w, int h) {
+// `cross`, when given, receives each texel's m_xy the same way (the input
+// u_input_normal_cross of the models that read the slopes' correlation).
+std::vector<float> lean_map(const std::vector<float>& normals, int w, int h,
+                            std::vector<float>* cross = nullptr) {
     const size_t count = static_cast<size_t>(w) * static_cast<size_t>(h);
     std::vector<float> sx(count), sy(count);
     for (size_t i = 0; i < count; ++i) {
@@ -292,9 +295,10 @@ std::vector<float> lean_map(const std::vector<float>& normals, int w, int h) {
     const float g = 0.25f / std::sqrt(3.0f);
     const float nodes[4] = {-0.25f - g, -0.25f + g, 0.25f - g, 0.25f + g};
     std::vector<float> out(count * 4);
+    if (cross) cross->assign(count, 0.0f);
     for (int y = 0; y < h; ++y)
         for (int x = 0; x < w; ++x) {
-            float mxx = 0.0f, myy = 0.0f;
+            float mxx = 0.0f, myy = 0.0f, mxy = 0.0f;
             for (const float oy : nodes)
                 for (const float ox : nodes) {
                     const float px = static_cast<float>(x) + ox, py = static_cast<float>(y) + oy;
@@ -308,7 +312,7 @@ std::vector<float> lean_map(const std::vector<float>& normals, int w, int h) {
                         return top + fy * (bottom - top);
                     };
                     const float a = bilinear(sx), b = bilinear(sy);
-                    mxx += a * a, myy += b * b;
+                    mxx += a * a, myy += b * b, mxy += a * b;
                 }
             const size_t i =
                 static_cast<size_t>(y) * static_cast<size_t>(w) + static_cast<size_t>(x);
@@ -316,6 +320,7 @@ std::vector<float> lean_map(const std::vector<float>& normals, int w, int h) {
             out[i * 4 + 1] = sy[i];
             out[i * 4 + 2] = mxx / 16.0f;
             out[i * 4 + 3] = myy / 16.0f;
+            if (cross) (*cross)[i] = mxy / 16.0f;
         }
     return out;
 }
@@ -440,19 +445,34 @@ int run(int argc, char** argv) {
         glBindTextureUnit(static_cast<GLuint>(unit), mipmapped_texture(n, mw, mh, 1));
         input_mask |= 1;  // GLINT_INPUT_DENSITY
     }
-    for (const char* name : {"u_input_density", "u_input_alpha", "u_input_color",
-                             "u_input_base_albedo", "u_input_normal_slopes"})
+    for (const char* name :
+         {"u_input_density", "u_input_alpha", "u_input_color", "u_input_base_albedo",
+          "u_input_normal_slopes", "u_input_normal_cross"})
         glProgramUniform1i(program, glGetUniformLocation(program, name), unit);
-    // A normal map: its LEAN chain on the next unit.
+    // A normal map: its LEAN chain on the next unit, and its s_x s_y chain on
+    // the one after where the model reads the slopes' correlation (the
+    // manifest lists the input normal_map_cross).
     if (argc == 9) {
         int nw = 0, nh = 0, channels = 0;
         const std::vector<float> normals = read_pfm(argv[8], &nw, &nh, &channels);
         if (channels != 3) die(std::string(argv[8]) + ": a normal map holds RGB = (x, y, z)");
-        glBindTextureUnit(static_cast<GLuint>(unit + 1),
-                          mipmapped_texture(lean_map(normals, nw, nh), nw, nh, 4));
+        bool reads_cross = false;
+        for (const auto& input : manifest.at("inputs").at("textures"))
+            reads_cross = reads_cross || input.at("key") == "normal_map_cross";
+        std::vector<float> cross;
+        glBindTextureUnit(
+            static_cast<GLuint>(unit + 1),
+            mipmapped_texture(lean_map(normals, nw, nh, reads_cross ? &cross : nullptr), nw, nh,
+                              4));
         glProgramUniform1i(program, glGetUniformLocation(program, "u_input_normal_slopes"),
                            unit + 1);
         input_mask |= 1 << 4;  // GLINT_INPUT_NORMAL
+        if (reads_cross) {
+            glBindTextureUnit(static_cast<GLuint>(unit + 2), mipmapped_texture(cross, nw, nh, 1));
+            glProgramUniform1i(program, glGetUniformLocation(program, "u_input_normal_cross"),
+                               unit + 2);
+            input_mask |= 1 << 5;  // GLINT_INPUT_NORMAL_CROSS
+        }
     }
     set_uniform(program, types, "u_input_texture_mask", input_mask);
     const float identity[4] = {1, 0, 0, 1};

@@ -62,14 +62,18 @@ struct GlintInputs {
     // (s_x, s_y) = (−x/z, −y/z) of the tangent-space normal, in the frame
     // (t, n × t, n) of glint_shade's v_dpdu and v_normal, and its slope
     // variances (Σ_xx, Σ_yy); filter s and (s_x², s_y²), then
-    // Σ_ii = E[s_i²] − s̄_i². Σ_xy is not an input: the glint NDF's axes
-    // stay on the uv axes. Zero: no normal map.
+    // Σ_ii = E[s_i²] − s̄_i². Zero: no normal map.
     vec2 mean_slope;
     vec2 slope_variance;
+    // Σ_xy = E[s_x s_y] − s̄_x s̄_y in the same frame: read by the models
+    // that shear their NDF by the slopes' correlation (chermain2020,
+    // GLINTLAB_GLINT_SLOPE_CORRELATION); the others keep uv-aligned axes.
+    float slope_covariance_xy;
 };
 vec3 g_glint_color_input;
 vec3 g_glint_base_albedo_input;
 vec2 g_glint_mean_slope;
+float g_glint_front_correlation;  // the slopes' correlation seen from the front
 
 // The material uniforms as inputs (a material without textures).
 GlintInputs glint_inputs_from_uniforms() {
@@ -80,6 +84,7 @@ GlintInputs glint_inputs_from_uniforms() {
     inputs.base_albedo = u_glint_base_albedo;
     inputs.mean_slope = vec2(0.0f);
     inputs.slope_variance = vec2(0.0f);
+    inputs.slope_covariance_xy = 0.0f;
     return inputs;
 }
 
@@ -89,14 +94,21 @@ GlintInputs glint_inputs_from_uniforms() {
 // slope.
 void glint_set_inputs(GlintInputs inputs) {
     g_glint_log_density = inputs.log_density;
-    // Σ_xy is not an input: the exported chermain2020 is uncorrelated.
-    g_glint_slope_correlation = 0.0f;
     vec2 alpha = clamp(inputs.alpha, vec2(1e-3f), vec2(1.0f));
 #ifdef GLINTLAB_GLINT_PER_PIXEL_ALPHA
     alpha = vec2(slope_widened_alpha(alpha.x, max(inputs.slope_variance.x, 0.0f), 1.0f),
                  slope_widened_alpha(alpha.y, max(inputs.slope_variance.y, 0.0f), 1.0f));
 #endif
     g_glint_alpha = alpha;
+    g_glint_front_correlation = 0.0f;
+#ifdef GLINTLAB_GLINT_SLOPE_CORRELATION
+    // render/surface_bsdf.cpp correlation_of: Σ_xy / (σ_x σ_y), σ_i² = α_i²/2
+    // of the widened lobe, within [−0.99, 0.99].
+    float rho = 2.0f * inputs.slope_covariance_xy / (alpha.x * alpha.y);
+    if (inputs.slope_covariance_xy != 0.0f && !isnan(rho) && !isinf(rho))
+        g_glint_front_correlation = clamp(rho, -0.99f, 0.99f);
+#endif
+    g_glint_slope_correlation = g_glint_front_correlation;
     g_glint_color_input = inputs.color;
     g_glint_base_albedo_input = inputs.base_albedo;
     g_glint_mean_slope = inputs.mean_slope;
@@ -114,11 +126,15 @@ const int GLINT_INPUT_ALPHA = 1;    // alpha² (isotropic), one channel
 const int GLINT_INPUT_COLOR = 2;    // linear RGB
 const int GLINT_INPUT_BASE = 3;     // linear RGB
 const int GLINT_INPUT_NORMAL = 4;   // the normal map's (s_x, s_y, s_x², s_y²), RGBA
+// The normal map's s_x s_y, one channel, with GLINT_INPUT_NORMAL's uv
+// transform; read only where the model takes the slopes' correlation.
+const int GLINT_INPUT_NORMAL_CROSS = 5;
 uniform sampler2D u_input_density;
 uniform sampler2D u_input_alpha;
 uniform sampler2D u_input_color;
 uniform sampler2D u_input_base_albedo;
 uniform sampler2D u_input_normal_slopes;
+uniform sampler2D u_input_normal_cross;
 uniform int u_input_texture_mask;
 uniform mat2 u_input_texture_linear[5];
 uniform vec2 u_input_texture_offset[5];
@@ -154,10 +170,20 @@ GlintInputs glint_inputs_from_textures(Footprint fp) {
         vec4 first = glint_input_filtered4(u_input_normal_slopes, GLINT_INPUT_NORMAL, fp,
                                            kSlopeMomentLodBias);
         vec2 mean = first.xy;
-        vec3 cov = slope_covariance(mean, first.zw, 0.0f, false);
+        bool correlated = false;
+        float second_xy = 0.0f;
+#ifdef GLINTLAB_GLINT_SLOPE_CORRELATION
+        correlated = (mask & (1 << GLINT_INPUT_NORMAL_CROSS)) != 0;
+        if (correlated)
+            second_xy = glint_input_filtered4(u_input_normal_cross, GLINT_INPUT_NORMAL, fp,
+                                              kSlopeMomentLodBias)
+                            .x;
+#endif
+        vec3 cov = slope_covariance(mean, first.zw, second_xy, correlated);
         slopes_in_shading_frame(false, u_input_uv_mirrored ? -1.0f : 1.0f, mean, cov);
         inputs.mean_slope = mean;
         inputs.slope_variance = cov.xy;
+        inputs.slope_covariance_xy = cov.z;
     }
     return inputs;
 }
@@ -220,6 +246,9 @@ vec3 glint_shade(vec3 p, vec3 n, vec3 dpdu, Footprint fp) {
         n = -n;
         b = -b;
     }
+    // Σ_xy changes sign in the flipped frame (core/slope_frame.glsl
+    // slopes_in_shading_frame).
+    g_glint_slope_correlation = back ? -g_glint_front_correlation : g_glint_front_correlation;
     if (g_glint_mean_slope != vec2(0.0f)) {
         // The normal map's mean normal (glint_set_inputs widened the lobe).
         tilt_frame_to_slope(mean_slope_in_shading_frame(back, 1.0f, g_glint_mean_slope), t, b, n);
@@ -272,32 +301,36 @@ vec3 glint_shade(vec3 p, vec3 n, vec3 dpdu, Footprint fp) {
     return radiance;
 }
 
-// The slope variances (Σ_xx, Σ_yy) over the pixel from the surface's own
-// curvature (docs/MODELS.md, "Curved surfaces"): the unit normal's change per
-// pixel step, in glint_shade's frame (t along dpdu), gives the slope's
-// change g = −(t·∂n, b·∂n); over the pixel's uniform footprint its variance
-// is (g_x² + g_y²)/12 per axis. Zero on a flat surface. Derivatives: call it
-// at the top of main, in uniform control flow; add it to the inputs'
-// slope_variance (a host that does not want it leaves it out).
-vec2 glint_curvature_slope_variance(vec3 n, vec3 dpdu) {
+// The slope covariance (Σ_xx, Σ_yy, Σ_xy) over the pixel from the surface's
+// own curvature (docs/MODELS.md, "Curved surfaces"): the unit normal's change
+// per pixel step, in glint_shade's frame (t along dpdu), gives the slope's
+// change g = −(t·∂n, b·∂n); over the pixel's uniform footprint its
+// covariance is (g_x g_xᵀ + g_y g_yᵀ)/12. Zero on a flat surface.
+// Derivatives: call it at the top of main, in uniform control flow; add it
+// to the inputs' slope_variance and slope_covariance_xy (a host that does
+// not want it leaves it out).
+vec3 glint_curvature_slope_covariance(vec3 n, vec3 dpdu) {
     vec3 dndx = dFdxFine(n);
     vec3 dndy = -dFdyFine(n);
     vec3 t = dpdu - n * dot(n, dpdu);
     float len = length(t);
-    if (!(len > 1e-12f) || isinf(len)) return vec2(0.0f);
+    if (!(len > 1e-12f) || isinf(len)) return vec3(0.0f);
     t = t / len;
     vec3 b = cross(n, t);
     vec2 gx = vec2(dot(t, dndx), dot(b, dndx));
     vec2 gy = vec2(dot(t, dndy), dot(b, dndy));
-    return (gx * gx + gy * gy) / 12.0f;
+    return vec3(gx * gx + gy * gy, gx.x * gx.y + gy.x * gy.y) / 12.0f;
 }
 
 void main() {
     Footprint fp = glint_footprint(v_uv);
     vec3 n = normalize(v_normal);
-    vec2 curvature_variance = glint_curvature_slope_variance(n, v_dpdu);
+    vec3 curvature = glint_curvature_slope_covariance(n, v_dpdu);
     GlintInputs inputs = glint_inputs_from_textures(fp);
-    if (u_glint_curvature != 0) inputs.slope_variance += curvature_variance;
+    if (u_glint_curvature != 0) {
+        inputs.slope_variance += vec2(curvature.x, curvature.y);
+        inputs.slope_covariance_xy += curvature.z;
+    }
     glint_set_inputs(inputs);
     o_radiance = vec4(glint_shade(v_position, n, v_dpdu, fp), 1.0f);
 }

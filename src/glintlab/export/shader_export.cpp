@@ -321,6 +321,11 @@ std::string header(const GlintModelDescriptor& d, ExportLanguage lang, const std
                   (d.textured_roughness
                        ? std::string("yes (alpha^2 + 2 Sigma_ii per axis)")
                        : fmt::format("no, the frame is tilted only ({})", d.untextured_reason)));
+    if (d.reads_slope_correlation)
+        h += "  Slope correlation: u_input_normal_cross (R) holds s_x s_y of the bilinear\n"
+             "          surface over each cell (box means, the normal map's transform), mask\n"
+             "          bit 5; the lobe is sheared by Sigma_xy (Chermain et al. 2021) where\n"
+             "          u_chermain2020_correlated is true.\n";
     h += fmt::format(
         "Parameters of {} (uniform, type, range, default: meaning; a name in\n"
         "parentheses is host-side, see docs/INTEGRATION.md):\n{}",
@@ -534,9 +539,13 @@ std::string export_fragment_glsl(GlintModelId model, unsigned program_options,
     // GLINTLAB_GLINT_PER_PIXEL_ALPHA: the model reads its α per pixel, so a
     // normal map's covariance widens it (as the forward pass's
     // u_normal_map_widens_glint).
+    // GLINTLAB_GLINT_SLOPE_CORRELATION: the model shears its NDF by the
+    // slopes' correlation (a normal map's s_x s_y input, the curvature's Σ_xy).
     const std::string root = fmt::format(
-        "#define GLINTLAB_MATERIAL_TEXTURES 1\n{}#include \"{}\"\n#include \"{}\"\n",
+        "#define GLINTLAB_MATERIAL_TEXTURES 1\n{}{}#include \"{}\"\n#include \"{}\"\n",
         glint_model(model).textured_roughness ? "#define GLINTLAB_GLINT_PER_PIXEL_ALPHA 1\n" : "",
+        glint_model(model).reads_slope_correlation ? "#define GLINTLAB_GLINT_SLOPE_CORRELATION 1\n"
+                                                   : "",
         glue, std::string(kEntry));
     const AssembledShader a = assemble_shader(root, true, "\n");
     std::string body = resolve_preprocessor(a.text);
@@ -746,6 +755,18 @@ std::vector<ExportedFile> export_model(const ExportOptions& o) {
         {"filter", "linear, mip-mapped (box means)"}};
     if (!d->textured_roughness) normal["reason"] = d->untextured_reason;
     inputs.push_back(normal);
+    // Its s_x s_y for the models that shear their NDF by the slopes'
+    // correlation (chermain2020, Chermain et al. 2021).
+    if (d->reads_slope_correlation)
+        inputs.push_back({{"key", "normal_map_cross"},
+                          {"bit", 5},
+                          {"sampler", "u_input_normal_cross"},
+                          {"stores",
+                           "one channel: s_x s_y of the bilinear surface over the texel's cell "
+                           "(with the normal map's uv transform, slot 4)"},
+                          {"per_pixel", true},
+                          {"lod_bias", -0.79248125},
+                          {"filter", "linear, mip-mapped (box means)"}});
     j["inputs"] = {{"mask_uniform", "u_input_texture_mask"},
                    {"transform_uniforms", {"u_input_texture_linear", "u_input_texture_offset"}},
                    {"textures", inputs}};

@@ -289,9 +289,6 @@ TEST(MinimalHostInputs, NormalMapMatchesTheRenderer) {
         nlohmann::json scene_json = plane25_scene(model);
         scene_json["materials"][0]["normal_map"] = {{"texture", "normals.exr"},
                                                     {"encoding", "signed"}};
-        // The export has no Σ_xy input: its chermain2020 is 004's, uncorrelated.
-        if (model == "chermain2020")
-            scene_json["materials"][0]["chermain2020"]["slope_correlation"] = "none";
         expect_inputs_match_the_renderer(model, scene_json, dir,
                                          "- " + (dir / "normals.pfm").string(), {0.01, 0.02, 0.01});
     }

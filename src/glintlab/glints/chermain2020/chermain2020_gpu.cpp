@@ -40,6 +40,7 @@ class State final : public GpuModelState {
         glProgramUniform1f(program, loc("u_chermain2020_density_randomization"),
                            p.density_randomization);
         glProgramUniform1i(program, loc("u_chermain2020_colour_count"), p.colour_count);
+        glProgramUniform1i(program, loc("u_chermain2020_correlated"), p.slope_correlation ? 1 : 0);
         glProgramUniform3fv(program, loc("u_chermain2020_colours"),
                             static_cast<GLsizei>(p.colour_table.size()), &p.colour_table[0].x);
         glProgramUniform1i(program, loc("chermain2020_dictionary"), kDictionaryUnit);

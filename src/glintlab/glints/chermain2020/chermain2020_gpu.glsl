@@ -20,6 +20,9 @@ uniform float u_chermain2020_relative_area;
 uniform float u_chermain2020_max_anisotropy;
 uniform float u_chermain2020_density_randomization;
 uniform int u_chermain2020_colour_count;
+// "slope_correlation": "chermain2021": the target is sheared by the slopes'
+// correlation the forward pass or the export's inputs resolved per pixel.
+uniform bool u_chermain2020_correlated;
 uniform vec3 u_chermain2020_colours[CHERMAIN2020_MAX_COLOURS];
 vec3 glint_ndf(vec3 h, Footprint fp) {
     Chermain2020Dict d;
@@ -31,8 +34,8 @@ vec3 glint_ndf(vec3 h, Footprint fp) {
     Chermain2020Colours colours;
     colours.count = u_chermain2020_colour_count;
     for (int i = 0; i < CHERMAIN2020_MAX_COLOURS; ++i) colours.table[i] = u_chermain2020_colours[i];
-    return chermain2020_ndf_rgb(h, fp, d, u_glint_alpha.x, u_glint_alpha.y,
-                                g_glint_slope_correlation, u_glint_log_density,
+    float rho = u_chermain2020_correlated ? g_glint_slope_correlation : 0.0f;
+    return chermain2020_ndf_rgb(h, fp, d, u_glint_alpha.x, u_glint_alpha.y, rho, u_glint_log_density,
                                 u_glint_seed, u_chermain2020_relative_area,
                                 u_chermain2020_max_anisotropy,
                                 u_chermain2020_density_randomization, colours);
