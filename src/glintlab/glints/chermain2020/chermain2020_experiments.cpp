@@ -244,6 +244,9 @@ int64_t chermain2020_robustness(int64_t evaluations, uint64_t seed) {
                     t.alpha_y = 1e-3f + rng.next_float();
                     t.log_density = -20.0f + 80.0f * rng.next_float();
                     t.seed = rng.next_uint();
+                    // Half with a slope correlation in [−0.99, 0.99) (Chermain et al. 2021).
+                    const float u_rho = rng.next_float();
+                    t.rho = u_rho < 0.5f ? 0.0f : 1.98f * (2.0f * u_rho - 1.5f);
                     Chermain2020Params p;
                     p.relative_area = rng.next_float();
                     p.max_anisotropy = 1.0f + 31.0f * rng.next_float();
