@@ -88,8 +88,11 @@ float GlintBxdf::footprint_ndf(glm::vec3 wo, glm::vec3 wi, glm::vec3 h) const {
     // Each model's own evaluation of its footprint NDF (K::footprint_ndf),
     // else (smooth, wang2020) the smooth limit D. Models whose query depends
     // on both directions (jakob2014's spherical conic, 002 Eq. 7) use wo, wi.
+    const ViewDifferentials* v = has_view ? &view : nullptr;
     return with_kernel(desc->model_id, [&]<class K>(K) -> float {
-        if constexpr (requires { K::footprint_ndf(wo, wi, h, footprint, *desc); })
+        if constexpr (requires { K::footprint_ndf(wo, wi, h, footprint, v, *desc); })
+            return K::footprint_ndf(wo, wi, h, footprint, v, *desc);
+        else if constexpr (requires { K::footprint_ndf(wo, wi, h, footprint, *desc); })
             return K::footprint_ndf(wo, wi, h, footprint, *desc);
         else
             return shader::D_Microfacet(ndf_id(desc->ndf), h, desc->alpha_x, desc->alpha_y);
@@ -97,8 +100,11 @@ float GlintBxdf::footprint_ndf(glm::vec3 wo, glm::vec3 wi, glm::vec3 h) const {
 }
 
 glm::vec3 GlintBxdf::footprint_ndf_rgb(glm::vec3 wo, glm::vec3 wi, glm::vec3 h) const {
+    const ViewDifferentials* v = has_view ? &view : nullptr;
     return with_kernel(desc->model_id, [&]<class K>(K) -> glm::vec3 {
-        if constexpr (requires { K::footprint_ndf_rgb(wo, wi, h, footprint, *desc); })
+        if constexpr (requires { K::footprint_ndf_rgb(wo, wi, h, footprint, v, *desc); })
+            return K::footprint_ndf_rgb(wo, wi, h, footprint, v, *desc);
+        else if constexpr (requires { K::footprint_ndf_rgb(wo, wi, h, footprint, *desc); })
             return K::footprint_ndf_rgb(wo, wi, h, footprint, *desc);
         else
             return glm::vec3(footprint_ndf(wo, wi, h));

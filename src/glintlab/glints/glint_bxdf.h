@@ -23,6 +23,7 @@
 #include <glm/glm.hpp>
 
 #include "glintlab/core/footprint.h"
+#include "glintlab/core/view_differentials.h"
 #include "glintlab/glints/registry.h"
 #include "glintlab/microfacet/bxdfs.h"
 
@@ -44,6 +45,10 @@ struct GlintBxdf {
     const GlintDesc* desc = nullptr;
     bool has_footprint = false;
     Footprint footprint{};
+    // The view's and the normal's change across the pixel (with the
+    // footprint, at the camera's first hit).
+    bool has_view = false;
+    ViewDifferentials view{};
 
     // D_P(h) for the material's model over the footprint, h = normalize(wo + wi).
     float footprint_ndf(glm::vec3 wo, glm::vec3 wi, glm::vec3 h) const;

@@ -5,6 +5,9 @@
 //   float footprint_ndf(wo, wi, h, footprint, desc)   D_P (default: D)
 //   vec3 footprint_ndf_rgb(wo, wi, h, footprint, desc)  per-channel D_P
 //       (default: the scalar D_P in every channel)
+//   either of the two with `const ViewDifferentials* view` before desc: the
+//       pixel's view differentials (null without them), for models that
+//       filter over the half vector's sweep across the pixel
 //   optional<vec3> sample_wi(desc, wo, uc, u) and float lobe_pdf(desc, wo, wi):
 //       the model's own sampling of the glint lobe with a footprint (both or
 //       neither; default: the smooth visible normals)

@@ -4,6 +4,7 @@
 #define GLINTLAB_GLINTS_GLINT_UNIFORMS_GLSL
 
 #include "glintlab/core/footprint.glsl"
+#include "glintlab/core/view_differentials.glsl"
 
 uniform int u_glint_ndf;  // NDF_BECKMANN / NDF_GGX
 uniform vec2 u_glint_alpha;  // alpha_x, alpha_y
@@ -25,6 +26,11 @@ float g_glint_log_density;
 float g_glint_slope_correlation;
 #else
 const float g_glint_slope_correlation = 0.0f;
+#endif
+#ifdef GLINTLAB_GLINT_VIEW_DIFFERENTIALS
+// The fragment's view differentials in the shading frame (the forward pass
+// sets them before its light loops; core/view_differentials.glsl).
+ViewDifferentials g_glint_view;
 #endif
 uniform uint u_glint_seed;
 // The glint material's Fresnel (FresnelDesc: GLINT_FRESNEL_* mode of

@@ -42,6 +42,9 @@ AssembledShader forward_fragment_shader(const ProgramKey& key) {
         text += "#define GLINTLAB_MATERIAL_TEXTURES 1\n";
     if (key.normal_map) text += "#define GLINTLAB_NORMAL_MAP 1\n";
     if (key.curvature) text += "#define GLINTLAB_GLINT_CURVATURE 1\n";
+    // The pass knows each pixel's view differentials (g_glint_view): glues
+    // that filter over the half vector's sweep read them.
+    text += "#define GLINTLAB_GLINT_VIEW_DIFFERENTIALS 1\n";
     text += glint_model_glsl(key.model, key.model_options);
     text += "#include \"glintlab/realtime/shaders/forward.frag.glsl\"\n";
     return assemble_shader(text, true);

@@ -26,6 +26,12 @@ SurfaceDifferentials compute_differentials(const RayDifferential& ray, const Sur
     out.footprint.uv = hit.uv;
     out.footprint.duvdx = out.footprint.duvdy = glm::vec2(0.0f);
     if (!ray.has_differentials) return out;
+    const glm::vec3 d0 = glm::normalize(ray.ray.d);
+    out.dwodx = (d0 - glm::normalize(ray.rx.d)) * scale;
+    out.dwody = (d0 - glm::normalize(ray.ry.d)) * scale;
+    if (!std::isfinite(out.dwodx.x + out.dwodx.y + out.dwodx.z + out.dwody.x + out.dwody.y +
+                       out.dwody.z))
+        out.dwodx = out.dwody = glm::vec3(0.0f);
     const glm::vec3 n = hit.ng;
     const float d = glm::dot(n, hit.p);
     auto plane_point = [&](const Ray& r, glm::vec3* p) {

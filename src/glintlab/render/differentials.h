@@ -13,6 +13,9 @@ namespace glintlab {
 struct SurfaceDifferentials {
     Footprint footprint;  // uv, duv/dx, duv/dy
     glm::vec3 dpdx{0.0f}, dpdy{0.0f};
+    // The change of the unit direction towards the eye (−ray direction) per
+    // pixel step: the offset rays' directions less the ray's.
+    glm::vec3 dwodx{0.0f}, dwody{0.0f};
 };
 
 // `scale` multiplies the differentials (pbrt-v4 scales camera differentials

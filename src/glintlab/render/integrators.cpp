@@ -152,7 +152,7 @@ glm::vec3 integrate_direct(const IntegratorContext& ctx, const RayDifferential& 
     const SurfaceDifferentials diff = compute_differentials(ray, *hit, ctx.differential_scale);
     const glm::vec3 wo = -ray.ray.d;
     const SurfaceBsdf bsdf =
-        make_surface_bsdf(scene.materials[shape.material], *hit, wo, &diff.footprint);
+        make_surface_bsdf(scene.materials[shape.material], *hit, wo, &diff);
     const OwnLights own = own_lights(scene, shape);
     if (!bsdf.is_specular()) L += sample_lights(ctx, *hit, bsdf, wo, rng, own);
     if (own.model != nullptr)
@@ -225,13 +225,15 @@ glm::vec3 integrate_path(const IntegratorContext& ctx, const RayDifferential& ca
         // Footprints only at the camera's first hit (pbrt-v4 and 002 §4 do the
         // same): later bounces see the glint models' smooth limit.
         SurfaceDifferentials diff;
+        const SurfaceDifferentials* differentials = nullptr;
         const Footprint* footprint = nullptr;
         if (depth == 0) {
             diff = compute_differentials(camera_ray, *hit, ctx.differential_scale);
+            differentials = &diff;
             footprint = &diff.footprint;
         }
         const SurfaceBsdf bsdf =
-            make_surface_bsdf(scene.materials[shape.material], *hit, wo, footprint);
+            make_surface_bsdf(scene.materials[shape.material], *hit, wo, differentials);
         const OwnLights own = depth == 0 ? own_lights(scene, shape) : OwnLights{};
         if (!bsdf.is_specular()) L += beta * sample_lights(ctx, *hit, bsdf, wo, rng, own);
         if (own.model != nullptr)

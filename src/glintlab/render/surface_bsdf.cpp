@@ -98,6 +98,32 @@ float correlation_of(float covariance_xy, float alpha_x, float alpha_y) {
     return std::isfinite(rho) ? std::clamp(rho, -0.99f, 0.99f) : 0.0f;
 }
 
+// The pixel's view differentials in the shading frame (core/
+// view_differentials.glsl): the ray differentials' change of the direction
+// to the eye, and the unit shading normal's change ∂n/∂u ∂u/∂x + ∂n/∂v ∂v/∂x
+// over the footprint (negated with the two-sided flip, `back`), as the
+// forward pass takes dFdx of the same two vectors.
+ViewDifferentials view_differentials(const SurfaceDifferentials& d, const SurfaceHit& hit,
+                                     const ShadingFrame& frame, bool back, glm::vec3 wo) {
+    const float sign = back ? -1.0f : 1.0f;
+    const glm::vec2 duvdx = d.footprint.duvdx, duvdy = d.footprint.duvdy;
+    const glm::vec3 dndx = sign * (duvdx.x * hit.dndu + duvdx.y * hit.dndv);
+    const glm::vec3 dndy = sign * (duvdy.x * hit.dndu + duvdy.y * hit.dndv);
+    ViewDifferentials v;
+    v.wo = frame.to_local(glm::normalize(wo));
+    v.wo_dx = frame.to_local(d.dwodx);
+    v.wo_dy = frame.to_local(d.dwody);
+    v.n_dx = glm::vec2(glm::dot(frame.t, dndx), glm::dot(frame.b, dndx));
+    v.n_dy = glm::vec2(glm::dot(frame.t, dndy), glm::dot(frame.b, dndy));
+    const float all = v.wo_dx.x + v.wo_dx.y + v.wo_dx.z + v.wo_dy.x + v.wo_dy.y + v.wo_dy.z +
+                      v.n_dx.x + v.n_dx.y + v.n_dy.x + v.n_dy.y;
+    if (!std::isfinite(all)) {  // no sweep: the unfiltered lookup
+        v.wo_dx = v.wo_dy = glm::vec3(0.0f);
+        v.n_dx = v.n_dy = glm::vec2(0.0f);
+    }
+    return v;
+}
+
 template <typename... Ts>
 struct Overloaded : Ts... {
     using Ts::operator()...;
@@ -124,7 +150,8 @@ ShadingFrame shading_frame(const SurfaceHit& hit, bool vertex_tangent) {
 }
 
 SurfaceBsdf make_surface_bsdf(const MaterialDesc& m, const SurfaceHit& hit, glm::vec3 wo,
-                              const Footprint* footprint) {
+                              const SurfaceDifferentials* differentials) {
+    const Footprint* footprint = differentials ? &differentials->footprint : nullptr;
     ShadingFrame frame = shading_frame(hit, m.normal_map != nullptr);
     // Opaque materials are two-sided: look at them from the side of wo. The
     // dielectric keeps its orientation (inside/outside matters for eta).
@@ -234,6 +261,8 @@ SurfaceBsdf make_surface_bsdf(const MaterialDesc& m, const SurfaceHit& hit, glm:
     if (footprint) {
         g.has_footprint = true;
         g.footprint = *footprint;
+        g.has_view = true;
+        g.view = view_differentials(*differentials, hit, frame, back, wo);
     }
     const GlintModelDescriptor& model = glint_model(m.glint.model_id);
     const bool is_explicit = m.glint.model_id == GlintModelId::Explicit;

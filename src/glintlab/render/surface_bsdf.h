@@ -13,6 +13,7 @@
 #include "glintlab/glints/glint_bxdf.h"
 #include "glintlab/microfacet/bxdfs.h"
 #include "glintlab/render/accel.h"
+#include "glintlab/render/differentials.h"
 #include "glintlab/scene/scene.h"
 
 namespace glintlab {
@@ -60,11 +61,12 @@ class SurfaceBsdf {
     std::shared_ptr<const GlintDesc> resolved_;
 };
 
-// `footprint` is the pixel footprint at the camera's first hit, null at later
-// bounces (glint models then fall back to their smooth limit: docs/ARCHITECTURE.md).
-// Textured parameters are read at hit.uv: their means over the footprint,
-// or their finest level's value without one.
+// `differentials` are the pixel's footprint and view differentials at the
+// camera's first hit, null at later bounces (glint models then fall back to
+// their smooth limit: docs/ARCHITECTURE.md). Textured parameters are read at
+// hit.uv: their means over the footprint, or their finest level's value
+// without one.
 SurfaceBsdf make_surface_bsdf(const MaterialDesc& material, const SurfaceHit& hit,
-                              glm::vec3 wo_world, const Footprint* footprint);
+                              glm::vec3 wo_world, const SurfaceDifferentials* differentials);
 
 }  // namespace glintlab

@@ -3,6 +3,7 @@
 #include <string>
 #include <tuple>
 #include <variant>
+#include <vector>
 
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
@@ -20,7 +21,15 @@ float chermain2020_dict_fetch(int row, int bin) {
     const Dictionary& d = default_dictionary();
     return d.values[static_cast<size_t>(row) * d.params.table_size + bin];
 }
+// The dictionary's texels for geometric glint anti-aliasing, built once.
+vec3 chermain2020_dict_fetch_filter(int row, int bin) {
+    static const std::vector<float> texels =
+        glintlab::chermain2020_dictionary_filter_texels(default_dictionary());
+    const size_t i = (static_cast<size_t>(row) * default_dictionary().params.table_size + bin) * 3;
+    return vec3(texels[i], texels[i + 1], texels[i + 2]);
+}
 #include "glintlab/glints/chermain2020/chermain2020.glsl"
+#include "glintlab/core/half_slope_differentials.glsl"
 #include "glintlab/microfacet/ndf.glsl"
 GLINTLAB_SHADER_FUNCTIONS_END
 
@@ -65,13 +74,26 @@ shader::Chermain2020Colours to_shader(const Chermain2020Params& p) {
 static_assert(CHERMAIN2020_MAX_COLOURS ==
               std::tuple_size_v<decltype(Chermain2020Params::colour_table)>);
 
-Chermain2020Target target_of(const GlintDesc& desc) {
+shader::Chermain2020Filter filter_of(const Chermain2020Target& t) {
+    shader::Chermain2020Filter f;
+    f.slope_dx = glm::vec2(t.slope_differentials.x, t.slope_differentials.y);
+    f.slope_dy = glm::vec2(t.slope_differentials.z, t.slope_differentials.w);
+    f.kernel = t.kernel;
+    return f;
+}
+
+Chermain2020Target target_of(const GlintDesc& desc, glm::vec3 h, const ViewDifferentials* view) {
     Chermain2020Target t;
     t.alpha_x = desc.alpha_x;
     t.alpha_y = desc.alpha_y;
     t.rho = desc.slope_correlation;
     t.log_density = desc.log_density;
     t.seed = desc.seed;
+    const auto& p = std::get<Chermain2020Params>(desc.params);
+    if (view && p.antialiasing) {
+        t.slope_differentials = shader::half_slope_differentials(h, *view);
+        t.kernel = p.antialiasing_kernel;
+    }
     return t;
 }
 
@@ -82,14 +104,16 @@ glm::vec3 chermain2020_ndf_rgb(glm::vec3 h, const Footprint& footprint,
     return shader::chermain2020_ndf_rgb(h, footprint, shape(), target.alpha_x, target.alpha_y,
                                         target.rho, target.log_density, target.seed,
                                         params.relative_area, params.max_anisotropy,
-                                        params.density_randomization, to_shader(params));
+                                        params.density_randomization, to_shader(params),
+                                        filter_of(target));
 }
 
 float chermain2020_ndf(glm::vec3 h, const Footprint& footprint, const Chermain2020Target& target,
                        const Chermain2020Params& params) {
     return shader::chermain2020_ndf(
         h, footprint, shape(), target.alpha_x, target.alpha_y, target.rho, target.log_density,
-        target.seed, params.relative_area, params.max_anisotropy, params.density_randomization);
+        target.seed, params.relative_area, params.max_anisotropy, params.density_randomization,
+        filter_of(target));
 }
 
 glm::vec3 chermain2020_level_sdf(glm::vec2 slope, glm::vec2 uv, glm::vec3 ellipse, int level,
@@ -98,7 +122,11 @@ glm::vec3 chermain2020_level_sdf(glm::vec2 slope, glm::vec2 uv, glm::vec3 ellips
     return shader::chermain2020_level_p22(slope, uv, ellipse, level, shape(), target.alpha_x,
                                           target.alpha_y, target.rho, target.log_density,
                                           params.relative_area, params.density_randomization,
-                                          target.seed, to_shader(params));
+                                          target.seed, to_shader(params), filter_of(target));
+}
+
+float chermain2020_marginal_box(int dist, int level, float x, float width) {
+    return shader::chermain2020_marginal_box(shape(), dist, level, x, width);
 }
 
 float chermain2020_target_ndf(glm::vec3 h, const Chermain2020Target& target) {
@@ -130,14 +158,15 @@ glm::vec2 chermain2020_dict_slope(const Chermain2020CellInfo& cell, glm::vec2 sl
                                            target.alpha_y, target.rho);
 }
 
-float chermain2020_footprint_ndf(glm::vec3 h, const Footprint& footprint, const GlintDesc& desc) {
-    return chermain2020_ndf(h, footprint, target_of(desc),
+float chermain2020_footprint_ndf(glm::vec3 h, const Footprint& footprint, const GlintDesc& desc,
+                                 const ViewDifferentials* view) {
+    return chermain2020_ndf(h, footprint, target_of(desc, h, view),
                             std::get<Chermain2020Params>(desc.params));
 }
 
 glm::vec3 chermain2020_footprint_ndf_rgb(glm::vec3 h, const Footprint& footprint,
-                                         const GlintDesc& desc) {
-    return chermain2020_ndf_rgb(h, footprint, target_of(desc),
+                                         const GlintDesc& desc, const ViewDifferentials* view) {
+    return chermain2020_ndf_rgb(h, footprint, target_of(desc, h, view),
                                 std::get<Chermain2020Params>(desc.params));
 }
 

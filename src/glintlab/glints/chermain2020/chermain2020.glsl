@@ -5,6 +5,9 @@
 //   Eq. 9-11  random rotation and anisotropic roughness scaling
 //   Eq. 12-13 Gaussian-weighted sum over the footprint's cells at the two
 //             LODs around l_P, then slope → normal (Algorithms 1-3)
+// With Chermain et al. 2021 ("Real-Time Geometric Glint Anti-Aliasing with
+// Normal Map Filtering", I3D 2021): the slope correlation of their Eq. 18
+// and their geometric glint anti-aliasing (§4, Chermain2020Filter below).
 // The dictionary (dictionary.h) is reached through the fetch function
 // `float chermain2020_dict_fetch(int row, int bin)`, row = dist * n_levels +
 // level: the C++ back end defines it over the in-memory table before
@@ -41,6 +44,26 @@ float chermain2020_dict_fetch(int row, int bin) {
 #endif
 #endif
 
+// Geometric glint anti-aliasing reads the table with its running integral
+// (chermain2020_marginal_box): the C++ back end, and the forward pass, which
+// knows the half vector's sweep over the pixel (GLINTLAB_GLINT_VIEW_DIFFERENTIALS).
+// Elsewhere (`glintlab export`) the marginals are read unfiltered.
+#ifdef GLINTLAB_CPP
+#define GLINTLAB_CHERMAIN2020_FILTERED 1
+#else
+#ifdef GLINTLAB_GLINT_VIEW_DIFFERENTIALS
+#define GLINTLAB_CHERMAIN2020_FILTERED 1
+// RGB32F texture of the dictionary's shape: texel `bin` of a row holds the
+// samples bin and bin + 1 and the row's integral from 0 to the sample bin
+// (dictionary.h chermain2020_dictionary_filter_texels). Set by the forward
+// pass's glue (chermain2020_gpu.glsl).
+uniform sampler2D chermain2020_dictionary_filter;
+vec3 chermain2020_dict_fetch_filter(int row, int bin) {
+    return texelFetch(chermain2020_dictionary_filter, ivec2(bin, row), 0).rgb;
+}
+#endif
+#endif
+
 #ifndef GLINTLAB_CHERMAIN2020_DICT_PAIRS
 // The samples bin and bin + 1 of a row, 0 past the row's end (the C++ back
 // end and single-sample textures).
@@ -68,6 +91,29 @@ struct Chermain2020Colours {
     int count;
     vec3 table[CHERMAIN2020_MAX_COLOURS];
 };
+
+// Chermain et al. 2021's geometric glint anti-aliasing (GGAA, their §4): a
+// cell's marginals are filtered over the slopes the half vector sweeps
+// across the pixel, so a glint that a pixel's centre misses but its area
+// holds is not lost, and one does not pop as the view moves by less than a
+// pixel. Their kernel is the hardware's mip-mapped lookup of the 1-D
+// marginal at the derivative of the slope transformed into the cell's frame
+// (textureGrad); here the same width, kernel × max(|∂x'/∂x|, |∂x'/∂y|) per
+// axis of the cell's frame, is an exact box over the piecewise-linear
+// marginal (chermain2020_marginal_box), the same on every back end.
+struct Chermain2020Filter {
+    vec2 slope_dx;  // the half vector's slope change per pixel step in x (local frame)
+    vec2 slope_dy;  // ... in y
+    float kernel;   // their KernelSize; 0: unfiltered (004)
+};
+
+Chermain2020Filter chermain2020_unfiltered() {
+    Chermain2020Filter f;
+    f.slope_dx = vec2(0.0f);
+    f.slope_dy = vec2(0.0f);
+    f.kernel = 0.0f;
+    return f;
+}
 
 // The random choices of one cell of the hierarchy (Algorithm 3).
 struct Chermain2020Cell {
@@ -120,6 +166,37 @@ float chermain2020_marginal(Chermain2020Dict d, int dist, int level, float x) {
     int k = int(t);
     vec2 ab = chermain2020_dict_fetch_pair(dist * d.n_levels + level, k, d.table_size);
     return mix(ab.x, ab.y, t - float(k));
+}
+
+#ifdef GLINTLAB_CHERMAIN2020_FILTERED
+// C(x) = ∫_0^x P_i(t, l) dt for x ≥ 0, exact for the piecewise-linear
+// marginal (constant from slope_max on).
+float chermain2020_cumulative(Chermain2020Dict d, int row, float x) {
+    float step = d.slope_max / float(d.table_size);
+    float t = min(x, d.slope_max) / step;
+    int k = min(int(t), d.table_size - 1);
+    float f = t - float(k);
+    vec3 c = chermain2020_dict_fetch_filter(row, k);
+    return c.z + step * f * (c.x + 0.5f * (c.y - c.x) * f);
+}
+#endif
+
+// P_i(x, l) averaged over the box [x − w/2, x + w/2]: (C(b) − C(a)) / w with
+// C extended as an odd function (P is even). Boxes narrower than a hundredth
+// of a table step read the point value (the box's limit; the difference of
+// C would lose its precision there).
+float chermain2020_marginal_box(Chermain2020Dict d, int dist, int level, float x, float w) {
+#ifdef GLINTLAB_CHERMAIN2020_FILTERED
+    if (w > 0.01f * d.slope_max / float(d.table_size)) {
+        int row = dist * d.n_levels + level;
+        float a = x - 0.5f * w;
+        float b = x + 0.5f * w;
+        float ca = sign(a) * chermain2020_cumulative(d, row, abs(a));
+        float cb = sign(b) * chermain2020_cumulative(d, row, abs(b));
+        return max((cb - ca) / w, 0.0f);
+    }
+#endif
+    return chermain2020_marginal(d, dist, level, x);
 }
 
 // The anisotropic Beckmann SDF the hierarchy converges to (004 §4.3).
@@ -213,19 +290,39 @@ struct Chermain2020Lookup {
     vec2 q;            // S^-1 slope in the dictionary's scale, before the cell's rotation
     float jac;         // Jacobian of S_alpha
     float target_p22;  // the analytic target of cells past the last level (Alg. 3 line 10)
+    // GGAA: q's change per pixel step (the same linear map of the slope's)
+    // and the kernel; kernel 0 reads the marginals unfiltered.
+    vec2 dq_dx;
+    vec2 dq_dy;
+    float kernel;
     // The rotation R^-1 keeps |q|; a cell's SDF is non-zero only where both
-    // rotated coordinates lie within slope_max, i.e. |q|^2 < 2 slope_max^2 at
-    // least. Outside (with 0.1 % margin against rounding of the rotation)
-    // every dictionary cell's SDF is 0 and its rotation and fetches are skipped.
+    // rotated coordinates lie within slope_max (plus half the widest box a
+    // cell can draw), i.e. |q|^2 < 2 reach^2 at least. Outside (with 0.1 %
+    // margin against rounding of the rotation) every dictionary cell's SDF
+    // is 0 and its rotation and fetches are skipped.
     bool in_support;
 };
 Chermain2020Lookup chermain2020_lookup(vec2 slope, Chermain2020Dict d, float alpha_x, float alpha_y,
-                                       float rho) {
+                                       float rho, Chermain2020Filter ggaa) {
     Chermain2020Lookup k;
     k.q = chermain2020_unscaled_slope(slope, d.alpha_dict, alpha_x, alpha_y, rho);
     k.jac = chermain2020_unscaled_jacobian(d.alpha_dict, alpha_x, alpha_y, rho);
     k.target_p22 = chermain2020_target_p22(slope, alpha_x, alpha_y, rho);
-    k.in_support = dot(k.q, k.q) < 2.002f * d.slope_max * d.slope_max;
+    k.kernel = ggaa.kernel;
+    k.dq_dx = vec2(0.0f);
+    k.dq_dy = vec2(0.0f);
+    float reach = d.slope_max;
+    if (ggaa.kernel > 0.0f) {
+        k.dq_dx = chermain2020_unscaled_slope(ggaa.slope_dx, d.alpha_dict, alpha_x, alpha_y, rho);
+        k.dq_dy = chermain2020_unscaled_slope(ggaa.slope_dy, d.alpha_dict, alpha_x, alpha_y, rho);
+        // A rotated component is at most the vector's length.
+        reach += 0.5f * ggaa.kernel * max(length(k.dq_dx), length(k.dq_dy));
+        if (isnan(reach) || isinf(reach)) {  // no finite sweep: unfiltered
+            k.kernel = 0.0f;
+            reach = d.slope_max;
+        }
+    }
+    k.in_support = dot(k.q, k.q) < 2.002f * reach * reach;
     return k;
 }
 
@@ -252,10 +349,16 @@ vec2 chermain2020_cell_sdf(ivec2 cell, int level, Chermain2020Dict d, float log_
     int dist_x = min(int(float(d.n_dists) * hash_random(state)), d.n_dists - 1);
     float cs = cos(theta);
     float sn = sin(theta);
-    float mx = chermain2020_marginal(d, dist_x, dist_level, cs * k.q.x + sn * k.q.y);
+    vec2 width = vec2(0.0f);
+    if (k.kernel > 0.0f) {  // GGAA: the sweep in the cell's frame, R^-1 dq
+        vec2 rx = vec2(cs * k.dq_dx.x + sn * k.dq_dx.y, -sn * k.dq_dx.x + cs * k.dq_dx.y);
+        vec2 ry = vec2(cs * k.dq_dy.x + sn * k.dq_dy.y, -sn * k.dq_dy.x + cs * k.dq_dy.y);
+        width = k.kernel * max(abs(rx), abs(ry));
+    }
+    float mx = chermain2020_marginal_box(d, dist_x, dist_level, cs * k.q.x + sn * k.q.y, width.x);
     if (mx == 0.0f) return vec2(0.0f);
     int dist_y = min(int(float(d.n_dists) * hash_random(state)), d.n_dists - 1);
-    float my = chermain2020_marginal(d, dist_y, dist_level, -sn * k.q.x + cs * k.q.y);
+    float my = chermain2020_marginal_box(d, dist_y, dist_level, -sn * k.q.x + cs * k.q.y, width.y);
     return vec2(mx * my * k.jac, colour_u);
 }
 
@@ -306,7 +409,7 @@ ivec2 chermain2020_row_range(Chermain2020Ellipse e, int y) {
 vec3 chermain2020_level_p22(vec2 slope, vec2 uv, vec3 ellipse, int level, Chermain2020Dict d,
                             float alpha_x, float alpha_y, float rho, float log_density,
                             float relative_area, float density_randomization, uint seed,
-                            Chermain2020Colours colours) {
+                            Chermain2020Colours colours, Chermain2020Filter ggaa) {
     float scale = exp2(float(d.n_levels - 1 - level));  // cells per uv unit at this level
     vec2 centre = uv * scale;
     float major = ellipse.x * scale;
@@ -349,7 +452,7 @@ vec3 chermain2020_level_p22(vec2 slope, vec2 uv, vec3 ellipse, int level, Cherma
     e.q0 = sa * sa * im2 + ca * ca * in2;
     e.x0 = x0;
     e.x1 = x1;
-    Chermain2020Lookup lookup = chermain2020_lookup(slope, d, alpha_x, alpha_y, rho);
+    Chermain2020Lookup lookup = chermain2020_lookup(slope, d, alpha_x, alpha_y, rho, ggaa);
     vec3 sum_p = vec3(0.0f);
     float sum_w = 0.0f;
     int y = y0;
@@ -388,7 +491,7 @@ vec3 chermain2020_level_p22(vec2 slope, vec2 uv, vec3 ellipse, int level, Cherma
 vec3 chermain2020_ndf_rgb(vec3 h, Footprint fp, Chermain2020Dict d, float alpha_x, float alpha_y,
                           float rho, float log_density, uint seed, float relative_area,
                           float max_anisotropy, float density_randomization,
-                          Chermain2020Colours colours) {
+                          Chermain2020Colours colours, Chermain2020Filter ggaa) {
     if (h.z <= 0.0f) return vec3(0.0f);
     vec2 slope = vec2(-h.x / h.z, -h.y / h.z);  // normalToSlope (Eq. 1)
     vec3 ellipse = chermain2020_footprint_ellipse(fp.duvdx, fp.duvdy, max_anisotropy);
@@ -399,11 +502,11 @@ vec3 chermain2020_ndf_rgb(vec3 h, Footprint fp, Chermain2020Dict d, float alpha_
     float w = lod - float(l0);
     vec3 p = chermain2020_level_p22(slope, fp.uv, ellipse, l0, d, alpha_x, alpha_y, rho,
                                     log_density, relative_area, density_randomization, seed,
-                                    colours);
+                                    colours, ggaa);
     if (w > 0.0f) {  // line 8: lerp of the two discrete P-SDFs (Eq. 12)
         vec3 p1 = chermain2020_level_p22(slope, fp.uv, ellipse, l0 + 1, d, alpha_x, alpha_y, rho,
                                          log_density, relative_area, density_randomization, seed,
-                                         colours);
+                                         colours, ggaa);
         p = mix(p, p1, w);
     }
     float c2 = h.z * h.z;
@@ -413,12 +516,13 @@ vec3 chermain2020_ndf_rgb(vec3 h, Footprint fp, Chermain2020Dict d, float alpha_
 // Scalar D_P(h) of Eq. 13 (no colour table), h in the local frame.
 float chermain2020_ndf(vec3 h, Footprint fp, Chermain2020Dict d, float alpha_x, float alpha_y,
                        float rho, float log_density, uint seed, float relative_area,
-                       float max_anisotropy, float density_randomization) {
+                       float max_anisotropy, float density_randomization,
+                       Chermain2020Filter ggaa) {
     Chermain2020Colours none;
     none.count = 0;
     for (int i = 0; i < CHERMAIN2020_MAX_COLOURS; ++i) none.table[i] = vec3(1.0f);
     return chermain2020_ndf_rgb(h, fp, d, alpha_x, alpha_y, rho, log_density, seed, relative_area,
-                                max_anisotropy, density_randomization, none)
+                                max_anisotropy, density_randomization, none, ggaa)
         .x;
 }
 

@@ -8,6 +8,7 @@
 #include <glm/glm.hpp>
 
 #include "glintlab/core/footprint.h"
+#include "glintlab/core/view_differentials.h"
 #include "glintlab/glints/chermain2020/chermain2020_params.h"
 
 namespace glintlab {
@@ -24,6 +25,11 @@ struct Chermain2020Target {
     float rho = 0.0f;
     float log_density = 27.0f;  // ln(facets per unit uv area); authors' UI default
     uint32_t seed = 0;
+    // Geometric glint anti-aliasing (Chermain et al. 2021, §4): the half
+    // vector's slope change per pixel step (∂s/∂x, ∂s/∂y) and the kernel
+    // scale; kernel 0 is 004's unfiltered lookup.
+    glm::vec4 slope_differentials{0.0f};
+    float kernel = 0.0f;
 };
 
 // The random choices of one cell (Algorithm 3) of the default dictionary.
@@ -42,6 +48,11 @@ float chermain2020_ndf(glm::vec3 h, const Footprint& footprint, const Chermain20
 // chermain2020_ndf in every channel when params.colour_count = 0.
 glm::vec3 chermain2020_ndf_rgb(glm::vec3 h, const Footprint& footprint,
                                const Chermain2020Target& target, const Chermain2020Params& params);
+
+// Marginal `dist` of dictionary level `level` at x (the dictionary's
+// slopes), averaged over the box [x − width/2, x + width/2] (geometric glint
+// anti-aliasing's filter); width 0: the point value.
+float chermain2020_marginal_box(int dist, int level, float x, float width);
 
 // The smooth Beckmann D(h) the model converges to (004 §4.3).
 float chermain2020_target_ndf(glm::vec3 h, const Chermain2020Target& target);
@@ -66,9 +77,13 @@ glm::vec3 chermain2020_level_sdf(glm::vec2 slope, glm::vec2 uv, glm::vec3 ellips
                                  const Chermain2020Target& target,
                                  const Chermain2020Params& params);
 
-// The material's D_P: desc.params must hold Chermain2020Params.
-float chermain2020_footprint_ndf(glm::vec3 h, const Footprint& footprint, const GlintDesc& desc);
+// The material's D_P: desc.params must hold Chermain2020Params. With
+// `view` (the pixel's view differentials, wo included) and the params'
+// "antialiasing", the marginals are filtered over the half vector's sweep.
+float chermain2020_footprint_ndf(glm::vec3 h, const Footprint& footprint, const GlintDesc& desc,
+                                 const ViewDifferentials* view = nullptr);
 glm::vec3 chermain2020_footprint_ndf_rgb(glm::vec3 h, const Footprint& footprint,
-                                         const GlintDesc& desc);
+                                         const GlintDesc& desc,
+                                         const ViewDifferentials* view = nullptr);
 
 }  // namespace glintlab

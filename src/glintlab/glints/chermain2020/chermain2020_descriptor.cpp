@@ -79,6 +79,16 @@ GlintModelDescriptor chermain2020_descriptor() {
                    {{"chermain2021", true}, {"none", false}},
                    "a normal map's or curved surface's slope correlation shears the target NDF "
                    "(Chermain et al. 2021, Eq. 18), or is dropped (004)"),
+        gp::choice("antialiasing", &P::antialiasing, {{"chermain2021", true}, {"none", false}},
+                   "geometric glint anti-aliasing: each cell's marginals box-filtered over the "
+                   "half vector's slope sweep across the pixel (Chermain et al. 2021, §4; CPU "
+                   "and forward pass), or read at the pixel centre (004)"),
+        // Their KernelSize, a user scale of the sweep: below 1/4 the filter is
+        // narrower than the sweep's quarter, above 4 it blurs glints of
+        // neighbouring pixels' half vectors into this one.
+        gp::number("antialiasing_kernel", &P::antialiasing_kernel, 0.25, 4.0, "",
+                   "the box's width in the half vector's slope sweep per pixel step "
+                   "(Chermain et al. 2021's KernelSize)"),
     };
     d.reads_slope_correlation = [](const GlintDesc& g) {
         return std::get<P>(g.params).slope_correlation;

@@ -15,6 +15,7 @@ namespace glintlab {
 namespace {
 
 constexpr int kDictionaryUnit = kFirstModelTextureUnit;
+constexpr int kFilterUnit = kFirstModelTextureUnit + 1;
 
 std::string glue_path(unsigned) {
     return "glintlab/glints/chermain2020/chermain2020_gpu.glsl";
@@ -24,6 +25,7 @@ class State final : public GpuModelState {
   public:
     ~State() override {
         if (dictionary_ != 0) glDeleteTextures(1, &dictionary_);
+        if (filter_ != 0) glDeleteTextures(1, &filter_);
     }
 
     void prepare(unsigned program, gl::UniformCache& u, const GlintDesc& desc, const GpuFrame&,
@@ -44,8 +46,15 @@ class State final : public GpuModelState {
         glProgramUniform3fv(program, loc("u_chermain2020_colours"),
                             static_cast<GLsizei>(p.colour_table.size()), &p.colour_table[0].x);
         glProgramUniform1i(program, loc("chermain2020_dictionary"), kDictionaryUnit);
-        if (dictionary_ == 0) upload(d);
+        if (dictionary_ == 0) dictionary_ = upload(d, 2, chermain2020_dictionary_pairs(d));
         glBindTextureUnit(kDictionaryUnit, dictionary_);
+        glProgramUniform1f(program, loc("u_chermain2020_antialiasing_kernel"),
+                           p.antialiasing ? p.antialiasing_kernel : 0.0f);
+        if (p.antialiasing) {
+            glProgramUniform1i(program, loc("chermain2020_dictionary_filter"), kFilterUnit);
+            if (filter_ == 0) filter_ = upload(d, 3, chermain2020_dictionary_filter_texels(d));
+            glBindTextureUnit(kFilterUnit, filter_);
+        }
     }
 
   private:
@@ -53,8 +62,9 @@ class State final : public GpuModelState {
     // sample; read with texelFetch (the shared code interpolates itself).
     // RG32F: texel k holds samples k and k + 1 (0 past the row's end), the
     // two values one linear interpolation reads (chermain2020.glsl,
-    // GLINTLAB_CHERMAIN2020_DICT_PAIRS).
-    void upload(const Dictionary& d) {
+    // GLINTLAB_CHERMAIN2020_DICT_PAIRS). RGB32F adds the row's integral up
+    // to sample k, for geometric glint anti-aliasing's box filter.
+    GLuint upload(const Dictionary& d, int channels, const std::vector<float>& texels) {
         const int width = d.params.table_size;
         const int height = d.params.n_dists * d.params.n_levels;
         GLint max_size = 0;
@@ -64,16 +74,19 @@ class State final : public GpuModelState {
                 "OpenGL renderer: the chermain2020 dictionary ({}x{} texels) exceeds "
                 "GL_MAX_TEXTURE_SIZE = {}",
                 width, height, max_size);
-        glCreateTextures(GL_TEXTURE_2D, 1, &dictionary_);
-        const std::vector<float> pairs = chermain2020_dictionary_pairs(d);
-        glTextureStorage2D(dictionary_, 1, GL_RG32F, width, height);
+        GLuint texture = 0;
+        glCreateTextures(GL_TEXTURE_2D, 1, &texture);
+        glTextureStorage2D(texture, 1, channels == 3 ? GL_RGB32F : GL_RG32F, width, height);
         glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
-        glTextureSubImage2D(dictionary_, 0, 0, 0, width, height, GL_RG, GL_FLOAT, pairs.data());
-        glTextureParameteri(dictionary_, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-        glTextureParameteri(dictionary_, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+        glTextureSubImage2D(texture, 0, 0, 0, width, height, channels == 3 ? GL_RGB : GL_RG,
+                            GL_FLOAT, texels.data());
+        glTextureParameteri(texture, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+        glTextureParameteri(texture, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+        return texture;
     }
 
     GLuint dictionary_ = 0;  // RG32F pairs, uploaded on first use
+    GLuint filter_ = 0;      // RGB32F (pairs, integral), uploaded on first filtered use
 };
 
 }  // namespace

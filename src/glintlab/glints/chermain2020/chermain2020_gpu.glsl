@@ -24,6 +24,12 @@ uniform int u_chermain2020_colour_count;
 // correlation the forward pass or the export's inputs resolved per pixel.
 uniform bool u_chermain2020_correlated;
 uniform vec3 u_chermain2020_colours[CHERMAIN2020_MAX_COLOURS];
+#ifdef GLINTLAB_GLINT_VIEW_DIFFERENTIALS
+#include "glintlab/core/half_slope_differentials.glsl"
+// "antialiasing": "chermain2021": the kernel (> 0) of the geometric glint
+// anti-aliasing over the pass's view differentials; 0: unfiltered.
+uniform float u_chermain2020_antialiasing_kernel;
+#endif
 vec3 glint_ndf(vec3 h, Footprint fp) {
     Chermain2020Dict d;
     d.n_levels = u_chermain2020_dict_shape.x;
@@ -35,10 +41,19 @@ vec3 glint_ndf(vec3 h, Footprint fp) {
     colours.count = u_chermain2020_colour_count;
     for (int i = 0; i < CHERMAIN2020_MAX_COLOURS; ++i) colours.table[i] = u_chermain2020_colours[i];
     float rho = u_chermain2020_correlated ? g_glint_slope_correlation : 0.0f;
+    Chermain2020Filter ggaa = chermain2020_unfiltered();
+#ifdef GLINTLAB_GLINT_VIEW_DIFFERENTIALS
+    if (u_chermain2020_antialiasing_kernel > 0.0f) {
+        vec4 sweep = half_slope_differentials(h, g_glint_view);
+        ggaa.slope_dx = vec2(sweep.x, sweep.y);
+        ggaa.slope_dy = vec2(sweep.z, sweep.w);
+        ggaa.kernel = u_chermain2020_antialiasing_kernel;
+    }
+#endif
     return chermain2020_ndf_rgb(h, fp, d, u_glint_alpha.x, u_glint_alpha.y, rho, u_glint_log_density,
                                 u_glint_seed, u_chermain2020_relative_area,
                                 u_chermain2020_max_anisotropy,
-                                u_chermain2020_density_randomization, colours);
+                                u_chermain2020_density_randomization, colours, ggaa);
 }
 
 #endif

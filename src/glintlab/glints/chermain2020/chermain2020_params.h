@@ -21,6 +21,13 @@ struct Chermain2020Params {
     // target (Chermain et al. 2021, Eq. 18): "chermain2021" (true) or
     // dropped as 004 has no correlation ("none", false).
     bool slope_correlation = true;
+    // Geometric glint anti-aliasing (Chermain et al. 2021, §4): each cell's
+    // marginals are box-filtered over the half vector's slope sweep across
+    // the pixel, times `antialiasing_kernel` (their KernelSize), on the CPU
+    // and in the forward pass: "chermain2021" (true) or unfiltered ("none",
+    // false, 004).
+    bool antialiasing = false;
+    float antialiasing_kernel = 1.0f;
     // Coloured glints (004 §7.1, Alg. 3 lines 11-12, 19): each cell tints its
     // SDF with colour_table[floor(colour_count * U_c)]; 0 colours = white.
     int colour_count = 0;

@@ -157,6 +157,22 @@ std::vector<float> chermain2020_dictionary_pairs(const Dictionary& dict) {
     return pairs;
 }
 
+std::vector<float> chermain2020_dictionary_filter_texels(const Dictionary& dict) {
+    const size_t width = static_cast<size_t>(dict.params.table_size);
+    const double step = double(dict.slope_max) / double(width);
+    std::vector<float> texels(dict.values.size() * 3);
+    double integral = 0.0;
+    for (size_t i = 0; i < dict.values.size(); ++i) {
+        if (i % width == 0) integral = 0.0;  // a new row
+        const float next = (i % width) + 1 < width ? dict.values[i + 1] : 0.0f;
+        texels[3 * i] = dict.values[i];
+        texels[3 * i + 1] = next;
+        texels[3 * i + 2] = static_cast<float>(integral);
+        integral += 0.5 * step * (double(dict.values[i]) + double(next));
+    }
+    return texels;
+}
+
 void write_dictionary(const Dictionary& dict, const std::filesystem::path& path) {
     static_assert(std::endian::native == std::endian::little, "the file format is little-endian");
     std::ofstream out(path, std::ios::binary);

@@ -62,6 +62,13 @@ const Dictionary& default_dictionary();
 // gives both values of chermain2020.glsl's linear interpolation.
 std::vector<float> chermain2020_dictionary_pairs(const Dictionary& dict);
 
+// Texels of three values for geometric glint anti-aliasing (chermain2020.glsl
+// chermain2020_marginal_box; the GPU forward pass and the C++ back end):
+// element 3 i holds values[i], 3 i + 1 the next sample of the same row (0
+// after the row's last), 3 i + 2 the row's integral from 0 to the sample's
+// slope, exact for the piecewise-linear interpolant (trapezoids).
+std::vector<float> chermain2020_dictionary_filter_texels(const Dictionary& dict);
+
 // Binary file: "GLDICT01", int32 n_levels, n_dists, table_size, float32
 // alpha_dict, lobe_sigma, slope_max, uint64 seed, then the float32 values
 // (little-endian, the layout of Dictionary::values).

@@ -330,10 +330,13 @@ void main() {
 #endif
     vec3 n = u_has_normals ? normalize(v_normal) : ng;
     if (u_has_normals && dot(ng, n) < 0.0f) ng = -ng;
-#ifdef GLINTLAB_GLINT_CURVATURE
+#if defined(GLINTLAB_GLINT_CURVATURE) || defined(GLINTLAB_GLINT_VIEW_DIFFERENTIALS)
     // The unit normal's change per pixel step (x right, y down the image, as
     // the footprint's): here, in uniform control flow.
     vec3 dndx = dFdxFine(n), dndy = -dFdyFine(n);
+#endif
+#ifdef GLINTLAB_GLINT_VIEW_DIFFERENTIALS
+    vec3 dwodx = dFdxFine(wo_world), dwody = -dFdyFine(wo_world);
 #endif
     // Emitters: sphere lights shine from their outer side (integrators.cpp emitted()).
     if (dot(ng, wo_world) > 0.0f) radiance += u_emission;
@@ -398,6 +401,16 @@ void main() {
         }
 #endif
         vec3 wo = vec3(dot(wo_world, t), dot(wo_world, b), dot(wo_world, n));
+#ifdef GLINTLAB_GLINT_VIEW_DIFFERENTIALS
+        // render/surface_bsdf.cpp view_differentials: in the final frame, the
+        // normal's change negated with the two-sided flip.
+        g_glint_view.wo = wo;
+        g_glint_view.wo_dx = vec3(dot(dwodx, t), dot(dwodx, b), dot(dwodx, n));
+        g_glint_view.wo_dy = vec3(dot(dwody, t), dot(dwody, b), dot(dwody, n));
+        float flip = back_side ? -1.0f : 1.0f;
+        g_glint_view.n_dx = flip * vec2(dot(dndx, t), dot(dndx, b));
+        g_glint_view.n_dy = flip * vec2(dot(dndy, t), dot(dndy, b));
+#endif
 #if GLINTLAB_POINT_LIGHTS > 0
         for (int i = 0; i < GLINTLAB_POINT_LIGHTS; ++i) {
             vec3 d = u_point_position[i] - p;
