@@ -181,16 +181,22 @@ float chermain2020_cumulative(Chermain2020Dict d, int row, float x) {
 }
 #endif
 
-// P_i(x, l) averaged over the box [x − w/2, x + w/2]: (C(b) − C(a)) / w with
-// C extended as an odd function (P is even). Boxes narrower than a hundredth
-// of a table step read the point value (the box's limit; the difference of
-// C would lose its precision there).
+// P_i(x, l) averaged over the box [a, b] = [x − w/2, x + w/2]: (C(b) − C(a))
+// / w with C extended as an odd function (P is even). A box inside one
+// linear piece of P (between two samples, on one side of 0) averages to
+// P(x) exactly: that point value is read instead, one fetch rather than
+// two (most boxes, where the sweep is narrower than a table step). So is a
+// box narrower than a hundredth of a step across a sample (the box's limit;
+// C(b) − C(a) would lose its precision there).
 float chermain2020_marginal_box(Chermain2020Dict d, int dist, int level, float x, float w) {
 #ifdef GLINTLAB_CHERMAIN2020_FILTERED
-    if (w > 0.01f * d.slope_max / float(d.table_size)) {
+    float a = x - 0.5f * w;
+    float b = x + 0.5f * w;
+    float per_step = float(d.table_size) / d.slope_max;
+    bool one_piece =
+        (a >= 0.0f || b <= 0.0f) && floor(abs(a) * per_step) == floor(abs(b) * per_step);
+    if (w * per_step > 0.01f && !one_piece) {
         int row = dist * d.n_levels + level;
-        float a = x - 0.5f * w;
-        float b = x + 0.5f * w;
         float ca = sign(a) * chermain2020_cumulative(d, row, abs(a));
         float cb = sign(b) * chermain2020_cumulative(d, row, abs(b));
         return max((cb - ca) / w, 0.0f);

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_reduce.h>
@@ -262,6 +263,16 @@ int64_t chermain2020_robustness(int64_t evaluations, uint64_t seed) {
                                 a = 2.0f * kPi * rng.next_float();
                     const float rr = std::sqrt(std::max(0.0f, 1.0f - z * z));
                     const glm::vec3 h(rr * std::cos(a), rr * std::sin(a), z);
+                    // Half with geometric glint anti-aliasing (Chermain et al.
+                    // 2021): slope sweeps from 1e-6 to 1e3 per pixel, kernel
+                    // over its range; every 8th sweep infinite.
+                    if (rng.next_float() < 0.5f) {
+                        const float scale = std::exp2(-20.0f + 30.0f * rng.next_float());
+                        for (int i = 0; i < 4; ++i)
+                            t.slope_differentials[i] = scale * (2.0f * rng.next_float() - 1.0f);
+                        if (k % 8 == 1) t.slope_differentials.x = std::numeric_limits<float>::infinity();
+                        t.kernel = 0.25f + 3.75f * rng.next_float();
+                    }
                     const float v = chermain2020_ndf(h, fp, t, p);
                     if (!std::isfinite(v) || v < 0.0f) ++bad;
                 }

@@ -15,7 +15,6 @@ namespace glintlab {
 namespace {
 
 constexpr int kDictionaryUnit = kFirstModelTextureUnit;
-constexpr int kFilterUnit = kFirstModelTextureUnit + 1;
 
 std::string glue_path(unsigned) {
     return "glintlab/glints/chermain2020/chermain2020_gpu.glsl";
@@ -46,14 +45,17 @@ class State final : public GpuModelState {
         glProgramUniform3fv(program, loc("u_chermain2020_colours"),
                             static_cast<GLsizei>(p.colour_table.size()), &p.colour_table[0].x);
         glProgramUniform1i(program, loc("chermain2020_dictionary"), kDictionaryUnit);
-        if (dictionary_ == 0) dictionary_ = upload(d, 2, chermain2020_dictionary_pairs(d));
-        glBindTextureUnit(kDictionaryUnit, dictionary_);
         glProgramUniform1f(program, loc("u_chermain2020_antialiasing_kernel"),
                            p.antialiasing ? p.antialiasing_kernel : 0.0f);
         if (p.antialiasing) {
-            glProgramUniform1i(program, loc("chermain2020_dictionary_filter"), kFilterUnit);
+            // The filter's texels hold the pairs too (.rg): one texture serves
+            // both samplers, so anti-aliasing adds a channel, not a table.
+            glProgramUniform1i(program, loc("chermain2020_dictionary_filter"), kDictionaryUnit);
             if (filter_ == 0) filter_ = upload(d, 3, chermain2020_dictionary_filter_texels(d));
-            glBindTextureUnit(kFilterUnit, filter_);
+            glBindTextureUnit(kDictionaryUnit, filter_);
+        } else {
+            if (dictionary_ == 0) dictionary_ = upload(d, 2, chermain2020_dictionary_pairs(d));
+            glBindTextureUnit(kDictionaryUnit, dictionary_);
         }
     }
 
@@ -86,7 +88,7 @@ class State final : public GpuModelState {
     }
 
     GLuint dictionary_ = 0;  // RG32F pairs, uploaded on first use
-    GLuint filter_ = 0;      // RGB32F (pairs, integral), uploaded on first filtered use
+    GLuint filter_ = 0;      // RGB32F (pairs, integral), uploaded on first anti-aliased use
 };
 
 }  // namespace
