@@ -1,8 +1,9 @@
 // A normal map's footprint statistics turned into a shading frame and a
 // widened lobe: the GLSL side of core/normal_map.h (normal_from_slope,
 // tangent_frame_around) and render/surface_bsdf.cpp (the α² + 2Σ widening),
-// shared by the forward pass (realtime/shaders/normal_map.glsl) and the
-// export (export/glint_export.frag.glsl), so both tilt and widen alike.
+// shared by the forward pass (realtime/shaders/normal_map.glsl), the
+// export (export/glint_export.frag.glsl) and the CPU's widening
+// (render/surface_bsdf.cpp), so all tilt and widen alike.
 // Slopes follow the microfacet convention (Heitz 2014, Eq. 36): a normal
 // (x, y, z) of the tangent frame has slope (−x/z, −y/z).
 #ifndef GLINTLAB_CORE_SLOPE_FRAME_GLSL
@@ -31,7 +32,8 @@ vec3 slope_covariance(vec2 mean, vec2 second, float second_xy, bool correlated) 
 vec2 mean_slope_in_shading_frame(bool back, float bitangent_sign, vec2 mean) {
     return mean * vec2(back ? -1.0f : 1.0f, bitangent_sign);
 }
-void slopes_in_shading_frame(bool back, float bitangent_sign, inout vec2 mean, inout vec3 cov) {
+void slopes_in_shading_frame(bool back, float bitangent_sign, INOUT(vec2) mean,
+                             INOUT(vec3) cov) {
     mean = mean_slope_in_shading_frame(back, bitangent_sign, mean);
     cov.z *= (back ? -1.0f : 1.0f) * bitangent_sign;
 }
@@ -39,7 +41,7 @@ void slopes_in_shading_frame(bool back, float bitangent_sign, inout vec2 mean, i
 // Tilts the frame (t, b, n) to the normal of slope `mean` in it,
 // normalize(−s̄x, −s̄y, 1); the new tangent is the old one's projection
 // (core/normal_map.h tangent_frame_around).
-void tilt_frame_to_slope(vec2 mean, inout vec3 t, inout vec3 b, inout vec3 n) {
+void tilt_frame_to_slope(vec2 mean, INOUT(vec3) t, INOUT(vec3) b, INOUT(vec3) n) {
     vec3 nl = normalize(vec3(-mean.x, -mean.y, 1.0f));
     vec3 tl = normalize(vec3(1.0f, 0.0f, 0.0f) - nl * nl.x);
     vec3 bl = cross(nl, tl);
@@ -56,6 +58,25 @@ void tilt_frame_to_slope(vec2 mean, inout vec3 t, inout vec3 b, inout vec3 n) {
 // mapping, Olano & Baker, I3D 2010), at most max_alpha.
 float slope_widened_alpha(float alpha, float slope_variance, float max_alpha) {
     return min(sqrt(alpha * alpha + 2.0f * slope_variance), max_alpha);
+}
+
+// The correlation of a footprint's slopes, Σ_xy / (σ_x σ_y) with σ_i² = α_i²/2
+// of the widened lobe, kept within [−0.99, 0.99] as Chermain et al. 2021's
+// shader keeps theirs (their slope transform divides by √(1 − ρ²)); 0 where
+// it is not finite.
+float slope_correlation(float covariance_xy, float alpha_x, float alpha_y) {
+    float rho = 2.0f * covariance_xy / (alpha_x * alpha_y);
+    if (isnan(rho) || isinf(rho)) return 0.0f;
+    return clamp(rho, -0.99f, 0.99f);
+}
+
+// The covariance (xx, yy, xy) of a slope field linear over the pixel's
+// uniform footprint parallelogram, from its change per pixel step in x and
+// y: (gx gxᵀ + gy gyᵀ) / 12 (a uniform variable on a unit interval has
+// variance 1/12).
+vec3 linear_slope_covariance(vec2 gx, vec2 gy) {
+    return vec3(gx.x * gx.x + gy.x * gy.x, gx.y * gx.y + gy.y * gy.y, gx.x * gx.y + gy.x * gy.y) /
+           12.0f;
 }
 
 #endif

@@ -102,11 +102,7 @@ void glint_set_inputs(GlintInputs inputs) {
     g_glint_alpha = alpha;
     g_glint_front_correlation = 0.0f;
 #ifdef GLINTLAB_GLINT_SLOPE_CORRELATION
-    // render/surface_bsdf.cpp correlation_of: Σ_xy / (σ_x σ_y), σ_i² = α_i²/2
-    // of the widened lobe, within [−0.99, 0.99].
-    float rho = 2.0f * inputs.slope_covariance_xy / (alpha.x * alpha.y);
-    if (inputs.slope_covariance_xy != 0.0f && !isnan(rho) && !isinf(rho))
-        g_glint_front_correlation = clamp(rho, -0.99f, 0.99f);
+    g_glint_front_correlation = slope_correlation(inputs.slope_covariance_xy, alpha.x, alpha.y);
 #endif
     g_glint_slope_correlation = g_glint_front_correlation;
     g_glint_color_input = inputs.color;
@@ -317,9 +313,8 @@ vec3 glint_curvature_slope_covariance(vec3 n, vec3 dpdu) {
     if (!(len > 1e-12f) || isinf(len)) return vec3(0.0f);
     t = t / len;
     vec3 b = cross(n, t);
-    vec2 gx = vec2(dot(t, dndx), dot(b, dndx));
-    vec2 gy = vec2(dot(t, dndy), dot(b, dndy));
-    return vec3(gx * gx + gy * gy, gx.x * gx.y + gy.x * gy.y) / 12.0f;
+    return linear_slope_covariance(vec2(dot(t, dndx), dot(b, dndx)),
+                                   vec2(dot(t, dndy), dot(b, dndy)));
 }
 
 void main() {

@@ -54,10 +54,12 @@ SurfaceDifferentials compute_differentials(const RayDifferential& ray, const Sur
     if (!std::isfinite(inv_det)) inv_det = 0.0f;
     const float atb0x = glm::dot(hit.dpdu, out.dpdx), atb1x = glm::dot(hit.dpdv, out.dpdx);
     const float atb0y = glm::dot(hit.dpdu, out.dpdy), atb1y = glm::dot(hit.dpdv, out.dpdy);
-    out.footprint.duvdx = {clamp_finite(difference_of_products(ata11, atb0x, ata01, atb1x) * inv_det),
-                           clamp_finite(difference_of_products(ata00, atb1x, ata01, atb0x) * inv_det)};
-    out.footprint.duvdy = {clamp_finite(difference_of_products(ata11, atb0y, ata01, atb1y) * inv_det),
-                           clamp_finite(difference_of_products(ata00, atb1y, ata01, atb0y) * inv_det)};
+    out.footprint.duvdx = {
+        clamp_finite(difference_of_products(ata11, atb0x, ata01, atb1x) * inv_det),
+        clamp_finite(difference_of_products(ata00, atb1x, ata01, atb0x) * inv_det)};
+    out.footprint.duvdy = {
+        clamp_finite(difference_of_products(ata11, atb0y, ata01, atb1y) * inv_det),
+        clamp_finite(difference_of_products(ata00, atb1y, ata01, atb0y) * inv_det)};
     return out;
 }
 

@@ -151,8 +151,7 @@ glm::vec3 integrate_direct(const IntegratorContext& ctx, const RayDifferential& 
     if (shape.material < 0) return L;
     const SurfaceDifferentials diff = compute_differentials(ray, *hit, ctx.differential_scale);
     const glm::vec3 wo = -ray.ray.d;
-    const SurfaceBsdf bsdf =
-        make_surface_bsdf(scene.materials[shape.material], *hit, wo, &diff);
+    const SurfaceBsdf bsdf = make_surface_bsdf(scene.materials[shape.material], *hit, wo, &diff);
     const OwnLights own = own_lights(scene, shape);
     if (!bsdf.is_specular()) L += sample_lights(ctx, *hit, bsdf, wo, rng, own);
     if (own.model != nullptr)

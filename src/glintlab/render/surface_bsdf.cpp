@@ -3,10 +3,17 @@
 #include <algorithm>
 #include <cmath>
 
+#include "glintlab/core/glsl.h"
 #include "glintlab/core/normal_map.h"
 #include "glintlab/glints/glint_textures.h"
 #include "glintlab/glints/registry.h"
 #include "glintlab/render/light_sampling.h"
+
+// The widening and the slopes' correlation, as the forward pass and the
+// exported shaders compute them.
+GLINTLAB_SHADER_FUNCTIONS_BEGIN
+#include "glintlab/core/slope_frame.glsl"
+GLINTLAB_SHADER_FUNCTIONS_END
 
 namespace glintlab {
 namespace {
@@ -59,14 +66,6 @@ ShadingFrame tilted_frame(const ShadingFrame& base, glm::vec3 local_normal) {
     return f;
 }
 
-// α² + 2 σ²: a footprint's mixture of lobes whose normals spread with slope
-// variance σ² along an axis is, to second order, the lobe of slope variance
-// α²/2 + σ² (LEAN mapping's sum of Beckmann covariances; the same rule for
-// GGX, as Filament's and Unreal's specular anti-aliasing use it).
-float widened(float alpha, float slope_variance, float max_alpha) {
-    return std::min(std::sqrt(alpha * alpha + 2.0f * slope_variance), max_alpha);
-}
-
 // The surface's own turning over the footprint (docs/MODELS.md, "Curved
 // surfaces"): the macro normal's slope in the local frame (t, b, n) as a
 // linear function of the uv offset, columns ∂s/∂u and ∂s/∂v. At the hit the
@@ -84,18 +83,7 @@ glm::mat2 macro_slope_gradient(const SurfaceHit& hit, const ShadingFrame& frame,
 // J (duvdx duvdxᵀ + duvdy duvdyᵀ) Jᵀ / 12 (a uniform variable on a unit
 // interval has variance 1/12).
 glm::vec3 footprint_slope_covariance(const glm::mat2& J, const Footprint& fp) {
-    const glm::vec2 gx = J * fp.duvdx, gy = J * fp.duvdy;
-    return glm::vec3(gx.x * gx.x + gy.x * gy.x, gx.y * gx.y + gy.y * gy.y,
-                     gx.x * gx.y + gy.x * gy.y) /
-           12.0f;
-}
-
-// Σ_xy / (σ_x σ_y), σ_i² = α_i²/2 of the widened lobe, kept within
-// [−0.99, 0.99] as Chermain et al. 2021's shader keeps theirs (the slope
-// transform divides by √(1 − ρ²)).
-float correlation_of(float covariance_xy, float alpha_x, float alpha_y) {
-    const float rho = 2.0f * covariance_xy / (alpha_x * alpha_y);
-    return std::isfinite(rho) ? std::clamp(rho, -0.99f, 0.99f) : 0.0f;
+    return shader::linear_slope_covariance(J * fp.duvdx, J * fp.duvdy);
 }
 
 // The pixel's view differentials in the shading frame (core/
@@ -211,12 +199,12 @@ SurfaceBsdf make_surface_bsdf(const MaterialDesc& m, const SurfaceHit& hit, glm:
             frame.t = t;
             frame.b = glm::cross(frame.n, t);
             const float a = alpha_x;
-            alpha_x = widened(a, mid + radius, 4.0f);
-            alpha_y = widened(a, std::max(mid - radius, 0.0f), 4.0f);
+            alpha_x = shader::slope_widened_alpha(a, mid + radius, 4.0f);
+            alpha_y = shader::slope_widened_alpha(a, std::max(mid - radius, 0.0f), 4.0f);
         } else {
             // An anisotropic lobe keeps its axes; Σ's correlation is dropped.
-            alpha_x = widened(alpha_x, c.x, 4.0f);
-            alpha_y = widened(alpha_y, c.y, 4.0f);
+            alpha_x = shader::slope_widened_alpha(alpha_x, c.x, 4.0f);
+            alpha_y = shader::slope_widened_alpha(alpha_y, c.y, 4.0f);
         }
     }
     switch (m.type) {
@@ -295,11 +283,12 @@ SurfaceBsdf make_surface_bsdf(const MaterialDesc& m, const SurfaceHit& hit, glm:
         if (correlated && map_widens)
             c.z += m.normal_map->covariance_xy(hit.uv, footprint, bump->map_slopes) * bump->axes.x *
                    bump->axes.y;
-        resolved->alpha_x = widened(resolved->alpha_x, c.x, 1.0f);
-        resolved->alpha_y = widened(resolved->alpha_y, c.y, 1.0f);
+        resolved->alpha_x = shader::slope_widened_alpha(resolved->alpha_x, c.x, 1.0f);
+        resolved->alpha_y = shader::slope_widened_alpha(resolved->alpha_y, c.y, 1.0f);
         resolved->alpha_varies = true;
         if (correlated && c.z != 0.0f)
-            resolved->slope_correlation = correlation_of(c.z, resolved->alpha_x, resolved->alpha_y);
+            resolved->slope_correlation =
+                shader::slope_correlation(c.z, resolved->alpha_x, resolved->alpha_y);
     }
     return SurfaceBsdf(frame, g, std::move(resolved));
 }

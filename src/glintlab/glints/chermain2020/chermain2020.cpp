@@ -28,8 +28,8 @@ vec3 chermain2020_dict_fetch_filter(int row, int bin) {
     const size_t i = (static_cast<size_t>(row) * default_dictionary().params.table_size + bin) * 3;
     return vec3(texels[i], texels[i + 1], texels[i + 2]);
 }
-#include "glintlab/glints/chermain2020/chermain2020.glsl"
 #include "glintlab/core/half_slope_differentials.glsl"
+#include "glintlab/glints/chermain2020/chermain2020.glsl"
 #include "glintlab/microfacet/ndf.glsl"
 GLINTLAB_SHADER_FUNCTIONS_END
 
@@ -101,19 +101,18 @@ Chermain2020Target target_of(const GlintDesc& desc, glm::vec3 h, const ViewDiffe
 
 glm::vec3 chermain2020_ndf_rgb(glm::vec3 h, const Footprint& footprint,
                                const Chermain2020Target& target, const Chermain2020Params& params) {
-    return shader::chermain2020_ndf_rgb(h, footprint, shape(), target.alpha_x, target.alpha_y,
-                                        target.rho, target.log_density, target.seed,
-                                        params.relative_area, params.max_anisotropy,
-                                        params.density_randomization, to_shader(params),
-                                        filter_of(target));
+    return shader::chermain2020_ndf_rgb(
+        h, footprint, shape(), target.alpha_x, target.alpha_y, target.rho, target.log_density,
+        target.seed, params.relative_area, params.max_anisotropy, params.density_randomization,
+        to_shader(params), filter_of(target));
 }
 
 float chermain2020_ndf(glm::vec3 h, const Footprint& footprint, const Chermain2020Target& target,
                        const Chermain2020Params& params) {
-    return shader::chermain2020_ndf(
-        h, footprint, shape(), target.alpha_x, target.alpha_y, target.rho, target.log_density,
-        target.seed, params.relative_area, params.max_anisotropy, params.density_randomization,
-        filter_of(target));
+    return shader::chermain2020_ndf(h, footprint, shape(), target.alpha_x, target.alpha_y,
+                                    target.rho, target.log_density, target.seed,
+                                    params.relative_area, params.max_anisotropy,
+                                    params.density_randomization, filter_of(target));
 }
 
 glm::vec3 chermain2020_level_sdf(glm::vec2 slope, glm::vec2 uv, glm::vec3 ellipse, int level,

@@ -87,9 +87,9 @@ TEST(Chermain2020Antialiasing, HalfSlopeDifferentialsAreTheSlopesDerivatives) {
         const glm::vec3 h = glm::normalize(wo + wi);
         const glm::vec4 got = shader::half_slope_differentials(h, v);
         const double e = 1e-4;
-        const glm::dvec2 want = (swept_slope(wo, wi, v.wo_dx, dn, e) -
-                                 swept_slope(wo, wi, v.wo_dx, dn, -e)) /
-                                (2.0 * e);
+        const glm::dvec2 want =
+            (swept_slope(wo, wi, v.wo_dx, dn, e) - swept_slope(wo, wi, v.wo_dx, dn, -e)) /
+            (2.0 * e);
         const double scale = 1.0 + glm::length(want);
         EXPECT_NEAR(got.x, want.x, 1e-3 * scale) << k;
         EXPECT_NEAR(got.y, want.y, 1e-3 * scale) << k;
@@ -125,8 +125,8 @@ TEST(Chermain2020Antialiasing, FilteredGlintsApproachThePixelsMeanOverTheSweep) 
     int n = 0;
     for (int k = 0; k < 400; ++k) {
         const glm::vec3 wo = random_direction(rng, 0.6f);
-        const glm::vec3 wi = glm::normalize(glm::vec3(-wo.x, -wo.y, wo.z) +
-                                            0.05f * random_direction(rng, 1.0f));
+        const glm::vec3 wi =
+            glm::normalize(glm::vec3(-wo.x, -wo.y, wo.z) + 0.05f * random_direction(rng, 1.0f));
         shader::ViewDifferentials v;
         v.wo = wo;
         const glm::vec3 dx = 0.012f * random_direction(rng, 1.0f);

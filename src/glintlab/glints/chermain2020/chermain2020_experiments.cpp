@@ -270,7 +270,8 @@ int64_t chermain2020_robustness(int64_t evaluations, uint64_t seed) {
                         const float scale = std::exp2(-20.0f + 30.0f * rng.next_float());
                         for (int i = 0; i < 4; ++i)
                             t.slope_differentials[i] = scale * (2.0f * rng.next_float() - 1.0f);
-                        if (k % 8 == 1) t.slope_differentials.x = std::numeric_limits<float>::infinity();
+                        if (k % 8 == 1)
+                            t.slope_differentials.x = std::numeric_limits<float>::infinity();
                         t.kernel = 0.25f + 3.75f * rng.next_float();
                     }
                     const float v = chermain2020_ndf(h, fp, t, p);

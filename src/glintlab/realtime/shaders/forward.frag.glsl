@@ -377,14 +377,13 @@ void main() {
 #ifdef GLINTLAB_GLINT_CURVATURE
         if (mat.type == MATERIAL_GLINT) {
             // render/surface_bsdf.cpp footprint_slope_covariance: the slope
-            // changes per pixel step are −(t·∂n, b·∂n); over the pixel's
-            // uniform footprint the variance is their squares' sum / 12.
-            vec2 gx = vec2(dot(t, dndx), dot(b, dndx));
-            vec2 gy = vec2(dot(t, dndy), dot(b, dndy));
-            vec2 variance = (gx * gx + gy * gy) / 12.0f;
-            glint_cov_xy += (gx.x * gx.y + gy.x * gy.y) / 12.0f;
-            mat.glint.alpha_x = slope_widened_alpha(mat.glint.alpha_x, variance.x, 1.0f);
-            mat.glint.alpha_y = slope_widened_alpha(mat.glint.alpha_y, variance.y, 1.0f);
+            // changes per pixel step are −(t·∂n, b·∂n), linear over the
+            // pixel's footprint (the sign drops out of the covariance).
+            vec3 cov = linear_slope_covariance(vec2(dot(t, dndx), dot(b, dndx)),
+                                               vec2(dot(t, dndy), dot(b, dndy)));
+            glint_cov_xy += cov.z;
+            mat.glint.alpha_x = slope_widened_alpha(mat.glint.alpha_x, cov.x, 1.0f);
+            mat.glint.alpha_y = slope_widened_alpha(mat.glint.alpha_y, cov.y, 1.0f);
             g_glint_alpha = vec2(mat.glint.alpha_x, mat.glint.alpha_y);
         }
 #endif
@@ -394,10 +393,8 @@ void main() {
 #endif
 #ifdef GLINTLAB_MATERIAL_TEXTURES
         if (mat.type == MATERIAL_GLINT && u_glint_reads_correlation != 0 && glint_cov_xy != 0.0f) {
-            // render/surface_bsdf.cpp correlation_of.
-            float rho = 2.0f * glint_cov_xy / (mat.glint.alpha_x * mat.glint.alpha_y);
             g_glint_slope_correlation =
-                isnan(rho) || isinf(rho) ? 0.0f : clamp(rho, -0.99f, 0.99f);
+                slope_correlation(glint_cov_xy, mat.glint.alpha_x, mat.glint.alpha_y);
         }
 #endif
         vec3 wo = vec3(dot(wo_world, t), dot(wo_world, b), dot(wo_world, n));
