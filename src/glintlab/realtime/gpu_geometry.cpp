@@ -2,7 +2,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <limits>
+#include <map>
+#include <tuple>
+#include <unordered_map>
 
 #include <glm/gtc/constants.hpp>
 
@@ -37,6 +41,35 @@ int sphere_segments(const Scene& scene) {
     return std::clamp(n - n % 2, kMinSphereSegments, kMaxSphereSegments);
 }
 
+namespace {
+
+// Every undirected edge, over vertices welded by exact position (meshes
+// repeat a vertex along uv seams), used by exactly two triangles.
+bool mesh_is_closed(const TriangleMesh& m) {
+    if (m.triangles.empty()) return false;
+    std::map<std::tuple<float, float, float>, uint32_t> welded;
+    std::vector<uint32_t> id(m.positions.size());
+    for (size_t i = 0; i < m.positions.size(); ++i) {
+        const glm::vec3 p = m.positions[i];
+        id[i] = welded.emplace(std::make_tuple(p.x, p.y, p.z), static_cast<uint32_t>(welded.size()))
+                    .first->second;
+    }
+    std::unordered_map<uint64_t, int> uses;
+    for (const glm::uvec3& t : m.triangles) {
+        const uint32_t v[3] = {id[t.x], id[t.y], id[t.z]};
+        for (int e = 0; e < 3; ++e) {
+            const uint64_t a = std::min(v[e], v[(e + 1) % 3]), b = std::max(v[e], v[(e + 1) % 3]);
+            if (a == b) return false;  // a degenerate triangle
+            ++uses[(a << 32) | b];
+        }
+    }
+    for (const auto& [edge, n] : uses)
+        if (n != 2) return false;
+    return true;
+}
+
+}  // namespace
+
 GpuMeshData gpu_mesh_data(const Shape& shape, int segments) {
     GpuMeshData out;
     if (const auto* s = std::get_if<SphereGeometry>(&shape.geometry)) {
@@ -68,6 +101,7 @@ GpuMeshData gpu_mesh_data(const Shape& shape, int segments) {
             out.indices.insert(out.indices.end(), {t.x, t.y, t.z});
         out.per_triangle_frame = false;
         out.has_normals = true;
+        out.closed = true;
         return out;
     }
     const TriangleMesh& m = std::get<TriangleMesh>(shape.geometry);
@@ -92,6 +126,7 @@ GpuMeshData gpu_mesh_data(const Shape& shape, int segments) {
     }
     out.per_triangle_frame = true;
     out.has_normals = m.has_normals();
+    out.closed = mesh_is_closed(m);
     return out;
 }
 

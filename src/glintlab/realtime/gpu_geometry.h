@@ -35,6 +35,12 @@ struct GpuMeshData {
     std::vector<GpuTriangleFrame> triangles;  // empty for spheres
     bool per_triangle_frame = false;
     bool has_normals = true;
+    // A closed surface (a sphere; a mesh whose every edge joins exactly two
+    // triangles, vertices welded by position): every direction below its
+    // geometric tangent plane at a point is occluded by the surface itself,
+    // as the CPU's shadow rays find. The forward pass, whose environment is
+    // otherwise unshadowed, drops such directions.
+    bool closed = false;
 };
 
 // Tessellation of analytic spheres: segments in phi (and half as many rings

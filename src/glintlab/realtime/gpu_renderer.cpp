@@ -34,6 +34,7 @@ struct GpuShape {
     gl::Buffer vertices, indices, triangles;
     GLsizei index_count = 0;
     bool per_triangle_frame = false;
+    bool closed = false;  // GpuMeshData::closed
     bool has_normals = true;
 };
 
@@ -69,6 +70,7 @@ GpuShape upload_shape(const Shape& shape, int sphere_segments) {
     }
     g.index_count = static_cast<GLsizei>(data.indices.size());
     g.per_triangle_frame = data.per_triangle_frame;
+    g.closed = data.closed;
     g.has_normals = data.has_normals;
     return g;
 }
@@ -823,6 +825,7 @@ void GpuRenderer::render(const Scene& scene) {
         glProgramUniform3fv(p, loc("u_view_forward"), 1, glm::value_ptr(forward));
         glProgramUniform1i(p, loc("u_per_triangle_frame"), g.per_triangle_frame ? 1 : 0);
         glProgramUniform1i(p, loc("u_has_normals"), g.has_normals ? 1 : 0);
+        glProgramUniform1i(p, loc("u_closed_surface"), g.closed ? 1 : 0);
         r.set_material(p, scene, shape);
         if (shape.material >= 0)
             r.set_material_textures(p, scene.materials[static_cast<size_t>(shape.material)]);

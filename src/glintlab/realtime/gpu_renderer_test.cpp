@@ -62,6 +62,25 @@ nlohmann::json test_scene(const std::string& which, const std::string& model, fl
     return j;
 }
 
+TEST(GpuGeometry, ClosedSurfacesAreThoseWhoseEveryEdgeJoinsTwoTriangles) {
+    // A tetrahedron whose first vertex is repeated (as along a uv seam) for
+    // two of its faces: closed; without a face, or as a lone quad: open; a
+    // sphere: closed.
+    TriangleMesh m;
+    m.positions = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}, {0, 0, 0}};
+    m.triangles = {{0, 2, 1}, {0, 1, 3}, {4, 3, 2}, {1, 2, 3}};
+    EXPECT_TRUE(gpu_mesh_data(Shape{"tetrahedron", m, -1, -1}).closed);
+    TriangleMesh open = m;
+    open.triangles.pop_back();
+    EXPECT_FALSE(gpu_mesh_data(Shape{"open", open, -1, -1}).closed);
+    TriangleMesh quad;
+    quad.positions = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}};
+    quad.triangles = {{0, 1, 2}, {0, 2, 3}};
+    EXPECT_FALSE(gpu_mesh_data(Shape{"quad", quad, -1, -1}).closed);
+    SphereGeometry s;
+    EXPECT_TRUE(gpu_mesh_data(Shape{"sphere", s, -1, -1}).closed);
+}
+
 TEST(GpuGeometry, SphereMatchesTheCpuParameterisation) {
     SphereGeometry s;
     s.center = {1, 2, 3};

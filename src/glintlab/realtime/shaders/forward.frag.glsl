@@ -45,6 +45,9 @@ struct TriangleFrame {
 };
 layout(std430, binding = 0) readonly buffer Triangles { TriangleFrame u_triangles[]; };
 uniform bool u_per_triangle_frame;  // meshes: SSBO; spheres: analytic vertex attributes
+// A closed surface (realtime/gpu_geometry.h): the environment below its
+// geometric tangent plane is occluded by the surface itself.
+uniform bool u_closed_surface;
 uniform bool u_has_normals;         // meshes without normals shade with ng (faceted)
 
 uniform vec3 u_eye;
@@ -253,7 +256,12 @@ SurfaceMaterial surface_material() {
 // samples; every sample reads the environment prefiltered over its solid
 // angle, so the estimate is smooth instead of noisy. Mirrors (alpha below
 // kSmoothAlpha) reflect one filtered direction.
-vec3 environment_lighting(SurfaceMaterial mat, vec3 wo, vec3 t, vec3 b, vec3 n, Footprint fp) {
+// `horizon`: the geometric normal on wo's side in the local frame where the
+// surface is closed (directions below it are occluded: the CPU's shadow rays
+// hit the surface itself, which a normal map's tilted frame would otherwise
+// light from below), else 0.
+vec3 environment_lighting(SurfaceMaterial mat, vec3 wo, vec3 t, vec3 b, vec3 n, Footprint fp,
+                          vec3 horizon) {
     bool glint = u_material_type == 4;
     int ndf = glint ? u_glint_ndf : u_ndf;
     vec2 alpha = glint ? u_glint_alpha : u_alpha;
@@ -270,7 +278,8 @@ vec3 environment_lighting(SurfaceMaterial mat, vec3 wo, vec3 t, vec3 b, vec3 n, 
         if (glint) f = u_glint_color * glint_fresnel(mat.glint, wo.z);
         if (u_material_type == 5)
             f = mix(vec3(F_Dielectric(wo.z, u_eta.x)), F_Schlick(mat.albedo, wo.z), mat.metallic);
-        sum += f * environment_radiance(wi.x * t + wi.y * b + wi.z * n, 0.0f);
+        if (dot(wi, horizon) >= 0.0f)
+            sum += f * environment_radiance(wi.x * t + wi.y * b + wi.z * n, 0.0f);
         if (!has_diffuse) return sum;
     }
     int ns = has_lobe && !mirror ? GLINTLAB_ENV_SPECULAR_SAMPLES : 0;
@@ -286,7 +295,7 @@ vec3 environment_lighting(SurfaceMaterial mat, vec3 wo, vec3 t, vec3 b, vec3 n, 
             float phi = TWO_PI * u.y;
             wi = vec3(r * cos(phi), r * sin(phi), sqrt(max(1.0f - u.x, 0.0f)));
         }
-        if (wi.z <= 0.0f) continue;
+        if (wi.z <= 0.0f || dot(wi, horizon) < 0.0f) continue;
         vec3 h = normalize(wo + wi);
         float p_lobe = ns > 0 ? pdf_vndf(ndf, wo, h, alpha.x, alpha.y) / (4.0f * abs(dot(wo, h))) : 0.0f;
         float p_cos = nd > 0 ? wi.z * INV_PI : 0.0f;
@@ -300,7 +309,7 @@ vec3 environment_lighting(SurfaceMaterial mat, vec3 wo, vec3 t, vec3 b, vec3 n, 
     for (int k = 0; k < u_environment_sun_count; ++k) {
         vec3 d = environment_sun_direction(k);
         vec3 wi = vec3(dot(d, t), dot(d, b), dot(d, n));
-        if (wi.z <= 0.0f) continue;
+        if (wi.z <= 0.0f || dot(wi, horizon) < 0.0f) continue;
         sum += eval_bsdf(mat, wo, wi, fp) * wi.z * (u_environment_scale * u_environment_sun_power[k]);
     }
     return sum;
@@ -398,6 +407,11 @@ void main() {
         }
 #endif
         vec3 wo = vec3(dot(wo_world, t), dot(wo_world, b), dot(wo_world, n));
+        vec3 horizon = vec3(0.0f);
+        if (u_closed_surface) {
+            vec3 ng_side = dot(ng, wo_world) < 0.0f ? -ng : ng;
+            horizon = vec3(dot(ng_side, t), dot(ng_side, b), dot(ng_side, n));
+        }
 #ifdef GLINTLAB_GLINT_VIEW_DIFFERENTIALS
         // render/surface_bsdf.cpp view_differentials: in the final frame, the
         // normal's change negated with the two-sided flip.
@@ -452,16 +466,16 @@ void main() {
             else
                 radiance += env;
         } else
-            radiance += environment_lighting(mat, wo, t, b, n, fp);
+            radiance += environment_lighting(mat, wo, t, b, n, fp, horizon);
 #elif GLINTLAB_ENVIRONMENT && defined(GLINTLAB_GLINT_SHADES_ENVIRONMENT)
         // The model's own image-based lighting (kneiphof2025: Eq. 17) instead
         // of the smooth filtered-importance-sampling estimate.
         if (u_material_type == 4)
             radiance += glint_environment(wo, t, b, n, u_glint_color, fp);
         else
-            radiance += environment_lighting(mat, wo, t, b, n, fp);
+            radiance += environment_lighting(mat, wo, t, b, n, fp, horizon);
 #elif GLINTLAB_ENVIRONMENT
-        radiance += environment_lighting(mat, wo, t, b, n, fp);
+        radiance += environment_lighting(mat, wo, t, b, n, fp, horizon);
 #endif
 #if GLINTLAB_DIRECTIONAL_LIGHTS > 0
         for (int i = 0; i < GLINTLAB_DIRECTIONAL_LIGHTS; ++i) {
