@@ -7,16 +7,6 @@
 
 #include "glintlab/core/view_differentials.glsl"
 
-ViewDifferentials no_view_differentials(vec3 wo) {
-    ViewDifferentials v;
-    v.wo = wo;
-    v.wo_dx = vec3(0.0f);
-    v.wo_dy = vec3(0.0f);
-    v.n_dx = vec2(0.0f);
-    v.n_dy = vec2(0.0f);
-    return v;
-}
-
 // d(slope of h) for one pixel step, with the light's direction held fixed in
 // world space (exact for directional and environment light; a point light's
 // own parallax over the pixel, |∂p| / distance, is left out). Slopes follow
