@@ -21,12 +21,13 @@ float chermain2020_dict_fetch(int row, int bin) {
     const Dictionary& d = default_dictionary();
     return d.values[static_cast<size_t>(row) * d.params.table_size + bin];
 }
-// The dictionary's texels for geometric glint anti-aliasing, built once.
+// Geometric glint anti-aliasing's texel: the sample, the row's next one
+// and the running integral (chermain2020_dictionary_filter_texels' layout).
 vec3 chermain2020_dict_fetch_filter(int row, int bin) {
-    static const std::vector<float> texels =
-        glintlab::chermain2020_dictionary_filter_texels(default_dictionary());
-    const size_t i = (static_cast<size_t>(row) * default_dictionary().params.table_size + bin) * 3;
-    return vec3(texels[i], texels[i + 1], texels[i + 2]);
+    const Dictionary& d = default_dictionary();
+    const size_t i = static_cast<size_t>(row) * d.params.table_size + bin;
+    const float next = bin + 1 < d.params.table_size ? d.values[i + 1] : 0.0f;
+    return vec3(d.values[i], next, d.running_integrals[i]);
 }
 #include "glintlab/core/half_slope_differentials.glsl"
 #include "glintlab/glints/chermain2020/chermain2020.glsl"

@@ -82,6 +82,19 @@ void check_dictionary_params(const DictionaryParams& p) {
 
 namespace {
 
+void fill_running_integrals(Dictionary& d) {
+    const size_t width = static_cast<size_t>(d.params.table_size);
+    const double step = double(d.slope_max) / double(width);
+    d.running_integrals.assign(d.values.size(), 0.0f);
+    double integral = 0.0;
+    for (size_t i = 0; i < d.values.size(); ++i) {
+        if (i % width == 0) integral = 0.0;  // a new row
+        const float next = (i % width) + 1 < width ? d.values[i + 1] : 0.0f;
+        d.running_integrals[i] = static_cast<float>(integral);
+        integral += 0.5 * step * (double(d.values[i]) + double(next));
+    }
+}
+
 Dictionary generate(const DictionaryParams& params, ProgressReporter* progress) {
     check_dictionary_params(params);
     Dictionary d;
@@ -95,6 +108,7 @@ Dictionary generate(const DictionaryParams& params, ProgressReporter* progress) 
         generate_marginal(params, d.slope_max, i, d.values.data() + per_dist * i);
         if (progress) progress->update();
     });
+    fill_running_integrals(d);
     return d;
 }
 
@@ -125,8 +139,10 @@ Dictionary load_or_generate_dictionary(const DictionaryParams& params) {
         const size_t expected =
             size_t(params.n_dists) * size_t(params.n_levels) * size_t(params.table_size);
         if (in.get(d.slope_max) && in.get_vector(d.values) && in.at_end() &&
-            d.values.size() == expected)
+            d.values.size() == expected) {
+            fill_running_integrals(d);
             return d;
+        }
     }
     ProgressReporter progress(params.n_dists,
                               fmt::format("chermain2020 dictionary, {} marginals x {} levels "
@@ -159,16 +175,11 @@ std::vector<float> chermain2020_dictionary_pairs(const Dictionary& dict) {
 
 std::vector<float> chermain2020_dictionary_filter_texels(const Dictionary& dict) {
     const size_t width = static_cast<size_t>(dict.params.table_size);
-    const double step = double(dict.slope_max) / double(width);
     std::vector<float> texels(dict.values.size() * 3);
-    double integral = 0.0;
     for (size_t i = 0; i < dict.values.size(); ++i) {
-        if (i % width == 0) integral = 0.0;  // a new row
-        const float next = (i % width) + 1 < width ? dict.values[i + 1] : 0.0f;
         texels[3 * i] = dict.values[i];
-        texels[3 * i + 1] = next;
-        texels[3 * i + 2] = static_cast<float>(integral);
-        integral += 0.5 * step * (double(dict.values[i]) + double(next));
+        texels[3 * i + 1] = (i % width) + 1 < width ? dict.values[i + 1] : 0.0f;
+        texels[3 * i + 2] = dict.running_integrals[i];
     }
     return texels;
 }

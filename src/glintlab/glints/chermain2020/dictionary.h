@@ -30,6 +30,10 @@ struct Dictionary {
     // bin k holds P(x_k) at x_k = k * slope_max / table_size.
     std::vector<float> values;
     float slope_max = 0.0f;  // 4 sigma, sigma = alpha_dict / sqrt(2)
+    // Each row's integral from 0 to bin k's slope, exact for the
+    // piecewise-linear interpolant (trapezoids), in the layout of `values`:
+    // what geometric glint anti-aliasing's box filter reads.
+    std::vector<float> running_integrals;
 
     float at(int dist, int level, int bin) const {
         return values[(static_cast<size_t>(dist) * params.n_levels + level) * params.table_size +
@@ -66,7 +70,7 @@ std::vector<float> chermain2020_dictionary_pairs(const Dictionary& dict);
 // chermain2020_marginal_box; the GPU forward pass and the C++ back end):
 // element 3 i holds values[i], 3 i + 1 the next sample of the same row (0
 // after the row's last), 3 i + 2 the row's integral from 0 to the sample's
-// slope, exact for the piecewise-linear interpolant (trapezoids).
+// slope (Dictionary::running_integrals).
 std::vector<float> chermain2020_dictionary_filter_texels(const Dictionary& dict);
 
 // Binary file: "GLDICT01", int32 n_levels, n_dists, table_size, float32
