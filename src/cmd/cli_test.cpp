@@ -95,6 +95,9 @@ TEST(Cli, BadInputGivesClearErrors) {
         {"frobnicate", {"frobnicate"}},
         {"validate no_such_suite", {"no_such_suite"}},
         {"validate compare --scenes no_such_scene", {"no_such_scene", "sphere_city"}},
+        // Lists are comma- or space-separated, as compare's --models.
+        {"validate compare --scenes sphere_city,no_such_scene",
+         {"unknown scene \"no_such_scene\""}},
         {"validate counting --scenes sphere_city", {"--scenes", "compare"}},
         {"validate counting --models deliot2023", {"--models", "robustness", "compare"}},
         {"export nope", {"\"nope\"", "deliot2023"}},

@@ -33,9 +33,13 @@ void add_validate_command(CLI::App& app, int* status) {
     sub->add_option("--models", args->models,
                     "robustness: only these models, each with its full-suite share of the "
                     "10^7 evaluations (per-model runs add up to the full suite); compare: only "
-                    "these models (the ground truth is always rendered)");
+                    "these models (the ground truth is always rendered); comma- or "
+                    "space-separated")
+        ->delimiter(',');
     sub->add_option("--scenes", args->scenes,
-                    "compare: only these scenes of scenes/compare/, by stem (e.g. sphere_city)");
+                    "compare: only these scenes of scenes/compare/, by stem (e.g. sphere_city); "
+                    "comma- or space-separated")
+        ->delimiter(',');
     sub->callback([args, status] {
         if (!args->models.empty() && args->suite != "robustness" && args->suite != "compare")
             fail("validate {}: --models applies to the robustness and compare suites only",

@@ -12,6 +12,8 @@
 
 namespace glintlab {
 
+struct Scene;
+
 struct CompareValidationOptions {
     uint64_t seed = 1;
     int size = 48;         // W = H
@@ -59,6 +61,11 @@ struct CompareValidationOptions {
 
 // The compare scenes, by stem, in the suite's order.
 std::vector<std::string> compare_scene_names();
+
+// The ln density by which a compare scene is classed dense or sparse: its
+// first glint material's, or its density map's sparsest texel (a textured
+// scene is dense only if every part of it is); 0 without a glint material.
+float compare_scene_log_density(const Scene& scene);
 
 // The standard error a dense scene's mean error needs for a conclusive
 // verdict on the 5 % bound: 2.5 %, or, where the error is within two se of

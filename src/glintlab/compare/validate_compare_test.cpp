@@ -170,7 +170,7 @@ TEST(CompareValidation, RejectsUnknownScenesAndSizes) {
     o.scenes = {"sphere_city"};
     o.size = 4;
     EXPECT_THROW(validate_compare(o), Error);
-    EXPECT_EQ(compare_scene_names().size(), 10u);
+    EXPECT_EQ(compare_scene_names().size(), 12u);
 }
 
 }  // namespace
@@ -207,6 +207,19 @@ TEST(CompareValidation, SceneListCoversEveryHdriAndShape) {
     for (const char* shape : {"sphere", "quad", "gltf"})
         EXPECT_EQ(shapes.count(shape), 1u) << shape;
     EXPECT_GE(without_environment, 2);
+}
+
+// A density map is classed by its sparsest texel: the compare textures' bar
+// of ln N 9 makes both textured scenes sparse, whatever their mean.
+TEST(CompareValidation, TexturedScenesAreClassedByTheirSparsestTexel) {
+    const std::filesystem::path dir =
+        std::filesystem::path(GLINTLAB_SOURCE_DIR) / "scenes" / "compare";
+    for (const char* name : {"textured_lights", "textured_sphere_forest"})
+        EXPECT_NEAR(compare_scene_log_density(load_scene(dir / (std::string(name) + ".json"))),
+                    9.0f, 1e-3f)
+            << name;
+    EXPECT_NEAR(compare_scene_log_density(load_scene(dir / "lights_point_directional.json")), 12.0f,
+                1e-6f);
 }
 
 }  // namespace
