@@ -53,6 +53,41 @@ void tilt_frame_to_slope(vec2 mean, INOUT(vec3) t, INOUT(vec3) b, INOUT(vec3) n)
     n = nw;
 }
 
+// A mapped normal that faces away from the viewer would shade its pixel
+// black (every lobe and the ground truth's facets need wo above their
+// surface), and one just past the boundary would switch a region from lit
+// to black between two frames. So the mapped normal is turned towards the
+// base normal, in their common plane, until wo makes at least this
+// fraction of its cosine with the base normal: wo·n ≥ ¼ wo_z. (Blender
+// Cycles bends its shading normals in the same plane for the same reason,
+// with a criterion on the mirror direction.) Normals that pass are kept.
+const float kVisibleNormalCosFraction = 0.25f;
+
+// wo·n of the unit normal of slope s, normalize(−s_x, −s_y, 1); wo unit.
+float cos_to_slope_normal(vec2 s, vec3 wo) {
+    return (wo.z - dot(s, vec2(wo.x, wo.y))) / sqrt(1.0f + dot(s, s));
+}
+
+// The slope s shortened to k s, k in [0, 1] the largest that keeps
+// wo·n ≥ kVisibleNormalCosFraction wo_z (a single crossing: (wo_z − k a)² =
+// c² (1 + k² |s|²) has one root where wo_z − k a > 0 and the cosine falls
+// from wo_z at k = 0 below c at k = 1). Bisection to 2⁻²⁴, only where the
+// slope fails; continuous in s and wo. wo_z ≤ 0 (no view given): s.
+vec2 visible_slope(vec2 s, vec3 wo) {
+    float c = kVisibleNormalCosFraction * wo.z;
+    if (!(wo.z > 0.0f) || cos_to_slope_normal(s, wo) >= c) return s;
+    float lo = 0.0f;
+    float hi = 1.0f;
+    for (int i = 0; i < 24; ++i) {
+        float mid = 0.5f * (lo + hi);
+        if (cos_to_slope_normal(mid * s, wo) >= c)
+            lo = mid;
+        else
+            hi = mid;
+    }
+    return lo * s;
+}
+
 // A lobe's α along an axis widened by the footprint's slope variance along
 // it: α² + 2σ² (a Beckmann lobe's α² is twice its slope variance; LEAN
 // mapping, Olano & Baker, I3D 2010), at most max_alpha.

@@ -247,7 +247,9 @@ vec3 glint_shade(vec3 p, vec3 n, vec3 dpdu, Footprint fp) {
     g_glint_slope_correlation = back ? -g_glint_front_correlation : g_glint_front_correlation;
     if (g_glint_mean_slope != vec2(0.0f)) {
         // The normal map's mean normal (glint_set_inputs widened the lobe).
-        tilt_frame_to_slope(mean_slope_in_shading_frame(back, 1.0f, g_glint_mean_slope), t, b, n);
+        vec2 mean = mean_slope_in_shading_frame(back, 1.0f, g_glint_mean_slope);
+        mean = visible_slope(mean, vec3(dot(wo_world, t), dot(wo_world, b), dot(wo_world, n)));
+        tilt_frame_to_slope(mean, t, b, n);
     }
     vec3 wo = vec3(dot(wo_world, t), dot(wo_world, b), dot(wo_world, n));
     vec3 radiance = vec3(0.0f);

@@ -85,6 +85,10 @@ struct GlintDesc {
     // mirrored), x negated too seen from behind.
     std::shared_ptr<const NormalMap> normal_map;
     glm::vec2 normal_map_axes{1.0f};
+    // The pixel's wo in that local frame: each facet's map normal is turned
+    // to face it as the models' mean normal is (core/slope_frame.glsl
+    // visible_slope); 0: not turned.
+    glm::vec3 normal_map_view{0.0f};
     // Set where the renderers resolved α per hit (a roughness map, a normal
     // map's widening): every pixel may hold another α, and models that
     // build a table per α (jakob2014) snap it to a grid instead.

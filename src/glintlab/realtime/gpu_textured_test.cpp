@@ -9,6 +9,7 @@
 #include <unistd.h>
 #include <cmath>
 #include <filesystem>
+#include <fstream>
 #include <string>
 
 #include <nlohmann/json.hpp>
@@ -218,6 +219,58 @@ TEST(GpuTextured, NormalMappedClosedSurfacesAreSelfOccludedUnderAnEnvironment) {
         ::testing::Test::RecordProperty(m["type"].get<std::string>() + "_mean_relative_error",
                                         std::to_string(a.mean_relative_error));
         EXPECT_LT(a.mean_relative_error, 0.03);
+    }
+}
+
+// A map whose normal faces away from the viewer (render/
+// normal_map_render_test.cpp NormalsFacingAwayFromTheViewerAreTurnedTowardsIt):
+// the forward pass turns it to face the viewer as the CPU does
+// (core/slope_frame.glsl visible_slope), so no pixel is black and the images
+// agree within the continuous materials' tolerances; unturned, the quad is
+// black on both.
+TEST(GpuTextured, NormalsFacingAwayAreTurnedAsOnTheCpu) {
+    GLINTLAB_REQUIRE_GL();
+    const TexturedScenes t;
+    write_exr(Image(4, 4, glm::normalize(glm::vec3(0.0f, 2.75f, 1.0f))), t.dir / "away.exr");
+    write_exr(Image(16, 8, glm::vec3(1.0f)), t.dir / "white.exr");
+    {
+        // A quad facing +z, uvs with v down the image (glTF).
+        std::ofstream obj(t.dir / "quad.obj");
+        obj << "v -1 -1 0\nv 1 -1 0\nv 1 1 0\nv -1 1 0\nvt 0 1\nvt 1 1\nvt 1 0\nvt 0 0\n"
+               "vn 0 0 1\nf 1/1/1 2/2/1 3/3/1\nf 1/1/1 3/3/1 4/4/1\n";
+    }
+    for (nlohmann::json m :
+         {nlohmann::json{{"type", "conductor"}, {"roughness", 0.2}},
+          nlohmann::json{
+              {"type", "glint"}, {"model", "smooth"}, {"ndf", "ggx"}, {"roughness", 0.2}},
+          nlohmann::json{{"type", "glint"},
+                         {"model", "kneiphof2025"},
+                         {"ndf", "ggx"},
+                         {"roughness", 0.2},
+                         {"log_density", 20.0}}}) {
+        SCOPED_TRACE(m.dump());
+        m["name"] = "m";
+        m["normal_map"] = {{"texture", "away.exr"}, {"encoding", "signed"}};
+        const nlohmann::json doc = {
+            {"camera", {{"eye", {0.0, -2.6, 1.3}}, {"target", {0, 0, 0}}, {"fov_deg", 25}}},
+            {"film", {{"width", 32}, {"height", 32}}},
+            {"render", {{"integrator", "direct"}, {"spp", 4}, {"seed", 1}}},
+            {"materials", {m}},
+            {"shapes", {{{"type", "obj"}, {"file", "quad.obj"}, {"material", "m"}}}},
+            {"lights", {{{"type", "environment"}, {"file", "white.exr"}}}}};
+        const Scene scene = parse_scene(doc, t.dir / "away.json");
+        GpuRenderer renderer(scene);
+        renderer.render(scene);
+        const Image gpu = renderer.read_image();
+        int black = 0;
+        for (const glm::vec3& p : gpu.pixels) black += !(p.x + p.y + p.z > 0.0f);
+        EXPECT_EQ(black, 0);
+        const ImageAgreement a =
+            compare_images(gpu, render_scene(scene, RenderOptions{1, true}), 8, 0.02f, 0.1f);
+        ::testing::Test::RecordProperty(m.value("model", "conductor") + "_mean_relative_error",
+                                        std::to_string(a.mean_relative_error));
+        EXPECT_LT(a.mean_relative_error, 0.03);
+        EXPECT_LT(a.smoothed_relative_l1, 0.05);
     }
 }
 

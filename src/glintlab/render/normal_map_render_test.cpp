@@ -14,10 +14,15 @@
 
 #include <nlohmann/json.hpp>
 
+#include "glintlab/core/glsl.h"
 #include "glintlab/core/image.h"
 #include "glintlab/core/image_test_util.h"
 #include "glintlab/render/renderer.h"
 #include "glintlab/scene/scene_loader.h"
+
+GLINTLAB_SHADER_FUNCTIONS_BEGIN
+#include "glintlab/core/slope_frame.glsl"
+GLINTLAB_SHADER_FUNCTIONS_END
 
 namespace glintlab {
 namespace {
@@ -211,6 +216,89 @@ TEST(NormalMapRender, VertexTangentsKeepACoarseMeshsMapFromFaceting) {
     // the unmapped difference, 0.071; the mapped one measured 0.066 with
     // vertex tangents and 0.095 with each triangle's own ∂p/∂u.
     EXPECT_LT(mapped, unmapped + 0.01) << mapped << " unmapped " << unmapped;
+}
+
+// visible_slope keeps every slope whose normal faces wo by a quarter of the
+// base normal's cosine, and shortens the others to the largest k s that
+// does: the result meets the bound (to the bisection's 2⁻²⁴), lies on the
+// segment [0, s], and a slope a hair shorter than the result passes itself.
+TEST(NormalMapRender, VisibleSlopeTurnsOnlyTheNormalsThatFaceAway) {
+    std::mt19937 rng(7);
+    std::uniform_real_distribution<float> u(-1.0f, 1.0f);
+    int turned = 0;
+    for (int i = 0; i < 20000; ++i) {
+        const glm::vec2 s = 4.0f * glm::vec2(u(rng), u(rng));
+        glm::vec3 wo = glm::normalize(glm::vec3(u(rng), u(rng), 0.5f * (u(rng) + 1.0f) + 1e-3f));
+        const float c = shader::kVisibleNormalCosFraction * wo.z;
+        const glm::vec2 v = shader::visible_slope(s, wo);
+        if (shader::cos_to_slope_normal(s, wo) >= c) {
+            EXPECT_EQ(v, s);
+            continue;
+        }
+        ++turned;
+        EXPECT_GE(shader::cos_to_slope_normal(v, wo), c - 1e-6f) << i;
+        const float k = glm::dot(v, s) / glm::dot(s, s);
+        EXPECT_GE(k, 0.0f);
+        EXPECT_LT(k, 1.0f);
+        EXPECT_LT(glm::length(v - k * s), 1e-5f * (1.0f + glm::length(s)));
+        // The largest such k: a step of 10⁻⁵ of s further fails the bound.
+        EXPECT_LT(shader::cos_to_slope_normal(v + 1e-5f * s, wo), c + 1e-5f) << i;
+    }
+    EXPECT_GT(turned, 2000);
+    // No view (wo_z ≤ 0): unchanged.
+    EXPECT_EQ(shader::visible_slope(glm::vec2(3.0f, 0.0f), glm::vec3(0.0f)), glm::vec2(3.0f, 0.0f));
+}
+
+// A map whose normal faces away from the viewer (tilted 70° towards +y,
+// seen from −y at 26° above the quad) used to shade the whole quad black:
+// every lobe, and the ground truth's facets, need wo above their surface.
+// Turned to face the viewer (visible_slope), every material reflects the
+// constant white environment, and the truth, whose facets are turned one by
+// one, keeps the smooth lobe's mean.
+TEST(NormalMapRender, NormalsFacingAwayFromTheViewerAreTurnedTowardsIt) {
+    ScratchDir dir;
+    write_exr(Image(4, 4, glm::normalize(glm::vec3(0.0f, 2.75f, 1.0f))), dir / "away.exr");
+    write_exr(Image(16, 8, glm::vec3(1.0f)), dir / "white.exr");
+    write_quad(dir / "quad.obj", glm::vec3(0, 0, 1));
+    auto render = [&](nlohmann::json material) {
+        material["name"] = "m";
+        material["normal_map"] = {{"texture", "away.exr"}, {"encoding", "signed"}};
+        const nlohmann::json doc = {
+            {"camera", {{"eye", {0.0, -2.6, 1.3}}, {"target", {0, 0, 0}}, {"fov_deg", 25}}},
+            {"film", {{"width", 24}, {"height", 24}}},
+            {"render", {{"integrator", "direct"}, {"spp", 4}, {"seed", 1}}},
+            {"materials", {material}},
+            {"shapes", {{{"type", "obj"}, {"file", "quad.obj"}, {"material", "m"}}}},
+            {"lights", {{{"type", "environment"}, {"file", "white.exr"}}}}};
+        return render_scene(parse_scene(doc, dir / "s.json"), RenderOptions(0, true));
+    };
+    const nlohmann::json materials[] = {
+        {{"type", "conductor"}, {"roughness", 0.2}},
+        {{"type", "glint"}, {"model", "smooth"}, {"ndf", "ggx"}, {"roughness", 0.2}},
+        {{"type", "glint"},
+         {"model", "kneiphof2025"},
+         {"ndf", "ggx"},
+         {"roughness", 0.2},
+         {"log_density", 14.0}},
+        {{"type", "glint"},
+         {"model", "explicit"},
+         {"ndf", "ggx"},
+         {"roughness", 0.2},
+         {"log_density", 14.0}},
+    };
+    double smooth_mean = 0.0;
+    for (const nlohmann::json& material : materials) {
+        const Image img = render(material);
+        int black = 0;
+        for (const glm::vec3& p : img.pixels) black += !(p.x + p.y + p.z > 0.0f);
+        EXPECT_EQ(black, 0) << material.dump();
+        ::testing::Test::RecordProperty(material.value("model", "conductor") + "_mean",
+                                        std::to_string(mean(img)));
+        if (material.value("model", "") == "smooth") smooth_mean = mean(img);
+        if (material.value("model", "") == "explicit") {
+            EXPECT_NEAR(mean(img) / smooth_mean, 1.0, 0.03);
+        }
+    }
 }
 
 }  // namespace

@@ -9,8 +9,8 @@
 #include "glintlab/glints/registry.h"
 #include "glintlab/render/light_sampling.h"
 
-// The widening and the slopes' correlation, as the forward pass and the
-// exported shaders compute them.
+// The widening, the slopes' correlation and the visible mean normal, as the
+// forward pass and the exported shaders compute them.
 GLINTLAB_SHADER_FUNCTIONS_BEGIN
 #include "glintlab/core/slope_frame.glsl"
 GLINTLAB_SHADER_FUNCTIONS_END
@@ -150,6 +150,11 @@ SurfaceBsdf make_surface_bsdf(const MaterialDesc& m, const SurfaceHit& hit, glm:
         frame.n = -frame.n;
         frame.b = -frame.b;  // keeps (t, b, n) right-handed
     }
+    // wo in the base frame; the mean normal is kept facing it
+    // (core/slope_frame.glsl visible_slope), as the ground truth keeps each
+    // facet's map normal.
+    const glm::vec3 wo_base = frame.to_local(glm::normalize(wo));
+    if (bump) bump->slopes.mean = shader::visible_slope(bump->slopes.mean, wo_base);
     // The glint material's curvature over the footprint, in the base frame.
     glm::mat2 slope_gradient(0.0f);
     glm::vec3 curvature_cov(0.0f);
@@ -264,6 +269,7 @@ SurfaceBsdf make_surface_bsdf(const MaterialDesc& m, const SurfaceHit& hit, glm:
         if (bump) {
             resolved->normal_map = m.normal_map;
             resolved->normal_map_axes = bump->axes;
+            resolved->normal_map_view = wo_base;
         }
         resolved->slope_gradient = slope_gradient;
         return SurfaceBsdf(base_frame, g, std::move(resolved));

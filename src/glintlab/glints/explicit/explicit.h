@@ -72,6 +72,7 @@ struct ExplicitFacetField {
     // carries the map's (x, y) onto the local frame (GlintDesc). Null: none.
     const NormalMap* normal_map = nullptr;
     glm::vec2 normal_map_axes{1.0f};
+    glm::vec3 normal_map_view{0.0f};  // GlintDesc::normal_map_view
     // A curved surface (docs/MODELS.md, "Curved surfaces"): the macro
     // normal's slope at a facet is slope_gradient (uv − slope_origin) in the
     // local frame, added to the normal map's there (slopes add to first

@@ -71,6 +71,7 @@ ExplicitFacetField explicit_field(const GlintDesc& desc, const Footprint& footpr
     }
     f.normal_map = desc.normal_map.get();
     f.normal_map_axes = desc.normal_map_axes;
+    f.normal_map_view = desc.normal_map_view;
     f.slope_gradient = desc.slope_gradient;
     f.slope_origin = footprint.uv;
     return f;

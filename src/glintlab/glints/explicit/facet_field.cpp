@@ -7,10 +7,17 @@
 #include <numbers>
 
 #include "glintlab/core/error.h"
+#include "glintlab/core/glsl.h"
 #include "glintlab/core/rng.h"
 #include "glintlab/glints/explicit/binomial_half.h"
 #include "glintlab/glints/explicit/explicit.h"
 #include "glintlab/glints/glint_textures.h"
+
+// visible_slope: each facet's map normal faces the pixel's wo as the models'
+// mean normal does (render/surface_bsdf.cpp).
+GLINTLAB_SHADER_FUNCTIONS_BEGIN
+#include "glintlab/core/slope_frame.glsl"
+GLINTLAB_SHADER_FUNCTIONS_END
 
 namespace glintlab {
 namespace {
@@ -166,7 +173,9 @@ struct Walker {
             if (field.has_macro_normals()) {
                 glm::vec2 slope = field.slope_gradient * (f.uv - field.slope_origin);
                 if (field.normal_map)
-                    slope += field.normal_map->slope_at(f.uv) * field.normal_map_axes;
+                    slope += shader::visible_slope(
+                        field.normal_map->slope_at(f.uv) * field.normal_map_axes,
+                        field.normal_map_view);
                 f.n_map = normal_from_slope(slope);
                 glm::vec3 b;
                 tangent_frame_around(f.n_map, &f.t_map, &b);

@@ -397,8 +397,8 @@ void main() {
         }
 #endif
 #ifdef GLINTLAB_NORMAL_MAP
-        normal_map_shade(fp, back_side, v_dpdu.w < 0.0f ? -1.0f : 1.0f, t, b, n, mat,
-                         glint_cov_xy);
+        normal_map_shade(fp, back_side, v_dpdu.w < 0.0f ? -1.0f : 1.0f, wo_world, t, b, n,
+                         mat, glint_cov_xy);
 #endif
 #ifdef GLINTLAB_MATERIAL_TEXTURES
         if (mat.type == MATERIAL_GLINT && u_glint_reads_correlation != 0 && glint_cov_xy != 0.0f) {

@@ -35,13 +35,15 @@ vec4 normal_map_fetch(sampler2D tex, Footprint fp, bool filtered) {
                                       u_normal_map_offset, fp, kSlopeMomentLodBias);
 }
 
-// Tilts (t, b, n) to the footprint's mean normal and widens the material's
-// α by the slope covariance, as make_surface_bsdf does. `back`: the frame
-// was flipped to the side of wo; `bitangent_sign`: the tangent's w.
+// Tilts (t, b, n) to the footprint's mean normal, kept facing wo_world
+// (visible_slope), and widens the material's α by the slope covariance, as
+// make_surface_bsdf does. `back`: the frame was flipped to the side of wo;
+// `bitangent_sign`: the tangent's w.
 // `glint_cov_xy` gains the map's Σ_xy in the shading frame where the glint
 // model reads the slopes' correlation (u_glint_reads_correlation).
-void normal_map_shade(Footprint fp, bool back, float bitangent_sign, inout vec3 t, inout vec3 b,
-                      inout vec3 n, inout SurfaceMaterial mat, inout float glint_cov_xy) {
+void normal_map_shade(Footprint fp, bool back, float bitangent_sign, vec3 wo_world,
+                      inout vec3 t, inout vec3 b, inout vec3 n, inout SurfaceMaterial mat,
+                      inout float glint_cov_xy) {
     bool lean = u_normal_map_filtering == 0;
     vec4 first = normal_map_fetch(u_normal_slopes, fp, lean);
     vec2 mean = first.xy;
@@ -55,6 +57,7 @@ void normal_map_shade(Footprint fp, bool back, float bitangent_sign, inout vec3 
         cov = slope_covariance(mean, first.zw, second_xy, correlated);
     }
     slopes_in_shading_frame(back, bitangent_sign, mean, cov);
+    mean = visible_slope(mean, vec3(dot(wo_world, t), dot(wo_world, b), dot(wo_world, n)));
     tilt_frame_to_slope(mean, t, b, n);
     if (mat.type == MATERIAL_DIFFUSE) return;
     if (mat.type == MATERIAL_GLINT) {
