@@ -58,10 +58,14 @@ void tilt_frame_to_slope(vec2 mean, INOUT(vec3) t, INOUT(vec3) b, INOUT(vec3) n)
 // surface), and one just past the boundary would switch a region from lit
 // to black between two frames. So the mapped normal is turned towards the
 // base normal, in their common plane, until wo makes at least this
-// fraction of its cosine with the base normal: wo·n ≥ ¼ wo_z. (Blender
+// fraction of its cosine with the base normal: wo·n ≥ 0.1 wo_z. (Blender
 // Cycles bends its shading normals in the same plane for the same reason,
 // with a criterion on the mirror direction.) Normals that pass are kept.
-const float kVisibleNormalCosFraction = 0.25f;
+// The fraction: on the compare suite's bumps at grazing view (LEAN) the
+// one-lobe filter's excess over the truth grows with it (smooth +16.9 %,
+// +17.6 %, +20.5 % at 0.01, 0.1, 0.25), the unfiltered rows do not move,
+// and 0.1 keeps the turned normal clear of the grazing limit.
+const float kVisibleNormalCosFraction = 0.1f;
 
 // wo·n of the unit normal of slope s, normalize(−s_x, −s_y, 1); wo unit.
 float cos_to_slope_normal(vec2 s, vec3 wo) {

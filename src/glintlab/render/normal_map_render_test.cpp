@@ -218,10 +218,10 @@ TEST(NormalMapRender, VertexTangentsKeepACoarseMeshsMapFromFaceting) {
     EXPECT_LT(mapped, unmapped + 0.01) << mapped << " unmapped " << unmapped;
 }
 
-// visible_slope keeps every slope whose normal faces wo by a quarter of the
+// visible_slope keeps every slope whose normal faces wo by a tenth of the
 // base normal's cosine, and shortens the others to the largest k s that
 // does: the result meets the bound (to the bisection's 2⁻²⁴), lies on the
-// segment [0, s], and a slope a hair shorter than the result passes itself.
+// segment [0, s], and a slope a hair longer fails the bound.
 TEST(NormalMapRender, VisibleSlopeTurnsOnlyTheNormalsThatFaceAway) {
     std::mt19937 rng(7);
     std::uniform_real_distribution<float> u(-1.0f, 1.0f);
