@@ -9,7 +9,6 @@
 #include <unistd.h>
 #include <cmath>
 #include <filesystem>
-#include <fstream>
 #include <string>
 
 #include <nlohmann/json.hpp>
@@ -19,6 +18,7 @@
 #include "glintlab/realtime/gpu_test_util.h"
 #include "glintlab/realtime/image_compare.h"
 #include "glintlab/render/curvature_test_util.h"
+#include "glintlab/render/facing_away_test_util.h"
 #include "glintlab/render/renderer.h"
 #include "glintlab/scene/scene_loader.h"
 
@@ -231,15 +231,8 @@ TEST(GpuTextured, NormalMappedClosedSurfacesAreSelfOccludedUnderAnEnvironment) {
 TEST(GpuTextured, NormalsFacingAwayAreTurnedAsOnTheCpu) {
     GLINTLAB_REQUIRE_GL();
     const TexturedScenes t;
-    write_exr(Image(4, 4, glm::normalize(glm::vec3(0.0f, 2.75f, 1.0f))), t.dir / "away.exr");
-    write_exr(Image(16, 8, glm::vec3(1.0f)), t.dir / "white.exr");
-    {
-        // A quad facing +z, uvs with v down the image (glTF).
-        std::ofstream obj(t.dir / "quad.obj");
-        obj << "v -1 -1 0\nv 1 -1 0\nv 1 1 0\nv -1 1 0\nvt 0 1\nvt 1 1\nvt 1 0\nvt 0 0\n"
-               "vn 0 0 1\nf 1/1/1 2/2/1 3/3/1\nf 1/1/1 3/3/1 4/4/1\n";
-    }
-    for (nlohmann::json m :
+    testing::write_facing_away_assets(t.dir);
+    for (const nlohmann::json& m :
          {nlohmann::json{{"type", "conductor"}, {"roughness", 0.2}},
           nlohmann::json{
               {"type", "glint"}, {"model", "smooth"}, {"ndf", "ggx"}, {"roughness", 0.2}},
@@ -249,16 +242,7 @@ TEST(GpuTextured, NormalsFacingAwayAreTurnedAsOnTheCpu) {
                          {"roughness", 0.2},
                          {"log_density", 20.0}}}) {
         SCOPED_TRACE(m.dump());
-        m["name"] = "m";
-        m["normal_map"] = {{"texture", "away.exr"}, {"encoding", "signed"}};
-        const nlohmann::json doc = {
-            {"camera", {{"eye", {0.0, -2.6, 1.3}}, {"target", {0, 0, 0}}, {"fov_deg", 25}}},
-            {"film", {{"width", 32}, {"height", 32}}},
-            {"render", {{"integrator", "direct"}, {"spp", 4}, {"seed", 1}}},
-            {"materials", {m}},
-            {"shapes", {{{"type", "obj"}, {"file", "quad.obj"}, {"material", "m"}}}},
-            {"lights", {{{"type", "environment"}, {"file", "white.exr"}}}}};
-        const Scene scene = parse_scene(doc, t.dir / "away.json");
+        const Scene scene = parse_scene(testing::facing_away_scene(m, 32), t.dir / "away.json");
         GpuRenderer renderer(scene);
         renderer.render(scene);
         const Image gpu = renderer.read_image();

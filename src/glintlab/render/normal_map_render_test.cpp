@@ -17,6 +17,7 @@
 #include "glintlab/core/glsl.h"
 #include "glintlab/core/image.h"
 #include "glintlab/core/image_test_util.h"
+#include "glintlab/render/facing_away_test_util.h"
 #include "glintlab/render/renderer.h"
 #include "glintlab/scene/scene_loader.h"
 
@@ -257,20 +258,10 @@ TEST(NormalMapRender, VisibleSlopeTurnsOnlyTheNormalsThatFaceAway) {
 // one, keeps the smooth lobe's mean.
 TEST(NormalMapRender, NormalsFacingAwayFromTheViewerAreTurnedTowardsIt) {
     ScratchDir dir;
-    write_exr(Image(4, 4, glm::normalize(glm::vec3(0.0f, 2.75f, 1.0f))), dir / "away.exr");
-    write_exr(Image(16, 8, glm::vec3(1.0f)), dir / "white.exr");
-    write_quad(dir / "quad.obj", glm::vec3(0, 0, 1));
-    auto render = [&](nlohmann::json material) {
-        material["name"] = "m";
-        material["normal_map"] = {{"texture", "away.exr"}, {"encoding", "signed"}};
-        const nlohmann::json doc = {
-            {"camera", {{"eye", {0.0, -2.6, 1.3}}, {"target", {0, 0, 0}}, {"fov_deg", 25}}},
-            {"film", {{"width", 24}, {"height", 24}}},
-            {"render", {{"integrator", "direct"}, {"spp", 4}, {"seed", 1}}},
-            {"materials", {material}},
-            {"shapes", {{{"type", "obj"}, {"file", "quad.obj"}, {"material", "m"}}}},
-            {"lights", {{{"type", "environment"}, {"file", "white.exr"}}}}};
-        return render_scene(parse_scene(doc, dir / "s.json"), RenderOptions(0, true));
+    testing::write_facing_away_assets(dir.path());
+    auto render = [&](const nlohmann::json& material) {
+        return render_scene(parse_scene(testing::facing_away_scene(material, 24), dir / "s.json"),
+                            RenderOptions(0, true));
     };
     const nlohmann::json materials[] = {
         {{"type", "conductor"}, {"roughness", 0.2}},
