@@ -240,10 +240,11 @@ float compare_scene_log_density(const Scene& scene) {
         const GlintDesc& g = m.glint;
         if (!g.textures || !g.textures->density) return g.log_density;
         // The map holds N, facets per unit uv area.
-        const MipTexture& t = *g.textures->density->texture;
-        const std::vector<float>& texels = t.level_texels(0);
+        const TextureInput& density = *g.textures->density;
+        const std::vector<float>& texels = density.texture->level_texels(0);
+        const size_t channels = size_t(density.texture->channels());
         float least = std::numeric_limits<float>::infinity();
-        for (size_t i = 0; i < texels.size(); i += size_t(t.channels()))
+        for (size_t i = size_t(std::max(density.channel, 0)); i < texels.size(); i += channels)
             least = std::min(least, texels[i]);
         return std::log(std::max(least, 1e-30f));
     }

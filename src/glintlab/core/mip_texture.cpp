@@ -35,8 +35,8 @@ std::vector<Row> box_weights(int m, int n) {
 MipTexture::MipTexture(int width, int height, int channels, std::vector<float> texels,
                        TextureWrap wrap)
     : channels_(channels), wrap_(wrap) {
-    if (width < 1 || height < 1 || (channels != 1 && channels != 3 && channels != 4))
-        fail("texture: {}x{} with {} channels (need a size of at least 1x1 and 1, 3 or 4 channels)",
+    if (width < 1 || height < 1 || channels < 1 || channels > 4)
+        fail("texture: {}x{} with {} channels (need a size of at least 1x1 and 1 to 4 channels)",
              width, height, channels);
     if (texels.size() != size_t(width) * size_t(height) * size_t(channels))
         fail("texture: {} texels given for {}x{}x{}", texels.size(), width, height, channels);

@@ -1,4 +1,4 @@
-// A texture of 1, 3 or 4 float channels with its mip chain and the filtered
+// A texture of 1 to 4 float channels with its mip chain and the filtered
 // lookups the CPU renderer makes over a pixel footprint. The lookups follow
 // OpenGL's (4.5 core §8.14, and the anisotropic filtering of
 // EXT_texture_filter_anisotropic as ARB_texture_filter_anisotropic leaves

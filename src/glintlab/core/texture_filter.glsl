@@ -28,9 +28,4 @@ vec4 material_texture_filtered4(sampler2D tex, vec2 size, mat2 linear, vec2 offs
     return sum / float(n);
 }
 
-vec3 material_texture_filtered(sampler2D tex, vec2 size, mat2 linear, vec2 offset, Footprint fp,
-                               float bias) {
-    return material_texture_filtered4(tex, size, linear, offset, fp, bias).rgb;
-}
-
 #endif

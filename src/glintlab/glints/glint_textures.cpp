@@ -13,17 +13,16 @@ GlintDesc resolve_glint_textures(const GlintDesc& desc, glm::vec2 uv, const Foot
     GlintDesc d = desc;
     if (!desc.textures) return d;
     const GlintTextures& t = *desc.textures;
-    if (t.density) {
-        const float n = t.density->lookup(uv, footprint).x;
-        // The map's values are e^{ln N} with ln N in [-20, 60]: n > 0.
-        d.log_density = std::log(std::max(n, 1e-30f));
-    }
-    if (t.alpha_x_sq) d.alpha_x = alpha_from_squared(t.alpha_x_sq->lookup(uv, footprint).x);
-    // An isotropic roughness map is one texture on both axes: one lookup.
-    if (t.alpha_y_sq && t.alpha_y_sq == t.alpha_x_sq)
-        d.alpha_y = d.alpha_x;
-    else if (t.alpha_y_sq)
-        d.alpha_y = alpha_from_squared(t.alpha_y_sq->lookup(uv, footprint).x);
+    // Density and roughness usually share one packed texture (the scene
+    // loader's pack_scalar_inputs): one footprint lookup gives all three.
+    // An isotropic roughness map is one input on both axes.
+    const TextureInput* scalars[3] = {t.density.get(), t.alpha_x_sq.get(), t.alpha_y_sq.get()};
+    float values[3] = {0.0f, 0.0f, 0.0f};
+    lookup_scalars(scalars, uv, footprint, values);
+    // The map's values are e^{ln N} with ln N in [-20, 60]: n > 0.
+    if (t.density) d.log_density = std::log(std::max(values[0], 1e-30f));
+    if (t.alpha_x_sq) d.alpha_x = alpha_from_squared(values[1]);
+    if (t.alpha_y_sq) d.alpha_y = alpha_from_squared(values[2]);
     if (t.alpha_x_sq || t.alpha_y_sq) d.alpha_varies = true;
     if (t.color) d.color = t.color->lookup(uv, footprint);
     if (t.base_albedo) d.base_albedo = t.base_albedo->lookup(uv, footprint);

@@ -158,19 +158,15 @@ void switch_glint_model(GlintDesc& desc, GlintModelId model) {
     // their whole map's mean, the number a scene file would give it.
     if (desc.textures) {
         GlintTextures t = *desc.textures;
-        auto mean = [](const TextureInput& in) {
-            const MipTexture& tex = *in.texture;
-            return tex.texel(tex.level_count() - 1, 0, 0, 0);
-        };
         if (!m.textured_density && t.density) {
-            desc.log_density = std::log(std::max(mean(*t.density), 1e-30f));
+            desc.log_density = std::log(std::max(t.density->mean(), 1e-30f));
             t.density = nullptr;
         }
         if (!m.textured_roughness && (t.alpha_x_sq || t.alpha_y_sq)) {
             if (t.alpha_x_sq)
-                desc.alpha_x = std::clamp(std::sqrt(mean(*t.alpha_x_sq)), 1e-3f, 1.0f);
+                desc.alpha_x = std::clamp(std::sqrt(t.alpha_x_sq->mean()), 1e-3f, 1.0f);
             if (t.alpha_y_sq)
-                desc.alpha_y = std::clamp(std::sqrt(mean(*t.alpha_y_sq)), 1e-3f, 1.0f);
+                desc.alpha_y = std::clamp(std::sqrt(t.alpha_y_sq->mean()), 1e-3f, 1.0f);
             t.alpha_x_sq = t.alpha_y_sq = nullptr;
         }
         if (m.shades_light != nullptr) t.base_albedo = nullptr;

@@ -480,13 +480,22 @@ struct GpuRenderer::Impl {
         const bool alpha_isotropic = slots[1] && slots[2] == slots[1];
         if (alpha_isotropic) slots[2] = nullptr;
         int mask = 0;
+        // A one-value slot reads its channel of the first slot it shares a
+        // lookup with (a texture packed by the loader, pack_scalar_inputs).
+        GLint source[gl::kMaterialTextureSlots];
+        glm::vec4 channel[gl::kMaterialTextureSlots];  // one-hot
         glm::mat2 linear[gl::kMaterialTextureSlots];
         glm::vec2 offset[gl::kMaterialTextureSlots], size[gl::kMaterialTextureSlots];
         for (int i = 0; i < gl::kMaterialTextureSlots; ++i) {
             linear[i] = glm::mat2(1.0f), offset[i] = glm::vec2(0.0f), size[i] = glm::vec2(1.0f);
+            source[i] = i, channel[i] = glm::vec4(1.0f, 0.0f, 0.0f, 0.0f);
             if (!slots[i]) continue;
             const TextureInput& in = *slots[i];
             mask |= 1 << i;
+            channel[i] = glm::vec4(0.0f);
+            channel[i][std::max(in.channel, 0)] = 1.0f;
+            for (int j = 0; j < i && source[i] == i; ++j)
+                if (slots[j] && slots[j]->shares_lookup(in)) source[i] = j;
             linear[i] = glm::mat2(in.transform.apply_vector({1.0f, 0.0f}),
                                   in.transform.apply_vector({0.0f, 1.0f}));
             offset[i] = in.transform.offset;
@@ -497,6 +506,9 @@ struct GpuRenderer::Impl {
         auto loc = [&](const char* name) { return uniforms.location(p, name); };
         glProgramUniform1i(p, loc("u_material_texture_mask"), mask);
         glProgramUniform1i(p, loc("u_material_texture_alpha_isotropic"), alpha_isotropic ? 1 : 0);
+        glProgramUniform1iv(p, loc("u_material_texture_source"), gl::kMaterialTextureSlots, source);
+        glProgramUniform4fv(p, loc("u_material_texture_channel"), gl::kMaterialTextureSlots,
+                            glm::value_ptr(channel[0]));
         glProgramUniformMatrix2fv(p, loc("u_material_texture_linear"), gl::kMaterialTextureSlots,
                                   GL_FALSE, glm::value_ptr(linear[0]));
         glProgramUniform2fv(p, loc("u_material_texture_offset"), gl::kMaterialTextureSlots,
@@ -537,8 +549,10 @@ struct GpuRenderer::Impl {
         if (it != material_textures.end()) return it->second.second.get();
         gl::Texture t = gl::make_texture(GL_TEXTURE_2D);
         const bool grey = tex->channels() == 1;
-        const GLenum internal = grey ? GL_R32F : tex->channels() == 4 ? GL_RGBA32F : GL_RGB32F;
-        const GLenum format = grey ? GL_RED : tex->channels() == 4 ? GL_RGBA : GL_RGB;
+        const GLenum internals[] = {GL_R32F, GL_RG32F, GL_RGB32F, GL_RGBA32F};
+        const GLenum formats[] = {GL_RED, GL_RG, GL_RGB, GL_RGBA};
+        const GLenum internal = internals[tex->channels() - 1];
+        const GLenum format = formats[tex->channels() - 1];
         glTextureStorage2D(t.get(), tex->level_count(), internal, tex->width(), tex->height());
         glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
         for (int level = 0; level < tex->level_count(); ++level)

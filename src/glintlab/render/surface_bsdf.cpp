@@ -178,16 +178,17 @@ SurfaceBsdf make_surface_bsdf(const MaterialDesc& m, const SurfaceHit& hit, glm:
     if (m.textures) {
         const MaterialTextures& t = *m.textures;
         if (t.albedo) albedo = t.albedo->lookup(hit.uv, footprint);
+        // One lookup for the one-value inputs that share a packed texture
+        // (a glTF metallic-roughness map's roughness and metallic).
+        const TextureInput* scalars[3] = {t.metallic.get(), t.alpha_x_sq.get(), t.alpha_y_sq.get()};
+        float values[3] = {metallic, alpha_x * alpha_x, alpha_y * alpha_y};
+        lookup_scalars(scalars, hit.uv, footprint, values);
         // The footprint's mean metallic mixes the two lobes as the texels do:
         // f is linear in it.
-        if (t.metallic) metallic = std::clamp(t.metallic->lookup(hit.uv, footprint).x, 0.0f, 1.0f);
+        metallic = std::clamp(values[0], 0.0f, 1.0f);
         // Conductors and dielectrics take α in [0, 1] (0: a mirror).
-        if (t.alpha_x_sq)
-            alpha_x = std::sqrt(std::max(t.alpha_x_sq->lookup(hit.uv, footprint).x, 0.0f));
-        if (t.alpha_y_sq && t.alpha_y_sq == t.alpha_x_sq)  // an isotropic map: one lookup
-            alpha_y = alpha_x;
-        else if (t.alpha_y_sq)
-            alpha_y = std::sqrt(std::max(t.alpha_y_sq->lookup(hit.uv, footprint).x, 0.0f));
+        if (t.alpha_x_sq) alpha_x = std::sqrt(std::max(values[1], 0.0f));
+        if (t.alpha_y_sq) alpha_y = std::sqrt(std::max(values[2], 0.0f));
     }
     if (bump && m.type != MaterialDesc::Type::Diffuse && m.type != MaterialDesc::Type::Glint) {
         glm::vec3 c = bump->slopes.covariance;

@@ -189,6 +189,9 @@ GlintDesc read_glint(JsonObject& o, TextureFileCache& files) {
     };
     if (t.density && !model.textured_density) refuse("log_density");
     if ((t.alpha_x_sq || t.alpha_y_sq) && !model.textured_roughness) refuse("roughness");
+    // One footprint lookup for density and roughness where their maps line up.
+    std::shared_ptr<const TextureInput>* scalars[] = {&t.density, &t.alpha_x_sq, &t.alpha_y_sq};
+    pack_scalar_inputs(scalars);
     if (t.density || t.alpha_x_sq || t.alpha_y_sq || t.color || t.base_albedo)
         g.textures = std::make_shared<const GlintTextures>(std::move(t));
     read_glint_model_blocks(o, g);  // the model's block, through its descriptor
@@ -244,6 +247,8 @@ MaterialDesc read_material(JsonObject& o, TextureFileCache& files) {
     }
     if (o.has("normal_map")) m.normal_map = read_normal_map(o, "normal_map", files);
     o.finish();
+    std::shared_ptr<const TextureInput>* scalars[] = {&t.metallic, &t.alpha_x_sq, &t.alpha_y_sq};
+    pack_scalar_inputs(scalars);
     if (t.albedo || t.alpha_x_sq || t.alpha_y_sq || t.metallic)
         m.textures = std::make_shared<const MaterialTextures>(std::move(t));
     return m;

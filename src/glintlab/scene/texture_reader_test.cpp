@@ -74,6 +74,52 @@ TEST(TextureReader, DensityMapIsFilteredAsFacetsPerAreaAndReadBackAsItsLog) {
                 std::log(0.5 * (std::exp(8.0) + std::exp(12.0))), 1e-3);
 }
 
+TEST(TextureReader, DensityAndRoughnessMapsThatLineUpAreReadByOneLookup) {
+    const TextureScene t;
+    Image rough(4, 2);  // α 0.1 on the left half, 0.4 on the right
+    for (int y = 0; y < 2; ++y)
+        for (int x = 0; x < 4; ++x) rough.at(x, y) = glm::vec3(x < 2 ? 0.1f : 0.4f);
+    write_exr(rough, t.dir / "rough.exr");
+    auto glint = [&](const char* rough_wrap) {
+        return t.load({{"type", "glint"},
+                       {"model", "deliot2023"},
+                       {"log_density", {{"texture", "density.exr"}}},
+                       {"roughness", {{"texture", "rough.exr"}, {"wrap", rough_wrap}}}});
+    };
+    const Scene packed = glint("repeat"), apart = glint("clamp");
+    const GlintTextures& p = *packed.materials[0].glint.textures;
+    EXPECT_EQ(p.density->texture, p.alpha_x_sq->texture);
+    EXPECT_EQ(p.alpha_x_sq, p.alpha_y_sq);
+    EXPECT_EQ(p.density->texture->channels(), 2);
+    const GlintTextures& a = *apart.materials[0].glint.textures;
+    EXPECT_NE(a.density->texture, a.alpha_x_sq->texture);
+    // The same values either way (away from the edge, where the wraps differ).
+    const GlintDesc& gp = packed.materials[0].glint;
+    const GlintDesc& ga = apart.materials[0].glint;
+    for (const glm::vec2 uv : {glm::vec2(0.125f, 0.5f), glm::vec2(0.875f, 0.5f)}) {
+        const GlintDesc rp = resolve_glint_textures(gp, uv, nullptr);
+        const GlintDesc ra = resolve_glint_textures(ga, uv, nullptr);
+        EXPECT_EQ(rp.log_density, ra.log_density);
+        EXPECT_EQ(rp.alpha_x, ra.alpha_x);
+        EXPECT_EQ(rp.alpha_y, ra.alpha_y);
+    }
+    const GlintDesc left = resolve_glint_textures(gp, {0.125f, 0.5f}, nullptr);
+    EXPECT_NEAR(left.log_density, 8.0f, 1e-4f);
+    EXPECT_NEAR(left.alpha_x, 0.1f, 1e-5f);
+    const Footprint mid{{0.5f, 0.25f}, {0.25f, 0.0f}, {0.0f, 0.25f}};
+    const GlintDesc centre = resolve_glint_textures(gp, mid.uv, &mid);
+    EXPECT_EQ(centre.log_density, resolve_glint_textures(ga, mid.uv, &mid).log_density);
+    EXPECT_EQ(centre.alpha_y, resolve_glint_textures(ga, mid.uv, &mid).alpha_y);
+    // A glTF-style metallic-roughness map: roughness (g) and metallic (b) of one image.
+    const Scene mr = t.load({{"type", "metallic_roughness"},
+                             {"roughness", {{"texture", "colour.png"}, {"channel", "g"}}},
+                             {"metallic", {{"texture", "colour.png"}, {"channel", "b"}}}});
+    const MaterialTextures& mt = *mr.materials[0].textures;
+    EXPECT_EQ(mt.metallic->texture, mt.alpha_x_sq->texture);
+    EXPECT_EQ(mt.metallic->channel, 0);
+    EXPECT_EQ(mt.alpha_x_sq->channel, 1);
+}
+
 TEST(TextureReader, PngDataIsLinearCodesAndColourIsSrgbDecoded) {
     const TextureScene t;
     const Scene s = t.load({{"type", "glint"},

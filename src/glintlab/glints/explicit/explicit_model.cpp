@@ -65,7 +65,7 @@ ExplicitFacetField explicit_field(const GlintDesc& desc, const Footprint& footpr
         f.textures = desc.textures.get();
         if (const auto& density = desc.textures->density) {
             // Generated at the map's largest density, thinned per facet.
-            const double n_max = std::max(1.0, std::ceil(double(density->texture->max_value().x)));
+            const double n_max = std::max(1.0, std::ceil(double(density->max_value())));
             f.log_density = std::log(n_max);
         }
     }

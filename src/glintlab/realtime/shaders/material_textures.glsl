@@ -39,8 +39,17 @@ uniform vec2 u_material_texture_size[6];
 // normal map and the curvature add up per fragment.
 uniform int u_glint_reads_correlation;
 
+// One-value slots whose maps line up share one texture (the loader's
+// pack_scalar_inputs, core/texture_input.h): slot i's value is
+// dot(lookup, u_material_texture_channel[i]) (a one-hot selector of its
+// channel) of the lookup of slot u_material_texture_source[i], the first
+// slot with its texture; only the source slots are looked up. (Selects on
+// uniforms, not an array indexed per fragment: llvmpipe spills such arrays.)
+uniform int u_material_texture_source[6];
+uniform vec4 u_material_texture_channel[6];
+
 // One line: the texture of `slot` over the footprint (a constant slot indexes the sampler array).
-#define MATERIAL_TEXTURE(slot, fp) material_texture_filtered(u_material_texture[slot], u_material_texture_size[slot], u_material_texture_linear[slot], u_material_texture_offset[slot], fp, 0.0f)
+#define MATERIAL_TEXTURE(slot, fp) material_texture_filtered4(u_material_texture[slot], u_material_texture_size[slot], u_material_texture_linear[slot], u_material_texture_offset[slot], fp, 0.0f)
 
 vec3 g_albedo;
 float g_metallic;
@@ -60,10 +69,40 @@ void resolve_material_textures(Footprint fp) {
     g_glint_slope_correlation = 0.0f;
     int mask = u_material_texture_mask;
     bool glint = u_material_type == 4;
+    // The one-value slots' lookups, each reusing an earlier slot's where they
+    // share it (a glint's density and roughness; a metallic-roughness map's
+    // roughness and metallic: never density and metallic).
+    vec4 l0 = vec4(0.0f), l1 = vec4(0.0f), l2 = vec4(0.0f), l5 = vec4(0.0f);
     if ((mask & (1 << MATERIAL_TEXTURE_DENSITY)) != 0)
-        g_glint_log_density = log(max(MATERIAL_TEXTURE(MATERIAL_TEXTURE_DENSITY, fp).x, 1e-30f));
+        l0 = MATERIAL_TEXTURE(MATERIAL_TEXTURE_DENSITY, fp);
     if ((mask & (1 << MATERIAL_TEXTURE_ALPHA_X)) != 0) {
-        float a2 = max(MATERIAL_TEXTURE(MATERIAL_TEXTURE_ALPHA_X, fp).x, 0.0f);
+        if (u_material_texture_source[MATERIAL_TEXTURE_ALPHA_X] == 0)
+            l1 = l0;
+        else
+            l1 = MATERIAL_TEXTURE(MATERIAL_TEXTURE_ALPHA_X, fp);
+    }
+    if ((mask & (1 << MATERIAL_TEXTURE_ALPHA_Y)) != 0) {
+        int source = u_material_texture_source[MATERIAL_TEXTURE_ALPHA_Y];
+        if (source == 0)
+            l2 = l0;
+        else if (source == 1)
+            l2 = l1;
+        else
+            l2 = MATERIAL_TEXTURE(MATERIAL_TEXTURE_ALPHA_Y, fp);
+    }
+    if ((mask & (1 << MATERIAL_TEXTURE_METALLIC)) != 0) {
+        int source = u_material_texture_source[MATERIAL_TEXTURE_METALLIC];
+        if (source == 1)
+            l5 = l1;
+        else if (source == 2)
+            l5 = l2;
+        else
+            l5 = MATERIAL_TEXTURE(MATERIAL_TEXTURE_METALLIC, fp);
+    }
+    if ((mask & (1 << MATERIAL_TEXTURE_DENSITY)) != 0)
+        g_glint_log_density = log(max(dot(l0, u_material_texture_channel[0]), 1e-30f));
+    if ((mask & (1 << MATERIAL_TEXTURE_ALPHA_X)) != 0) {
+        float a2 = max(dot(l1, u_material_texture_channel[1]), 0.0f);
         if (glint)
             g_glint_alpha.x = clamp(sqrt(a2), 1e-3f, 1.0f);  // glint_textures.cpp alpha_from_squared
         else
@@ -76,23 +115,23 @@ void resolve_material_textures(Footprint fp) {
         }
     }
     if ((mask & (1 << MATERIAL_TEXTURE_ALPHA_Y)) != 0) {
-        float a2 = max(MATERIAL_TEXTURE(MATERIAL_TEXTURE_ALPHA_Y, fp).x, 0.0f);
+        float a2 = max(dot(l2, u_material_texture_channel[2]), 0.0f);
         if (glint)
             g_glint_alpha.y = clamp(sqrt(a2), 1e-3f, 1.0f);
         else
             g_alpha.y = sqrt(a2);
     }
     if ((mask & (1 << MATERIAL_TEXTURE_COLOR)) != 0) {
-        vec3 c = MATERIAL_TEXTURE(MATERIAL_TEXTURE_COLOR, fp);
+        vec3 c = MATERIAL_TEXTURE(MATERIAL_TEXTURE_COLOR, fp).rgb;
         if (glint)
             g_glint_color = c;
         else
             g_albedo = c;
     }
     if ((mask & (1 << MATERIAL_TEXTURE_BASE)) != 0)
-        g_glint_base_albedo = MATERIAL_TEXTURE(MATERIAL_TEXTURE_BASE, fp);
+        g_glint_base_albedo = MATERIAL_TEXTURE(MATERIAL_TEXTURE_BASE, fp).rgb;
     if ((mask & (1 << MATERIAL_TEXTURE_METALLIC)) != 0)
-        g_metallic = clamp(MATERIAL_TEXTURE(MATERIAL_TEXTURE_METALLIC, fp).x, 0.0f, 1.0f);
+        g_metallic = clamp(dot(l5, u_material_texture_channel[5]), 0.0f, 1.0f);
 }
 
 #define u_albedo g_albedo
