@@ -389,11 +389,12 @@ int run(int argc, char** argv) {
         const std::string format = r.at("format");
         const int w = r.at("width"), h = r.at("height");
         const std::string data = slurp(dir + "/" + r.at("file").get<std::string>());
-        // Formats: float R/RG/RGBA, and RG32UI (wang2020's quadtree nodes,
+        // Formats: float R/RG/RGB/RGBA, and RG32UI (wang2020's quadtree nodes,
         // raw uint32 pairs: an integer texture, read with texelFetch).
         GLenum internal = GL_RGBA32F, fmt = GL_RGBA, type = GL_FLOAT;
         if (format == "R32F") internal = GL_R32F, fmt = GL_RED;
         if (format == "RG32F") internal = GL_RG32F, fmt = GL_RG;
+        if (format == "RGB32F") internal = GL_RGB32F, fmt = GL_RGB;
         if (format == "RG32UI") internal = GL_RG32UI, fmt = GL_RG_INTEGER, type = GL_UNSIGNED_INT;
         if (r.value("mipmaps", false))
             die(r.at("file").get<std::string>() + ": mipmaps not handled");

@@ -11,6 +11,11 @@
 //     void glint_set_inputs(GlintInputs inputs);  // per-pixel material inputs
 //     vec3 glint_shade(vec3 p, vec3 n_geo, vec3 dpdu, Footprint fp);
 //     vec3 glint_eval(vec3 wo, vec3 wi, Footprint fp);  // f(wo, wi) cos(wi)
+// and, where the model reads the pixel's view differentials
+// (GLINTLAB_GLINT_VIEW_DIFFERENTIALS: chermain2020's geometric glint
+// anti-aliasing),
+//     void glint_view_derivatives(vec3 p, vec3 n);  // call in uniform control flow
+//     void glint_set_view_derivatives(vec3 dwo_dx, vec3 dwo_dy, vec3 dn_dx, vec3 dn_dy);
 // The exporter defines GLINTLAB_MATERIAL_TEXTURES ahead of the glue: the
 // names u_glint_alpha and u_glint_log_density the glue reads are then
 // per-fragment values (glint_uniforms.glsl), set by glint_set_inputs.
@@ -199,6 +204,33 @@ GlintMaterial glint_material() {
     return m;
 }
 
+#ifdef GLINTLAB_GLINT_VIEW_DIFFERENTIALS
+// The change per pixel step (x right, y down the image, as the footprint's)
+// of the unit view direction towards u_eye and of the unit shading normal,
+// in world space; glint_shade turns them into its frame (g_glint_view).
+// Zero (a host that never sets them): no sweep, the model reads the pixel
+// centre.
+vec3 g_glint_dwo_dx = vec3(0.0f);
+vec3 g_glint_dwo_dy = vec3(0.0f);
+vec3 g_glint_dn_dx = vec3(0.0f);
+vec3 g_glint_dn_dy = vec3(0.0f);
+
+void glint_set_view_derivatives(vec3 dwo_dx, vec3 dwo_dy, vec3 dn_dx, vec3 dn_dy) {
+    g_glint_dwo_dx = dwo_dx;
+    g_glint_dwo_dy = dwo_dy;
+    g_glint_dn_dx = dn_dx;
+    g_glint_dn_dy = dn_dy;
+}
+
+// The same from the screen-space derivatives of the world position p and
+// the unit shading normal n, as the forward pass takes them. Derivatives:
+// call it at the top of main, in uniform control flow.
+void glint_view_derivatives(vec3 p, vec3 n) {
+    vec3 wo = normalize(u_eye - p);
+    glint_set_view_derivatives(dFdxFine(wo), -dFdyFine(wo), dFdxFine(n), -dFdyFine(n));
+}
+#endif
+
 // The pixel footprint in uv (ARCHITECTURE.md §3): uv derivatives per pixel
 // step, x to the right and y DOWN the image (hence -dFdy in OpenGL window
 // coordinates; fine derivatives as the renderer, dFdx/dFdy in GLSL ES). Derivatives are undefined
@@ -252,6 +284,18 @@ vec3 glint_shade(vec3 p, vec3 n, vec3 dpdu, Footprint fp) {
         tilt_frame_to_slope(mean, t, b, n);
     }
     vec3 wo = vec3(dot(wo_world, t), dot(wo_world, b), dot(wo_world, n));
+#ifdef GLINTLAB_GLINT_VIEW_DIFFERENTIALS
+    // In the final frame, the normal's change negated with the two-sided
+    // flip (the forward pass's g_glint_view, render/surface_bsdf.cpp
+    // view_differentials).
+    g_glint_view.wo = wo;
+    vec3 dx = g_glint_dwo_dx, dy = g_glint_dwo_dy;
+    g_glint_view.wo_dx = vec3(dot(dx, t), dot(dx, b), dot(dx, n));
+    g_glint_view.wo_dy = vec3(dot(dy, t), dot(dy, b), dot(dy, n));
+    float flip = back ? -1.0f : 1.0f;
+    g_glint_view.n_dx = flip * vec2(dot(g_glint_dn_dx, t), dot(g_glint_dn_dx, b));
+    g_glint_view.n_dy = flip * vec2(dot(g_glint_dn_dy, t), dot(g_glint_dn_dy, b));
+#endif
     vec3 radiance = vec3(0.0f);
     // The point lights, then the directional lights, in one do-while loop:
     // SIMD back ends that run a block of pixels in lock-step (llvmpipe,
@@ -323,6 +367,9 @@ void main() {
     Footprint fp = glint_footprint(v_uv);
     vec3 n = normalize(v_normal);
     vec3 curvature = glint_curvature_slope_covariance(n, v_dpdu);
+#ifdef GLINTLAB_GLINT_VIEW_DIFFERENTIALS
+    glint_view_derivatives(v_position, n);
+#endif
     GlintInputs inputs = glint_inputs_from_textures(fp);
     if (u_glint_curvature != 0) {
         inputs.slope_variance += vec2(curvature.x, curvature.y);

@@ -541,12 +541,15 @@ std::string export_fragment_glsl(GlintModelId model, unsigned program_options,
     // u_normal_map_widens_glint).
     // GLINTLAB_GLINT_SLOPE_CORRELATION: the model shears its NDF by the
     // slopes' correlation (a normal map's s_x s_y input, the curvature's Σ_xy).
+    // Then the model's own flags (GlintModelExport::defines).
+    std::string model_defines;
+    for (const std::string& d : m->defines) model_defines += "#define " + d + " 1\n";
     const std::string root = fmt::format(
-        "#define GLINTLAB_MATERIAL_TEXTURES 1\n{}{}#include \"{}\"\n#include \"{}\"\n",
+        "#define GLINTLAB_MATERIAL_TEXTURES 1\n{}{}{}#include \"{}\"\n#include \"{}\"\n",
         glint_model(model).textured_roughness ? "#define GLINTLAB_GLINT_PER_PIXEL_ALPHA 1\n" : "",
         glint_model(model).reads_slope_correlation ? "#define GLINTLAB_GLINT_SLOPE_CORRELATION 1\n"
                                                    : "",
-        glue, std::string(kEntry));
+        model_defines, glue, std::string(kEntry));
     const AssembledShader a = assemble_shader(root, true, "\n");
     std::string body = resolve_preprocessor(a.text);
     std::string prelude;

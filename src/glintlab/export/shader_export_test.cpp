@@ -131,6 +131,7 @@ TEST_P(ExportEach, EveryFileCompilesStandaloneAndTheManifestMatches) {
         const std::string format = r.at("format");
         const uint64_t channels = format == "R32F"                          ? 1
                                   : format == "RG32F" || format == "RG32UI" ? 2
+                                  : format == "RGB32F"                      ? 3
                                                                             : 4;
         const uint64_t layers = r.contains("layers") ? r.at("layers").get<uint64_t>() : 1;
         const uint64_t expected =

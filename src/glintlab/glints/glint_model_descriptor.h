@@ -116,6 +116,12 @@ struct GlintModelExport {
     std::string variant;
     std::string variant_glue;
     std::vector<std::string> compute;  // per-environment compute passes (embedded paths)
+    // Flags the export defines (`#define NAME 1`) ahead of the glue. E.g.
+    // GLINTLAB_GLINT_VIEW_DIFFERENTIALS: the glue reads the pixel's view
+    // differentials (g_glint_view; chermain2020's geometric glint
+    // anti-aliasing), which the exported main() computes and a host with its
+    // own fragment stage passes (glint_set_view_derivatives).
+    std::vector<std::string> defines;
     // Optional (export/model_export.h), defined beside the model
     // (<model>/<model>_export.cpp) and named with GLINTLAB_EXPORT_HOOK: the
     // exported material's resources (textures and the uniforms that go with

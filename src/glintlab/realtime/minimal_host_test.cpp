@@ -294,6 +294,60 @@ TEST(MinimalHostInputs, NormalMapMatchesTheRenderer) {
     }
 }
 
+// chermain2020's geometric glint anti-aliasing in the export: the host's
+// main() takes the view derivatives with dFdx/dFdy as the forward pass does
+// and reads the running integrals of the export's one dictionary table;
+// with the filter on (the widest
+// kernel, 4, so that the plane's sweep, from the view's change alone, is
+// well above the dictionary's sample spacing) it draws what the OpenGL
+// renderer draws, within the normal-map test's bounds (the same shader code
+// on the same driver), and the renderer's unfiltered image lies measurably
+// further from it.
+TEST(MinimalHostInputs, AntialiasedChermain2020MatchesTheRenderer) {
+    GLINTLAB_REQUIRE_GL();
+    testing::ScratchDir dir;
+    nlohmann::json scene_json = plane25_scene("chermain2020");
+    scene_json["materials"][0]["chermain2020"] = {{"antialiasing", "chermain2021"},
+                                                  {"antialiasing_kernel", 4}};
+    std::optional<HostAndRenderer> both =
+        draw_both("chermain2020", scene_json, scene_json, dir, "");
+    ASSERT_TRUE(both);
+    // The manifest lists the one table (RGB32F, 3 floats a texel: the pairs
+    // and the running integral) and the kernel the host sets.
+    const nlohmann::json manifest =
+        nlohmann::json::parse(std::ifstream(dir / "export" / "chermain2020.glsl.manifest.json"));
+    int filters = 0;
+    for (const auto& r : manifest.at("resources"))
+        if (r.at("uniform") == "chermain2020_dictionary") {
+            ++filters;
+            EXPECT_EQ(r.at("format"), "RGB32F");
+            EXPECT_EQ(std::filesystem::file_size(dir / "export" / r.at("file").get<std::string>()),
+                      r.at("width").get<uint64_t>() * r.at("height").get<uint64_t>() * 12);
+        }
+    EXPECT_EQ(filters, 1);
+    bool kernel = false;
+    for (const auto& u : manifest.at("derived_uniforms"))
+        kernel =
+            kernel || (u.at("uniform") == "u_chermain2020_ggaa_kernel" && u.at("value") == 4.0);
+    EXPECT_TRUE(kernel) << manifest.at("derived_uniforms").dump();
+    double mean_b = 0.0;
+    const ImageAgreement a = agreement_at_unit_mean(both->host, both->gpu, &mean_b);
+    ASSERT_GT(mean_b, 1e-4);
+    RecordProperty("mean_rel", std::to_string(a.mean_relative_error));
+    RecordProperty("smoothed", std::to_string(a.smoothed_relative_l1));
+    EXPECT_LT(a.mean_relative_error, 0.01);
+    EXPECT_LT(a.smoothed_relative_l1, 0.02);
+    EXPECT_LT(a.mismatch_fraction, 0.01);
+    const nlohmann::json plain = plane25_scene("chermain2020");
+    const Scene scene = parse_scene(plain, dir / "plain.json");
+    GpuRenderer renderer(scene);
+    renderer.render(scene);
+    const ImageAgreement unfiltered =
+        agreement_at_unit_mean(both->host, renderer.read_image(), &mean_b);
+    RecordProperty("unfiltered_smoothed", std::to_string(unfiltered.smoothed_relative_l1));
+    EXPECT_GT(unfiltered.smoothed_relative_l1, 2.0 * a.smoothed_relative_l1 + 0.005);
+}
+
 INSTANTIATE_TEST_SUITE_P(Models, MinimalHost,
                          ::testing::Values("deliot2023", "smooth", "zirr2016", "chermain2020",
                                            "wang2020", "kneiphof2025"));

@@ -45,9 +45,9 @@ float chermain2020_dict_fetch(int row, int bin) {
 #endif
 
 // Geometric glint anti-aliasing reads the table with its running integral
-// (chermain2020_marginal_box): the C++ back end, and the forward pass, which
-// knows the half vector's sweep over the pixel (GLINTLAB_GLINT_VIEW_DIFFERENTIALS).
-// Elsewhere (`glintlab export`) the marginals are read unfiltered.
+// (chermain2020_marginal_box): the C++ back end, and the GPU passes that
+// know the half vector's sweep over the pixel (GLINTLAB_GLINT_VIEW_DIFFERENTIALS:
+// the forward pass and `glintlab export`).
 #ifdef GLINTLAB_CPP
 #define GLINTLAB_CHERMAIN2020_FILTERED 1
 #else
@@ -55,12 +55,20 @@ float chermain2020_dict_fetch(int row, int bin) {
 #define GLINTLAB_CHERMAIN2020_FILTERED 1
 // RGB32F texture of the dictionary's shape: texel `bin` of a row holds the
 // samples bin and bin + 1 and the row's integral from 0 to the sample bin
-// (dictionary.h chermain2020_dictionary_filter_texels). Set by the forward
-// pass's glue (chermain2020_gpu.glsl).
+// (dictionary.h chermain2020_dictionary_filter_texels).
+#ifdef GLINTLAB_CHERMAIN2020_ONE_TABLE
+// `glintlab export`: chermain2020_dictionary is this table (its .rg are the
+// pairs): one sampler and one resource, whether the filter is on or not.
+vec3 chermain2020_dict_fetch_filter(int row, int bin) {
+    return texelFetch(chermain2020_dictionary, ivec2(bin, row), 0).rgb;
+}
+#else
+// The forward pass binds it only where the filter is on (chermain2020_gpu.cpp).
 uniform sampler2D chermain2020_dictionary_filter;
 vec3 chermain2020_dict_fetch_filter(int row, int bin) {
     return texelFetch(chermain2020_dictionary_filter, ivec2(bin, row), 0).rgb;
 }
+#endif
 #endif
 #endif
 

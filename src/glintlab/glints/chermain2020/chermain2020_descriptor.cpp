@@ -64,7 +64,8 @@ GlintModelDescriptor chermain2020_descriptor() {
                     "Procedural Physically based BRDF for Real-Time Rendering of Glints"}};
     d.set_gpu_hooks(GLINTLAB_GPU_HOOKS(chermain2020_gpu_hooks));
     d.set_export("glintlab/glints/chermain2020/chermain2020_gpu.glsl",
-                 GLINTLAB_EXPORT_HOOK(chermain2020_export_material));
+                 GLINTLAB_EXPORT_HOOK(chermain2020_export_material))
+        .defines = {"GLINTLAB_GLINT_VIEW_DIFFERENTIALS", "GLINTLAB_CHERMAIN2020_ONE_TABLE"};
     d.params = {
         gp::number("relative_area", &P::relative_area, 0.0, 1.0, "",
                    "beta (004 §7.1): fraction of cells that carry facets"),
@@ -81,8 +82,8 @@ GlintModelDescriptor chermain2020_descriptor() {
                    "(Chermain et al. 2021, Eq. 18), or is dropped (004)"),
         gp::choice("antialiasing", &P::antialiasing, {{"chermain2021", true}, {"none", false}},
                    "geometric glint anti-aliasing: each cell's marginals box-filtered over the "
-                   "half vector's slope sweep across the pixel (Chermain et al. 2021, §4; CPU "
-                   "and forward pass), or read at the pixel centre (004)"),
+                   "half vector's slope sweep across the pixel (Chermain et al. 2021, §4), or "
+                   "read at the pixel centre (004)"),
         // Their KernelSize, a user scale of the sweep: below 1/4 the filter is
         // narrower than the sweep's quarter, above 4 it blurs glints of
         // neighbouring pixels' half vectors into this one.

@@ -45,7 +45,7 @@ class State final : public GpuModelState {
         glProgramUniform3fv(program, loc("u_chermain2020_colours"),
                             static_cast<GLsizei>(p.colour_table.size()), &p.colour_table[0].x);
         glProgramUniform1i(program, loc("chermain2020_dictionary"), kDictionaryUnit);
-        glProgramUniform1f(program, loc("u_chermain2020_antialiasing_kernel"),
+        glProgramUniform1f(program, loc("u_chermain2020_ggaa_kernel"),
                            p.antialiasing ? p.antialiasing_kernel : 0.0f);
         if (p.antialiasing) {
             // The filter's texels hold the pairs too (.rg): one texture serves

@@ -26,9 +26,10 @@ uniform bool u_chermain2020_correlated;
 uniform vec3 u_chermain2020_colours[CHERMAIN2020_MAX_COLOURS];
 #ifdef GLINTLAB_GLINT_VIEW_DIFFERENTIALS
 #include "glintlab/core/half_slope_differentials.glsl"
-// "antialiasing": "chermain2021": the kernel (> 0) of the geometric glint
-// anti-aliasing over the pass's view differentials; 0: unfiltered.
-uniform float u_chermain2020_antialiasing_kernel;
+// "antialiasing": "chermain2021": the kernel (> 0, "antialiasing_kernel") of
+// the geometric glint anti-aliasing over the pass's view differentials;
+// 0 ("none"): unfiltered. The filter reads chermain2020_dictionary_filter.
+uniform float u_chermain2020_ggaa_kernel;
 #endif
 vec3 glint_ndf(vec3 h, Footprint fp) {
     Chermain2020Dict d;
@@ -43,11 +44,11 @@ vec3 glint_ndf(vec3 h, Footprint fp) {
     float rho = u_chermain2020_correlated ? g_glint_slope_correlation : 0.0f;
     Chermain2020Filter ggaa = chermain2020_unfiltered();
 #ifdef GLINTLAB_GLINT_VIEW_DIFFERENTIALS
-    if (u_chermain2020_antialiasing_kernel > 0.0f) {
+    if (u_chermain2020_ggaa_kernel > 0.0f) {
         vec4 sweep = half_slope_differentials(h, g_glint_view);
         ggaa.slope_dx = vec2(sweep.x, sweep.y);
         ggaa.slope_dy = vec2(sweep.z, sweep.w);
-        ggaa.kernel = u_chermain2020_antialiasing_kernel;
+        ggaa.kernel = u_chermain2020_ggaa_kernel;
     }
 #endif
     return chermain2020_ndf_rgb(h, fp, d, u_glint_alpha.x, u_glint_alpha.y, rho, u_glint_log_density,
