@@ -285,16 +285,9 @@ vec3 glint_shade(vec3 p, vec3 n, vec3 dpdu, Footprint fp) {
     }
     vec3 wo = vec3(dot(wo_world, t), dot(wo_world, b), dot(wo_world, n));
 #ifdef GLINTLAB_GLINT_VIEW_DIFFERENTIALS
-    // In the final frame, the normal's change negated with the two-sided
-    // flip (the forward pass's g_glint_view, render/surface_bsdf.cpp
-    // view_differentials).
-    g_glint_view.wo = wo;
-    vec3 dx = g_glint_dwo_dx, dy = g_glint_dwo_dy;
-    g_glint_view.wo_dx = vec3(dot(dx, t), dot(dx, b), dot(dx, n));
-    g_glint_view.wo_dy = vec3(dot(dy, t), dot(dy, b), dot(dy, n));
-    float flip = back ? -1.0f : 1.0f;
-    g_glint_view.n_dx = flip * vec2(dot(g_glint_dn_dx, t), dot(g_glint_dn_dx, b));
-    g_glint_view.n_dy = flip * vec2(dot(g_glint_dn_dy, t), dot(g_glint_dn_dy, b));
+    // In the final frame, as the forward pass's.
+    g_glint_view = view_differentials_in_frame(wo, g_glint_dwo_dx, g_glint_dwo_dy, g_glint_dn_dx,
+                                               g_glint_dn_dy, t, b, n, back ? -1.0f : 1.0f);
 #endif
     vec3 radiance = vec3(0.0f);
     // The point lights, then the directional lights, in one do-while loop:

@@ -413,14 +413,8 @@ void main() {
             horizon = vec3(dot(ng_side, t), dot(ng_side, b), dot(ng_side, n));
         }
 #ifdef GLINTLAB_GLINT_VIEW_DIFFERENTIALS
-        // render/surface_bsdf.cpp view_differentials: in the final frame, the
-        // normal's change negated with the two-sided flip.
-        g_glint_view.wo = wo;
-        g_glint_view.wo_dx = vec3(dot(dwodx, t), dot(dwodx, b), dot(dwodx, n));
-        g_glint_view.wo_dy = vec3(dot(dwody, t), dot(dwody, b), dot(dwody, n));
-        float flip = back_side ? -1.0f : 1.0f;
-        g_glint_view.n_dx = flip * vec2(dot(dndx, t), dot(dndx, b));
-        g_glint_view.n_dy = flip * vec2(dot(dndy, t), dot(dndy, b));
+        g_glint_view = view_differentials_in_frame(wo, dwodx, dwody, dndx, dndy, t, b, n,
+                                                   back_side ? -1.0f : 1.0f);
 #endif
 #if GLINTLAB_POINT_LIGHTS > 0
         for (int i = 0; i < GLINTLAB_POINT_LIGHTS; ++i) {
