@@ -28,7 +28,7 @@
 #include "glintlab/core/image.h"
 #include "glintlab/core/shader_assembly.h"
 #include "glintlab/core/shader_sources.h"
-#include "glintlab/export/model_export.h"
+#include "glintlab/glints/model_export.h"
 #include "glintlab/glints/glint_bxdf.h"
 #include "glintlab/glints/glint_model_descriptor.h"
 #include "glintlab/glints/registry.h"

@@ -122,7 +122,7 @@ struct GlintModelExport {
     // anti-aliasing), which the exported main() computes and a host with its
     // own fragment stage passes (glint_set_view_derivatives).
     std::vector<std::string> defines;
-    // Optional (export/model_export.h), defined beside the model
+    // Optional (model_export.h), defined beside the model
     // (<model>/<model>_export.cpp) and named with GLINTLAB_EXPORT_HOOK: the
     // exported material's resources (textures and the uniforms that go with
     // them) and the uniforms the host derives from its parameters.

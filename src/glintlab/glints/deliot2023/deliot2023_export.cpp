@@ -1,6 +1,6 @@
 // `glintlab export` of deliot2023 (its descriptor's GlintModelExport): the
 // noise table of the noise_texture variant.
-#include "glintlab/export/model_export.h"
+#include "glintlab/glints/model_export.h"
 #include "glintlab/glints/deliot2023/deliot2023.h"
 
 namespace glintlab {

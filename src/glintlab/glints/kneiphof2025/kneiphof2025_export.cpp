@@ -4,7 +4,7 @@
 // parameters (kneiphof2025_gpu.cpp computes the same for the renderer).
 #include <cmath>
 
-#include "glintlab/export/model_export.h"
+#include "glintlab/glints/model_export.h"
 #include "glintlab/glints/kneiphof2025/kneiphof2025.h"
 #include "glintlab/glints/kneiphof2025/kneiphof2025_prefilter.h"
 #include "glintlab/scene/environment.h"

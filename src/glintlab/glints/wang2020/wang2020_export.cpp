@@ -7,7 +7,7 @@
 
 #include <fmt/format.h>
 
-#include "glintlab/export/model_export.h"
+#include "glintlab/glints/model_export.h"
 #include "glintlab/glints/wang2020/wang2020_model.h"
 #include "glintlab/glints/wang2020/wang2020_shading.h"
 #include "glintlab/scene/environment.h"
