@@ -64,19 +64,19 @@ struct TextureInput {
         return grey_or_rgb(texture->bilinear(0, transform.apply(uv)));
     }
     // The input's own value in a lookup4 of its texture.
-    float scalar(glm::vec4 v) const { return v[channel < 0 ? 0 : channel]; }
+    float scalar(glm::vec4 v) const { return v[value_channel()]; }
     // The mean of the whole map (the coarsest level's texel) and its largest
     // texel, of a one-value input.
-    float mean() const {
-        return texture->texel(texture->level_count() - 1, 0, 0, channel < 0 ? 0 : channel);
-    }
-    float max_value() const { return texture->max_value()[channel < 0 ? 0 : channel]; }
+    float mean() const { return texture->texel(texture->level_count() - 1, 0, 0, value_channel()); }
+    float max_value() const { return texture->max_value()[value_channel()]; }
     // True when one lookup4 of this input also gives `other`'s value.
     bool shares_lookup(const TextureInput& other) const {
         return texture == other.texture && transform == other.transform;
     }
 
   private:
+    // The channel a one-value input reads: its own, or the first of an unpacked texture.
+    int value_channel() const { return channel < 0 ? 0 : channel; }
     glm::vec3 grey_or_rgb(glm::vec4 v) const {
         if (channel >= 0) return glm::vec3(v[channel]);
         return texture->channels() == 1 ? glm::vec3(v.x) : glm::vec3(v);
