@@ -1,8 +1,8 @@
 #include "glintlab/glints/glint_bxdf.h"
 
+#include "glintlab/glints/glint_desc.h"
 #include "glintlab/glints/model_list.h"
 #include "glintlab/microfacet/microfacet.h"
-#include "glintlab/scene/scene.h"
 
 // The glint material's shading, shared with the GPU forward pass.
 GLINTLAB_SHADER_FUNCTIONS_BEGIN

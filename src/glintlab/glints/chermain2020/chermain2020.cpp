@@ -11,7 +11,7 @@
 #include "glintlab/core/error.h"
 #include "glintlab/core/glsl.h"
 #include "glintlab/glints/chermain2020/dictionary.h"
-#include "glintlab/scene/scene.h"
+#include "glintlab/glints/glint_desc.h"
 
 // The only translation unit that compiles chermain2020.glsl as C++. Its
 // dictionary fetch reads the in-memory default dictionary (ARCHITECTURE.md

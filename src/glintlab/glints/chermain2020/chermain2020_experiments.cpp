@@ -11,8 +11,8 @@
 #include "glintlab/glints/chermain2020/chermain2020.h"
 #include "glintlab/glints/chermain2020/dictionary.h"
 #include "glintlab/glints/glint_bxdf.h"
+#include "glintlab/glints/glint_desc.h"
 #include "glintlab/microfacet/microfacet.h"
-#include "glintlab/scene/scene.h"
 
 namespace glintlab {
 namespace {

@@ -8,8 +8,8 @@
 #include "glintlab/core/error.h"
 #include "glintlab/gl/uniform_cache.h"
 #include "glintlab/glints/chermain2020/dictionary.h"
+#include "glintlab/glints/glint_desc.h"
 #include "glintlab/glints/gpu_model_hooks.h"
-#include "glintlab/scene/scene.h"
 
 namespace glintlab {
 namespace {

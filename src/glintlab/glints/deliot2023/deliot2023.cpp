@@ -3,7 +3,7 @@
 #include <variant>
 
 #include "glintlab/core/glsl.h"
-#include "glintlab/scene/scene.h"
+#include "glintlab/glints/glint_desc.h"
 
 // The only translation unit that compiles deliot2023.glsl (and the shared
 // files it includes) as C++.

@@ -6,7 +6,7 @@
 
 #include "glintlab/gl/uniform_cache.h"
 #include "glintlab/glints/deliot2023/deliot2023.h"
-#include "glintlab/scene/scene.h"
+#include "glintlab/glints/glint_desc.h"
 
 namespace glintlab {
 namespace {

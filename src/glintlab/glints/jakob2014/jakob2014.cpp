@@ -7,8 +7,8 @@
 
 #include "glintlab/core/error.h"
 #include "glintlab/core/hash.h"
+#include "glintlab/glints/glint_desc.h"
 #include "glintlab/microfacet/microfacet.h"
-#include "glintlab/scene/scene.h"
 
 namespace glintlab {
 namespace jakob2014 {

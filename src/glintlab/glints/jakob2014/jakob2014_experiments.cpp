@@ -10,10 +10,10 @@
 #include "glintlab/core/error.h"
 #include "glintlab/core/rng.h"
 #include "glintlab/glints/explicit/explicit.h"
+#include "glintlab/glints/glint_desc.h"
 #include "glintlab/glints/jakob2014/jakob2014.h"
 #include "glintlab/glints/registry.h"
 #include "glintlab/microfacet/microfacet.h"
-#include "glintlab/scene/scene.h"
 
 namespace glintlab::jakob2014 {
 namespace {

@@ -7,12 +7,12 @@
 #include <fmt/format.h>
 
 #include "glintlab/core/rng.h"
+#include "glintlab/glints/glint_desc.h"
 #include "glintlab/glints/jakob2014/jakob2014.h"
 #include "glintlab/glints/jakob2014/jakob2014_experiments.h"
 #include "glintlab/glints/registry.h"
 #include "glintlab/glints/validation_suites.h"
 #include "glintlab/microfacet/microfacet.h"
-#include "glintlab/scene/scene.h"
 
 namespace glintlab {
 namespace {

@@ -11,11 +11,11 @@
 #include "glintlab/core/glsl.h"
 #include "glintlab/core/rng.h"
 #include "glintlab/glints/explicit/explicit.h"
+#include "glintlab/glints/glint_desc.h"
 #include "glintlab/glints/kneiphof2025/kneiphof2025.h"
 #include "glintlab/glints/kneiphof2025/kneiphof2025_prefilter.h"
 #include "glintlab/microfacet/microfacet.h"
 #include "glintlab/scene/environment.h"
-#include "glintlab/scene/scene.h"
 
 // This translation unit's own copy of deliot2023.glsl: the gate experiment
 // runs the full grid with both the fixed and the published law.
@@ -243,10 +243,12 @@ GateBias kneiphof2025_gate_bias(float p, float n_expected, int footprints, uint3
         glm::vec2 a(0.0f), b(0.0f);
         for (int k = 0; k < 4; ++k) {
             if (g.weight[k] <= 0.0f) continue;
-            a += shader::deliot2023_grid_counts(shader::deliot2023_grid_id(g, k), g.weight[k],
-                                                fp.uv, slope, p, log_density, sd, 0.0f, false, false);
-            b += shader::deliot2023_grid_counts(shader::deliot2023_grid_id(g, k), g.weight[k],
-                                                fp.uv, slope, p, log_density, sd, 0.0f, true, false);
+            a +=
+                shader::deliot2023_grid_counts(shader::deliot2023_grid_id(g, k), g.weight[k], fp.uv,
+                                               slope, p, log_density, sd, 0.0f, false, false);
+            b +=
+                shader::deliot2023_grid_counts(shader::deliot2023_grid_id(g, k), g.weight[k], fp.uv,
+                                               slope, p, log_density, sd, 0.0f, true, false);
         }
         fixed += a.y > 0.0f ? a.x / (a.y * p) : 0.0f;
         original += b.y > 0.0f ? b.x / (b.y * p) : 0.0f;

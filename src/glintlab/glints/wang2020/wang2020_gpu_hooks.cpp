@@ -3,11 +3,11 @@
 #include <memory>
 #include <variant>
 
+#include "glintlab/glints/glint_desc.h"
 #include "glintlab/glints/gpu_model_hooks.h"
 #include "glintlab/glints/wang2020/wang2020_gpu.h"
 #include "glintlab/glints/wang2020/wang2020_gpu_blur.h"
 #include "glintlab/glints/wang2020/wang2020_model.h"
-#include "glintlab/scene/scene.h"
 
 namespace glintlab {
 namespace {

@@ -3,7 +3,7 @@
 #include <variant>
 
 #include "glintlab/core/glsl.h"
-#include "glintlab/scene/scene.h"
+#include "glintlab/glints/glint_desc.h"
 
 // The only translation unit that compiles zirr2016.glsl as C++.
 GLINTLAB_SHADER_FUNCTIONS_BEGIN

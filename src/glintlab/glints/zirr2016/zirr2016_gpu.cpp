@@ -5,8 +5,8 @@
 #include <epoxy/gl.h>
 
 #include "glintlab/gl/uniform_cache.h"
+#include "glintlab/glints/glint_desc.h"
 #include "glintlab/glints/gpu_model_hooks.h"
-#include "glintlab/scene/scene.h"
 
 namespace glintlab {
 namespace {
