@@ -56,8 +56,8 @@ void read_roughness(JsonObject& o, double min, float* ax, float* ay) {
 
 // "roughness" where it may be a texture: a number, [αx, αy] (each a number
 // or a texture form) or one texture form (isotropic). Textures hold α²
-// (TextureParameter::Filtered::Square), clamped below to `min` with a
-// warning (an 8-bit map's 0).
+// (TextureParameter::Filtered::Square); values in [0, min) are clamped to
+// `min` with a warning (an 8-bit map's 0).
 void read_roughness_or_textures(JsonObject& o, double min, float* ax, float* ay,
                                 std::shared_ptr<const TextureInput>* tx,
                                 std::shared_ptr<const TextureInput>* ty, TextureFileCache& files) {

@@ -149,7 +149,7 @@ std::shared_ptr<const TextureInput> read_texture_block(JsonObject& b, const Text
             const double linear = offset + scale[c] * double(values[c]);
             double v = power == 2 ? linear * linear : linear;
             if (!(v >= p.min && v <= p.max)) {
-                if (p.clamp_below && v < p.min) {
+                if (p.clamp_below && v < p.min && v >= 0.0) {
                     v = p.min;
                     ++clamped;
                 } else {

@@ -18,8 +18,9 @@ namespace glintlab {
 struct TextureParameter {
     bool colour = false;          // RGB (albedo, tint); else one value a texel
     double min = 0.0, max = 1.0;  // the documented range of the parameter's value
-    // Values below `min` are clamped to it with one warning that counts them
-    // (a roughness of 0 in an 8-bit map); otherwise outside is an error.
+    // Values in [0, min) are clamped to `min` with one warning that counts
+    // them (a roughness of 0 in an 8-bit map); a negative value is no such
+    // convention, so it is an error, as is any other value outside.
     bool clamp_below = false;
     // The quantity the mip chain and the footprint filter average, of the
     // value v: v itself, v² (a roughness α: its slope variance is what a

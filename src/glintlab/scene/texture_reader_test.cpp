@@ -238,6 +238,13 @@ TEST(TextureReader, RoughnessBelowTheRangeIsClampedWithAWarning) {
     EXPECT_NE(warning.find("4 texel values below 0.001 clamped"), std::string::npos) << warning;
     EXPECT_NEAR(resolve_glint_textures(s.materials[0].glint, {0.5f, 0.5f}, nullptr).alpha_x, 1e-3f,
                 1e-7f);
+    // A negative roughness is no 8-bit map's 0: an error, not a clamp.
+    const std::string negative =
+        t.error({{"type", "glint"}, {"roughness", {{"texture", "black.png"}, {"offset", -0.5}}}});
+    EXPECT_NE(negative.find("/materials/0/roughness"), std::string::npos) << negative;
+    EXPECT_NE(negative.find("maps to -0.5"), std::string::npos) << negative;
+    EXPECT_NE(negative.find("outside the parameter's range [0.001, 1]"), std::string::npos)
+        << negative;
 }
 
 // The viewer's model switcher: a model that cannot read a texture takes the
