@@ -16,9 +16,11 @@ import sys
 # The runtime library's arrows (docs/ARCHITECTURE.md).
 RUNTIME = {
     "realtime": {"glints", "gl", "scene", "microfacet", "core"},
-    "export": {"glints", "scene", "core"},
+    "export": {"loader", "glints", "scene", "core"},
     "render": {"glints", "scene", "microfacet", "core"},
+    "loader": {"glints", "scene", "microfacet", "core"},
     "glints": {"gl", "scene", "counting", "microfacet", "core"},
+    # scene/ reaches glints/ only for the material description (below).
     "scene": {"glints", "microfacet", "core"},
     "counting": {"microfacet", "core"},
     "microfacet": {"core"},
@@ -28,16 +30,25 @@ RUNTIME = {
 # The research library's: its own folders, and the research files of the
 # runtime folders (experiments and validation suites), which also reach validate/.
 RESEARCH = {
-    "bench": {"realtime", "gl", "render", "glints", "scene", "core"},
-    "compare": {"realtime", "gl", "render", "glints", "scene", "core", "validate"},
-    "validate": {"glints", "scene", "core"},
-    "fuzz": {"scene", "core"},
+    "bench": {"realtime", "gl", "render", "loader", "glints", "scene", "core"},
+    "compare": {"realtime", "gl", "render", "loader", "glints", "scene", "core", "validate"},
+    "validate": {"loader", "glints", "scene", "core"},
+    "fuzz": {"loader", "scene", "core"},
 }
 RESEARCH_FILE = re.compile(
     r"_experiments\.(cpp|h)$|/validate_[a-z0-9_]*\.(cpp|h)$|/validation_suites\.(cpp|h)$"
     r"|/counting/(lod_blend_experiment|pow_accuracy|robustness)\.cpp$")
 LEFT_OUT = re.compile(r"_test\.cpp$|_test_util\.h$|_bench\.cpp$")
-INCLUDE = re.compile(r'^\s*#\s*include\s+"glintlab/([a-z0-9_]+)/', re.M)
+INCLUDE = re.compile(r'^\s*#\s*include\s+"glintlab/(([a-z0-9_]+)/[^"]*)"', re.M)
+# The material description: the glint material (glint_desc.h), the list of
+# models and each model's parameter struct (in its own folder, one model one
+# folder). It is the one part of glints/ below scene/: scene/ includes it
+# (a material holds a GlintDesc), it includes only core/, microfacet/ and
+# itself, and the rest of glints/ sits above scene/.
+DESCRIPTION = re.compile(
+    r"^glints/(glint_desc|model_list|model_params|model_headers)\.h$"
+    r"|^glints/([a-z0-9]+)/\2_params\.h$")
+DESCRIPTION_ARROWS = {"core", "microfacet"}
 
 
 def allowed(folder: str, rel: str) -> set:
@@ -68,10 +79,20 @@ def main() -> int:
             continue
         files += 1
         ok = allowed(folder, rel)
-        for target in INCLUDE.findall(path.read_text(encoding="utf-8")):
+        described = DESCRIPTION.search(rel)
+        for path_included, target in INCLUDE.findall(path.read_text(encoding="utf-8")):
+            if described:
+                if target not in DESCRIPTION_ARROWS and not DESCRIPTION.search(path_included):
+                    against.append(f"{rel} (the material description) includes {path_included} "
+                                   f"(allowed: core, microfacet and the description itself)")
+                continue
             if target not in ok:
                 against.append(f"{rel} includes {target}/ (allowed from {folder}/: "
                                f"{', '.join(sorted(ok - {folder})) or 'nothing'})")
+            elif folder == "scene" and target == "glints" and not DESCRIPTION.search(path_included):
+                against.append(f"{rel} includes {path_included}: scene/ reaches glints/ only for "
+                               f"the material description (glint_desc.h, model_list.h, "
+                               f"model_params.h, model_headers.h, <model>/<model>_params.h)")
     for line in against:
         print(line)
     if against:

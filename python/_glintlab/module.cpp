@@ -18,10 +18,10 @@
 #include "glintlab/export/shader_export.h"
 #include "glintlab/glints/glint_bxdf.h"
 #include "glintlab/glints/registry.h"
+#include "glintlab/loader/scene_edits.h"
+#include "glintlab/loader/scene_loader.h"
 #include "glintlab/render/render_memory.h"
 #include "glintlab/render/renderer.h"
-#include "glintlab/scene/scene_edits.h"
-#include "glintlab/scene/scene_loader.h"
 #if GLINTLAB_WITH_GL
 #include "glintlab/realtime/gpu_renderer.h"
 #endif

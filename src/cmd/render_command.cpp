@@ -20,8 +20,8 @@
 #if GLINTLAB_WITH_GL
 #include "glintlab/realtime/gpu_renderer.h"
 #endif
-#include "glintlab/scene/scene_edits.h"
-#include "glintlab/scene/scene_loader.h"
+#include "glintlab/loader/scene_edits.h"
+#include "glintlab/loader/scene_loader.h"
 
 namespace glintlab::cmd {
 namespace {

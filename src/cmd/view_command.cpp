@@ -6,8 +6,8 @@
 
 #include "commands.h"
 #include "glintlab/core/error.h"
+#include "glintlab/loader/scene_loader.h"
 #include "glintlab/realtime/viewer.h"
-#include "glintlab/scene/scene_loader.h"
 
 namespace glintlab::cmd {
 

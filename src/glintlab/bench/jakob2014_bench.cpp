@@ -13,10 +13,10 @@
 #include "glintlab/core/rng.h"
 #include "glintlab/glints/jakob2014/jakob2014.h"
 #include "glintlab/glints/registry.h"
+#include "glintlab/loader/scene_loader.h"
 #include "glintlab/render/accel.h"
 #include "glintlab/render/renderer.h"
 #include "glintlab/scene/scene.h"
-#include "glintlab/scene/scene_loader.h"
 
 namespace glintlab {
 namespace {

@@ -9,10 +9,10 @@
 
 #include "glintlab/core/error.h"
 #include "glintlab/glints/registry.h"
+#include "glintlab/loader/scene_edits.h"
+#include "glintlab/loader/scene_loader.h"
 #include "glintlab/render/accel.h"
 #include "glintlab/render/renderer.h"
-#include "glintlab/scene/scene_edits.h"
-#include "glintlab/scene/scene_loader.h"
 #if GLINTLAB_WITH_GL
 #include "glintlab/bench/table1_003_gpu.h"
 #include "glintlab/bench/table1_gpu.h"

@@ -32,7 +32,7 @@ struct Table1Options {
     // directional rows, smooth / wang2020-style / K = 4 / K = 8 columns).
     std::string table = "000";
     // POINTER=VALUE edits of every row's scene document before loading
-    // (scene/scene_edits.h apply_override_assignment; `bench --set`), e.g.
+    // (loader/scene_edits.h apply_override_assignment; `bench --set`), e.g.
     // /materials/0/wang2020={"scale_count":"particles"} with --model wang2020.
     std::vector<std::string> sets;
 };

@@ -7,8 +7,8 @@
 
 #include "glintlab/bench/table1_gpu.h"
 #include "glintlab/core/error.h"
+#include "glintlab/loader/scene_loader.h"
 #include "glintlab/realtime/gpu_renderer.h"
-#include "glintlab/scene/scene_loader.h"
 
 namespace glintlab {
 namespace {

@@ -6,8 +6,8 @@
 #include "glintlab/gl/gl_context.h"
 #include "glintlab/gl/gpu_timer.h"
 #include "glintlab/glints/wang2020/wang2020_gpu_passes.h"
+#include "glintlab/loader/scene_loader.h"
 #include "glintlab/realtime/gpu_renderer.h"
-#include "glintlab/scene/scene_loader.h"
 
 namespace glintlab {
 namespace {

@@ -8,11 +8,11 @@
 #include "glintlab/bench/table1.h"
 #include "glintlab/bench/table1_003_gpu.h"
 #include "glintlab/core/error.h"
+#include "glintlab/loader/scene_loader.h"
 #include "glintlab/realtime/gpu_renderer.h"
 #include "glintlab/realtime/gpu_test_util.h"
 #include "glintlab/realtime/image_compare.h"
 #include "glintlab/render/renderer.h"
-#include "glintlab/scene/scene_loader.h"
 
 namespace glintlab {
 namespace {

@@ -3,7 +3,7 @@
 
 #include "glintlab/bench/table1.h"
 #include "glintlab/core/error.h"
-#include "glintlab/scene/scene_loader.h"
+#include "glintlab/loader/scene_loader.h"
 
 namespace glintlab {
 namespace {
@@ -11,7 +11,8 @@ namespace {
 TEST(Table1, SetsEditEveryRowsDocumentBeforeLoading) {
     Table1Options o;
     o.width = 32, o.height = 18;
-    o.sets = {"/materials/0/roughness=0.45", R"(/materials/0/wang2020={"scale_count":"particles"})"};
+    o.sets = {"/materials/0/roughness=0.45",
+              R"(/materials/0/wang2020={"scale_count":"particles"})"};
     const nlohmann::json j = table1_scene_document(o, "SPHERE", "wang2020", 12.0f);
     EXPECT_EQ(j["materials"][0]["roughness"], 0.45);
     EXPECT_EQ(j["materials"][0]["wang2020"]["scale_count"], "particles");

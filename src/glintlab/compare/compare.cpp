@@ -13,9 +13,9 @@
 #include "glintlab/core/error.h"
 #include "glintlab/glints/facet_extent.h"
 #include "glintlab/glints/registry.h"
+#include "glintlab/loader/scene_edits.h"
 #include "glintlab/render/accel.h"
 #include "glintlab/render/renderer.h"
-#include "glintlab/scene/scene_edits.h"
 #if GLINTLAB_WITH_GL
 #include "glintlab/gl/gl_context.h"
 #include "glintlab/realtime/glint_programs.h"

@@ -20,7 +20,7 @@ namespace glintlab::compare {
 
 struct CompareOptions {
     std::filesystem::path scene;
-    std::vector<std::string> sets;    // POINTER=VALUE edits (scene/scene_edits.h), in order
+    std::vector<std::string> sets;    // POINTER=VALUE edits (loader/scene_edits.h), in order
     std::string material;             // the compared glint material; empty: the first one
     std::vector<std::string> models;  // empty: every model (the ground truth is always run)
     int realizations = 4;             // seeds per model, >= 2

@@ -15,8 +15,8 @@
 #include "glintlab/core/mip_texture.h"
 #include "glintlab/core/texture_input.h"
 #include "glintlab/glints/registry.h"
+#include "glintlab/loader/scene_loader.h"
 #include "glintlab/scene/scene.h"
-#include "glintlab/scene/scene_loader.h"
 
 namespace glintlab {
 namespace {

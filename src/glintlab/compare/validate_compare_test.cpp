@@ -12,7 +12,7 @@
 
 #include "glintlab/compare/validate_compare.h"
 #include "glintlab/core/error.h"
-#include "glintlab/scene/scene_loader.h"
+#include "glintlab/loader/scene_loader.h"
 
 namespace glintlab {
 namespace {

@@ -28,9 +28,9 @@
 #include "glintlab/core/image.h"
 #include "glintlab/core/json_reader.h"
 #include "glintlab/core/memory_limit.h"
+#include "glintlab/loader/scene_loader.h"
 #include "glintlab/scene/gltf_loader.h"
 #include "glintlab/scene/obj_loader.h"
-#include "glintlab/scene/scene_loader.h"
 
 namespace glintlab::fuzz {
 

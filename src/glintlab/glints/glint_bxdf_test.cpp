@@ -11,8 +11,8 @@
 
 #include "glintlab/core/error.h"
 #include "glintlab/core/rng.h"
+#include "glintlab/loader/scene_loader.h"
 #include "glintlab/scene/scene.h"
-#include "glintlab/scene/scene_loader.h"
 
 namespace glintlab {
 namespace {

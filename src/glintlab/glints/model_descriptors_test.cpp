@@ -25,7 +25,7 @@
 #include "glintlab/glints/model_list.h"
 #include "glintlab/glints/registry.h"
 #include "glintlab/glints/validation_suites.h"
-#include "glintlab/scene/scene_loader.h"
+#include "glintlab/loader/scene_loader.h"
 #if GLINTLAB_WITH_GL
 #include "glintlab/glints/gpu_model_hooks.h"
 #include "glintlab/realtime/glint_programs.h"

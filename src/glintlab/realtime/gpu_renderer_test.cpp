@@ -18,6 +18,7 @@
 #include "glintlab/core/error.h"
 #include "glintlab/gl/gl_program.h"
 #include "glintlab/glints/deliot2023/deliot2023_gpu.h"
+#include "glintlab/loader/scene_loader.h"
 #include "glintlab/realtime/forward_shaders.h"
 #include "glintlab/realtime/glint_programs.h"
 #include "glintlab/realtime/gpu_geometry.h"
@@ -25,7 +26,6 @@
 #include "glintlab/realtime/gpu_test_util.h"
 #include "glintlab/realtime/image_compare.h"
 #include "glintlab/render/renderer.h"
-#include "glintlab/scene/scene_loader.h"
 
 namespace glintlab {
 namespace {

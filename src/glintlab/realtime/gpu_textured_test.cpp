@@ -14,13 +14,13 @@
 #include <nlohmann/json.hpp>
 
 #include "glintlab/core/image.h"
+#include "glintlab/loader/scene_loader.h"
 #include "glintlab/realtime/gpu_renderer.h"
 #include "glintlab/realtime/gpu_test_util.h"
 #include "glintlab/realtime/image_compare.h"
 #include "glintlab/render/curvature_test_util.h"
 #include "glintlab/render/facing_away_test_util.h"
 #include "glintlab/render/renderer.h"
-#include "glintlab/scene/scene_loader.h"
 
 namespace glintlab {
 namespace {

@@ -25,10 +25,10 @@
 #include "glintlab/core/image.h"
 #include "glintlab/core/image_test_util.h"
 #include "glintlab/export/shader_export.h"
+#include "glintlab/loader/scene_loader.h"
 #include "glintlab/realtime/gpu_renderer.h"
 #include "glintlab/realtime/gpu_test_util.h"
 #include "glintlab/realtime/image_compare.h"
-#include "glintlab/scene/scene_loader.h"
 
 namespace glintlab {
 namespace {

@@ -4,8 +4,8 @@
 #include <tbb/global_control.h>
 #include <tbb/info.h>
 
+#include "glintlab/loader/scene_loader.h"
 #include "glintlab/render/accel.h"
-#include "glintlab/scene/scene_loader.h"
 
 namespace glintlab {
 namespace {

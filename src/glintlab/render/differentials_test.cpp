@@ -6,9 +6,9 @@
 
 #include <glm/gtc/constants.hpp>
 
+#include "glintlab/loader/scene_loader.h"
 #include "glintlab/render/accel.h"
 #include "glintlab/render/differentials.h"
-#include "glintlab/scene/scene_loader.h"
 
 namespace glintlab {
 namespace {
@@ -45,7 +45,8 @@ TEST(Footprint, HeadOnPlaneMatchesPixelSize) {
     const int res = 64;
     const Scene scene = plane_scene(distance, 0.0f, fov, res);
     const Accelerator accel(scene);
-    const RayDifferential ray = scene.camera.generate({32.0f, 32.0f});  // pixel corner at the centre
+    const RayDifferential ray =
+        scene.camera.generate({32.0f, 32.0f});  // pixel corner at the centre
     const auto hit = accel.intersect(ray.ray, 1e30f);
     ASSERT_TRUE(hit);
     const SurfaceDifferentials d = compute_differentials(ray, *hit);
@@ -67,7 +68,8 @@ TEST(Footprint, TiltedPlaneMatchesExactNeighbourRays) {
     for (float tilt : {20.0f, 50.0f, 75.0f}) {
         const Scene scene = plane_scene(2.5f, tilt, 40.0f, 128);
         const Accelerator accel(scene);
-        for (glm::vec2 px : {glm::vec2(64.5f, 64.5f), glm::vec2(20.5f, 90.5f), glm::vec2(100.5f, 30.5f)}) {
+        for (glm::vec2 px :
+             {glm::vec2(64.5f, 64.5f), glm::vec2(20.5f, 90.5f), glm::vec2(100.5f, 30.5f)}) {
             const RayDifferential ray = scene.camera.generate(px);
             const auto hit = accel.intersect(ray.ray, 1e30f);
             ASSERT_TRUE(hit) << tilt;
@@ -106,7 +108,8 @@ TEST(Footprint, SphereUvDerivativesAreAnalytic) {
     const RayDifferential ray = scene.camera.generate({16.0f, 16.0f});
     const auto hit = accel.intersect(ray.ray, 1e30f);
     ASSERT_TRUE(hit);
-    // Hit at (0,0,1): θ = π/2, φ = π/2 → uv = (0.25, 0.5); ∂p/∂u = 2π r (−1,0,0), ∂p/∂v = π r (0,−1,0).
+    // Hit at (0,0,1): θ = π/2, φ = π/2 → uv = (0.25, 0.5); ∂p/∂u = 2π r (−1,0,0), ∂p/∂v = π r
+    // (0,−1,0).
     EXPECT_NEAR(hit->uv.x, 0.25f, 1e-5f);
     EXPECT_NEAR(hit->uv.y, 0.5f, 1e-5f);
     EXPECT_NEAR(hit->dpdu.x, -2.0f * glm::pi<float>(), 1e-4f);
@@ -130,7 +133,12 @@ TEST(Footprint, OrthographicFootprintIsConstantAcrossTheImage) {
     // world units, whatever its position, so the uv footprint is constant.
     nlohmann::json j = {
         {"film", {{"width", 40}, {"height", 20}}},
-        {"camera", {{"type", "orthographic"}, {"eye", {0, 5, 0}}, {"target", {0, 0, 0}}, {"up", {0, 0, -1}}, {"height", 2.0}}},
+        {"camera",
+         {{"type", "orthographic"},
+          {"eye", {0, 5, 0}},
+          {"target", {0, 0, 0}},
+          {"up", {0, 0, -1}},
+          {"height", 2.0}}},
         {"materials", {{{"name", "m"}, {"type", "diffuse"}}}},
         {"shapes", {{{"type", "quad"}, {"size", {8, 8}}, {"uv_scale", {2, 2}}, {"material", "m"}}}},
     };

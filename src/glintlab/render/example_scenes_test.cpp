@@ -5,8 +5,8 @@
 #include <cmath>
 #include <filesystem>
 
+#include "glintlab/loader/scene_loader.h"
 #include "glintlab/render/renderer.h"
-#include "glintlab/scene/scene_loader.h"
 
 namespace glintlab {
 namespace {
@@ -24,7 +24,8 @@ TEST(ExampleScenes, AllLoadAndRenderFiniteNonBlackImages) {
         const Image image = render_scene(scene, RenderOptions{1, true});
         double sum = 0.0;
         for (const glm::vec3& p : image.pixels) {
-            ASSERT_TRUE(std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z)) << entry.path();
+            ASSERT_TRUE(std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z))
+                << entry.path();
             ASSERT_GE(std::min({p.x, p.y, p.z}), 0.0f) << entry.path();
             sum += p.x + p.y + p.z;
         }

@@ -8,7 +8,7 @@
 #include <nlohmann/json.hpp>
 
 #include "glintlab/core/error.h"
-#include "glintlab/scene/scene_loader.h"
+#include "glintlab/loader/scene_loader.h"
 
 namespace glintlab {
 namespace {

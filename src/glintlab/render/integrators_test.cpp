@@ -9,8 +9,8 @@
 #include <glm/gtc/constants.hpp>
 
 #include "glintlab/core/error.h"
+#include "glintlab/loader/scene_loader.h"
 #include "glintlab/render/renderer.h"
-#include "glintlab/scene/scene_loader.h"
 
 namespace glintlab {
 namespace {

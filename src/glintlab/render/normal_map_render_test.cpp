@@ -17,9 +17,9 @@
 #include "glintlab/core/glsl.h"
 #include "glintlab/core/image.h"
 #include "glintlab/core/image_test_util.h"
+#include "glintlab/loader/scene_loader.h"
 #include "glintlab/render/facing_away_test_util.h"
 #include "glintlab/render/renderer.h"
-#include "glintlab/scene/scene_loader.h"
 
 GLINTLAB_SHADER_FUNCTIONS_BEGIN
 #include "glintlab/core/slope_frame.glsl"

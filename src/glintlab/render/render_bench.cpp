@@ -5,8 +5,8 @@
 
 #include <filesystem>
 
+#include "glintlab/loader/scene_loader.h"
 #include "glintlab/render/renderer.h"
-#include "glintlab/scene/scene_loader.h"
 
 namespace glintlab {
 namespace {
@@ -16,8 +16,9 @@ Scene bench_scene(const char* integrator) {
     scene.camera.width = 128;
     scene.camera.height = 128;
     scene.render.spp = 4;
-    scene.render.integrator = std::string(integrator) == "path" ? RenderSettings::Integrator::Path
-                                                                : RenderSettings::Integrator::Direct;
+    scene.render.integrator = std::string(integrator) == "path"
+                                  ? RenderSettings::Integrator::Path
+                                  : RenderSettings::Integrator::Direct;
     return scene;
 }
 
@@ -32,8 +33,14 @@ void BM_RenderDefaultScene(benchmark::State& state, const char* integrator) {
                             scene.render.spp);
 }
 
-BENCHMARK_CAPTURE(BM_RenderDefaultScene, direct, "direct")->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond);
-BENCHMARK_CAPTURE(BM_RenderDefaultScene, path, "path")->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_RenderDefaultScene, direct, "direct")
+    ->Arg(1)
+    ->Arg(2)
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_RenderDefaultScene, path, "path")
+    ->Arg(1)
+    ->Arg(2)
+    ->Unit(benchmark::kMillisecond);
 
 }  // namespace
 }  // namespace glintlab

@@ -16,8 +16,8 @@
 #include <nlohmann/json.hpp>
 
 #include "glintlab/core/image.h"
+#include "glintlab/loader/scene_loader.h"
 #include "glintlab/render/renderer.h"
-#include "glintlab/scene/scene_loader.h"
 
 namespace glintlab {
 namespace {

@@ -17,9 +17,9 @@
 
 #include "glintlab/core/error.h"
 #include "glintlab/core/image_test_util.h"
+#include "glintlab/loader/scene_loader.h"
 #include "glintlab/render/renderer.h"
 #include "glintlab/scene/environment_file.h"
-#include "glintlab/scene/scene_loader.h"
 
 namespace glintlab {
 namespace {

@@ -24,9 +24,9 @@
 #include "glintlab/core/error.h"
 #include "glintlab/core/image.h"
 #include "glintlab/core/memory_limit.h"
+#include "glintlab/loader/scene_loader.h"
 #include "glintlab/render/renderer.h"
 #include "glintlab/scene/draco_header.h"
-#include "glintlab/scene/scene_loader.h"
 
 namespace glintlab {
 namespace {

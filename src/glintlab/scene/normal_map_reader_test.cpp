@@ -12,7 +12,7 @@
 
 #include "glintlab/core/image.h"
 #include "glintlab/core/image_test_util.h"
-#include "glintlab/scene/scene_loader.h"
+#include "glintlab/loader/scene_loader.h"
 
 namespace glintlab {
 namespace {

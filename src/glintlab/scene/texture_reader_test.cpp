@@ -12,7 +12,7 @@
 #include "glintlab/core/image.h"
 #include "glintlab/glints/glint_textures.h"
 #include "glintlab/glints/registry.h"
-#include "glintlab/scene/scene_loader.h"
+#include "glintlab/loader/scene_loader.h"
 
 namespace glintlab {
 namespace {

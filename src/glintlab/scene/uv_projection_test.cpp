@@ -17,8 +17,8 @@
 
 #include "glintlab/core/error.h"
 #include "glintlab/core/image_test_util.h"
+#include "glintlab/loader/scene_loader.h"
 #include "glintlab/render/renderer.h"
-#include "glintlab/scene/scene_loader.h"
 #include "glintlab/scene/shapes.h"
 
 namespace glintlab {

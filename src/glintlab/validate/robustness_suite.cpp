@@ -18,8 +18,8 @@
 #include "glintlab/glints/glint_lighting.h"
 #include "glintlab/glints/registry.h"
 #include "glintlab/glints/wang2020/wang2020_quadtree.h"
+#include "glintlab/loader/scene_loader.h"
 #include "glintlab/scene/scene.h"
-#include "glintlab/scene/scene_loader.h"
 #include "glintlab/validate/random_queries.h"
 
 namespace glintlab {

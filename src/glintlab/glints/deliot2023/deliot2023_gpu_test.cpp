@@ -11,9 +11,9 @@
 
 #include "glintlab/bench/table1.h"
 #include "glintlab/core/image.h"
+#include "glintlab/loader/scene_loader.h"
 #include "glintlab/realtime/gpu_renderer.h"
 #include "glintlab/realtime/gpu_test_util.h"
-#include "glintlab/scene/scene_loader.h"
 
 namespace glintlab {
 namespace {

@@ -13,12 +13,12 @@
 #include "glintlab/gl/gl_handles.h"
 #include "glintlab/glints/kneiphof2025/kneiphof2025_prefilter.h"
 #include "glintlab/glints/kneiphof2025/kneiphof2025_prefilter_gpu.h"
+#include "glintlab/loader/scene_loader.h"
 #include "glintlab/realtime/gpu_renderer.h"
 #include "glintlab/realtime/gpu_test_util.h"
 #include "glintlab/realtime/image_compare.h"
 #include "glintlab/scene/environment.h"
 #include "glintlab/scene/environment_file.h"
-#include "glintlab/scene/scene_loader.h"
 
 namespace glintlab {
 namespace {

@@ -23,11 +23,11 @@
 #include "glintlab/glints/kneiphof2025/kneiphof2025_experiments.h"
 #include "glintlab/glints/kneiphof2025/kneiphof2025_prefilter.h"
 #include "glintlab/glints/registry.h"
+#include "glintlab/loader/scene_loader.h"
 #include "glintlab/microfacet/microfacet.h"
 #include "glintlab/render/renderer.h"
 #include "glintlab/scene/environment.h"
 #include "glintlab/scene/scene.h"
-#include "glintlab/scene/scene_loader.h"
 
 namespace glintlab {
 namespace {

@@ -13,8 +13,8 @@
 #include "glintlab/glints/wang2020/wang2020_beckmann.h"
 #include "glintlab/glints/wang2020/wang2020_prefilter.h"
 #include "glintlab/glints/wang2020/wang2020_shading.h"
+#include "glintlab/loader/scene_loader.h"
 #include "glintlab/render/renderer.h"
-#include "glintlab/scene/scene_loader.h"
 
 namespace glintlab::wang2020 {
 namespace {

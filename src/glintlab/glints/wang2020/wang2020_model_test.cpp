@@ -14,9 +14,9 @@
 #include "glintlab/glints/wang2020/wang2020_model.h"
 #include "glintlab/glints/wang2020/wang2020_quadtree.h"
 #include "glintlab/glints/wang2020/wang2020_shading.h"
+#include "glintlab/loader/scene_loader.h"
 #include "glintlab/render/renderer.h"
 #include "glintlab/scene/environment.h"
-#include "glintlab/scene/scene_loader.h"
 
 namespace glintlab {
 namespace {

@@ -1,4 +1,4 @@
-#include "glintlab/scene/scene_edits.h"
+#include "glintlab/loader/scene_edits.h"
 
 #include <charconv>
 #include <fstream>
@@ -9,7 +9,7 @@
 #include "glintlab/core/json_reader.h"
 #include "glintlab/core/regular_file.h"
 #include "glintlab/glints/registry.h"
-#include "glintlab/scene/scene_loader.h"
+#include "glintlab/loader/scene_loader.h"
 
 namespace glintlab {
 

@@ -10,7 +10,7 @@
 #include "glintlab/core/error.h"
 #include "glintlab/core/image.h"
 #include "glintlab/core/memory_limit.h"
-#include "glintlab/scene/scene_loader.h"
+#include "glintlab/loader/scene_loader.h"
 
 namespace glintlab {
 namespace {
@@ -64,17 +64,22 @@ struct BadCase {
 
 TEST(SceneLoader, MalformedScenesGiveClearErrors) {
     const std::vector<BadCase> cases = {
-        {"unknown top-level key", [](auto& j) { j["lightz"] = 1; },
+        {"unknown top-level key",
+         [](auto& j) { j["lightz"] = 1; },
          {"bad.json", "/lightz", "unknown key"}},
-        {"unknown material key", [](auto& j) { j["materials"][0]["colour"] = 1; },
+        {"unknown material key",
+         [](auto& j) { j["materials"][0]["colour"] = 1; },
          {"/materials/0/colour", "unknown key", "albedo"}},
         // The glint material's list names ndf and the model blocks (it
         // omitted both), and a model block's lists its parameters (it was
         // empty).
-        {"unknown glint material key", [](auto& j) { j["materials"][1]["colr"] = 1; },
+        {"unknown glint material key",
+         [](auto& j) { j["materials"][1]["colr"] = 1; },
          {"/materials/1/colr", "unknown key", "ndf", "deliot2023", "wang2020"}},
         {"unknown model block key",
-         [](auto& j) { j["materials"][1]["smooth"] = {{"nope", 1}}; },
+         [](auto& j) {
+             j["materials"][1]["smooth"] = {{"nope", 1}};
+         },
          {"/materials/1/smooth/nope", "unknown key", "this object takes no keys"}},
         {"unknown deliot2023 key",
          [](auto& j) {
@@ -82,66 +87,104 @@ TEST(SceneLoader, MalformedScenesGiveClearErrors) {
              j["materials"][1]["deliot2023"] = {{"nope", 1}};
          },
          {"/materials/1/deliot2023/nope", "microfacet_roughness", "screen_space_scale"}},
-        {"albedo out of range", [](auto& j) { j["materials"][0]["albedo"] = {0.5, 1.5, 0.5}; },
+        {"albedo out of range",
+         [](auto& j) {
+             j["materials"][0]["albedo"] = {0.5, 1.5, 0.5};
+         },
          {"/materials/0/albedo", "component 1", "[0, 1]"}},
-        {"albedo wrong type", [](auto& j) { j["materials"][0]["albedo"] = "grey"; },
+        {"albedo wrong type",
+         [](auto& j) { j["materials"][0]["albedo"] = "grey"; },
          {"/materials/0/albedo", "expected an RGB array"}},
-        {"roughness out of range", [](auto& j) { j["materials"][1]["roughness"] = 3.0; },
+        {"roughness out of range",
+         [](auto& j) { j["materials"][1]["roughness"] = 3.0; },
          {"/materials/1/roughness", "out of range", "[0.001, 1]"}},
         {"unknown glint model",
          [](auto& j) { j["materials"][1]["model"] = "zirr2099"; },
          {"/materials/1/model", "unknown glint model \"zirr2099\"", "smooth"}},
-        {"unknown ndf", [](auto& j) { j["materials"][1]["ndf"] = "phong"; },
+        {"unknown ndf",
+         [](auto& j) { j["materials"][1]["ndf"] = "phong"; },
          {"/materials/1/ndf", "phong", "beckmann, ggx"}},
-        {"unknown curvature", [](auto& j) { j["materials"][1]["curvature"] = "lean"; },
+        {"unknown curvature",
+         [](auto& j) { j["materials"][1]["curvature"] = "lean"; },
          {"/materials/1/curvature", "lean", "none, footprint"}},
-        {"unknown material type", [](auto& j) { j["materials"][0]["type"] = "velvet"; },
+        {"unknown material type",
+         [](auto& j) { j["materials"][0]["type"] = "velvet"; },
          {"/materials/0/type", "velvet", "diffuse"}},
-        {"duplicate material", [](auto& j) { j["materials"][1]["name"] = "floor"; },
+        {"duplicate material",
+         [](auto& j) { j["materials"][1]["name"] = "floor"; },
          {"/materials/1/name", "duplicate"}},
-        {"unknown material reference", [](auto& j) { j["shapes"][0]["material"] = "nope"; },
+        {"unknown material reference",
+         [](auto& j) { j["shapes"][0]["material"] = "nope"; },
          {"/shapes/0/material", "unknown material \"nope\""}},
-        {"missing material", [](auto& j) { j["shapes"][0].erase("material"); },
+        {"missing material",
+         [](auto& j) { j["shapes"][0].erase("material"); },
          {"/shapes/0/material", "missing"}},
-        {"negative radius", [](auto& j) { j["shapes"][1]["radius"] = -1; },
+        {"negative radius",
+         [](auto& j) { j["shapes"][1]["radius"] = -1; },
          {"/shapes/1/radius", "out of range"}},
-        {"NaN-like value", [](auto& j) { j["camera"]["fov_deg"] = nullptr; },
+        {"NaN-like value",
+         [](auto& j) { j["camera"]["fov_deg"] = nullptr; },
          {"/camera/fov_deg", "expected a number", "[0.01, 179]"}},
-        {"fov out of range", [](auto& j) { j["camera"]["fov_deg"] = 180; },
+        {"fov out of range",
+         [](auto& j) { j["camera"]["fov_deg"] = 180; },
          {"/camera/fov_deg", "[0.01, 179]"}},
-        {"eye equals target", [](auto& j) { j["camera"]["target"] = {0, 1, 4}; },
+        {"eye equals target",
+         [](auto& j) {
+             j["camera"]["target"] = {0, 1, 4};
+         },
          {"/camera/target", "must differ"}},
-        {"zero width", [](auto& j) { j["film"]["width"] = 0; },
-         {"/film/width", "[1, 16384]"}},
-        {"non-integer spp", [](auto& j) { j["render"]["spp"] = 1.5; },
+        {"zero width", [](auto& j) { j["film"]["width"] = 0; }, {"/film/width", "[1, 16384]"}},
+        {"non-integer spp",
+         [](auto& j) { j["render"]["spp"] = 1.5; },
          {"/render/spp", "expected an integer"}},
-        {"unknown integrator", [](auto& j) { j["render"]["integrator"] = "bdpt"; },
+        {"unknown integrator",
+         [](auto& j) { j["render"]["integrator"] = "bdpt"; },
          {"/render/integrator", "bdpt", "path, direct"}},
         {"missing obj file",
-         [](auto& j) { j["shapes"][0] = {{"type", "obj"}, {"file", "missing.obj"}, {"material", "floor"}}; },
+         [](auto& j) {
+             j["shapes"][0] = {{"type", "obj"}, {"file", "missing.obj"}, {"material", "floor"}};
+         },
          {"/shapes/0/file", "file not found", "missing.obj"}},
         {"missing environment file",
-         [](auto& j) { j["lights"][0] = {{"type", "environment"}, {"file", "nope.exr"}}; },
+         [](auto& j) {
+             j["lights"][0] = {{"type", "environment"}, {"file", "nope.exr"}};
+         },
          {"/lights/0/file", "file not found"}},
         {"environment file is a directory",
-         [](auto& j) { j["lights"][0] = {{"type", "environment"}, {"file", "/tmp"}}; },
+         [](auto& j) {
+             j["lights"][0] = {{"type", "environment"}, {"file", "/tmp"}};
+         },
          {"/lights/0/file", "/tmp is a directory"}},
         {"environment file is a device",
-         [](auto& j) { j["lights"][0] = {{"type", "environment"}, {"file", "/dev/zero"}}; },
+         [](auto& j) {
+             j["lights"][0] = {{"type", "environment"}, {"file", "/dev/zero"}};
+         },
          {"/lights/0/file", "/dev/zero is a device, FIFO or socket, not a regular file"}},
         {"environment without source",
-         [](auto& j) { j["lights"][0] = {{"type", "environment"}}; },
+         [](auto& j) {
+             j["lights"][0] = {{"type", "environment"}};
+         },
          {"/lights/0/file", "exactly one"}},
         {"zero light direction",
-         [](auto& j) { j["lights"][0] = {{"type", "directional"}, {"direction", {0, 0, 0}}}; },
+         [](auto& j) {
+             j["lights"][0] = {{"type", "directional"}, {"direction", {0, 0, 0}}};
+         },
          {"/lights/0/direction", "non-zero"}},
         {"non-similarity sphere transform",
-         [](auto& j) { j["shapes"][1]["transform"] = {{"scale", {1, 2, 1}}}; },
+         [](auto& j) {
+             j["shapes"][1]["transform"] = {{"scale", {1, 2, 1}}};
+         },
          {"/shapes/1/transform", "uniform"}},
         {"camera missing", [](auto& j) { j.erase("camera"); }, {"/camera", "missing"}},
-        {"materials not an array", [](auto& j) { j["materials"] = {{"a", 1}}; },
+        {"materials not an array",
+         [](auto& j) {
+             j["materials"] = {{"a", 1}};
+         },
          {"/materials", "expected an array"}},
-        {"bloom strength out of range", [](auto& j) { j["film"]["bloom"] = {{"strength", 2}}; },
+        {"bloom strength out of range",
+         [](auto& j) {
+             j["film"]["bloom"] = {{"strength", 2}};
+         },
          {"/film/bloom/strength", "[0, 1]"}},
         {"glint material on a mesh without uvs",
          [](auto& j) {

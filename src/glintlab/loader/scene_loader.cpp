@@ -1,4 +1,4 @@
-#include "glintlab/scene/scene_loader.h"
+#include "glintlab/loader/scene_loader.h"
 
 #include <cmath>
 #include <fstream>

@@ -1,6 +1,6 @@
 // Scene edits (render --model / --set): values land where the pointer says,
 // the strict loader still checks them, and every error names the pointer.
-#include "glintlab/scene/scene_edits.h"
+#include "glintlab/loader/scene_edits.h"
 
 #include <gtest/gtest.h>
 
@@ -86,8 +86,7 @@ TEST(SceneEdits, ModelSwitchesGlintMaterialsOnlyAndTheLoaderStillChecks) {
     });
     EXPECT_NE(range.find("s.json"), std::string::npos) << range;
     EXPECT_NE(range.find("/materials/1/roughness"), std::string::npos) << range;
-    const std::string unknown =
-        error_of([&] { load_scene(file, SceneEdits{"nosuchmodel", {}}); });
+    const std::string unknown = error_of([&] { load_scene(file, SceneEdits{"nosuchmodel", {}}); });
     EXPECT_NE(unknown.find("nosuchmodel"), std::string::npos) << unknown;
     const Scene s = load_scene(file, SceneEdits{"zirr2016", {"/materials/1/log_density=12"}});
     EXPECT_EQ(s.materials[1].glint.model_id, GlintModelId::Zirr2016);
