@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 """Static instruction counts of the GPU forward shader per glint model
-(docs/BENCHMARKS.md "Where the time goes").
+(docs/BENCHMARKS.md "Where the time goes on a GPU").
 
 Assembles the forward fragment shader as realtime/forward_shaders.cpp does
 (prelude, light-count defines, the model's GLSL glue, forward.frag.glsl; each

@@ -1,6 +1,6 @@
 // Strict reading of JSON scene descriptions: every value is checked for type
 // and range, every key must be known, and every error names the file, the
-// JSON path of the value and what is allowed (ARCHITECTURE.md §5).
+// JSON path of the value and what is allowed (ARCHITECTURE.md "Errors").
 #pragma once
 
 #include <filesystem>

@@ -1,4 +1,4 @@
-// OpenGL 4.5 core contexts for the real-time renderer (ARCHITECTURE.md §7).
+// OpenGL 4.5 core contexts for the real-time renderer (ARCHITECTURE.md "realtime/").
 //  - HeadlessContext: EGL without a window. Two EGL platforms:
 //      * surfaceless (EGL_MESA_platform_surfaceless): Mesa, e.g. llvmpipe in CI;
 //      * device (EGL_EXT_platform_device): a GPU picked by enumeration, the

@@ -1,4 +1,5 @@
-// The BRDF of a glint material (ARCHITECTURE.md §4; its shading, all but the
+// The BRDF of a glint material (ARCHITECTURE.md, "Materials and the glint
+// material"; its shading, all but the
 // model dispatch of D_P, is glints/material.glsl, shared with the GPU forward
 // pass): a microfacet BRDF whose
 // NDF is replaced by the model's footprint NDF D_P(h) (000 Eq. 1–3; 002 Eq. 2;

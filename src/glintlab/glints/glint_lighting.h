@@ -1,4 +1,5 @@
-// Models that light the camera's first hit themselves (ARCHITECTURE.md §6):
+// Models that light the camera's first hit themselves (ARCHITECTURE.md,
+// "Materials and the glint material"):
 // the explicit ground truth sums each facet's mirror reflection of the lights
 // and of the environment, the image-based-lighting models (kneiphof2025,
 // wang2020) combine prefiltered radiance with their own counting. Such a model

@@ -1,7 +1,8 @@
 // The surface shading around the glint kernels, one source for the CPU
 // (glints/glint_bxdf.cpp includes it through core/glsl.h) and the GPU forward
 // pass (realtime/shaders/forward.frag.glsl). The glint material's BRDF
-// (ARCHITECTURE.md §4; 000 Eq. 1-3, 002 Eq. 2, 004 Eq. 1):
+// (ARCHITECTURE.md "Materials and the glint material";
+// 000 Eq. 1-3, 002 Eq. 2, 004 Eq. 1):
 //     f(wo, wi) = color · F(wo·h) · G2(wo, wi) · D_P(h) / (4 |wo·n| |wi·n|)
 //               + base_albedo / π · (1 − F_c(cos_o)) (1 − F_c(cos_i)),
 // F the material's Fresnel (none, Schlick, conductor, dielectric), G2 the

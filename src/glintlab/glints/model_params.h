@@ -1,5 +1,6 @@
 // Each glint model's own parameters, read from its block of the glint
-// material (ARCHITECTURE.md §4) by the model's read_params (registry.cpp).
+// material (ARCHITECTURE.md, "Model descriptors") by the model's read_params
+// (registry.cpp).
 // The variant is expanded from the list of models (model_list.h): its
 // alternatives are the models' MParams structs (glints/m/m_params.h), in
 // GlintModelId order, so alternative i is the parameters of model id i.

@@ -1,4 +1,4 @@
-// The OpenGL 4.5 forward renderer (ARCHITECTURE.md §7): draws the JSON scenes
+// The OpenGL 4.5 forward renderer (ARCHITECTURE.md "realtime/"): draws the JSON scenes
 // of the CPU renderer (meshes, analytic spheres tessellated with the CPU's uv
 // parameterisation, camera, point/directional/sphere lights, environment
 // background) with every material, glints through each model's shared .glsl

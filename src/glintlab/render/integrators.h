@@ -1,4 +1,4 @@
-// The two CPU integrators (ARCHITECTURE.md §7):
+// The two CPU integrators (ARCHITECTURE.md "Rendering"):
 //  - direct: the first hit, lit once per light per sample (light sampling with
 //    MIS against BSDF sampling for lights with area), plus emitters and the
 //    environment seen directly or through one BSDF sample: what a real-time

@@ -397,7 +397,7 @@ float deliot2023_vertex_count_of_law(SingleGatedLaw law, vec2 angular_offset, ui
     // so a block of pixels pays for as many quantiles as its lane with the
     // most open corners, not 4 (sparse footprints and the NDF's tails open
     // few). Back ends that branch skip the closed corners' quantiles either
-    // way (the CPU: -16 % of a deliot2023 render, docs/BENCHMARKS.md).
+    // way (the CPU: -16 % of a deliot2023 render, CHANGELOG.md).
     int open = (gate_xi.x < law.p_gate ? 1 : 0) | (gate_xi.y < law.p_gate ? 2 : 0) |
                (gate_xi.z < law.p_gate ? 4 : 0) | (gate_xi.w < law.p_gate ? 8 : 0);
     // Summed in corner order, as the counts always were (a closed corner

@@ -10,8 +10,8 @@ struct ExplicitParams {
     // degrees in our scenes"), degrees.
     float gamma_deg = 1.0f;
     // Expected facets per pixel footprint above which shading fails with an
-    // error instead of enumerating for minutes (docs/BENCHMARKS.md: ~20-40 ns
-    // per facet, so 1e6 facets ~ 30 ms per shading call).
+    // error instead of enumerating for minutes (docs/BENCHMARKS.md: ~48 ns
+    // per facet, so 1e6 facets ~ 48 ms per shading call).
     double max_facets_per_footprint = 1e6;
     // "over_budget": what a footprint above that budget does. "error"
     // (default): shading fails, naming the footprint. "subsample": one of
