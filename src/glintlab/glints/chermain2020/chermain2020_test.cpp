@@ -129,8 +129,8 @@ float level_sdf_by_box_scan(glm::vec2 slope, glm::vec2 uv, glm::vec3 ellipse, in
 
 TEST(Chermain2020, WalkMatchesTheBoundingBoxScan) {
     // The GPU-cost walk of Algorithm 2 (row ranges from the ellipse's roots,
-    // one flat loop, the fallback cell as its last step; docs/MODELS.md
-    // "GPU cost") must visit the same cells in the same order as the scan of
+    // one flat loop, the fallback cell as its last step; docs/MODELS.md,
+    // chermain2020) must visit the same cells in the same order as the scan of
     // the whole bounding box: same sums, bit for bit, for ellipses from
     // below a cell (the fallback) to the 64-cell cap, every orientation and
     // anisotropies up to 64 (beyond the clamp, which the walk does not rely
