@@ -1,8 +1,8 @@
 // JPEG through libjpeg-turbo (Debian's libjpeg62-turbo).
 //
 // JPEG used to go through stb_image like PNG. The image fuzzer found three
-// defects in stb's JPEG decoder (docs/VALIDATION.md "Fuzzing", items 9, 10
-// and 12: a write past its Huffman arrays, a read of uninitialised tables,
+// defects in stb's JPEG decoder (docs/VALIDATION.md "Fuzzing"; inputs in
+// fuzz/regressions/image/: a write past its Huffman arrays, a read of uninitialised tables,
 // and an undefined shift in its entropy decoder); the first two were caught
 // by walking the file before stb ran, the third sits inside the bit reader
 // where no walk can reach it. libjpeg-turbo is the reference decoder of the
