@@ -3,6 +3,12 @@
 #include <algorithm>
 #include <cmath>
 
+#include "glintlab/core/glsl.h"
+
+GLINTLAB_SHADER_FUNCTIONS_BEGIN
+#include "glintlab/core/footprint_cell.glsl"
+GLINTLAB_SHADER_FUNCTIONS_END
+
 namespace glintlab {
 namespace {
 
@@ -20,8 +26,15 @@ constexpr float kMomentLodBias = -0.79248125f;
 
 }  // namespace
 
+Footprint NormalMap::sample_footprint(const Footprint& footprint, float u) const {
+    if (filtering != Filtering::LeanMixture || mixture <= 1) return footprint;
+    const int cells = mixture * mixture;
+    return shader::footprint_cell(footprint, std::clamp(int(u * float(cells)), 0, cells - 1),
+                                  mixture);
+}
+
 SlopeStatistics NormalMap::lookup(glm::vec2 uv, const Footprint* footprint) const {
-    const Footprint* fp = filtering == Filtering::Lean ? footprint : nullptr;
+    const Footprint* fp = filtering != Filtering::None ? footprint : nullptr;
     SlopeStatistics s;
     const glm::vec4 first = slopes->lookup4(uv, fp, kMomentLodBias);
     s.mean = glm::vec2(first.x, first.y);
@@ -34,7 +47,7 @@ SlopeStatistics NormalMap::lookup(glm::vec2 uv, const Footprint* footprint) cons
 
 float NormalMap::covariance_xy(glm::vec2 uv, const Footprint* footprint,
                                const SlopeStatistics& s) const {
-    const Footprint* fp = filtering == Filtering::Lean ? footprint : nullptr;
+    const Footprint* fp = filtering != Filtering::None ? footprint : nullptr;
     if (!fp) return 0.0f;
     const float second = cross_moment->lookup4(uv, fp, kMomentLodBias).x;
     // Kept where Σ stays positive semi-definite.

@@ -35,11 +35,17 @@ struct SlopeStatistics {
 
 struct NormalMap {
     // "lean": the footprint's mean normal and slope covariance (the filtered
-    // models widen their NDF by it); "none": the finest level's normal at
-    // the pixel's centre, no covariance (the per-pixel normal mapping of a
-    // forward renderer: the aliasing the filter removes stays measurable).
-    enum class Filtering { Lean, None };
+    // models widen their NDF by it); "lean_mixture": the same over one of
+    // mixture × mixture sub-footprints, picked per pixel sample, so the
+    // samples average a mixture of lobes, each with its own mean normal
+    // (one Gaussian lobe misses a footprint whose normals are far from one
+    // Gaussian: docs/MODELS.md, "Normal maps"); "none": the finest level's
+    // normal at the pixel's centre, no covariance (the per-pixel normal
+    // mapping of a forward renderer: the aliasing the filter removes stays
+    // measurable).
+    enum class Filtering { Lean, LeanMixture, None };
     Filtering filtering = Filtering::Lean;
+    int mixture = 1;  // sub-footprints per footprint axis (LeanMixture)
     // Channels s_x, s_y, s_x², s_y²: the mean and the variances in one
     // lookup, all a glint or anisotropic lobe reads.
     std::shared_ptr<const TextureInput> slopes;
@@ -53,6 +59,11 @@ struct NormalMap {
     SlopeStatistics lookup(glm::vec2 uv, const Footprint* footprint) const;
     // Σ_xy over the same footprint, for the statistics `s` lookup gave.
     float covariance_xy(glm::vec2 uv, const Footprint* footprint, const SlopeStatistics& s) const;
+    // The footprint a lookup reads for the pixel sample whose uniform
+    // number is u in [0, 1): under LeanMixture the cell floor(u · mixture²)
+    // of the footprint's mixture × mixture grid (footprint_cell), otherwise
+    // `footprint`. The OpenGL renderer shades every cell and averages.
+    Footprint sample_footprint(const Footprint& footprint, float u) const;
     // The finest level's bilinear slope at uv (the ground truth's per-facet normal).
     glm::vec2 slope_at(glm::vec2 uv) const;
 };

@@ -446,7 +446,9 @@ std::vector<std::pair<std::string, std::string>> asset_scenes() {
      "normal_map": {"texture": "normal.png", "scale": 1.5, "encoding": "unorm", "filtering": "lean",
                     "wrap": "mirror", "uv_transform": {"scale": 3, "rotation_deg": 20}}},
     {"name": "metal", "type": "conductor", "roughness": 0.2,
-     "normal_map": {"texture": "normal.png", "scale": -0.5, "filtering": "none", "wrap": "clamp"}}
+     "normal_map": {"texture": "normal.png", "scale": -0.5, "filtering": "none", "wrap": "clamp"}},
+    {"name": "plastic", "type": "plastic", "roughness": 0.3,
+     "normal_map": {"texture": "normal.png", "filtering": "lean_mixture", "mixture": 3}}
   ],
   "shapes": [{"type": "quad", "material": "glint", "size": [2, 2], "uv_scale": [2, 2]},
              {"type": "sphere", "material": "metal", "center": [0, 0.5, 0], "radius": 0.4}],

@@ -16,7 +16,9 @@ std::string ProgramKey::name() const {
         "forward[{}{}, {} point, {} directional, {}{}{}]", info ? info->name : "?", options,
         point_lights, directional_lights, environment ? "environment" : "no environment",
         material_textures ? ", textured material" : "",
-        std::string(normal_map ? ", normal map" : "") + (curvature ? ", curvature" : ""));
+        std::string(normal_map ? ", normal map" : "") +
+            (normal_map_mixture > 1 ? fmt::format(" ({0}x{0} mixture)", normal_map_mixture) : "") +
+            (curvature ? ", curvature" : ""));
 }
 
 AssembledShader shadow_vertex_shader() {
@@ -41,6 +43,8 @@ AssembledShader forward_fragment_shader(const ProgramKey& key) {
     if (key.material_textures || key.normal_map || key.curvature)
         text += "#define GLINTLAB_MATERIAL_TEXTURES 1\n";
     if (key.normal_map) text += "#define GLINTLAB_NORMAL_MAP 1\n";
+    if (key.normal_map && key.normal_map_mixture > 1)
+        text += fmt::format("#define GLINTLAB_NORMAL_MAP_MIXTURE {}\n", key.normal_map_mixture);
     if (key.curvature) text += "#define GLINTLAB_GLINT_CURVATURE 1\n";
     // The pass knows each pixel's view differentials (g_glint_view): glues
     // that filter over the half vector's sweep read them.

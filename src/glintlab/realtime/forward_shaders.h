@@ -26,6 +26,9 @@ struct ProgramKey {
     // The material has a normal map (shaders/normal_map.glsl; implies
     // material_textures: the map widens the per-fragment α).
     bool normal_map = false;
+    // Its "lean_mixture" cells per axis (1: one lookup over the footprint):
+    // the pass shades each of the k × k sub-footprints' lobes and averages.
+    int normal_map_mixture = 1;
     // A glint material on a curved surface widens its per-fragment α by the
     // footprint's normal covariance (GLINTLAB_GLINT_CURVATURE in
     // shaders/forward.frag.glsl; implies material_textures).

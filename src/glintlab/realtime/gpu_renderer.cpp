@@ -95,6 +95,8 @@ gl::ProgramKey program_key(const Scene& scene, const Shape& shape,
         if (m.type == MaterialDesc::Type::Glint) key.model = m.glint.model_id;
         key.material_textures = m.textures != nullptr || m.glint.textures != nullptr;
         key.normal_map = m.normal_map != nullptr;
+        if (m.normal_map && m.normal_map->filtering == NormalMap::Filtering::LeanMixture)
+            key.normal_map_mixture = m.normal_map->mixture;
         key.curvature = m.type == MaterialDesc::Type::Glint && m.glint.curvature &&
                         glint_model(m.glint.model_id).filters_curvature && shape_is_curved(shape);
     }
@@ -530,7 +532,7 @@ struct GpuRenderer::Impl {
             glProgramUniform2f(p, loc("u_normal_map_size"), float(slopes.texture->width()),
                                float(slopes.texture->height()));
             glProgramUniform1i(p, loc("u_normal_map_filtering"),
-                               map->filtering == NormalMap::Filtering::Lean ? 0 : 1);
+                               map->filtering == NormalMap::Filtering::None ? 1 : 0);
             // Models whose tables hold one α take the mean normal only
             // (glint_model_descriptor.h textured_roughness).
             glProgramUniform1i(p, loc("u_normal_map_widens_glint"),

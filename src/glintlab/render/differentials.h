@@ -16,6 +16,9 @@ struct SurfaceDifferentials {
     // The change of the unit direction towards the eye (−ray direction) per
     // pixel step: the offset rays' directions less the ray's.
     glm::vec3 dwodx{0.0f}, dwody{0.0f};
+    // The pixel sample's uniform number that picks a normal map's
+    // sub-footprint under "lean_mixture" (NormalMap::sample_footprint).
+    float mixture_u = 0.5f;
 };
 
 // `scale` multiplies the differentials (pbrt-v4 scales camera differentials

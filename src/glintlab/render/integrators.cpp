@@ -4,6 +4,7 @@
 #include <limits>
 #include <variant>
 
+#include "glintlab/core/normal_map.h"
 #include "glintlab/glints/glint_lighting.h"
 #include "glintlab/glints/registry.h"
 #include "glintlab/render/differentials.h"
@@ -134,6 +135,14 @@ glm::vec3 sample_lights(const IntegratorContext& ctx, const SurfaceHit& hit,
     return L;
 }
 
+// A normal map under "lean_mixture" reads one sub-footprint per pixel
+// sample: the sample's own number picks it. Drawn only there, so every other
+// material's random stream stays as it was.
+void draw_mixture_sample(const MaterialDesc& m, Pcg32& rng, SurfaceDifferentials& diff) {
+    if (m.normal_map && m.normal_map->filtering == NormalMap::Filtering::LeanMixture)
+        diff.mixture_u = rng.next_float();
+}
+
 template <typename F>
 bool all_finite(const F& v) {
     return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
@@ -149,7 +158,8 @@ glm::vec3 integrate_direct(const IntegratorContext& ctx, const RayDifferential& 
     glm::vec3 L = emitted(scene, *hit, ray.ray.d);
     const Shape& shape = scene.shapes[hit->shape];
     if (shape.material < 0) return L;
-    const SurfaceDifferentials diff = compute_differentials(ray, *hit, ctx.differential_scale);
+    SurfaceDifferentials diff = compute_differentials(ray, *hit, ctx.differential_scale);
+    draw_mixture_sample(scene.materials[shape.material], rng, diff);
     const glm::vec3 wo = -ray.ray.d;
     const SurfaceBsdf bsdf = make_surface_bsdf(scene.materials[shape.material], *hit, wo, &diff);
     const OwnLights own = own_lights(scene, shape);
@@ -228,6 +238,7 @@ glm::vec3 integrate_path(const IntegratorContext& ctx, const RayDifferential& ca
         const Footprint* footprint = nullptr;
         if (depth == 0) {
             diff = compute_differentials(camera_ray, *hit, ctx.differential_scale);
+            draw_mixture_sample(scene.materials[shape.material], rng, diff);
             differentials = &diff;
             footprint = &diff.footprint;
         }

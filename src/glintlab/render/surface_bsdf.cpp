@@ -30,14 +30,21 @@ MicrofacetDistribution distribution(NdfType ndf, float ax, float ay) {
 // "Normal maps"): the footprint's mean slope and slope covariance, and the
 // signs that carry the map's (x, y) onto the frame's (t, b).
 struct LocalBump {
+    Footprint footprint;  // the one the map was read over (a sub-footprint under lean_mixture)
+    bool filtered = false;
     SlopeStatistics map_slopes;  // in the map's axes, as NormalMap::lookup gives them
     SlopeStatistics slopes;      // in the shading frame's axes
     glm::vec2 axes{1.0f};
 };
 
 LocalBump local_bump(const NormalMap& map, const SurfaceHit& hit, const ShadingFrame& frame,
-                     bool back, const Footprint* footprint) {
+                     bool back, const SurfaceDifferentials* differentials) {
     LocalBump bump;
+    bump.footprint.uv = hit.uv;
+    if (differentials) {
+        bump.footprint = map.sample_footprint(differentials->footprint, differentials->mixture_u);
+        bump.filtered = true;
+    }
     // glTF's bitangent: "up" in the image, i.e. against ∂p/∂v (v runs down
     // the image); frame.b = n × t is it unless the uv mapping is mirrored.
     // A mesh's vertex tangents carry that sign (w).
@@ -48,10 +55,17 @@ LocalBump local_bump(const NormalMap& map, const SurfaceHit& hit, const ShadingF
     // Seen from behind, the surface's normal is −n: the map's normal (x, y,
     // z) becomes (−x, y, z) in the flipped frame (t, −b, −n).
     if (back) bump.axes.x = -1.0f;
-    bump.map_slopes = map.lookup(hit.uv, footprint);
+    bump.map_slopes = map.lookup(bump.footprint.uv, bump.filtered ? &bump.footprint : nullptr);
     bump.slopes = bump.map_slopes;
     bump.slopes.mean *= bump.axes;
     return bump;
+}
+
+// Σ_xy over the footprint the bump was read over, in the shading frame's axes.
+float map_covariance_xy(const NormalMap& map, const LocalBump& bump) {
+    return map.covariance_xy(bump.footprint.uv, bump.filtered ? &bump.footprint : nullptr,
+                             bump.map_slopes) *
+           bump.axes.x * bump.axes.y;
 }
 
 // The frame around the footprint's mean normal, its tangent the projection
@@ -145,7 +159,7 @@ SurfaceBsdf make_surface_bsdf(const MaterialDesc& m, const SurfaceHit& hit, glm:
     // dielectric keeps its orientation (inside/outside matters for eta).
     const bool back = m.type != MaterialDesc::Type::Dielectric && glm::dot(wo, frame.n) < 0.0f;
     std::optional<LocalBump> bump;
-    if (m.normal_map) bump = local_bump(*m.normal_map, hit, frame, back, footprint);
+    if (m.normal_map) bump = local_bump(*m.normal_map, hit, frame, back, differentials);
     if (back) {
         frame.n = -frame.n;
         frame.b = -frame.b;  // keeps (t, b, n) right-handed
@@ -192,9 +206,7 @@ SurfaceBsdf make_surface_bsdf(const MaterialDesc& m, const SurfaceHit& hit, glm:
     }
     if (bump && m.type != MaterialDesc::Type::Diffuse && m.type != MaterialDesc::Type::Glint) {
         glm::vec3 c = bump->slopes.covariance;
-        if (alpha_x == alpha_y)
-            c.z = m.normal_map->covariance_xy(hit.uv, footprint, bump->map_slopes) * bump->axes.x *
-                  bump->axes.y;
+        if (alpha_x == alpha_y) c.z = map_covariance_xy(*m.normal_map, *bump);
         if (alpha_x == alpha_y && c.z != 0.0f) {
             // An isotropic lobe widened by a correlated covariance is the
             // lobe of covariance α²/2 I + Σ exactly: along Σ's principal axes.
@@ -287,9 +299,7 @@ SurfaceBsdf make_surface_bsdf(const MaterialDesc& m, const SurfaceHit& hit, glm:
         // Chermain et al. 2021's slope correlation).
         const bool correlated =
             model.reads_slope_correlation && model.reads_slope_correlation(*resolved);
-        if (correlated && map_widens)
-            c.z += m.normal_map->covariance_xy(hit.uv, footprint, bump->map_slopes) * bump->axes.x *
-                   bump->axes.y;
+        if (correlated && map_widens) c.z += map_covariance_xy(*m.normal_map, *bump);
         resolved->alpha_x = shader::slope_widened_alpha(resolved->alpha_x, c.x, 1.0f);
         resolved->alpha_y = shader::slope_widened_alpha(resolved->alpha_y, c.y, 1.0f);
         resolved->alpha_varies = true;

@@ -93,7 +93,16 @@ std::shared_ptr<const NormalMap> read_normal_map(JsonObject& material, std::stri
                                         "can hold a negative component",
                                         file.string()));
     const std::string filtering =
-        b.string("filtering", "lean", std::vector<std::string>{"lean", "none"});
+        b.string("filtering", "lean", std::vector<std::string>{"lean", "lean_mixture", "none"});
+    // Sub-footprints per axis: 2 halves the footprint, 8 (64 lobes) reaches
+    // level 0 of a map already at a footprint of 8 texels.
+    int mixture = 1;
+    if (filtering == "lean_mixture")
+        mixture = b.integer("mixture", 4, 2, 8);
+    else if (b.has("mixture"))
+        b.error("mixture", fmt::format("applies only to \"filtering\": \"lean_mixture\" (here "
+                                       "\"{}\")",
+                                       filtering));
     const TextureWrap wrap = read_texture_wrap(b);
     const TextureUvTransform transform = read_uv_transform(b);
     b.finish();
@@ -141,7 +150,10 @@ std::shared_ptr<const NormalMap> read_normal_map(JsonObject& material, std::stri
                    std::acos(kMinNormalZ) * 180.0 / 3.14159265358979);
 
     auto map = std::make_shared<NormalMap>();
-    map->filtering = filtering == "lean" ? NormalMap::Filtering::Lean : NormalMap::Filtering::None;
+    map->filtering = filtering == "lean"           ? NormalMap::Filtering::Lean
+                     : filtering == "lean_mixture" ? NormalMap::Filtering::LeanMixture
+                                                   : NormalMap::Filtering::None;
+    map->mixture = mixture;
     auto make = [&](std::vector<float> texels, int channels) {
         auto input = std::make_shared<TextureInput>();
         input->transform = transform;

@@ -1,6 +1,6 @@
 // The "normal_map" key of a material (docs/SCENE_FORMAT.md, "Normal maps"):
-// {"texture": "n.png", "scale", "encoding", "filtering", "uv_transform",
-// "wrap"}, a tangent-space map in glTF's convention (x along ∂p/∂u, y "up"
+// {"texture": "n.png", "scale", "encoding", "filtering", "mixture",
+// "uv_transform", "wrap"}, a tangent-space map in glTF's convention (x along ∂p/∂u, y "up"
 // in the image, z out of the surface; PNG/JPEG codes c hold 2c − 1).
 #pragma once
 

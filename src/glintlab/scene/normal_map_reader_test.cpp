@@ -140,6 +140,65 @@ TEST(NormalMapReader, CrossMomentGivesTheCorrelationOfDiagonalRidges) {
     EXPECT_EQ(map.covariance_xy(fp.uv, nullptr, s), 0.0f);
 }
 
+TEST(NormalMapReader, LeanMixtureTilesTheFootprintWithSubFootprints) {
+    ScratchDir dir;
+    // A slope ramp s_x = 0.4 (x − 32) / 64 across 64 texels: the footprint's
+    // halves have different mean slopes, whose average is the footprint's.
+    auto ramp = [](int x, int) {
+        const float sx = 0.4f * (float(x) + 0.5f - 32.0f) / 64.0f;
+        return glm::normalize(glm::vec3(-sx, 0.0f, 1.0f));
+    };
+    const Scene lean = scene_of_map(dir, ramp);
+    const Scene scene = parse_scene(scene_with({{"texture", "n.exr"},
+                                                {"encoding", "signed"},
+                                                {"filtering", "lean_mixture"},
+                                                {"mixture", 2}}),
+                                    dir / "s.json");
+    const NormalMap& map = *scene.materials[0].normal_map;
+    ASSERT_EQ(map.filtering, NormalMap::Filtering::LeanMixture);
+    ASSERT_EQ(map.mixture, 2);
+    Footprint fp;
+    fp.uv = glm::vec2(0.5f);
+    fp.duvdx = glm::vec2(0.25f, 0.0f);
+    fp.duvdy = glm::vec2(0.0f, 0.125f);
+    // u in [0, 1) picks cell floor(4u): x fastest, each cell half the axes.
+    glm::vec2 mean_of_means(0.0f);
+    for (int cell = 0; cell < 4; ++cell) {
+        const Footprint sub = map.sample_footprint(fp, (float(cell) + 0.5f) / 4.0f);
+        const glm::vec2 centre = fp.uv + (float(cell % 2) - 0.5f) * 0.5f * fp.duvdx +
+                                 (float(cell / 2) - 0.5f) * 0.5f * fp.duvdy;
+        EXPECT_NEAR(glm::length(sub.uv - centre), 0.0f, 1e-6f) << cell;
+        EXPECT_EQ(sub.duvdx, fp.duvdx * 0.5f);
+        EXPECT_EQ(sub.duvdy, fp.duvdy * 0.5f);
+        mean_of_means += 0.25f * map.lookup(sub.uv, &sub).mean;
+    }
+    // u = 1 (rounding) stays in the last cell.
+    EXPECT_EQ(map.sample_footprint(fp, 1.0f).uv, map.sample_footprint(fp, 0.99f).uv);
+    // The left and right halves' means differ by the ramp over half the
+    // footprint (0.4 · 0.125 = 0.05); together they are the footprint's.
+    const float left = map.lookup(map.sample_footprint(fp, 0.1f).uv, nullptr).mean.x;
+    const float right = map.lookup(map.sample_footprint(fp, 0.3f).uv, nullptr).mean.x;
+    EXPECT_NEAR(right - left, 0.05f, 2e-3f);
+    const SlopeStatistics whole = lean.materials[0].normal_map->lookup(fp.uv, &fp);
+    EXPECT_NEAR(mean_of_means.x, whole.mean.x, 2e-3f);
+    // Lean and none read the footprint itself.
+    const Footprint same = lean.materials[0].normal_map->sample_footprint(fp, 0.9f);
+    EXPECT_EQ(same.uv, fp.uv);
+    EXPECT_EQ(same.duvdx, fp.duvdx);
+
+    std::string e = load_error(
+        scene_with({{"texture", "n.exr"}, {"encoding", "signed"}, {"mixture", 2}}), dir / "s.json");
+    EXPECT_NE(e.find("mixture"), std::string::npos) << e;
+    EXPECT_NE(e.find("lean_mixture"), std::string::npos) << e;
+    e = load_error(scene_with({{"texture", "n.exr"},
+                               {"encoding", "signed"},
+                               {"filtering", "lean_mixture"},
+                               {"mixture", 9}}),
+                   dir / "s.json");
+    EXPECT_NE(e.find("mixture"), std::string::npos) << e;
+    EXPECT_NE(e.find("8"), std::string::npos) << e;
+}
+
 TEST(NormalMapReader, BadMapsNameTheFileTheTexelAndTheRange) {
     ScratchDir dir;
     Image black(3, 2, glm::vec3(128, 128, 255));

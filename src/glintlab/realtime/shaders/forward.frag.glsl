@@ -396,7 +396,31 @@ void main() {
             g_glint_alpha = vec2(mat.glint.alpha_x, mat.glint.alpha_y);
         }
 #endif
-#ifdef GLINTLAB_NORMAL_MAP
+#ifdef GLINTLAB_NORMAL_MAP_MIXTURE
+        // "lean_mixture" (core/normal_map.h): each of the k × k sub-footprints
+        // shades the pixel with its own lobe and the pixel is their mean (the
+        // CPU draws one per pixel sample). The lights and the glint model
+        // keep the whole footprint.
+        const int kMixtureCells = GLINTLAB_NORMAL_MAP_MIXTURE * GLINTLAB_NORMAL_MAP_MIXTURE;
+        vec3 unshaded_radiance = radiance;
+        radiance = vec3(0.0f);
+        SurfaceMaterial mixture_mat = mat;
+        vec3 mixture_t = t, mixture_b = b, mixture_n = n;
+        float mixture_cov_xy = glint_cov_xy;
+        vec2 mixture_glint_alpha = g_glint_alpha, mixture_alpha = g_alpha;
+        float mixture_correlation = g_glint_slope_correlation;
+        for (int cell = 0; cell < kMixtureCells; ++cell) {
+        mat = mixture_mat;
+        t = mixture_t;
+        b = mixture_b;
+        n = mixture_n;
+        glint_cov_xy = mixture_cov_xy;
+        g_glint_alpha = mixture_glint_alpha;
+        g_alpha = mixture_alpha;
+        g_glint_slope_correlation = mixture_correlation;
+        normal_map_shade(footprint_cell(fp, cell, GLINTLAB_NORMAL_MAP_MIXTURE), back_side,
+                         v_dpdu.w < 0.0f ? -1.0f : 1.0f, wo_world, t, b, n, mat, glint_cov_xy);
+#elif defined(GLINTLAB_NORMAL_MAP)
         normal_map_shade(fp, back_side, v_dpdu.w < 0.0f ? -1.0f : 1.0f, wo_world, t, b, n,
                          mat, glint_cov_xy);
 #endif
@@ -456,7 +480,7 @@ void main() {
         if (u_material_type == 4) {
             vec3 env = u_glint_color * glint_own_environment(n, wo_world, fp);
             if (u_glint_layer)
-                glint_layer = env;
+                glint_layer += env;
             else
                 radiance += env;
         } else
@@ -497,6 +521,11 @@ void main() {
 #endif
             radiance += eval_bsdf(mat, wo, wi, fp) * u_directional_irradiance[i] * (wi.z * visible);
         }
+#endif
+#ifdef GLINTLAB_NORMAL_MAP_MIXTURE
+        }
+        radiance = unshaded_radiance + radiance / float(kMixtureCells);
+        glint_layer /= float(kMixtureCells);
 #endif
     }
     // Non-finite results are dropped as the CPU integrators do.

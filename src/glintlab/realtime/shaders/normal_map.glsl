@@ -13,6 +13,7 @@
 // uniforms' includes then declare.
 #include "glintlab/realtime/shaders/material_textures.glsl"
 #include "glintlab/core/footprint.glsl"
+#include "glintlab/core/footprint_cell.glsl"
 #include "glintlab/core/slope_frame.glsl"
 #include "glintlab/glints/material.glsl"
 
