@@ -400,7 +400,8 @@ void main() {
         // "lean_mixture" (core/normal_map.h): each of the k × k sub-footprints
         // shades the pixel with its own lobe and the pixel is their mean (the
         // CPU draws one per pixel sample). The lights and the glint model
-        // keep the whole footprint.
+        // keep the whole footprint. The loop's body, left unindented, runs to
+        // the end of the light loops.
         const int kMixtureCells = GLINTLAB_NORMAL_MAP_MIXTURE * GLINTLAB_NORMAL_MAP_MIXTURE;
         vec3 unshaded_radiance = radiance;
         radiance = vec3(0.0f);
