@@ -99,6 +99,23 @@ float slope_widened_alpha(float alpha, float slope_variance, float max_alpha) {
     return min(sqrt(alpha * alpha + 2.0f * slope_variance), max_alpha);
 }
 
+// A lobe of slope covariance C = [[α_x²/2, c_xy], [c_xy, α_y²/2]] (a lobe
+// already widened along x and y, and the footprint's Σ_xy) along C's
+// principal axes: (α_1, α_2, θ), axis 1 at θ from x (radians, in (−π/2,
+// π/2]), each α at most max_alpha. Beckmann's and GGX's slopes depend on
+// sᵀC⁻¹s only, so the sheared lobe (ndf.glsl D_Microfacet_correlated) is this
+// anisotropic one turned by θ exactly. θ = 0 where c_xy = 0.
+vec3 principal_slope_lobe(float alpha_x, float alpha_y, float covariance_xy, float max_alpha) {
+    float xx = 0.5f * alpha_x * alpha_x, yy = 0.5f * alpha_y * alpha_y;
+    if (covariance_xy == 0.0f || isnan(covariance_xy) || isinf(covariance_xy))
+        return vec3(alpha_x, alpha_y, 0.0f);
+    float angle = 0.5f * atan(2.0f * covariance_xy, xx - yy);
+    float mid = 0.5f * (xx + yy);
+    float radius = sqrt(0.25f * (xx - yy) * (xx - yy) + covariance_xy * covariance_xy);
+    return vec3(min(sqrt(2.0f * (mid + radius)), max_alpha),
+                min(sqrt(2.0f * max(mid - radius, 0.0f)), max_alpha), angle);
+}
+
 // The correlation of a footprint's slopes, Σ_xy / (σ_x σ_y) with σ_i² = α_i²/2
 // of the widened lobe, kept within [−0.99, 0.99] as Chermain et al. 2021's
 // shader keeps theirs (their slope transform divides by √(1 − ρ²)); 0 where

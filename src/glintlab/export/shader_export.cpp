@@ -324,8 +324,8 @@ std::string header(const GlintModelDescriptor& d, ExportLanguage lang, const std
     if (d.reads_slope_correlation)
         h += "  Slope correlation: u_input_normal_cross (R) holds s_x s_y of the bilinear\n"
              "          surface over each cell (box means, the normal map's transform), mask\n"
-             "          bit 5; the lobe is sheared by Sigma_xy (Chermain et al. 2021) where\n"
-             "          u_chermain2020_correlated is true.\n";
+             "          bit 5; the target NDF is sheared by Sigma_xy (chermain2020: where\n"
+             "          u_chermain2020_correlated is true, Chermain et al. 2021).\n";
     h += fmt::format(
         "Parameters of {} (uniform, type, range, default: meaning; a name in\n"
         "parentheses is host-side, see docs/INTEGRATION.md):\n{}",
@@ -759,7 +759,7 @@ std::vector<ExportedFile> export_model(const ExportOptions& o) {
     if (!d->textured_roughness) normal["reason"] = d->untextured_reason;
     inputs.push_back(normal);
     // Its s_x s_y for the models that shear their NDF by the slopes'
-    // correlation (chermain2020, Chermain et al. 2021).
+    // correlation (GlintModelDescriptor::reads_slope_correlation).
     if (d->reads_slope_correlation)
         inputs.push_back({{"key", "normal_map_cross"},
                           {"bit", 5},

@@ -95,7 +95,8 @@ float GlintBxdf::footprint_ndf(glm::vec3 wo, glm::vec3 wi, glm::vec3 h) const {
         else if constexpr (requires { K::footprint_ndf(wo, wi, h, footprint, *desc); })
             return K::footprint_ndf(wo, wi, h, footprint, *desc);
         else
-            return shader::D_Microfacet(ndf_id(desc->ndf), h, desc->alpha_x, desc->alpha_y);
+            return shader::D_Microfacet_correlated(ndf_id(desc->ndf), h, desc->alpha_x,
+                                                   desc->alpha_y, desc->slope_correlation);
     });
 }
 
@@ -131,7 +132,8 @@ glm::vec3 GlintBxdf::f(glm::vec3 wo, glm::vec3 wi) const {
     h = glm::normalize(h);
     const glm::vec3 d = has_footprint
                             ? footprint_ndf_rgb(wo, wi, h)
-                            : glm::vec3(shader::D_Microfacet(m.ndf, h, m.alpha_x, m.alpha_y));
+                            : glm::vec3(shader::D_Microfacet_correlated(
+                                  m.ndf, h, m.alpha_x, m.alpha_y, desc->slope_correlation));
     return shader::glint_brdf(m, wo, wi, h, d);
 }
 

@@ -183,7 +183,8 @@ struct GlintModelDescriptor {
     // for `explicit`, which composes each facet with the curved surface.
     bool filters_curvature = true;
     // The material's model reads the correlation of the footprint's slopes
-    // (GlintDesc::slope_correlation) as well as the widened α; null: no.
+    // (GlintDesc::slope_correlation) as well as the widened α, i.e. shears
+    // its target NDF by it; null: no, the correlation is dropped.
     std::function<bool(const GlintDesc&)> reads_slope_correlation;
     GlintValidationSuite validation;  // name empty: no suite
     // Set (set_export): `glintlab export` writes the model (its GPU back end).

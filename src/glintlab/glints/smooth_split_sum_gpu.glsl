@@ -20,7 +20,8 @@
 uniform vec3 u_kneiphof2025_f0;               // kneiphof2025_f0(desc): Schlick F0 of the Fresnel
 uniform float u_kneiphof2025_radiance_scale;  // current environment scale / prefiltered one
 vec3 glint_ndf(vec3 h, Footprint fp) {
-    return vec3(D_Microfacet(u_glint_ndf, h, u_glint_alpha.x, u_glint_alpha.y));
+    return vec3(D_Microfacet_correlated(u_glint_ndf, h, u_glint_alpha.x, u_glint_alpha.y,
+                                        g_glint_slope_correlation));
 }
 #define GLINTLAB_GLINT_SHADES_ENVIRONMENT 1
 // E_rho(wo) L_pre(r): wo local, (t, b, n) the world shading frame.

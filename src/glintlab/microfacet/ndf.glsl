@@ -46,4 +46,25 @@ float D_Microfacet(int ndf, vec3 m, float alpha_x, float alpha_y) {
     return D_GGX(m, alpha_x, alpha_y);
 }
 
+// The NDF whose slopes are correlated by rho in (−1, 1) (a sheared lobe: the
+// slope distribution's matrix [[ax², ρ ax ay], [ρ ax ay, ay²]] in place of
+// diag(ax², ay²), Heitz 2014 §5's ellipsoidal NDFs under a linear transform
+// of the slopes): the quadratic form (x̃² − 2ρ x̃ ỹ + ỹ²) / (1 − ρ²), x̃ =
+// x_m / ax, replaces x̃² + ỹ², and the normalisation gains √(1 − ρ²). A
+// normal map's or a curved surface's correlated slope covariance keeps its
+// direction this way (Chermain et al. 2021 shear their Beckmann target
+// alike). rho = 0: D_Microfacet.
+float D_Microfacet_correlated(int ndf, vec3 m, float alpha_x, float alpha_y, float rho) {
+    if (rho == 0.0f) return D_Microfacet(ndf, m, alpha_x, alpha_y);
+    if (m.z <= 0.0f) return 0.0f;
+    float sx = m.x / alpha_x, sy = m.y / alpha_y;
+    float one_minus_rho2 = 1.0f - rho * rho;
+    float q = (sx * sx - 2.0f * rho * sx * sy + sy * sy) / one_minus_rho2;
+    float norm = PI * alpha_x * alpha_y * sqrt(one_minus_rho2);
+    float cos2 = m.z * m.z;
+    if (ndf == NDF_BECKMANN) return exp(-q / cos2) / (norm * cos2 * cos2);
+    float t = q + cos2;
+    return 1.0f / (norm * t * t);
+}
+
 #endif

@@ -10,6 +10,16 @@
 
 #include "glintlab/microfacet/microfacet.h"
 
+// principal_slope_lobe, the turned lobe a correlated one equals.
+GLINTLAB_SHADER_BEGIN
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wunused-function"
+namespace {
+#include "glintlab/core/slope_frame.glsl"
+}  // namespace
+#pragma GCC diagnostic pop
+GLINTLAB_SHADER_END
+
 namespace glintlab {
 namespace {
 
@@ -73,6 +83,48 @@ TEST(MicrofacetNdf, AnisotropicAxesMatchIsotropic) {
         const float aniso = D_Microfacet(ndf, m, 0.3f, 0.7f);
         EXPECT_NEAR(aniso * 0.7f, iso * 0.3f, 1e-5f * iso);
     }
+}
+
+// A sheared lobe (slopes correlated by ρ) is the anisotropic lobe along its
+// slope matrix's principal axes: D_Microfacet_correlated at m equals
+// D_Microfacet at m turned by −θ with principal_slope_lobe's α₁, α₂ (both
+// NDFs depend on the slopes through sᵀM⁻¹s only), and it keeps the
+// projected area 1. Tolerances: float evaluation (1e-4 relative) and the
+// quadrature's 1e-4 above.
+TEST(MicrofacetNdf, CorrelatedSlopesAreTheLobeTurnedToItsPrincipalAxes) {
+    struct Case {
+        float ax, ay, rho;
+    };
+    const Case cases[] = {
+        {0.3f, 0.3f, 0.8f}, {0.2f, 0.5f, -0.6f}, {0.5f, 0.1f, 0.4f}, {0.15f, 0.15f, -0.9f}};
+    for (int ndf : {NDF_BECKMANN, NDF_GGX})
+        for (const Case& c : cases) {
+            const std::string what =
+                fmt::format("ndf {} alpha ({}, {}) rho {}", ndf, c.ax, c.ay, c.rho);
+            const glm::vec3 lobe =
+                principal_slope_lobe(c.ax, c.ay, 0.5f * c.rho * c.ax * c.ay, 100.0f);
+            const float cs = std::cos(lobe.z), sn = std::sin(lobe.z);
+            for (int i = 0; i < 64; ++i) {
+                const float phi = 0.0982f * float(i), tan_theta = 0.02f * float(i % 16) + 0.01f;
+                const glm::vec3 m = glm::normalize(
+                    glm::vec3(tan_theta * std::cos(phi), tan_theta * std::sin(phi), 1.0f));
+                const glm::vec3 turned(cs * m.x + sn * m.y, -sn * m.x + cs * m.y, m.z);
+                const float sheared = D_Microfacet_correlated(ndf, m, c.ax, c.ay, c.rho);
+                const float expected = D_Microfacet(ndf, turned, lobe.x, lobe.y);
+                EXPECT_NEAR(sheared, expected, 1e-4f * expected) << what << " m " << i;
+            }
+            const double area = integrate_hemisphere(
+                c.ax, c.ay,
+                [&](glm::vec3 m) {
+                    return D_Microfacet_correlated(ndf, m, c.ax, c.ay, c.rho) * m.z;
+                },
+                1024, 512);
+            EXPECT_NEAR(area, 1.0, 1e-3) << what;
+        }
+    // ρ = 0 is D itself, bit for bit.
+    const glm::vec3 m = glm::normalize(glm::vec3(0.2f, -0.1f, 1.0f));
+    EXPECT_EQ(D_Microfacet_correlated(NDF_GGX, m, 0.3f, 0.2f, 0.0f),
+              D_Microfacet(NDF_GGX, m, 0.3f, 0.2f));
 }
 
 // Weak white furnace (Heitz 2014 §3 / chermain2020 Eq. 17):

@@ -205,24 +205,20 @@ SurfaceBsdf make_surface_bsdf(const MaterialDesc& m, const SurfaceHit& hit, glm:
         if (t.alpha_y_sq) alpha_y = std::sqrt(std::max(values[2], 0.0f));
     }
     if (bump && m.type != MaterialDesc::Type::Diffuse && m.type != MaterialDesc::Type::Glint) {
-        glm::vec3 c = bump->slopes.covariance;
-        if (alpha_x == alpha_y) c.z = map_covariance_xy(*m.normal_map, *bump);
-        if (alpha_x == alpha_y && c.z != 0.0f) {
-            // An isotropic lobe widened by a correlated covariance is the
-            // lobe of covariance α²/2 I + Σ exactly: along Σ's principal axes.
-            const float angle = 0.5f * std::atan2(2.0f * c.z, c.x - c.y);
-            const float mid = 0.5f * (c.x + c.y);
-            const float radius = std::sqrt(0.25f * (c.x - c.y) * (c.x - c.y) + c.z * c.z);
-            const glm::vec3 t = std::cos(angle) * frame.t + std::sin(angle) * frame.b;
+        const glm::vec3 c = bump->slopes.covariance;
+        // The lobe of slope covariance diag(α_x², α_y²)/2 + Σ, Σ_xy included,
+        // is an anisotropic lobe along that matrix's principal axes: the
+        // frame turns to them.
+        const glm::vec3 lobe =
+            shader::principal_slope_lobe(shader::slope_widened_alpha(alpha_x, c.x, 4.0f),
+                                         shader::slope_widened_alpha(alpha_y, c.y, 4.0f),
+                                         map_covariance_xy(*m.normal_map, *bump), 4.0f);
+        alpha_x = lobe.x;
+        alpha_y = lobe.y;
+        if (lobe.z != 0.0f) {
+            const glm::vec3 t = std::cos(lobe.z) * frame.t + std::sin(lobe.z) * frame.b;
             frame.t = t;
             frame.b = glm::cross(frame.n, t);
-            const float a = alpha_x;
-            alpha_x = shader::slope_widened_alpha(a, mid + radius, 4.0f);
-            alpha_y = shader::slope_widened_alpha(a, std::max(mid - radius, 0.0f), 4.0f);
-        } else {
-            // An anisotropic lobe keeps its axes; Σ's correlation is dropped.
-            alpha_x = shader::slope_widened_alpha(alpha_x, c.x, 4.0f);
-            alpha_y = shader::slope_widened_alpha(alpha_y, c.y, 4.0f);
         }
     }
     switch (m.type) {
@@ -294,9 +290,10 @@ SurfaceBsdf make_surface_bsdf(const MaterialDesc& m, const SurfaceHit& hit, glm:
         glm::vec3 c = widens_curvature ? curvature_cov : glm::vec3(0.0f);
         if (map_widens) c += bump->slopes.covariance;
         // Glint NDF axes stay on the uv axes (the models' grids follow
-        // them): Σ's correlation is dropped, as for anisotropic lobes,
-        // unless the model shears its target by it (chermain2020 with
-        // Chermain et al. 2021's slope correlation).
+        // them): a model that reads the slopes' correlation shears its
+        // target by it (chermain2020 with Chermain et al. 2021's slope
+        // correlation, the D of smooth, deliot2023 and zirr2016); the others
+        // drop it.
         const bool correlated =
             model.reads_slope_correlation && model.reads_slope_correlation(*resolved);
         if (correlated && map_widens) c.z += map_covariance_xy(*m.normal_map, *bump);

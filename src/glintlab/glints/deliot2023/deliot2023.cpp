@@ -15,14 +15,15 @@ namespace glintlab {
 
 float deliot2023_ndf(glm::vec3 h, const Footprint& footprint, const Deliot2023Target& target,
                      const Deliot2023Params& params) {
-    return shader::deliot2023_ndf(h, footprint, target.ndf, target.alpha_x, target.alpha_y,
-                                  target.log_density, target.seed, params.microfacet_roughness,
-                                  params.screen_space_scale, params.density_randomization,
-                                  params.original_defects, params.conditional_gaussian);
+    return shader::deliot2023_ndf(
+        h, footprint, target.ndf, target.alpha_x, target.alpha_y, target.rho, target.log_density,
+        target.seed, params.microfacet_roughness, params.screen_space_scale,
+        params.density_randomization, params.original_defects, params.conditional_gaussian);
 }
 
 float deliot2023_target_ndf(glm::vec3 h, const Deliot2023Target& target) {
-    return shader::D_Microfacet(target.ndf, h, target.alpha_x, target.alpha_y);
+    return shader::D_Microfacet_correlated(target.ndf, h, target.alpha_x, target.alpha_y,
+                                           target.rho);
 }
 
 glm::vec3 deliot2023_footprint_ellipse(glm::vec2 duvdx, glm::vec2 duvdy, bool original_defects) {
@@ -34,6 +35,7 @@ float deliot2023_footprint_ndf(glm::vec3 h, const Footprint& footprint, const Gl
     t.ndf = desc.ndf == NdfType::GGX ? shader::NDF_GGX : shader::NDF_BECKMANN;
     t.alpha_x = desc.alpha_x;
     t.alpha_y = desc.alpha_y;
+    t.rho = desc.slope_correlation;
     t.log_density = desc.log_density;
     t.seed = desc.seed;
     return deliot2023_ndf(h, footprint, t, std::get<Deliot2023Params>(desc.params));

@@ -738,15 +738,19 @@ Deliot2023PixelPart deliot2023_cached_pixel_part(vec2 uv, float log_density, uin
 #endif
 
 // D_P(h) of Eq. 3-4 for a local half vector h (z = normal) and a uv footprint.
-// ndf, alpha_x, alpha_y: target NDF D; log_density: ln(facets per unit uv area);
-// seed: the material's seed. microfacet_roughness = R in (0, 1];
-// screen_space_scale: minimum glint size in pixels.
-float deliot2023_ndf(vec3 h, Footprint fp, int ndf, float alpha_x, float alpha_y, float log_density,
-                     uint seed, float microfacet_roughness, float screen_space_scale,
-                     float density_randomization, bool original_defects, bool conditional) {
-    float d_h = D_Microfacet(ndf, h, alpha_x, alpha_y);
+// ndf, alpha_x, alpha_y, rho: target NDF D (rho: its slopes' correlation, a
+// footprint's sheared lobe; the angular grid stays on the frame's axes);
+// log_density: ln(facets per unit uv area); seed: the material's seed.
+// microfacet_roughness = R in (0, 1]; screen_space_scale: minimum glint size
+// in pixels.
+float deliot2023_ndf(vec3 h, Footprint fp, int ndf, float alpha_x, float alpha_y, float rho,
+                     float log_density, uint seed, float microfacet_roughness,
+                     float screen_space_scale, float density_randomization, bool original_defects,
+                     bool conditional) {
+    float d_h = D_Microfacet_correlated(ndf, h, alpha_x, alpha_y, rho);
     if (!(d_h > 0.0f)) return 0.0f;
-    float d_n = D_Microfacet(ndf, vec3(0.0f, 0.0f, 1.0f), alpha_x, alpha_y);  // max of D
+    // max of D
+    float d_n = D_Microfacet_correlated(ndf, vec3(0.0f, 0.0f, 1.0f), alpha_x, alpha_y, rho);
     float R = microfacet_roughness;
     float p = clamp(R * d_h / d_n, 0.0f, 1.0f);  // Eq. 4 success probability
 
@@ -793,12 +797,12 @@ float deliot2023_ndf(vec3 h, Footprint fp, int ndf, float alpha_x, float alpha_y
 // expectation, at a quarter of the binomials per frame. Single frames are
 // noisier (one grid's counts over a share of the trials).
 float deliot2023_ndf_stochastic(vec3 h, Footprint fp, int ndf, float alpha_x, float alpha_y,
-                                float log_density, uint seed, float microfacet_roughness,
-                                float screen_space_scale, float density_randomization,
-                                bool conditional, float u) {
-    float d_h = D_Microfacet(ndf, h, alpha_x, alpha_y);
+                                float rho, float log_density, uint seed,
+                                float microfacet_roughness, float screen_space_scale,
+                                float density_randomization, bool conditional, float u) {
+    float d_h = D_Microfacet_correlated(ndf, h, alpha_x, alpha_y, rho);
     if (!(d_h > 0.0f)) return 0.0f;
-    float d_n = D_Microfacet(ndf, vec3(0.0f, 0.0f, 1.0f), alpha_x, alpha_y);
+    float d_n = D_Microfacet_correlated(ndf, vec3(0.0f, 0.0f, 1.0f), alpha_x, alpha_y, rho);
     float R = microfacet_roughness;
     float p = clamp(R * d_h / d_n, 0.0f, 1.0f);
     Deliot2023Grids grids = deliot2023_footprint_grids(fp, screen_space_scale, false);

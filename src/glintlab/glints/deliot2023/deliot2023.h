@@ -19,6 +19,7 @@ struct Deliot2023Target {
     int ndf = 0;  // shader::NDF_BECKMANN or shader::NDF_GGX
     float alpha_x = 0.3f;
     float alpha_y = 0.3f;
+    float rho = 0.0f;           // the slopes' correlation (GlintDesc::slope_correlation)
     float log_density = 20.0f;  // ln(facets per unit uv area)
     uint32_t seed = 0;
 };

@@ -51,6 +51,9 @@ GlintModelDescriptor deliot2023_descriptor() {
                    "(unbiased), or 003 Eq. 23's single-gated law as published"),
     };
     d.match_facet_cone = match_deliot2023_facet_cone;
+    // D sheared by the footprint's slope correlation (ndf.glsl
+    // D_Microfacet_correlated): the widened lobe keeps Σ's direction.
+    d.reads_slope_correlation = [](const GlintDesc&) { return true; };
     d.validation = {"deliot2023"};  // run by the research library (validation_suites.h)
     return d;
 }

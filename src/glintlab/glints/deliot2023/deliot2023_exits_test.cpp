@@ -78,8 +78,8 @@ TEST(Deliot2023Exits, ExpectationExitsAgreeWithTheFullEvaluation) {
         const Deliot2023Grids g = deliot2023_footprint_grids(fp, 1.0f, false);
         const int exit_kind = deliot2023_expectation_exit(g, p, log_density, jitter);
         if (exit_kind == DELIOT2023_NO_EXIT) continue;
-        const float exited = deliot2023_ndf(h, fp, NDF_BECKMANN, alpha, alpha, log_density, seed, R,
-                                            1.0f, jitter, false, true);
+        const float exited = deliot2023_ndf(h, fp, NDF_BECKMANN, alpha, alpha, 0.0f, log_density,
+                                            seed, R, 1.0f, jitter, false, true);
         ASSERT_EQ(exited, exit_kind == DELIOT2023_EXIT_ZERO ? 0.0f : d_h);
         const float full = full_ndf(h, fp, alpha, log_density, seed, R, jitter);
         // Which exit: (a) has far fewer than one expected success.

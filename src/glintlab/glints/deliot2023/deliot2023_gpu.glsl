@@ -28,7 +28,7 @@ uniform uint u_deliot2023_frame;
 vec3 glint_ndf(vec3 h, Footprint fp) {
     if (u_deliot2023_original_defects)
         return vec3(deliot2023_ndf(h, fp, u_glint_ndf, u_glint_alpha.x, u_glint_alpha.y,
-                                   u_glint_log_density, u_glint_seed,
+                                   g_glint_slope_correlation, u_glint_log_density, u_glint_seed,
                                    u_deliot2023_microfacet_roughness,
                                    u_deliot2023_screen_space_scale,
                                    u_deliot2023_density_randomization, true,
@@ -36,7 +36,8 @@ vec3 glint_ndf(vec3 h, Footprint fp) {
     uint pixel = hash_cell(ivec2(gl_FragCoord.xy), u_glint_seed ^ 0x5bd1e995u);
     float u = uint_to_unit_float(pcg_hash(pixel ^ (u_deliot2023_frame * 0x9e3779b9u)));
     return vec3(deliot2023_ndf_stochastic(h, fp, u_glint_ndf, u_glint_alpha.x, u_glint_alpha.y,
-                                          u_glint_log_density, u_glint_seed,
+                                          g_glint_slope_correlation, u_glint_log_density,
+                                          u_glint_seed,
                                           u_deliot2023_microfacet_roughness,
                                           u_deliot2023_screen_space_scale,
                                           u_deliot2023_density_randomization,
@@ -45,7 +46,7 @@ vec3 glint_ndf(vec3 h, Footprint fp) {
 #else
 vec3 glint_ndf(vec3 h, Footprint fp) {
     return vec3(deliot2023_ndf(h, fp, u_glint_ndf, u_glint_alpha.x, u_glint_alpha.y,
-                               u_glint_log_density, u_glint_seed,
+                               g_glint_slope_correlation, u_glint_log_density, u_glint_seed,
                                u_deliot2023_microfacet_roughness, u_deliot2023_screen_space_scale,
                                u_deliot2023_density_randomization, u_deliot2023_original_defects,
                                u_deliot2023_conditional));

@@ -48,10 +48,10 @@ namespace glintlab {
 
 float deliot2023_ndf_noise_table(glm::vec3 h, const Footprint& footprint,
                                  const Deliot2023Target& target, const Deliot2023Params& params) {
-    return shader::deliot2023_ndf(h, footprint, target.ndf, target.alpha_x, target.alpha_y,
-                                  target.log_density, target.seed, params.microfacet_roughness,
-                                  params.screen_space_scale, params.density_randomization,
-                                  params.original_defects, params.conditional_gaussian);
+    return shader::deliot2023_ndf(
+        h, footprint, target.ndf, target.alpha_x, target.alpha_y, target.rho, target.log_density,
+        target.seed, params.microfacet_roughness, params.screen_space_scale,
+        params.density_randomization, params.original_defects, params.conditional_gaussian);
 }
 
 }  // namespace glintlab

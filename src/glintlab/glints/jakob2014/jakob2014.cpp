@@ -19,8 +19,9 @@ namespace {
 constexpr double kTypicalCosThetaD = 0.8;
 
 float smooth_d(const GlintDesc& desc, glm::vec3 h) {
-    return shader::D_Microfacet(desc.ndf == NdfType::GGX ? shader::NDF_GGX : shader::NDF_BECKMANN,
-                                h, desc.alpha_x, desc.alpha_y);
+    return shader::D_Microfacet_correlated(
+        desc.ndf == NdfType::GGX ? shader::NDF_GGX : shader::NDF_BECKMANN, h, desc.alpha_x,
+        desc.alpha_y, desc.slope_correlation);
 }
 
 uint32_t reverse_bits(uint32_t x) {
@@ -55,11 +56,18 @@ float snapped_alpha(float alpha) {
     return std::exp2(std::round(std::log2(alpha) * 64.0f) / 64.0f);
 }
 
+// ρ on the grid atanh(ρ) = k/64 (1 − |ρ| in steps of 3 % near ±0.99), for
+// the same reason.
+float snapped_rho(float rho) {
+    return std::tanh(std::round(std::atanh(rho) * 64.0f) / 64.0f);
+}
+
 NdfSpec ndf_spec(const GlintDesc& desc) {
     NdfSpec s;
     s.ndf = desc.ndf == NdfType::GGX ? shader::NDF_GGX : shader::NDF_BECKMANN;
     s.alpha_x = desc.alpha_varies ? snapped_alpha(desc.alpha_x) : desc.alpha_x;
     s.alpha_y = desc.alpha_varies ? snapped_alpha(desc.alpha_y) : desc.alpha_y;
+    s.rho = desc.slope_correlation != 0.0f ? snapped_rho(desc.slope_correlation) : 0.0f;
     return s;
 }
 

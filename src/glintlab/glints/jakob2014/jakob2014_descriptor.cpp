@@ -78,6 +78,9 @@ GlintModelDescriptor jakob2014_descriptor() {
     d.check = check_jakob2014;
     d.fit_material = fit_jakob2014;
     d.match_facet_cone = match_jakob2014_facet_cone;
+    // Its particles' NDF sheared by a normal map's slope correlation (one
+    // integral table per snapped (α_x, α_y, ρ): jakob2014.cpp snapped_rho).
+    d.reads_slope_correlation = [](const GlintDesc&) { return true; };
     d.validation = {"jakob2014"};  // run by the research library (validation_suites.h)
     return d;
 }

@@ -13,7 +13,7 @@ namespace glintlab::jakob2014 {
 double NdfSpec::density(glm::dvec3 m) const {
     if (m.z <= 0.0) return 0.0;
     const glm::vec3 mf = glm::vec3(glm::normalize(m));
-    return double(shader::D_Microfacet(ndf, mf, alpha_x, alpha_y)) * double(mf.z);
+    return double(shader::D_Microfacet_correlated(ndf, mf, alpha_x, alpha_y, rho)) * double(mf.z);
 }
 
 NdfIntegralTable::NdfIntegralTable(const NdfSpec& spec) : spec_(spec) {
@@ -67,8 +67,8 @@ namespace {
 
 struct TableRegistry {
     std::mutex mutex;
-    // By (ndf, α_x, α_y): per-hit roughness asks for many.
-    std::map<std::tuple<int, float, float>, std::unique_ptr<NdfIntegralTable>> tables;
+    // By (ndf, α_x, α_y, ρ): per-hit roughness asks for many.
+    std::map<std::tuple<int, float, float, float>, std::unique_ptr<NdfIntegralTable>> tables;
 };
 
 TableRegistry& registry() {
@@ -83,7 +83,8 @@ const NdfIntegralTable& ndf_integral_table(const NdfSpec& spec) {
     if (last && last->spec() == spec) return *last;
     TableRegistry& r = registry();
     std::lock_guard<std::mutex> lock(r.mutex);
-    std::unique_ptr<NdfIntegralTable>& t = r.tables[{spec.ndf, spec.alpha_x, spec.alpha_y}];
+    std::unique_ptr<NdfIntegralTable>& t =
+        r.tables[{spec.ndf, spec.alpha_x, spec.alpha_y, spec.rho}];
     if (!t) t = std::make_unique<NdfIntegralTable>(spec);
     return *(last = t.get());
 }

@@ -22,6 +22,7 @@ namespace glintlab::jakob2014 {
 struct NdfSpec {
     int ndf = 0;  // shader::NDF_BECKMANN or shader::NDF_GGX
     float alpha_x = 0.3f, alpha_y = 0.3f;
+    float rho = 0.0f;  // the slopes' correlation (a sheared lobe, GlintDesc::slope_correlation)
     bool operator==(const NdfSpec&) const = default;
     // D(m)(m·n), the density of particle normals.
     double density(glm::dvec3 m) const;

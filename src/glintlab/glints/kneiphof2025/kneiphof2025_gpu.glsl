@@ -38,7 +38,7 @@ uniform vec3 u_kneiphof2025_f0;             // kneiphof2025_f0(desc)
 uniform float u_kneiphof2025_radiance_scale; // current environment scale / prefiltered one
 float kneiphof2025_glue_alpha() { return clamp(u_glint_alpha.x, 1e-4f, 1.0f); }  // alpha_of
 vec3 glint_ndf(vec3 h, Footprint fp) {
-    return vec3(deliot2023_ndf(h, fp, NDF_GGX, u_glint_alpha.x, u_glint_alpha.y,
+    return vec3(deliot2023_ndf(h, fp, NDF_GGX, u_glint_alpha.x, u_glint_alpha.y, 0.0f,
                                u_glint_log_density, u_glint_seed,
                                u_kneiphof2025_microfacet_roughness,
                                u_kneiphof2025_screen_space_scale,

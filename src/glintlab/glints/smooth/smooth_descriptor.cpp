@@ -21,6 +21,9 @@ GlintModelDescriptor smooth_descriptor() {
     };
     d.set_gpu_hooks(GLINTLAB_GPU_HOOKS(smooth_gpu_hooks));
     d.set_export("glintlab/glints/smooth_gpu.glsl");
+    // D sheared by the footprint's slope correlation (ndf.glsl
+    // D_Microfacet_correlated): the widened lobe keeps Σ's direction.
+    d.reads_slope_correlation = [](const GlintDesc&) { return true; };
     return d;
 }
 

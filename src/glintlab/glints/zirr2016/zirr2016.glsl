@@ -122,16 +122,18 @@ ivec2 zirr2016_texel(vec2 uv, int l) {
 }
 
 // D_P(h) of Eq. 3-4 for a local half vector h (z = normal) and a uv footprint.
-// ndf, alpha_x, alpha_y: target NDF D; log_density: ln(facets per unit uv
-// area); seed: the material's seed; microfacet_roughness = R in (0, 1]
+// ndf, alpha_x, alpha_y, rho: target NDF D (rho: its slopes' correlation, a
+// footprint's sheared lobe; the angular grid stays on the frame's axes);
+// log_density: ln(facets per unit uv area); seed: the material's seed; microfacet_roughness = R in (0, 1]
 // (angular cell size in slope units); max_anisotropy in [1, 64];
 // screen_space_scale S: texel width in footprint minor widths.
-float zirr2016_ndf(vec3 h, Footprint fp, int ndf, float alpha_x, float alpha_y, float log_density,
-                   uint seed, float microfacet_roughness, float max_anisotropy,
+float zirr2016_ndf(vec3 h, Footprint fp, int ndf, float alpha_x, float alpha_y, float rho,
+                   float log_density, uint seed, float microfacet_roughness, float max_anisotropy,
                    float screen_space_scale) {
-    float d_h = D_Microfacet(ndf, h, alpha_x, alpha_y);
+    float d_h = D_Microfacet_correlated(ndf, h, alpha_x, alpha_y, rho);
     if (!(d_h > 0.0f)) return 0.0f;
-    float d_n = D_Microfacet(ndf, vec3(0.0f, 0.0f, 1.0f), alpha_x, alpha_y);  // max of D
+    // max of D
+    float d_n = D_Microfacet_correlated(ndf, vec3(0.0f, 0.0f, 1.0f), alpha_x, alpha_y, rho);
     float R = microfacet_roughness;
     float p = clamp(R * d_h / d_n, 0.0f, 1.0f);  // Eq. 4 success probability
 

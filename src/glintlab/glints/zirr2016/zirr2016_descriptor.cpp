@@ -41,6 +41,9 @@ GlintModelDescriptor zirr2016_descriptor() {
                    "texel width in footprint minor widths: LOD = log2(minor * S)"),
     };
     d.match_facet_cone = match_zirr2016_facet_cone;
+    // D sheared by the footprint's slope correlation (ndf.glsl
+    // D_Microfacet_correlated): the widened lobe keeps Σ's direction.
+    d.reads_slope_correlation = [](const GlintDesc&) { return true; };
     d.validation = {"zirr2016"};  // run by the research library (validation_suites.h)
     return d;
 }

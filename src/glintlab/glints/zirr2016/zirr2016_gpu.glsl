@@ -16,7 +16,7 @@ uniform float u_zirr2016_max_anisotropy;
 uniform float u_zirr2016_screen_space_scale;
 vec3 glint_ndf(vec3 h, Footprint fp) {
     return vec3(zirr2016_ndf(h, fp, u_glint_ndf, u_glint_alpha.x, u_glint_alpha.y,
-                             u_glint_log_density, u_glint_seed, u_zirr2016_microfacet_roughness,
+                             g_glint_slope_correlation, u_glint_log_density, u_glint_seed, u_zirr2016_microfacet_roughness,
                              u_zirr2016_max_anisotropy, u_zirr2016_screen_space_scale));
 }
 

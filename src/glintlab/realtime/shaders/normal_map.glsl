@@ -50,10 +50,11 @@ void normal_map_shade(Footprint fp, bool back, float bitangent_sign, vec3 wo_wor
     vec2 mean = first.xy;
     vec3 cov = vec3(0.0f);
     if (lean) {
-        // Σ's correlation matters to an isotropic lobe that is not a glint's.
+        // Σ's correlation turns every lobe but a diffuse one and the glint
+        // lobes of models that drop it.
         bool correlated = mat.type == MATERIAL_GLINT
                               ? u_normal_map_widens_glint != 0 && u_glint_reads_correlation != 0
-                              : mat.type != MATERIAL_DIFFUSE && mat.alpha_x == mat.alpha_y;
+                              : mat.type != MATERIAL_DIFFUSE;
         float second_xy = correlated ? normal_map_fetch(u_normal_moments, fp, true).x : 0.0f;
         cov = slope_covariance(mean, first.zw, second_xy, correlated);
     }
@@ -62,7 +63,8 @@ void normal_map_shade(Footprint fp, bool back, float bitangent_sign, vec3 wo_wor
     tilt_frame_to_slope(mean, t, b, n);
     if (mat.type == MATERIAL_DIFFUSE) return;
     if (mat.type == MATERIAL_GLINT) {
-        // Glint NDF axes stay on the uv axes: Σ's correlation is dropped.
+        // Glint NDF axes stay on the uv axes: Σ_xy shears the target of the
+        // models that read it (forward.frag.glsl), the others drop it.
         if (u_normal_map_widens_glint != 0) {
             mat.glint.alpha_x = slope_widened_alpha(mat.glint.alpha_x, cov.x, 1.0f);
             mat.glint.alpha_y = slope_widened_alpha(mat.glint.alpha_y, cov.y, 1.0f);
@@ -71,21 +73,15 @@ void normal_map_shade(Footprint fp, bool back, float bitangent_sign, vec3 wo_wor
         }
         return;
     }
-    if (mat.alpha_x == mat.alpha_y && cov.z != 0.0f) {
-        // An isotropic lobe widened by a correlated covariance: exact along
-        // Σ's principal axes.
-        float angle = 0.5f * atan(2.0f * cov.z, cov.x - cov.y);
-        float mid = 0.5f * (cov.x + cov.y);
-        float radius = sqrt(0.25f * (cov.x - cov.y) * (cov.x - cov.y) + cov.z * cov.z);
-        vec3 tr = cos(angle) * t + sin(angle) * b;
+    // The widened lobe along its principal axes (render/surface_bsdf.cpp).
+    vec3 lobe = principal_slope_lobe(slope_widened_alpha(mat.alpha_x, cov.x, 4.0f),
+                                     slope_widened_alpha(mat.alpha_y, cov.y, 4.0f), cov.z, 4.0f);
+    mat.alpha_x = lobe.x;
+    mat.alpha_y = lobe.y;
+    if (lobe.z != 0.0f) {
+        vec3 tr = cos(lobe.z) * t + sin(lobe.z) * b;
         t = tr;
         b = cross(n, tr);
-        float a = mat.alpha_x;
-        mat.alpha_x = slope_widened_alpha(a, mid + radius, 4.0f);
-        mat.alpha_y = slope_widened_alpha(a, max(mid - radius, 0.0f), 4.0f);
-    } else {
-        mat.alpha_x = slope_widened_alpha(mat.alpha_x, cov.x, 4.0f);
-        mat.alpha_y = slope_widened_alpha(mat.alpha_y, cov.y, 4.0f);
     }
     g_alpha = vec2(mat.alpha_x, mat.alpha_y);
 }
