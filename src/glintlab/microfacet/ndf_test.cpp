@@ -11,14 +11,9 @@
 #include "glintlab/microfacet/microfacet.h"
 
 // principal_slope_lobe, the turned lobe a correlated one equals.
-GLINTLAB_SHADER_BEGIN
-#pragma GCC diagnostic push
-#pragma GCC diagnostic ignored "-Wunused-function"
-namespace {
+GLINTLAB_SHADER_FUNCTIONS_BEGIN
 #include "glintlab/core/slope_frame.glsl"
-}  // namespace
-#pragma GCC diagnostic pop
-GLINTLAB_SHADER_END
+GLINTLAB_SHADER_FUNCTIONS_END
 
 namespace glintlab {
 namespace {
