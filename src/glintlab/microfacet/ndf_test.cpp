@@ -122,6 +122,23 @@ TEST(MicrofacetNdf, CorrelatedSlopesAreTheLobeTurnedToItsPrincipalAxes) {
               D_Microfacet(NDF_GGX, m, 0.3f, 0.2f));
 }
 
+// The sheared NDF stays finite and non-negative over the range the
+// renderers pass it: α down to the glint clamp (1e-3), |ρ| up to the 0.99
+// clamp, half vectors down to grazing.
+TEST(MicrofacetNdf, CorrelatedSlopesStayFiniteAtTheLimits) {
+    for (int ndf : {NDF_BECKMANN, NDF_GGX})
+        for (float alpha : {1e-3f, 0.1f, 1.0f})
+            for (float rho : {-0.99f, -0.5f, 0.5f, 0.99f})
+                for (float z : {1e-6f, 1e-3f, 0.1f, 0.7f, 1.0f})
+                    for (int k = 0; k < 8; ++k) {
+                        const float phi = 0.785398f * float(k), r = std::sqrt(1.0f - z * z);
+                        const glm::vec3 m(r * std::cos(phi), r * std::sin(phi), z);
+                        const float d = D_Microfacet_correlated(ndf, m, alpha, 2.0f * alpha, rho);
+                        EXPECT_TRUE(std::isfinite(d) && d >= 0.0f) << fmt::format(
+                            "ndf {} alpha {} rho {} z {} phi {}: {}", ndf, alpha, rho, z, phi, d);
+                    }
+}
+
 // Weak white furnace (Heitz 2014 §3 / chermain2020 Eq. 17):
 //   integral of G1(o, m) max(0, o.m) D(m) dm / cos(theta_o) = 1.
 // Smith: true by construction of Lambda (Heitz 2014 §5). V-cavity: for every
