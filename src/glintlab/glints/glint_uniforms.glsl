@@ -21,8 +21,8 @@ float g_glint_log_density;
 #define u_glint_alpha g_glint_alpha
 #define u_glint_log_density g_glint_log_density
 // The correlation of the glint NDF's slopes at the fragment: a normal map's
-// and a curved surface's Σ_xy for the models that read it (chermain2020's
-// "slope_correlation", Chermain et al. 2021); 0 elsewhere.
+// and a curved surface's Σ_xy for the models that shear their target by it
+// (GlintModelDescriptor::reads_slope_correlation); 0 elsewhere.
 float g_glint_slope_correlation;
 #else
 const float g_glint_slope_correlation = 0.0f;

@@ -292,8 +292,8 @@ SurfaceBsdf make_surface_bsdf(const MaterialDesc& m, const SurfaceHit& hit, glm:
         // Glint NDF axes stay on the uv axes (the models' grids follow
         // them): a model that reads the slopes' correlation shears its
         // target by it (chermain2020 with Chermain et al. 2021's slope
-        // correlation, the D of smooth, deliot2023 and zirr2016); the others
-        // drop it.
+        // correlation, the D of smooth, deliot2023, zirr2016 and jakob2014);
+        // the others drop it.
         const bool correlated =
             model.reads_slope_correlation && model.reads_slope_correlation(*resolved);
         if (correlated && map_widens) c.z += map_covariance_xy(*m.normal_map, *bump);

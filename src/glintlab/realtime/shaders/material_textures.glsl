@@ -35,7 +35,7 @@ uniform mat2 u_material_texture_linear[6];
 uniform vec2 u_material_texture_offset[6];
 uniform vec2 u_material_texture_size[6];
 // The glint model shears its target by the slopes' correlation
-// (GlintModelDescriptor::reads_slope_correlation: chermain2020), which the
+// (GlintModelDescriptor::reads_slope_correlation), which the
 // normal map and the curvature add up per fragment.
 uniform int u_glint_reads_correlation;
 
