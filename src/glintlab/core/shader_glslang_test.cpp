@@ -85,7 +85,8 @@ std::vector<std::string> forward_prefixes() {
             out.push_back(fmt::format(
                 "#define GLINTLAB_POINT_LIGHTS {}\n#define GLINTLAB_DIRECTIONAL_LIGHTS {}\n"
                 "#define GLINTLAB_ENVIRONMENT {}\n#define GLINTLAB_ENV_SPECULAR_SAMPLES 4\n"
-                "#define GLINTLAB_ENV_DIFFUSE_SAMPLES 4\n#define GLINTLAB_ENV_SUN_SAMPLES 4\n"
+                "#define GLINTLAB_ENV_DIFFUSE_SAMPLES 4\n#define GLINTLAB_ENV_DEFENSIVE_SAMPLES 4\n"
+                "#define GLINTLAB_ENV_SOURCE_SAMPLES 4\n"
                 "{}#include \"{}\"\n",
                 points, directionals, environment,
                 lights == 2 ? "#define GLINTLAB_MATERIAL_TEXTURES 1\n"

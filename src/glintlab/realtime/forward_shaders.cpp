@@ -37,9 +37,11 @@ AssembledShader forward_fragment_shader(const ProgramKey& key) {
     std::string text = fmt::format(
         "#define GLINTLAB_POINT_LIGHTS {}\n#define GLINTLAB_DIRECTIONAL_LIGHTS {}\n"
         "#define GLINTLAB_ENVIRONMENT {}\n#define GLINTLAB_ENV_SPECULAR_SAMPLES {}\n"
-        "#define GLINTLAB_ENV_DIFFUSE_SAMPLES {}\n#define GLINTLAB_ENV_SUN_SAMPLES {}\n",
+        "#define GLINTLAB_ENV_DIFFUSE_SAMPLES {}\n#define GLINTLAB_ENV_DEFENSIVE_SAMPLES {}\n"
+        "#define GLINTLAB_ENV_SOURCE_SAMPLES {}\n",
         key.point_lights, key.directional_lights, key.environment ? 1 : 0,
-        kEnvironmentSpecularSamples, kEnvironmentDiffuseSamples, kEnvironmentSunSamples);
+        kEnvironmentSpecularSamples, kEnvironmentDiffuseSamples, kEnvironmentDefensiveSamples,
+        kEnvironmentSourceSamples);
     if (key.material_textures || key.normal_map || key.curvature)
         text += "#define GLINTLAB_MATERIAL_TEXTURES 1\n";
     if (key.normal_map) text += "#define GLINTLAB_NORMAL_MAP 1\n";

@@ -43,7 +43,8 @@ inline constexpr int kShadowUnit = 1;  // depth-compare 2D array, one layer per 
 inline constexpr int kShadowMapSize = 2048;
 inline constexpr int kPointShadowUnit = 2;  // depth-compare cube array, one cube per point light
 inline constexpr int kPointShadowSize = 1024;
-inline constexpr int kEnvironmentResidualUnit = 3;  // the map without its sun (environment_sun.h)
+inline constexpr int kEnvironmentResidualUnit =
+    3;  // the map without its sources (environment_sources.h)
 // Textured material parameters: units kMaterialTextureUnit + slot
 // (shaders/material_textures.glsl MATERIAL_TEXTURE_*).
 inline constexpr int kMaterialTextureUnit = 10;  // after the models' units 4-9 (gpu_model_hooks.h)
@@ -53,13 +54,19 @@ inline constexpr int kNormalMapUnit = kMaterialTextureUnit + kMaterialTextureSlo
 
 // Environment lighting (Krivanek & Colbert 2008, filtered importance
 // sampling): a fixed Hammersley set of samples per pixel, the same for every
-// pixel (no noise), each reading the environment without its sun, mipmapped
-// by solid angle (scene/environment_mips.h), at the level whose texel solid
-// angle matches the sample's share of the sphere; the sun, when the map has
-// one (scene/environment_sun.h), as kEnvironmentSunSamples directions in it.
+// pixel (no noise), each reading the environment without its bright sources,
+// mipmapped by solid angle (scene/environment_mips.h), at the level whose
+// texel solid angle matches the sample's share of the sphere: 48 of the
+// lobe's visible normals and 64 cosine samples for a diffuse part. A lobe
+// without one still takes kEnvironmentDefensiveSamples cosine samples: the
+// lobe's own samples are too few in its tail, where each reads steradians of
+// the map (a Beckmann 0.12 plane at grazing view under blender's studio map:
+// +67 % without them, −6 % with). The sources (scene/environment_sources.h)
+// are kEnvironmentSourceSamples directions in them.
 inline constexpr int kEnvironmentSpecularSamples = 48;
 inline constexpr int kEnvironmentDiffuseSamples = 64;
-inline constexpr int kEnvironmentSunSamples = 16;
+inline constexpr int kEnvironmentDefensiveSamples = 16;
+inline constexpr int kEnvironmentSourceSamples = 32;
 
 AssembledShader forward_vertex_shader();
 AssembledShader shadow_vertex_shader();  // depth-only pass of the shadow maps

@@ -24,7 +24,7 @@
 #include "glintlab/realtime/glint_programs.h"
 #include "glintlab/realtime/gpu_geometry.h"
 #include "glintlab/scene/environment_mips.h"
-#include "glintlab/scene/environment_sun.h"
+#include "glintlab/scene/environment_sources.h"
 
 namespace glintlab {
 namespace {
@@ -132,10 +132,10 @@ struct GpuRenderer::Impl {
     std::vector<GpuShape> shapes;
     glm::vec4 bounds{0.0f};
     gl::Texture environment;
-    // The map without its sun when it has one (else the lobe reads
-    // `environment`), and the sun's sample directions and powers.
+    // The map without its bright sources when it has any (else the lobe
+    // reads `environment`), and the sources' sample directions and powers.
     gl::Texture environment_residual;
-    std::vector<glm::vec3> sun_directions, sun_powers;
+    std::vector<glm::vec3> source_directions, source_powers;
     float environment_scale = 1.0f, environment_rotation = 0.0f;
     int environment_width = 0, environment_height = 0;
     std::map<gl::ProgramKey, gl::Program> programs;
@@ -683,11 +683,12 @@ GpuRenderer::GpuRenderer(const Scene& scene) : impl_(make_impl(scene)) {
             fail("{}: OpenGL renderer: the environment map {} is empty", scene.file.string(),
                  env.file.string());
         r.environment = upload_latlong(image);
-        EnvironmentSunSplit sun = split_environment_sun(image, gl::kEnvironmentSunSamples);
-        if (!sun.directions.empty()) {
-            r.environment_residual = upload_latlong(sun.residual);
-            r.sun_directions = std::move(sun.directions);
-            r.sun_powers = std::move(sun.powers);
+        EnvironmentSourceSplit sources =
+            split_environment_sources(image, gl::kEnvironmentSourceSamples);
+        if (!sources.directions.empty()) {
+            r.environment_residual = upload_latlong(sources.residual);
+            r.source_directions = std::move(sources.directions);
+            r.source_powers = std::move(sources.powers);
         }
         r.environment_width = image.width;
         r.environment_height = image.height;
@@ -851,13 +852,13 @@ void GpuRenderer::render(const Scene& scene) {
             glProgramUniform2f(p, loc("u_environment_size"),
                                static_cast<float>(r.environment_width),
                                static_cast<float>(r.environment_height));
-            const auto suns = static_cast<GLsizei>(r.sun_directions.size());
-            glProgramUniform1i(p, loc("u_environment_sun_count"), suns);
-            if (suns > 0) {
-                glProgramUniform3fv(p, loc("u_environment_sun_direction"), suns,
-                                    glm::value_ptr(r.sun_directions[0]));
-                glProgramUniform3fv(p, loc("u_environment_sun_power"), suns,
-                                    glm::value_ptr(r.sun_powers[0]));
+            const auto count = static_cast<GLsizei>(r.source_directions.size());
+            glProgramUniform1i(p, loc("u_environment_source_count"), count);
+            if (count > 0) {
+                glProgramUniform3fv(p, loc("u_environment_source_direction"), count,
+                                    glm::value_ptr(r.source_directions[0]));
+                glProgramUniform3fv(p, loc("u_environment_source_power"), count,
+                                    glm::value_ptr(r.source_powers[0]));
             }
             glBindTextureUnit(gl::kEnvironmentResidualUnit, r.environment_residual
                                                                 ? r.environment_residual.get()

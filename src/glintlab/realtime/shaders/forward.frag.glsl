@@ -6,7 +6,8 @@
 //     #define GLINTLAB_ENVIRONMENT 0|1
 //     #define GLINTLAB_ENV_SPECULAR_SAMPLES N  (filtered importance sampling)
 //     #define GLINTLAB_ENV_DIFFUSE_SAMPLES N
-//     #define GLINTLAB_ENV_SUN_SAMPLES N       (directions in the map's sun)
+//     #define GLINTLAB_ENV_DEFENSIVE_SAMPLES N (cosine samples of a lobe alone)
+//     #define GLINTLAB_ENV_SOURCE_SAMPLES N    (directions in the map's sources)
 //     #include "<the model's GPU glue, glints/**/*_gpu.glsl>"
 //     #include "glintlab/realtime/shaders/forward.frag.glsl"
 // The glue defines glint_ndf (material.glsl's D_P) and optionally
@@ -88,16 +89,16 @@ uniform vec3 u_directional_radiance[GLINTLAB_DIRECTIONAL_LIGHTS];
 
 #if GLINTLAB_ENVIRONMENT
 layout(binding = 0) uniform sampler2D u_environment;  // lat-long, full mip chain
-// The same map without its sun (scene/environment_sun.h), read by the lobe's
-// samples; the sun is u_environment_sun_count directions (the map's frame)
-// each carrying a power (radiance × solid angle).
+// The same map without its bright sources (scene/environment_sources.h), read
+// by the lobe's samples; the sources are u_environment_source_count directions
+// (the map's frame) each carrying a power (radiance × solid angle).
 layout(binding = 3) uniform sampler2D u_environment_residual;
 uniform float u_environment_scale;
 uniform float u_environment_rotation;  // radians about +y
 uniform vec2 u_environment_size;       // texels of level 0
-uniform int u_environment_sun_count;   // 0 (no sun) or GLINTLAB_ENV_SUN_SAMPLES
-uniform vec3 u_environment_sun_direction[GLINTLAB_ENV_SUN_SAMPLES];
-uniform vec3 u_environment_sun_power[GLINTLAB_ENV_SUN_SAMPLES];
+uniform int u_environment_source_count;  // 0 (no source) or GLINTLAB_ENV_SOURCE_SAMPLES
+uniform vec3 u_environment_source_direction[GLINTLAB_ENV_SOURCE_SAMPLES];
+uniform vec3 u_environment_source_power[GLINTLAB_ENV_SOURCE_SAMPLES];
 
 // scene/environment.cpp direction_to_uv.
 vec2 environment_uv(vec3 d) {
@@ -139,15 +140,15 @@ vec3 environment_filtered(sampler2D map, vec3 d, float omega) {
 vec3 environment_radiance(vec3 d, float omega) {
     return environment_filtered(u_environment, d, omega);
 }
-// The same for the map without its sun (the lobe's samples).
+// The same for the map without its sources (the lobe's samples).
 vec3 environment_residual_radiance(vec3 d, float omega) {
     return environment_filtered(u_environment_residual, d, omega);
 }
 
-// World direction of sun sample k: the map's frame turned by the rotation
+// World direction of source sample k: the map's frame turned by the rotation
 // about +y (scene/environment.cpp uv_to_direction: phi_world = phi_map + r).
-vec3 environment_sun_direction(int k) {
-    vec3 m = u_environment_sun_direction[k];
+vec3 environment_source_direction(int k) {
+    vec3 m = u_environment_source_direction[k];
     float c = cos(u_environment_rotation), s = sin(u_environment_rotation);
     return vec3(m.x * c - m.z * s, m.y, m.z * c + m.x * s);
 }
@@ -252,8 +253,9 @@ SurfaceMaterial surface_material() {
 #if GLINTLAB_ENVIRONMENT
 // Environment light reflected towards wo: a deterministic multi-sample MIS
 // estimate (balance heuristic, Veach 1997 Eq. 9.13) over visible-normal
-// samples of the lobe's NDF and, for materials with a diffuse part, cosine
-// samples; every sample reads the environment prefiltered over its solid
+// samples of the lobe's NDF and cosine samples (64 for materials with a
+// diffuse part, 16 defensive ones for a lobe alone: forward_shaders.h);
+// every sample reads the environment prefiltered over its solid
 // angle, so the estimate is smooth instead of noisy. Mirrors (alpha below
 // kSmoothAlpha) reflect one filtered direction.
 // `horizon`: the geometric normal on wo's side in the local frame where the
@@ -283,7 +285,7 @@ vec3 environment_lighting(SurfaceMaterial mat, vec3 wo, vec3 t, vec3 b, vec3 n, 
         if (!has_diffuse) return sum;
     }
     int ns = has_lobe && !mirror ? GLINTLAB_ENV_SPECULAR_SAMPLES : 0;
-    int nd = has_diffuse ? GLINTLAB_ENV_DIFFUSE_SAMPLES : 0;
+    int nd = has_diffuse ? GLINTLAB_ENV_DIFFUSE_SAMPLES : GLINTLAB_ENV_DEFENSIVE_SAMPLES;
     for (int s = 0; s < ns + nd; ++s) {
         vec3 wi;
         if (s < ns) {
@@ -305,12 +307,13 @@ vec3 environment_lighting(SurfaceMaterial mat, vec3 wo, vec3 t, vec3 b, vec3 n, 
         vec3 world = wi.x * t + wi.y * b + wi.z * n;
         sum += f * wi.z / p_mix * environment_residual_radiance(world, 1.0f / p_mix);
     }
-    // The sun: a quadrature of its disc, sum_k f(wi_k) cos(theta_k) Phi_k.
-    for (int k = 0; k < u_environment_sun_count; ++k) {
-        vec3 d = environment_sun_direction(k);
+    // The sources: a quadrature of each, sum_k f(wi_k) cos(theta_k) Phi_k.
+    for (int k = 0; k < u_environment_source_count; ++k) {
+        vec3 d = environment_source_direction(k);
         vec3 wi = vec3(dot(d, t), dot(d, b), dot(d, n));
         if (wi.z <= 0.0f || dot(wi, horizon) < 0.0f) continue;
-        sum += eval_bsdf(mat, wo, wi, fp) * wi.z * (u_environment_scale * u_environment_sun_power[k]);
+        vec3 power = u_environment_scale * u_environment_source_power[k];
+        sum += eval_bsdf(mat, wo, wi, fp) * wi.z * power;
     }
     return sum;
 }
