@@ -233,7 +233,7 @@ TEST(Compare, LeanMixtureFollowsTheTruthWhereOneLobeDoesNot) {
 // spreads the footprint's diagonal slopes over a disc and lost 38 % of the
 // truth's light at 48²; the models that shear their target by the slopes'
 // correlation keep its direction (docs/VALIDATION.md, "Normal maps").
-// Measured at this size: smooth +6.7 % (se 2.1 %), deliot2023 +6.2 % (se
+// Measured at this size: smooth +6.8 % (se 2.1 %), deliot2023 +6.3 % (se
 // 2.3 %), against −39.5 % and −39.6 % unsheared; the bound, 15 %, is over
 // 3 se from both (fixed seeds: the run is deterministic).
 TEST(Compare, ShearedLobesFollowTheRidgesDiagonalSlopes) {

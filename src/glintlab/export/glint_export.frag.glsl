@@ -200,6 +200,7 @@ GlintMaterial glint_material() {
     m.ndf = u_glint_ndf;
     m.alpha_x = u_glint_alpha.x;
     m.alpha_y = u_glint_alpha.y;
+    m.rho = g_glint_slope_correlation;
     m.g2 = u_glint_g2;
     return m;
 }

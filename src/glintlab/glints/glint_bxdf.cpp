@@ -64,6 +64,7 @@ shader::GlintMaterial material(const GlintDesc& desc) {
     m.ndf = ndf_id(desc.ndf);
     m.alpha_x = desc.alpha_x;
     m.alpha_y = desc.alpha_y;
+    m.rho = desc.slope_correlation;
     m.g2 = glint_g2_mode(desc.model_id);
     return m;
 }

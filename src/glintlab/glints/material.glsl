@@ -40,7 +40,8 @@ struct GlintMaterial {
     int ndf;           // NDF_BECKMANN / NDF_GGX of the smooth limit
     float alpha_x;
     float alpha_y;
-    int g2;  // GLINT_G2_*
+    float rho;  // the slopes' correlation (D_Microfacet_correlated; 0 for most)
+    int g2;     // GLINT_G2_*
 };
 
 vec3 glint_fresnel(GlintMaterial m, float cos_oh) {
@@ -49,7 +50,7 @@ vec3 glint_fresnel(GlintMaterial m, float cos_oh) {
 
 float glint_g2(GlintMaterial m, vec3 wo, vec3 wi, vec3 h) {
     if (m.g2 == GLINT_G2_VCAVITY) return G2_VCavity(wo, wi, h);
-    return G2_SmithCorrelated(m.ndf, wo, wi, m.alpha_x, m.alpha_y);
+    return G2_SmithCorrelated_sheared(m.ndf, wo, wi, m.alpha_x, m.alpha_y, m.rho);
 }
 
 bool glint_has_base(GlintMaterial m) {

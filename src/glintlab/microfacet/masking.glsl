@@ -18,27 +18,48 @@ float masking_alpha_tan2(vec3 w, float alpha_x, float alpha_y) {
     return (ax * ax + ay * ay) / (w.z * w.z);
 }
 
-// Heitz 2014 Eq. 72 with a = 1 / (alpha tan theta):
+// The same for slopes correlated by rho (D_Microfacet_correlated): Smith's
+// Lambda depends on the slope distribution only through its marginal along
+// the direction's azimuth (Heitz 2014 §5.3), whose variance the slope matrix
+// [[ax², ρ ax ay], [ρ ax ay, ay²]] gives: (ax² x² + 2ρ ax ay x y + ay² y²) / z².
+float masking_alpha_tan2_correlated(vec3 w, float alpha_x, float alpha_y, float rho) {
+    float ax = alpha_x * w.x;
+    float ay = alpha_y * w.y;
+    return max(ax * ax + ay * ay + 2.0f * rho * ax * ay, 0.0f) / (w.z * w.z);
+}
+
+// Heitz 2014 Eq. 72 with a = 1 / (alpha tan theta), t2 = 1 / a^2:
 //   Lambda = (erf(a) - 1) / 2 + exp(-a^2) / (2 a sqrt(pi)).
-float Lambda_Beckmann(vec3 w, float alpha_x, float alpha_y) {
-    if (w.z == 0.0f) return 1e30f;  // grazing: fully masked
-    float t2 = masking_alpha_tan2(w, alpha_x, alpha_y);
+float Lambda_Beckmann_tan2(float t2) {
     if (t2 == 0.0f) return 0.0f;  // normal incidence
     float a = 1.0f / sqrt(t2);
     return 0.5f * (erf_approx(a) - 1.0f) + exp(-a * a) / (2.0f * a * SQRT_PI);
 }
 
-// Heitz 2014 Eq. 86: Lambda = (-1 + sqrt(1 + 1/a^2)) / 2.
+// Heitz 2014 Eq. 86: Lambda = (-1 + sqrt(1 + 1/a^2)) / 2; sqrt(1+t2)-1
+// rewritten as t2/(sqrt(1+t2)+1) to avoid cancellation at small t2.
+float Lambda_GGX_tan2(float t2) { return 0.5f * t2 / (sqrt(1.0f + t2) + 1.0f); }
+
+float Lambda_Beckmann(vec3 w, float alpha_x, float alpha_y) {
+    if (w.z == 0.0f) return 1e30f;  // grazing: fully masked
+    return Lambda_Beckmann_tan2(masking_alpha_tan2(w, alpha_x, alpha_y));
+}
+
 float Lambda_GGX(vec3 w, float alpha_x, float alpha_y) {
     if (w.z == 0.0f) return 1e30f;
-    float t2 = masking_alpha_tan2(w, alpha_x, alpha_y);
-    // sqrt(1+t2)-1 rewritten as t2/(sqrt(1+t2)+1) to avoid cancellation at small t2.
-    return 0.5f * t2 / (sqrt(1.0f + t2) + 1.0f);
+    return Lambda_GGX_tan2(masking_alpha_tan2(w, alpha_x, alpha_y));
 }
 
 float Lambda_Microfacet(int ndf, vec3 w, float alpha_x, float alpha_y) {
     if (ndf == NDF_BECKMANN) return Lambda_Beckmann(w, alpha_x, alpha_y);
     return Lambda_GGX(w, alpha_x, alpha_y);
+}
+
+// Lambda of D_Microfacet_correlated; rho = 0: Lambda_Microfacet.
+float Lambda_Microfacet_correlated(int ndf, vec3 w, float alpha_x, float alpha_y, float rho) {
+    if (w.z == 0.0f) return 1e30f;
+    float t2 = masking_alpha_tan2_correlated(w, alpha_x, alpha_y, rho);
+    return ndf == NDF_BECKMANN ? Lambda_Beckmann_tan2(t2) : Lambda_GGX_tan2(t2);
 }
 
 // Smith masking without the microfacet Heaviside factor (Heitz 2014, Smith G1):
@@ -52,6 +73,13 @@ float G1_Smith(int ndf, vec3 w, float alpha_x, float alpha_y) {
 float G2_SmithCorrelated(int ndf, vec3 wo, vec3 wi, float alpha_x, float alpha_y) {
     return 1.0f / (1.0f + Lambda_Microfacet(ndf, wo, alpha_x, alpha_y) +
                    Lambda_Microfacet(ndf, wi, alpha_x, alpha_y));
+}
+
+// The same for slopes correlated by rho (D_Microfacet_correlated).
+float G2_SmithCorrelated_sheared(int ndf, vec3 wo, vec3 wi, float alpha_x, float alpha_y,
+                                 float rho) {
+    return 1.0f / (1.0f + Lambda_Microfacet_correlated(ndf, wo, alpha_x, alpha_y, rho) +
+                   Lambda_Microfacet_correlated(ndf, wi, alpha_x, alpha_y, rho));
 }
 
 // Separable (uncorrelated) Smith masking-shadowing (Heitz 2014, separable Smith): G1(o) G1(i).

@@ -246,6 +246,7 @@ SurfaceMaterial surface_material() {
     s.glint.ndf = u_glint_ndf;
     s.glint.alpha_x = u_glint_alpha.x;
     s.glint.alpha_y = u_glint_alpha.y;
+    s.glint.rho = g_glint_slope_correlation;
     s.glint.g2 = u_glint_g2;
     return s;
 }
@@ -432,6 +433,7 @@ void main() {
         if (mat.type == MATERIAL_GLINT && u_glint_reads_correlation != 0 && glint_cov_xy != 0.0f) {
             g_glint_slope_correlation =
                 slope_correlation(glint_cov_xy, mat.glint.alpha_x, mat.glint.alpha_y);
+            mat.glint.rho = g_glint_slope_correlation;
         }
 #endif
         vec3 wo = vec3(dot(wo_world, t), dot(wo_world, b), dot(wo_world, n));
