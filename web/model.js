@@ -160,8 +160,8 @@ export class ExportedModel {
     model.parameters = parameterTable(manifest, info);
     model.textures = [];
     model.constants = {};  // uniforms given by the manifest's resources
-    // The manifest's derived uniforms (kneiphof2025's sun, taken out of
-    // the exported maps: its map-frame direction, power, radius, colour).
+    // The manifest's derived uniforms (kneiphof2025's bright sources, taken
+    // out of the exported maps: map-frame directions, powers, radii, colour).
     model.derived = Object.fromEntries(
         (manifest.derived_uniforms ?? []).map((u) => [u.uniform, u.value]));
     model.environment = null;
@@ -282,20 +282,23 @@ export class ExportedModel {
       set('u_kneiphof2025_levels', this.constants.levels_K ?? 8);
       set('u_kneiphof2025_radiance_scale', state.environment.scale);
       set('kneiphof2025_env_rotation', state.environment.rotation);
-      // The sun of the "lobe_sun" smooth term (the radiance array's alpha
-      // holds its channel): the manifest's map-frame direction turned by
-      // the environment rotation about +y (world phi = map phi + rotation,
-      // as kneiphof2025_latlong_uv and the native kneiphof2025_gpu.cpp);
-      // power 0 (no sun) where the export has none.
+      // The bright sources of the "lobe_sun" smooth term (the radiance
+      // array's alpha holds their channel): the manifest's map-frame
+      // directions turned by the environment rotation about +y (world phi =
+      // map phi + rotation, as kneiphof2025_latlong_uv and the native
+      // kneiphof2025_gpu.cpp); count 0 where the export has none.
       const d = this.derived;
-      const a = d.kneiphof2025_sun_direction ?? [0, 1, 0];
+      const dirs = d.u_kneiphof2025_source_direction ?? [];
       const r = state.environment.rotation;
       const c = Math.cos(r), sn = Math.sin(r);
-      set('kneiphof2025_sun_direction',
-          normalize3([a[0] * c - a[2] * sn, a[1], a[2] * c + a[0] * sn]));
-      set('kneiphof2025_sun_power', d.kneiphof2025_sun_power ?? [0, 0, 0]);
-      set('kneiphof2025_sun_radius', d.kneiphof2025_sun_radius ?? 0);
-      set('kneiphof2025_sun_color', d.kneiphof2025_sun_color ?? [0, 0, 0]);
+      set('u_kneiphof2025_source_count', dirs.length);
+      if (dirs.length > 0) {
+        set('u_kneiphof2025_source_direction',
+            dirs.flatMap((a) => normalize3([a[0] * c - a[2] * sn, a[1], a[2] * c + a[0] * sn])));
+        set('u_kneiphof2025_source_power', d.u_kneiphof2025_source_power.flat());
+        set('u_kneiphof2025_source_radius', d.u_kneiphof2025_source_radius);
+        set('u_kneiphof2025_sources_color', d.u_kneiphof2025_sources_color);
+      }
     }
     for (const p of this.parameters) {
       if (!p.uniform) continue;

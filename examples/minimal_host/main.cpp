@@ -178,48 +178,69 @@ void set_uniform(GLuint program, const std::map<std::string, GLenum>& types,
     const GLint loc = glGetUniformLocation(program, name.c_str());
     const auto it = types.find(name);
     if (loc < 0 || it == types.end()) return;  // optimised out: nothing to set
-    auto f = [&](int i) { return v.is_array() ? v.at(i).get<float>() : v.get<float>(); };
-    auto n = [&](int i) {
-        const nlohmann::json& e = v.is_array() ? v.at(i) : v;
-        return e.is_boolean() ? (e.get<bool>() ? 1 : 0) : e.get<int>();
+    // A number, a vector, or an array of either (a uniform array, e.g.
+    // kneiphof2025's source directions), flattened in order.
+    std::vector<float> f;
+    std::vector<GLint> n;
+    auto flatten = [&](const nlohmann::json& e, auto&& self) -> void {
+        if (e.is_array()) {
+            for (const nlohmann::json& x : e) self(x, self);
+        } else if (e.is_boolean()) {
+            f.push_back(e.get<bool>() ? 1.0f : 0.0f);
+            n.push_back(e.get<bool>() ? 1 : 0);
+        } else {
+            f.push_back(e.get<float>());
+            n.push_back(e.is_number_integer() ? e.get<GLint>()
+                                              : static_cast<GLint>(e.get<float>()));
+        }
+    };
+    flatten(v, flatten);
+    if (f.empty()) return;  // an empty array (no sources): nothing to set
+    auto count = [&](size_t components) {
+        if (f.size() % components != 0)
+            die("uniform " + name + ": " + std::to_string(f.size()) +
+                " values are not a whole number of " + std::to_string(components) +
+                "-component elements");
+        return static_cast<GLsizei>(f.size() / components);
     };
     switch (it->second) {
         case GL_FLOAT:
-            glProgramUniform1f(program, loc, f(0));
+            glProgramUniform1fv(program, loc, count(1), f.data());
             break;
         case GL_FLOAT_VEC2:
-            glProgramUniform2f(program, loc, f(0), f(1));
+            glProgramUniform2fv(program, loc, count(2), f.data());
             break;
         case GL_FLOAT_VEC3:
-            glProgramUniform3f(program, loc, f(0), f(1), f(2));
+            glProgramUniform3fv(program, loc, count(3), f.data());
             break;
         case GL_FLOAT_VEC4:
-            glProgramUniform4f(program, loc, f(0), f(1), f(2), f(3));
+            glProgramUniform4fv(program, loc, count(4), f.data());
             break;
         case GL_INT:
         case GL_BOOL:
-            glProgramUniform1i(program, loc, n(0));
+            glProgramUniform1iv(program, loc, count(1), n.data());
             break;
-        case GL_UNSIGNED_INT:
-            glProgramUniform1ui(program, loc, static_cast<GLuint>(n(0)));
+        case GL_UNSIGNED_INT: {
+            std::vector<GLuint> u(n.begin(), n.end());
+            glProgramUniform1uiv(program, loc, count(1), u.data());
             break;
+        }
         case GL_INT_VEC2:
-            glProgramUniform2i(program, loc, n(0), n(1));
+            glProgramUniform2iv(program, loc, count(2), n.data());
             break;
         case GL_INT_VEC3:
-            glProgramUniform3i(program, loc, n(0), n(1), n(2));
+            glProgramUniform3iv(program, loc, count(3), n.data());
             break;
         case GL_INT_VEC4:
-            glProgramUniform4i(program, loc, n(0), n(1), n(2), n(3));
+            glProgramUniform4iv(program, loc, count(4), n.data());
             break;
         default:
             die("uniform " + name + ": type not handled by this host");
     }
 }
 
-// The first channel of a PFM (little-endian, rows bottom to top), rows top
-// to bottom.
-// Every channel of a PFM file (1 or 3), rows from the top.
+// Every channel of a PFM file (1 or 3; little-endian, rows bottom to top),
+// rows from the top.
 std::vector<float> read_pfm(const std::string& path, int* w, int* h, int* channels) {
     std::ifstream f(path, std::ios::binary);
     std::string magic;

@@ -274,22 +274,26 @@ TEST(Export, Kneiphof2025EnvironmentMapsOfAConstantEnvironment) {
         EXPECT_NEAR(t[4 * i + 0], 0.5f, 1e-4f * 0.5f) << i;
         EXPECT_NEAR(t[4 * i + 1], 1.0f, 1e-4f) << i;
         EXPECT_NEAR(t[4 * i + 2], 2.0f, 2e-4f) << i;
-        EXPECT_EQ(t[4 * i + 3], 0.0f) << i;  // no sun: the sun channel is 0
+        EXPECT_EQ(t[4 * i + 3], 0.0f) << i;  // no source: the sources channel is 0
     }
-    // No sun: its derived uniforms say none (power 0).
+    // No source: the derived uniforms say none.
+    bool counted = false;
     for (const auto& u : j.at("derived_uniforms")) {
-        if (u.at("uniform") == "kneiphof2025_sun_power") {
-            EXPECT_EQ(u.at("value"), nlohmann::json({0.0, 0.0, 0.0}));
+        if (u.at("uniform") == "u_kneiphof2025_source_count") {
+            EXPECT_EQ(u.at("value"), 0);
+            counted = true;
         }
     }
+    EXPECT_TRUE(counted);
 }
 
-// The "lobe_sun" smooth term (the default) reads the environment's sun from
-// the radiance array's alpha and the kneiphof2025_sun_* uniforms: the export
-// carries both, those of the renderer's prefilter (kneiphof2025_gpu.cpp
-// uploads the same). A map of radiance 0.2 with a small sun: 2 x 2 texels of
-// (5000, 4000, 3000) centred on theta = 45 deg, u = 0.75 of the map's frame.
-TEST(Export, Kneiphof2025EnvironmentMapsCarryTheSun) {
+// The "lobe_sun" smooth term (the default) reads the environment's bright
+// sources from the radiance array's alpha and the u_kneiphof2025_source*
+// uniforms: the export carries both, those of the renderer's prefilter
+// (kneiphof2025_gpu.cpp uploads the same). A map of radiance 0.2 with a
+// small sun: 2 x 2 texels of (5000, 4000, 3000) centred on theta = 45 deg,
+// u = 0.75 of the map's frame.
+TEST(Export, Kneiphof2025EnvironmentMapsCarryTheSources) {
     constexpr double kPi = 3.14159265358979323846;
     testing::ScratchDir dir;
     const fs::path env = dir / "sun.exr";
@@ -305,41 +309,55 @@ TEST(Export, Kneiphof2025EnvironmentMapsCarryTheSun) {
     // The renderer's prefilter of the same map (default K and black level).
     const Kneiphof2025Environment pre(EnvironmentMap(read_image(env), 1.0f, 0.0f),
                                       Kneiphof2025PrefilterOptions{});
-    const Kneiphof2025Sun& sun = pre.sun();
-    ASSERT_TRUE(sun.found);
-    auto expect_vec3 = [](const nlohmann::json& v, glm::vec3 want, const char* what) {
+    const Kneiphof2025Sources& src = pre.sources();
+    const size_t n = src.directions.size();
+    ASSERT_EQ(n, size_t(Kneiphof2025Sources::kSamples));
+    EXPECT_EQ(derived.at("u_kneiphof2025_source_count"), n);
+    auto expect_vec3 = [](const nlohmann::json& v, glm::vec3 want, const std::string& what) {
         ASSERT_EQ(v.size(), 3u) << what;
         for (int c = 0; c < 3; ++c)
             EXPECT_NEAR(v[c].get<double>(), want[c], 1e-6 * (1.0 + std::abs(want[c]))) << what;
     };
-    expect_vec3(derived.at("kneiphof2025_sun_direction"), sun.map_direction, "direction");
-    expect_vec3(derived.at("kneiphof2025_sun_power"), sun.power, "power");
-    expect_vec3(derived.at("kneiphof2025_sun_color"), sun.color, "color");
-    EXPECT_NEAR(derived.at("kneiphof2025_sun_radius").get<double>(), sun.radius, 1e-7);
-    // ... and that sun is the one in the map: direction (sin 45, cos 45, 0)
-    // (u = 0.5 + atan2(x, -z) / 2 pi), power ~ 4 texels' solid angle times
-    // their radiance (the prefilter resamples the map to 256 x 128).
-    EXPECT_NEAR(sun.map_direction.x, std::sin(kPi / 4.0), 0.03);
-    EXPECT_NEAR(sun.map_direction.y, std::cos(kPi / 4.0), 0.03);
-    EXPECT_NEAR(sun.map_direction.z, 0.0, 0.03);
+    ASSERT_EQ(derived.at("u_kneiphof2025_source_direction").size(), n);
+    ASSERT_EQ(derived.at("u_kneiphof2025_source_power").size(), n);
+    ASSERT_EQ(derived.at("u_kneiphof2025_source_radius").size(), n);
+    expect_vec3(derived.at("u_kneiphof2025_sources_color"), src.color, "color");
+    glm::dvec3 power(0.0);
+    for (size_t k = 0; k < n; ++k) {
+        const std::string at = "source " + std::to_string(k);
+        expect_vec3(derived.at("u_kneiphof2025_source_direction")[k], src.map_directions[k], at);
+        expect_vec3(derived.at("u_kneiphof2025_source_power")[k], src.powers[k], at);
+        EXPECT_NEAR(derived.at("u_kneiphof2025_source_radius")[k].get<double>(), src.radii[k], 1e-7)
+            << at;
+        // ... and they lie in the sun of the map: direction (sin 45, cos 45, 0)
+        // (u = 0.5 + atan2(x, -z) / 2 pi), within its 2 x 2 texels of 2.8 deg
+        // (3.4 deg from the centre to a corner) and the half source texel
+        // (1.4 deg) the bilinear resampling to 256 x 128 spreads it by.
+        const glm::dvec3 centre(std::sin(kPi / 4.0), std::cos(kPi / 4.0), 0.0);
+        EXPECT_GT(glm::dot(glm::dvec3(src.map_directions[k]), centre), std::cos(5.0 * kPi / 180.0))
+            << at;
+        EXPECT_GT(src.radii[k], 0.0f) << at;
+        EXPECT_LT(src.radii[k], 0.02f) << at;
+        power += glm::dvec3(src.powers[k]);
+    }
+    // The power above the sky: 4 texels' solid angle times (5000 - 0.2), to
+    // the resampling to 256 x 128 (the prefilter's base level).
     const double texel = (2.0 * kPi / 128.0) * (kPi / 64.0) * std::sin(kPi / 4.0);
-    EXPECT_NEAR(sun.power.x, 4.0 * texel * 5000.0, 0.2 * 4.0 * texel * 5000.0);
-    EXPECT_GT(sun.radius, 0.0f);
-    EXPECT_LT(sun.radius, 0.1f);
+    EXPECT_NEAR(power.x, 4.0 * texel * 4999.8, 0.2 * 4.0 * texel * 4999.8);
 
-    // The radiance's alpha is the sun channel of every layer.
+    // The radiance's alpha is the sources channel of every layer.
     nlohmann::json info;
     for (const auto& r : j.at("resources"))
         if (r.at("uniform") == "kneiphof2025_radiance_layers") info = r;
     const int w = info.at("width"), h = info.at("height"), layers = info.at("layers");
     const std::string rad = slurp(o.out_dir / "kneiphof2025.env_radiance.f32");
     ASSERT_EQ(rad.size(), size_t(w) * size_t(h) * size_t(layers) * 16u);
-    ASSERT_EQ(pre.sun_mips().size(), size_t(layers));
+    ASSERT_EQ(pre.source_mips().size(), size_t(layers));
     const float* t = reinterpret_cast<const float*>(rad.data());
     float base_max = 0.0f;
     size_t mismatches = 0;
     for (int i = 0; i < layers; ++i) {
-        const Kneiphof2025Level& l = pre.sun_mips()[size_t(i)];
+        const Kneiphof2025Level& l = pre.source_mips()[size_t(i)];
         ASSERT_EQ(l.width, w);
         ASSERT_EQ(l.height, h);
         for (size_t p = 0; p < size_t(w) * size_t(h); ++p) {
@@ -349,7 +367,7 @@ TEST(Export, Kneiphof2025EnvironmentMapsCarryTheSun) {
         }
     }
     EXPECT_EQ(mismatches, 0u);
-    EXPECT_GT(base_max, 1000.0f);  // the sun's luminance (~4140) at layer 0
+    EXPECT_GT(base_max, 1000.0f);  // the sun's luminance above the sky (~4140) at layer 0
 }
 
 // --scene / --material: the resources and values of a scene material. Two

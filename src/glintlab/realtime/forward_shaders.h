@@ -43,8 +43,8 @@ inline constexpr int kShadowUnit = 1;  // depth-compare 2D array, one layer per 
 inline constexpr int kShadowMapSize = 2048;
 inline constexpr int kPointShadowUnit = 2;  // depth-compare cube array, one cube per point light
 inline constexpr int kPointShadowSize = 1024;
-inline constexpr int kEnvironmentResidualUnit =
-    3;  // the map without its sources (environment_sources.h)
+// The environment map without its bright sources (scene/environment_sources.h).
+inline constexpr int kEnvironmentResidualUnit = 3;
 // Textured material parameters: units kMaterialTextureUnit + slot
 // (shaders/material_textures.glsl MATERIAL_TEXTURE_*).
 inline constexpr int kMaterialTextureUnit = 10;  // after the models' units 4-9 (gpu_model_hooks.h)

@@ -5,6 +5,7 @@
 #include <numbers>
 
 #include "glintlab/core/error.h"
+#include "glintlab/core/radical_inverse.h"
 
 namespace glintlab {
 namespace {
@@ -15,14 +16,6 @@ glm::vec3 map_direction(double u, double v) {
     const double theta = v * kPi, phi = (u - 0.5) * 2.0 * kPi;
     const double s = std::sin(theta);
     return glm::vec3(glm::dvec3(s * std::sin(phi), std::cos(theta), -s * std::cos(phi)));
-}
-
-// Van der Corput's base-2 radical inverse: the bits of k mirrored about the point.
-double radical_inverse(unsigned k) {
-    double inv = 0.0, f = 0.5;
-    for (; k != 0; k >>= 1, f *= 0.5)
-        if (k & 1u) inv += f;
-    return inv;
 }
 
 struct Texel {
@@ -170,10 +163,13 @@ std::vector<int> allocate_samples(const std::vector<Source>& sources, double tot
 
 }  // namespace
 
-EnvironmentSourceSplit split_environment_sources(const Image& map, int samples) {
+EnvironmentSourceSplit split_environment_sources(const Image& map, int samples,
+                                                 float texel_contrast) {
     if (samples < 1) fail("environment sources: at least one sample is needed, got {}", samples);
+    if (!(texel_contrast >= 0.0f))
+        fail("environment sources: texel_contrast must be >= 0, got {}", texel_contrast);
     const int w = map.width, h = map.height;
-    EnvironmentSourceSplit split{map, {}, {}};
+    EnvironmentSourceSplit split{map, {}, {}, {}};
     if (w < 1 || h < 1) return split;
     std::vector<double> texel_omega(static_cast<size_t>(h));
     for (int y = 0; y < h; ++y)
@@ -189,8 +185,10 @@ EnvironmentSourceSplit split_environment_sources(const Image& map, int samples) 
         }
     const double mean = power / (4.0 * kPi);
     if (!(peak > EnvironmentSourceCriteria::kContrast * mean)) return split;
-    const double threshold = std::max(double(EnvironmentSourceCriteria::kFraction) * peak,
-                                      double(EnvironmentSourceCriteria::kContrast) * mean);
+    const double threshold = texel_contrast > 0.0f
+                                 ? texel_contrast * mean
+                                 : std::max(double(EnvironmentSourceCriteria::kFraction) * peak,
+                                            double(EnvironmentSourceCriteria::kContrast) * mean);
     std::vector<char> in_source(size_t(w) * size_t(h), 0);
     for (int y = 0; y < h; ++y)
         for (int x = 0; x < w; ++x)
@@ -226,6 +224,9 @@ EnvironmentSourceSplit split_environment_sources(const Image& map, int samples) 
             row_power.back() += s.texels[i].power;
         }
         row_start.push_back(s.texels.size());
+        double omega = 0.0;
+        for (const Texel& t : s.texels) omega += texel_omega[size_t(t.y)];
+        const float radius = float(std::sqrt(omega / (kPi * counts[c])));
         size_t r = 0;
         double below = 0.0;  // power of the rows before row r
         for (int k = 0; k < counts[c]; ++k) {
@@ -240,6 +241,7 @@ EnvironmentSourceSplit split_environment_sources(const Image& map, int samples) 
             const double u = std::clamp(along / t.power, 0.0, 1.0);
             split.directions.push_back(map_direction((t.x + u) / w, (t.y + v) / h));
             split.powers.push_back(t.excess / luminance(t.excess) * float(s.power / counts[c]));
+            split.radii.push_back(radius);
         }
     }
     return split;

@@ -33,6 +33,11 @@ struct EnvironmentSourceSplit {
     // Empty: no source.
     std::vector<glm::vec3> directions;
     std::vector<glm::vec3> powers;
+    // Per direction, the angular radius (radians) of a disc of the solid
+    // angle it stands for (its source's texels' over its number of
+    // directions): a renderer widens a narrow lobe by it, so that a lamp
+    // reflected in a near-mirror is a patch, not a pattern of dots.
+    std::vector<float> radii;
 };
 
 // A map has sources when its brightest texel's luminance exceeds kContrast ×
@@ -46,10 +51,16 @@ struct EnvironmentSourceSplit {
 // Hammersley points ((k + 1/2)/n, radical inverse of k) through its
 // power's distribution over rows, then texels along the row, each carrying
 // 1/n of its power in its texel's colour.
+// With texel_contrast > 0 a source's texels are instead those at least
+// texel_contrast × the mean (the map still needs a texel above kContrast ×
+// mean to have sources): a lower bar takes a lamp's halo with it, which a
+// renderer that reads the residual through coarse blurred levels (kneiphof2025's
+// prefilter) would otherwise smear as well.
 struct EnvironmentSourceCriteria {
     static constexpr float kContrast = 50.0f;
     static constexpr float kFraction = 0.05f;
 };
-EnvironmentSourceSplit split_environment_sources(const Image& map, int samples);
+EnvironmentSourceSplit split_environment_sources(const Image& map, int samples,
+                                                 float texel_contrast = 0.0f);
 
 }  // namespace glintlab

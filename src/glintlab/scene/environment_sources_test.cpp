@@ -51,7 +51,8 @@ void fill_block(Image& map, int x0, int y0, int size, glm::vec3 c) {
 // A 2x2-texel sun 10 degrees from the zenith on a uniform sky: it is found,
 // its texels come down to the sky's radiance in the residual, the samples
 // lie in it and carry its power in its colour, so residual + samples keep
-// the map's power; a dim map has no source.
+// the map's power, each standing for a 16th of its 4 texels' solid angle
+// (a disc of that area: the radius); a dim map has no source.
 TEST(EnvironmentSources, SplitKeepsThePowerAndPutsTheSamplesInTheSun) {
     const glm::vec3 sky(0.2f, 0.3f, 0.4f), sun(3000.0f, 2800.0f, 2500.0f);
     Image map(128, 64, sky);
@@ -60,7 +61,12 @@ TEST(EnvironmentSources, SplitKeepsThePowerAndPutsTheSamplesInTheSun) {
     const EnvironmentSourceSplit split = split_environment_sources(map, 16);
     ASSERT_EQ(split.directions.size(), 16u);
     ASSERT_EQ(split.powers.size(), 16u);
+    ASSERT_EQ(split.radii.size(), 16u);
+    // Rows 3 and 4 of 64: solid angle 2 (2 pi / 128) (cos(3 pi / 64) - cos(5 pi / 64)).
+    const double sun_omega =
+        2.0 * 2.0 * kPi / 128.0 * (std::cos(3.0 * kPi / 64.0) - std::cos(5.0 * kPi / 64.0));
     for (size_t k = 0; k < 16; ++k) {
+        EXPECT_NEAR(split.radii[k], std::sqrt(sun_omega / (16.0 * kPi)), 1e-6) << k;
         // Within the 2x2 texels: 2.8 deg of theta either side, 0.6 of phi.
         EXPECT_LT(degrees_from(split.directions[k], sx + 1.0, sy + 1.0, map), 3.0) << k;
         const glm::vec3 excess = sun - sky;

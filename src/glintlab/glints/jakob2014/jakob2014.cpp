@@ -7,6 +7,7 @@
 
 #include "glintlab/core/error.h"
 #include "glintlab/core/hash.h"
+#include "glintlab/core/radical_inverse.h"
 #include "glintlab/glints/glint_desc.h"
 #include "glintlab/microfacet/microfacet.h"
 
@@ -22,14 +23,6 @@ float smooth_d(const GlintDesc& desc, glm::vec3 h) {
     return shader::D_Microfacet_correlated(
         desc.ndf == NdfType::GGX ? shader::NDF_GGX : shader::NDF_BECKMANN, h, desc.alpha_x,
         desc.alpha_y, desc.slope_correlation);
-}
-
-uint32_t reverse_bits(uint32_t x) {
-    x = ((x >> 1u) & 0x55555555u) | ((x & 0x55555555u) << 1u);
-    x = ((x >> 2u) & 0x33333333u) | ((x & 0x33333333u) << 2u);
-    x = ((x >> 4u) & 0x0f0f0f0fu) | ((x & 0x0f0f0f0fu) << 4u);
-    x = ((x >> 8u) & 0x00ff00ffu) | ((x & 0x00ff00ffu) << 8u);
-    return (x >> 16u) | (x << 16u);
 }
 
 uint32_t sobol2(uint32_t i) {

@@ -57,15 +57,21 @@ GLINTLAB_SHADER_FUNCTIONS_BEGIN
 vec3 kneiphof2025_radiance_fetch(vec3 dir, float roughness) {
     return t_env->fetch_radiance(dir, roughness);
 }
-vec4 kneiphof2025_radiance_sun_fetch(vec3 dir, float roughness) {
-    return t_env->fetch_radiance_sun(dir, roughness);
+vec4 kneiphof2025_radiance_sources_fetch(vec3 dir, float roughness) {
+    return t_env->fetch_radiance_sources(dir, roughness);
 }
-void kneiphof2025_sun(vec3& direction, vec3& power, float& radius, vec3& color) {
-    const glintlab::Kneiphof2025Sun& s = t_env->sun();
-    direction = s.direction;
-    power = s.found ? s.power : vec3(0.0f);
-    radius = s.radius;
-    color = s.color;
+int kneiphof2025_source_count() {
+    return static_cast<int>(t_env->sources().directions.size());
+}
+void kneiphof2025_source(int k, vec3& direction, vec3& power, float& radius) {
+    const glintlab::Kneiphof2025Sources& s = t_env->sources();
+    const auto i = static_cast<size_t>(k);
+    direction = s.directions[i];
+    power = s.powers[i];
+    radius = s.radii[i];
+}
+vec3 kneiphof2025_sources_color() {
+    return t_env->sources().color;
 }
 vec4 kneiphof2025_weights_fetch(vec3 dir, float roughness, int group) {
     const float* c = fetch_all(dir, roughness);
@@ -90,6 +96,9 @@ vec2 kneiphof2025_cone_jitter() {
 #include "glintlab/microfacet/fresnel.glsl"
 #include "glintlab/microfacet/masking.glsl"
 GLINTLAB_SHADER_FUNCTIONS_END
+
+// The uniform arrays of the GLSL back end hold every direction the prefilter finds.
+static_assert(glintlab::Kneiphof2025Sources::kSamples == glintlab::shader::KNEIPHOF2025_SOURCES);
 
 namespace glintlab {
 namespace {

@@ -22,15 +22,20 @@
 //   vec3 kneiphof2025_dfg_fetch(float cos_o, float roughness)
 //        (A, B, E_D / D_H): split-sum albedo E_rho = F0 A + B (Eq. 11) and the
 //        visible reflecting facet area over the total facet area (Eq. 21, 8);
-//   vec4 kneiphof2025_radiance_sun_fetch(vec3 dir, float roughness)
+//   vec4 kneiphof2025_radiance_sources_fetch(vec3 dir, float roughness)
 //        the prefiltered radiance (rgb) and the luminance of the environment's
-//        sun in it (w: the sun's texels alone, prefiltered by the same kernel);
-//   void kneiphof2025_sun(OUT(vec3) direction, OUT(vec3) power, OUT(float) radius,
-//                         OUT(vec3) color)
-//        the sun taken out of the prefiltered radiance (Kneiphof2025Sun,
-//        kneiphof2025_prefilter.h): world direction, RGB power (radiance x
-//        solid angle), angular radius, and colour = power / luminance(power);
-//        power 0 without a sun;
+//        bright sources in it (w: their radiance above their surroundings
+//        alone, prefiltered by the same kernel);
+//   int kneiphof2025_source_count()
+//        0 (no source) to KNEIPHOF2025_SOURCES directions inside the sources
+//        taken out of the prefiltered radiance (Kneiphof2025Sources,
+//        kneiphof2025_prefilter.h);
+//   void kneiphof2025_source(int k, OUT(vec3) direction, OUT(vec3) power,
+//                            OUT(float) radius)
+//        direction k: world direction, RGB power (radiance above the
+//        surroundings x solid angle), the angular radius it stands for;
+//   vec3 kneiphof2025_sources_color()
+//        sum of the powers / its luminance (the colour of the w channel);
 //   vec2 kneiphof2025_cone_jitter()
 //        the position of the next sample of an area light's quadrature within
 //        its stratum, in [0, 1)^2 (the CPU draws it from the pixel's stream,
@@ -52,6 +57,9 @@
 #include "glintlab/microfacet/ndf.glsl"
 #include "glintlab/microfacet/vndf.glsl"
 
+// Directions the bright sources are shaded by (Kneiphof2025Sources::kSamples).
+const int KNEIPHOF2025_SOURCES = 16;
+
 #ifndef GLINTLAB_CPP
 // Texture arrays, one layer per roughness level (layer i: sqrt(alpha) =
 // i / (layers - 1)), lat-long in the EnvironmentMap convention (v = 0 at the
@@ -63,11 +71,13 @@ uniform sampler2DArray kneiphof2025_weights_layers_b;
 uniform sampler2D kneiphof2025_dfg_lut;
 uniform float kneiphof2025_env_rotation;  // radians about +y
 uniform float kneiphof2025_last_layer;    // layers - 1
-// The sun (Kneiphof2025Sun): world direction, RGB power, angular radius, colour.
-uniform vec3 kneiphof2025_sun_direction;
-uniform vec3 kneiphof2025_sun_power;
-uniform float kneiphof2025_sun_radius;
-uniform vec3 kneiphof2025_sun_color;
+// The bright sources (Kneiphof2025Sources): per direction world direction,
+// RGB power, angular radius; the colour of the radiance array's alpha.
+uniform int u_kneiphof2025_source_count;
+uniform vec3 u_kneiphof2025_source_direction[KNEIPHOF2025_SOURCES];
+uniform vec3 u_kneiphof2025_source_power[KNEIPHOF2025_SOURCES];
+uniform float u_kneiphof2025_source_radius[KNEIPHOF2025_SOURCES];
+uniform vec3 u_kneiphof2025_sources_color;
 
 vec2 kneiphof2025_latlong_uv(vec3 d) {
     float theta = acos(clamp(d.y, -1.0f, 1.0f));
@@ -89,15 +99,20 @@ vec3 kneiphof2025_radiance_fetch(vec3 dir, float roughness) {
     vec4 t = kneiphof2025_layers_fetch(kneiphof2025_radiance_layers, dir, roughness);
     return vec3(t.x, t.y, t.z);
 }
-// The radiance array's alpha holds the sun channel.
-vec4 kneiphof2025_radiance_sun_fetch(vec3 dir, float roughness) {
+// The radiance array's alpha holds the sources channel.
+vec4 kneiphof2025_radiance_sources_fetch(vec3 dir, float roughness) {
     return kneiphof2025_layers_fetch(kneiphof2025_radiance_layers, dir, roughness);
 }
-void kneiphof2025_sun(OUT(vec3) direction, OUT(vec3) power, OUT(float) radius, OUT(vec3) color) {
-    direction = kneiphof2025_sun_direction;
-    power = kneiphof2025_sun_power;
-    radius = kneiphof2025_sun_radius;
-    color = kneiphof2025_sun_color;
+int kneiphof2025_source_count() {
+    return clamp(u_kneiphof2025_source_count, 0, KNEIPHOF2025_SOURCES);
+}
+void kneiphof2025_source(int k, OUT(vec3) direction, OUT(vec3) power, OUT(float) radius) {
+    direction = u_kneiphof2025_source_direction[k];
+    power = u_kneiphof2025_source_power[k];
+    radius = u_kneiphof2025_source_radius[k];
+}
+vec3 kneiphof2025_sources_color() {
+    return u_kneiphof2025_sources_color;
 }
 vec4 kneiphof2025_weights_fetch(vec3 dir, float roughness, int group) {
     return group == 0 ? kneiphof2025_layers_fetch(kneiphof2025_weights_layers_a, dir, roughness)
@@ -491,11 +506,13 @@ vec3 kneiphof2025_lookup_direction(vec3 n, vec3 wr, float alpha) {
 //  - SPLIT_SUM ("as_published", 003): E_rho(wo) times the prefiltered
 //    radiance at the lookup direction, whose kernel assumes n = v = r.
 //  - LOBE_SUN (default; docs/MODELS.md): LOBE below on the radiance without
-//    the environment's sun, plus the sun by the BRDF at its direction
-//    (kneiphof2025_sun_radiance). With the sun in the maps, 32 samples
-//    reading GGX-blurred levels are a kernel estimate of the lobe whose
-//    heavy tails and gaps put +14-18 % on a sphere lit by a low sun
-//    (sunrise.exr); 256 samples would be needed for 4 %.
+//    the environment's bright sources, plus the sources by the BRDF at
+//    KNEIPHOF2025_SOURCES directions inside them
+//    (kneiphof2025_sources_radiance). With the sources in the maps, 32
+//    samples reading GGX-blurred levels are a kernel estimate of the lobe
+//    whose heavy tails and gaps put +14-18 % on a sphere lit by a low sun
+//    (sunrise.exr; 256 samples would be needed for 4 %) and +300 % on a
+//    plane at grazing view under small lamps near the horizon (studio.exr).
 //  - LOBE (an option; an improvement over 003, docs/MODELS.md): E_rho(wo) times
 //    the radiance averaged over the true reflection lobe of wo, estimated by
 //    filtered importance sampling (Colbert & Krivanek, GPU Gems 3 ch. 20) of
@@ -524,16 +541,16 @@ const int KNEIPHOF2025_LOBE_SAMPLES = 32;
 // angle) biases the centre of the sphere upwards by up to 28 % under a sun
 // (GGX kernel tails), and a 2 x 2 box pyramid instead of the GGX levels
 // aliases the suns (-10 %).
-// `residual`: read the radiance without the sun, max(rgb - w color, 0) of
-// kneiphof2025_radiance_sun_fetch (exact in luminance; the sun's texels are
-// taken to share its mean colour).
-vec3 kneiphof2025_lobe_fetch(vec3 dir, float level, bool residual, vec3 sun_color) {
+// `residual`: read the radiance without the sources, max(rgb - w color, 0)
+// of kneiphof2025_radiance_sources_fetch (exact in luminance; the sources'
+// texels are taken to share their mean colour).
+vec3 kneiphof2025_lobe_fetch(vec3 dir, float level, bool residual, vec3 sources_color) {
     if (!residual) return kneiphof2025_radiance_fetch(dir, level);
-    vec4 r = kneiphof2025_radiance_sun_fetch(dir, level);
-    return max(vec3(r.x, r.y, r.z) - r.w * sun_color, vec3(0.0f));
+    vec4 r = kneiphof2025_radiance_sources_fetch(dir, level);
+    return max(vec3(r.x, r.y, r.z) - r.w * sources_color, vec3(0.0f));
 }
 vec3 kneiphof2025_lobe_radiance_of(vec3 n, vec3 wr, float cos_o, float alpha, bool residual,
-                                   vec3 sun_color) {
+                                   vec3 sources_color) {
     vec3 t;
     vec3 b;
     tangent_frame(n, t, b);
@@ -561,45 +578,50 @@ vec3 kneiphof2025_lobe_radiance_of(vec3 n, vec3 wr, float cos_o, float alpha, bo
         float pdf = g1 * D_Microfacet(NDF_GGX, h, alpha, alpha) / (4.0f * wo.z);
         float omega = 1.0f / (float(KNEIPHOF2025_LOBE_SAMPLES) * max(pdf, 1e-6f));
         float level = min(sqrt(sqrt(omega / (4.0f * PI))), roughness);
-        sum += g2 *
-               kneiphof2025_lobe_fetch(wi.x * t + wi.y * b + wi.z * n, level, residual, sun_color);
+        sum += g2 * kneiphof2025_lobe_fetch(wi.x * t + wi.y * b + wi.z * n, level, residual,
+                                            sources_color);
         weight += g2;
     }
     if (!(weight > 0.0f))
         return kneiphof2025_lobe_fetch(kneiphof2025_lookup_direction(n, wr, alpha), roughness,
-                                       residual, sun_color);
+                                       residual, sources_color);
     return sum / weight;
 }
 vec3 kneiphof2025_lobe_radiance(vec3 n, vec3 wr, float cos_o, float alpha) {
     return kneiphof2025_lobe_radiance_of(n, wr, cos_o, alpha, false, vec3(0.0f));
 }
 
-// The sun's reflected radiance (without color): the smooth BRDF at its
-// direction times its power, F G2 D(h) / (4 cos_o) Phi (F Schlick's with f0,
-// as the split sum's E_rho), 0 below the horizon. Its disc (angular radius
-// r) widens the GGX lobe to alpha' = sqrt(alpha^2 + r^2 / 4) (the half
-// vector moves by half the light direction's angle), which keeps D's
-// integral and spreads a mirror's highlight over the disc.
-vec3 kneiphof2025_sun_radiance(vec3 n, vec3 wr, float cos_o, float alpha, vec3 f0) {
-    vec3 sun_dir;
-    vec3 sun_power;
-    float sun_radius;
-    vec3 sun_color;
-    kneiphof2025_sun(sun_dir, sun_power, sun_radius, sun_color);
-    if (!(sun_power.x + sun_power.y + sun_power.z > 0.0f)) return vec3(0.0f);
+// The sources' reflected radiance: the smooth BRDF at each source direction
+// times its power, F G2 D(h) / (4 cos_o) Phi (F Schlick's with f0, as the
+// split sum's E_rho), 0 below the horizon. The solid angle a direction
+// stands for (angular radius r) widens the GGX lobe to
+// alpha' = sqrt(alpha^2 + r^2 / 4) (the half vector moves by half the light
+// direction's angle), which keeps D's integral and spreads a mirror's
+// reflection of a lamp over the lamp instead of a pattern of dots.
+vec3 kneiphof2025_sources_radiance(vec3 n, vec3 wr, float cos_o, float alpha, vec3 f0) {
+    int count = kneiphof2025_source_count();
+    if (count == 0) return vec3(0.0f);
     vec3 t;
     vec3 b;
     tangent_frame(n, t, b);
     vec3 wo_world = 2.0f * cos_o * n - wr;
     vec3 wo = normalize(vec3(dot(wo_world, t), dot(wo_world, b), max(cos_o, 1e-4f)));
-    vec3 wi = vec3(dot(sun_dir, t), dot(sun_dir, b), dot(sun_dir, n));
-    if (!(wi.z > 0.0f)) return vec3(0.0f);
-    vec3 h = normalize(wo + wi);
-    float a_sun = min(sqrt(alpha * alpha + 0.25f * sun_radius * sun_radius), 1.0f);
-    float d = D_Microfacet(NDF_GGX, h, a_sun, a_sun);
-    float g2 = G2_SmithCorrelated(NDF_GGX, wo, wi, alpha, alpha);
-    vec3 f = F_Schlick(f0, max(dot(wo, h), 0.0f));
-    return f * (g2 * d / (4.0f * wo.z)) * sun_power;
+    vec3 sum = vec3(0.0f);
+    for (int k = 0; k < count; ++k) {
+        vec3 dir;
+        vec3 power;
+        float radius;
+        kneiphof2025_source(k, dir, power, radius);
+        vec3 wi = vec3(dot(dir, t), dot(dir, b), dot(dir, n));
+        if (!(wi.z > 0.0f)) continue;
+        vec3 h = normalize(wo + wi);
+        float a_k = min(sqrt(alpha * alpha + 0.25f * radius * radius), 1.0f);
+        float d = D_Microfacet(NDF_GGX, h, a_k, a_k);
+        float g2 = G2_SmithCorrelated(NDF_GGX, wo, wi, alpha, alpha);
+        vec3 f = F_Schlick(f0, max(dot(wo, h), 0.0f));
+        sum += f * (g2 * d / (4.0f * wo.z)) * power;
+    }
+    return sum;
 }
 
 // L_o of Eq. 11 (see the SMOOTH constants above); color and F0 enter through
@@ -610,13 +632,9 @@ vec3 kneiphof2025_smooth_radiance(vec3 n, vec3 wr, float cos_o, float alpha, vec
     float roughness = sqrt(clamp(alpha, 0.0f, 1.0f));
     vec3 e_rho = color * (f0 * dfg.x + vec3(dfg.y));  // Eq. 11, first integral
     if (smooth_mode == KNEIPHOF2025_SMOOTH_LOBE_SUN) {
-        vec3 sun_dir;
-        vec3 sun_power;
-        float sun_radius;
-        vec3 sun_color;
-        kneiphof2025_sun(sun_dir, sun_power, sun_radius, sun_color);
-        return e_rho * kneiphof2025_lobe_radiance_of(n, wr, cos_o, alpha, true, sun_color) +
-               color * kneiphof2025_sun_radiance(n, wr, cos_o, alpha, f0);
+        vec3 residual = kneiphof2025_lobe_radiance_of(n, wr, cos_o, alpha, true,
+                                                      kneiphof2025_sources_color());
+        return e_rho * residual + color * kneiphof2025_sources_radiance(n, wr, cos_o, alpha, f0);
     }
     vec3 radiance =
         smooth_mode == KNEIPHOF2025_SMOOTH_LOBE

@@ -85,8 +85,9 @@ GlintModelDescriptor kneiphof2025_descriptor() {
                     {"split_sum", P::Smooth::SplitSum},
                     {"lobe", P::Smooth::Lobe}},
                    "smooth radiance the glint factor multiplies (Eq. 11): the filtered "
-                   "reflection lobe without the sun plus the sun analytically, 003's split sum "
-                   "(split_sum: its old name), or the lobe with the sun in the maps"),
+                   "reflection lobe without the map's bright sources plus the sources as 16 "
+                   "directions, 003's split sum (split_sum: its old name), or the lobe with "
+                   "the sources in the maps"),
         // Cone half-angle of the wang2020-style probability.
         gp::number("gamma_deg", &P::gamma_deg, 0.01, 45.0, "deg",
                    "cone half-angle of the wang2020_style probability", GlintParamUi::Log),

@@ -1,12 +1,12 @@
 // `glintlab export` of kneiphof2025 (its descriptor's GlintModelExport): the
 // DFG table, the environment's prefiltered maps (003 Eq. 11, 19-21) with the
-// sun the prefilter takes out, and the uniforms the host derives from the
+// bright sources the prefilter takes out, and the uniforms the host derives from the
 // parameters (kneiphof2025_gpu.cpp computes the same for the renderer).
 #include <cmath>
 
-#include "glintlab/glints/model_export.h"
 #include "glintlab/glints/kneiphof2025/kneiphof2025.h"
 #include "glintlab/glints/kneiphof2025/kneiphof2025_prefilter.h"
+#include "glintlab/glints/model_export.h"
 #include "glintlab/scene/environment.h"
 
 namespace glintlab {
@@ -15,9 +15,9 @@ void kneiphof2025_export_material(GlintExportContext& ctx) {
     const GlintDesc& g = ctx.material;
     const std::shared_ptr<const EnvironmentMap>& env = ctx.environment;
     const std::string& env_source = ctx.environment_source;
-    // kneiphof2025's sun (the "lobe_sun" smooth term): found by the prefilter
-    // of the exported environment; none without one (power 0).
-    Kneiphof2025Sun kneiphof2025_sun;
+    // kneiphof2025's bright sources (the "lobe_sun" smooth term): found by
+    // the prefilter of the exported environment; none without one.
+    Kneiphof2025Sources sources;
     if (ctx.resources) {
         constexpr int n = Kneiphof2025DfgLut::kSize;
         const std::vector<float> rgba = Kneiphof2025DfgLut::get().rgba_texture();
@@ -45,18 +45,18 @@ void kneiphof2025_export_material(GlintExportContext& ctx) {
             const int layers = static_cast<int>(pre.mips().size());
             const int w = pre.mips()[0].width, h = pre.mips()[0].height;
             const int channels = pre.channels();
-            kneiphof2025_sun = pre.sun();
+            sources = pre.sources();
             std::vector<float> rad, wa, wb;
             for (size_t i = 0; i < pre.mips().size(); ++i) {
                 const Kneiphof2025Level& l = pre.mips()[i];
-                const Kneiphof2025Level& sun = pre.sun_mips()[i];
+                const Kneiphof2025Level& src_level = pre.source_mips()[i];
                 // The data's rows run from v = 0 (zenith) down; a texture's
                 // row 0 is t = 0, the same v: no flip. The radiance's alpha
-                // is the sun channel (kneiphof2025_gpu.cpp does the same).
+                // is the sources channel (kneiphof2025_gpu.cpp does the same).
                 for (int p = 0; p < l.width * l.height; ++p) {
                     const float* src = &l.data[static_cast<size_t>(p) * channels];
                     for (int c = 0; c < 4; ++c) {
-                        rad.push_back(c < 3 ? src[c] : sun.data[static_cast<size_t>(p)]);
+                        rad.push_back(c < 3 ? src[c] : src_level.data[static_cast<size_t>(p)]);
                         wa.push_back(3 + c < channels ? src[3 + c] : 0.0f);
                         wb.push_back(7 + c < channels ? src[7 + c] : 0.0f);
                     }
@@ -75,9 +75,10 @@ void kneiphof2025_export_material(GlintExportContext& ctx) {
             r["uniform"] = "kneiphof2025_radiance_layers";
             r["meaning"] =
                 "prefiltered radiance (003 Eq. 11) in rgb and, in alpha, the luminance of the "
-                "environment's sun alone prefiltered by the same kernel (0 without a sun; the "
-                "lobe_sun smooth term, kneiphof2025_sun_* uniforms), layer i: sqrt(alpha) = i / "
-                "(layers - 1), lat-long, v = 0 at the zenith";
+                "environment's bright sources above their surroundings alone, prefiltered by "
+                "the same kernel (0 without sources; the lobe_sun smooth term, "
+                "u_kneiphof2025_source* uniforms), layer i: sqrt(alpha) = i / (layers - 1), "
+                "lat-long, v = 0 at the zenith";
             ctx.resource("env_radiance", rad, r);
             r = common;
             r["uniform"] = "kneiphof2025_weights_layers_a";
@@ -99,6 +100,11 @@ void kneiphof2025_export_material(GlintExportContext& ctx) {
     // Uniforms the host derives from parameters (the renderer's GPU hooks
     // compute them in C++), with how to compute them.
     auto v3 = [](const glm::vec3& v) { return nlohmann::json{v.x, v.y, v.z}; };
+    auto v3s = [&](const std::vector<glm::vec3>& vs) {
+        nlohmann::json a = nlohmann::json::array();
+        for (const glm::vec3& v : vs) a.push_back(v3(v));
+        return a;
+    };
     const Kneiphof2025Params& k = std::get<Kneiphof2025Params>(g.params);
     const glm::vec3 f0 = kneiphof2025_f0(g);
     ctx.derived_uniforms = {
@@ -131,29 +137,32 @@ void kneiphof2025_export_material(GlintExportContext& ctx) {
         {{"uniform", "kneiphof2025_env_rotation"},
          {"value", 0.0},
          {"from", "environment rotation about +y, radians"}},
-        // The sun the prefilter took out of the exported maps
-        // (Kneiphof2025Sun; read by "lobe_sun", with the radiance
-        // array's alpha): power 0 without one (no --env, or a
-        // map without a sun), and for maps prefiltered by the
-        // compute passes, which have no sun channel.
-        {{"uniform", "kneiphof2025_sun_direction"},
-         {"value", v3(kneiphof2025_sun.map_direction)},
+        // The bright sources the prefilter took out of the exported maps
+        // (Kneiphof2025Sources; read by "lobe_sun", with the radiance
+        // array's alpha): count 0 without any (no --env, or a map without
+        // a source), and for maps prefiltered by the compute passes, which
+        // have no sources channel.
+        {{"uniform", "u_kneiphof2025_source_count"},
+         {"value", sources.directions.size()},
+         {"from", "the number of entries of the u_kneiphof2025_source_* arrays (at most 16)"}},
+        {{"uniform", "u_kneiphof2025_source_direction"},
+         {"value", v3s(sources.map_directions)},
          {"from",
-          "the sun's direction in the map's frame (value: rotation 0) turned about +y "
-          "by the environment rotation r: (x cos r - z sin r, y, z cos r + x sin r)"}},
-        {{"uniform", "kneiphof2025_sun_power"},
-         {"value", v3(kneiphof2025_sun.power)},
+          "each direction in the map's frame (value: rotation 0) turned about +y by the "
+          "environment rotation r: (x cos r - z sin r, y, z cos r + x sin r)"}},
+        {{"uniform", "u_kneiphof2025_source_power"},
+         {"value", v3s(sources.powers)},
          {"from",
-          "the sun's RGB power (radiance x solid angle) at the scale the maps were "
-          "prefiltered at; 0 without a sun"}},
-        {{"uniform", "kneiphof2025_sun_radius"},
-         {"value", kneiphof2025_sun.radius},
-         {"from", "the sun's angular radius, radians"}},
-        {{"uniform", "kneiphof2025_sun_color"},
-         {"value", v3(kneiphof2025_sun.color)},
+          "each direction's RGB power (radiance above the surroundings x solid angle) at the "
+          "scale the maps were prefiltered at"}},
+        {{"uniform", "u_kneiphof2025_source_radius"},
+         {"value", sources.radii},
+         {"from", "the angular radius (radians) of the solid angle each direction stands for"}},
+        {{"uniform", "u_kneiphof2025_sources_color"},
+         {"value", v3(sources.color)},
          {"from",
-          "power / luminance(power): the sun channel (radiance alpha) times it is "
-          "the sun's RGB"}},
+          "sum of the powers / its luminance: the radiance alpha times it is the sources' "
+          "RGB"}},
         {{"uniform", "black_level"},
          {"value", k.black_level},
          {"from",

@@ -22,41 +22,41 @@ namespace {
 
 // Four channels [first, first + 4) of the interleaved CPU level (3 + K
 // channels per texel; channels past the last are 0) into RGBA texels. For
-// the radiance (first 0) the alpha is the sun channel `sun` (one float per
-// texel; kneiphof2025.glsl kneiphof2025_radiance_sun_fetch).
+// the radiance (first 0) the alpha is the sources channel `sources` (one
+// float per texel; kneiphof2025.glsl kneiphof2025_radiance_sources_fetch).
 std::vector<float> rgba_channels(const Kneiphof2025Level& l, int channels, int first,
-                                 const Kneiphof2025Level* sun = nullptr) {
+                                 const Kneiphof2025Level* sources = nullptr) {
     const size_t n = static_cast<size_t>(l.width) * static_cast<size_t>(l.height);
     std::vector<float> out(n * 4, 0.0f);
     for (size_t i = 0; i < n; ++i) {
         for (int c = 0; c < 4; ++c)
             if (first + c < channels && (first >= 3 || c < 3))
                 out[i * 4 + c] = l.data[i * static_cast<size_t>(channels) + first + c];
-        if (first == 0 && sun) out[i * 4 + 3] = sun->data[i];
+        if (first == 0 && sources) out[i * 4 + 3] = sources->data[i];
     }
     return out;
 }
 
-// The sun's uniforms (kneiphof2025.glsl kneiphof2025_sun): the map-frame
-// direction turned by the current rotation about +y (world phi = map phi +
-// rotation, as kneiphof2025_latlong_uv); power 0 without a sun.
-void set_sun_uniforms(unsigned program, UniformCache& u, const Kneiphof2025Sun* sun,
-                      float rotation_rad) {
+// The sources' uniforms (kneiphof2025.glsl kneiphof2025_source): each
+// map-frame direction turned by the current rotation about +y (world phi =
+// map phi + rotation, as kneiphof2025_latlong_uv); count 0 without sources.
+void set_source_uniforms(unsigned program, UniformCache& u, const Kneiphof2025Sources* sources,
+                         float rotation_rad) {
     auto loc = [&](const char* name) { return u.location(program, name); };
-    glm::vec3 dir(0.0f, 1.0f, 0.0f), power(0.0f), color(0.0f);
-    float radius = 0.0f;
-    if (sun && sun->found) {
-        const glm::vec3 a = sun->map_direction;
-        const float c = std::cos(rotation_rad), s = std::sin(rotation_rad);
-        dir = glm::normalize(glm::vec3(a.x * c - a.z * s, a.y, a.z * c + a.x * s));
-        power = sun->power;
-        color = sun->color;
-        radius = sun->radius;
-    }
-    glProgramUniform3fv(program, loc("kneiphof2025_sun_direction"), 1, glm::value_ptr(dir));
-    glProgramUniform3fv(program, loc("kneiphof2025_sun_power"), 1, glm::value_ptr(power));
-    glProgramUniform3fv(program, loc("kneiphof2025_sun_color"), 1, glm::value_ptr(color));
-    glProgramUniform1f(program, loc("kneiphof2025_sun_radius"), radius);
+    const int n = sources ? static_cast<int>(sources->directions.size()) : 0;
+    glProgramUniform1i(program, loc("u_kneiphof2025_source_count"), n);
+    if (n == 0) return;
+    const float c = std::cos(rotation_rad), s = std::sin(rotation_rad);
+    std::vector<glm::vec3> dirs;
+    for (const glm::vec3& a : sources->map_directions)
+        dirs.push_back(glm::normalize(glm::vec3(a.x * c - a.z * s, a.y, a.z * c + a.x * s)));
+    glProgramUniform3fv(program, loc("u_kneiphof2025_source_direction"), n,
+                        glm::value_ptr(dirs[0]));
+    glProgramUniform3fv(program, loc("u_kneiphof2025_source_power"), n,
+                        glm::value_ptr(sources->powers[0]));
+    glProgramUniform1fv(program, loc("u_kneiphof2025_source_radius"), n, sources->radii.data());
+    glProgramUniform3fv(program, loc("u_kneiphof2025_sources_color"), 1,
+                        glm::value_ptr(sources->color));
 }
 
 }  // namespace
@@ -86,7 +86,7 @@ const Kneiphof2025Resources::Maps& Kneiphof2025Resources::maps_for(
         const Kneiphof2025Level& l = mips[static_cast<size_t>(i)];
         // RGB radiance; the weights of levels 1-4 (channels 3-6) and 5-8 (7-10).
         const std::vector<float> rad =
-            rgba_channels(l, C, 0, &env.sun_mips()[static_cast<size_t>(i)]);
+            rgba_channels(l, C, 0, &env.source_mips()[static_cast<size_t>(i)]);
         const std::vector<float> wa = rgba_channels(l, C, 3);
         const std::vector<float> wb = rgba_channels(l, C, 7);
         glTextureSubImage3D(m.radiance.get(), 0, 0, 0, i, w, h, 1, GL_RGBA, GL_FLOAT, rad.data());
@@ -157,9 +157,10 @@ void Kneiphof2025Resources::prepare(unsigned program, UniformCache& u, const Sce
                            static_cast<float>(g.layers() - 1));
         glProgramUniform1f(program, loc("u_kneiphof2025_radiance_scale"),
                            1.0f);  // prefiltered at the current scale
-        // No sun channel in the GPU prefilter's arrays (alpha 0): "lobe_sun"
-        // reads the lobe with the sun in the maps there (docs/MODELS.md).
-        set_sun_uniforms(program, u, nullptr, environment_rotation_rad);
+        // No sources channel in the GPU prefilter's arrays (alpha 0):
+        // "lobe_sun" reads the lobe with the sources in the maps there
+        // (docs/MODELS.md).
+        set_source_uniforms(program, u, nullptr, environment_rotation_rad);
         glBindTextureUnit(kKneiphof2025RadianceUnit, g.radiance());
         glBindTextureUnit(kKneiphof2025WeightsAUnit, g.weights_a());
         glBindTextureUnit(kKneiphof2025WeightsBUnit, g.weights_b());
@@ -174,7 +175,7 @@ void Kneiphof2025Resources::prepare(unsigned program, UniformCache& u, const Sce
     const float baked = light.map->scale();
     glProgramUniform1f(program, loc("u_kneiphof2025_radiance_scale"),
                        baked != 0.0f ? environment_scale / baked : 0.0f);
-    set_sun_uniforms(program, u, &m.env->sun(), environment_rotation_rad);
+    set_source_uniforms(program, u, &m.env->sources(), environment_rotation_rad);
     glBindTextureUnit(kKneiphof2025RadianceUnit, m.radiance.get());
     glBindTextureUnit(kKneiphof2025WeightsAUnit, m.weights_a.get());
     glBindTextureUnit(kKneiphof2025WeightsBUnit, m.weights_b.get());

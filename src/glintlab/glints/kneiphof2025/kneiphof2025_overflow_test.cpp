@@ -23,14 +23,19 @@ vec4 kneiphof2025_weights_fetch(vec3, float, int) {
 vec3 kneiphof2025_dfg_fetch(float, float) {
     return vec3(0.0f);
 }
-vec4 kneiphof2025_radiance_sun_fetch(vec3, float) {
+vec4 kneiphof2025_radiance_sources_fetch(vec3, float) {
     return vec4(0.0f);
 }
-void kneiphof2025_sun(vec3& d, vec3& p, float& r, vec3& c) {
+int kneiphof2025_source_count() {
+    return 0;
+}
+void kneiphof2025_source(int, vec3& d, vec3& p, float& r) {
     d = vec3(0.0f, 1.0f, 0.0f);
     p = vec3(0.0f);
     r = 0.0f;
-    c = vec3(0.0f);
+}
+vec3 kneiphof2025_sources_color() {
+    return vec3(0.0f);
 }
 vec2 kneiphof2025_cone_jitter() {
     return vec2(0.5f);

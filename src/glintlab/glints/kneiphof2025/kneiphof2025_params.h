@@ -23,13 +23,15 @@ struct Kneiphof2025Params {
     bool conditional_gaussian = true;
     // The smooth radiance the glint factor multiplies (Eq. 11), docs/MODELS.md:
     // "lobe_sun" (default; ours): the reflection lobe of wo by 32 filtered
-    // importance samples of the maps without the environment's sun, plus
-    // the sun by the BRDF at its direction; within 4 % of the exact integral
-    // on every blender-data map at alpha 0.25 and 0.5 (docs/VALIDATION.md).
+    // importance samples of the maps without the environment's bright
+    // sources (Kneiphof2025Sources), plus the sources by the BRDF at 16
+    // directions inside them; within 5.3 % of the exact integral on every
+    // blender-data map, sphere and grazing plane (docs/VALIDATION.md).
     // "as_published" (alias "split_sum"): 003's split sum, one prefiltered
     // lookup whose kernel assumes n = v = r; up to +46 % (+74 % on the rim)
-    // under a low sun. "lobe": the lobe with the sun left in the maps, up
-    // to +14 % under a low sun.
+    // under a low sun. "lobe": the lobe with the sources left in the maps,
+    // up to +14 % under a low sun and +297 % on a grazing plane under
+    // studio lamps.
     enum class Smooth { Lobe, SplitSum, LobeSun };
     Smooth smooth = Smooth::LobeSun;
     // Reused deliot2023 grid parameters (000; see Deliot2023Params): R for the

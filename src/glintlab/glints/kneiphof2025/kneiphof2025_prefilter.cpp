@@ -16,8 +16,10 @@
 #include "glintlab/core/glsl.h"
 #include "glintlab/core/image.h"
 #include "glintlab/core/progress.h"
+#include "glintlab/core/radical_inverse.h"
 #include "glintlab/microfacet/microfacet.h"
 #include "glintlab/scene/environment.h"
+#include "glintlab/scene/environment_sources.h"
 
 // Eq. 19, one source with the GPU's per-frame prefilter.
 GLINTLAB_SHADER_FUNCTIONS_BEGIN
@@ -29,18 +31,9 @@ namespace {
 
 constexpr float kPi = glm::pi<float>();
 
-float radical_inverse2(uint32_t i) {
-    i = (i << 16u) | (i >> 16u);
-    i = ((i & 0x55555555u) << 1u) | ((i & 0xAAAAAAAAu) >> 1u);
-    i = ((i & 0x33333333u) << 2u) | ((i & 0xCCCCCCCCu) >> 2u);
-    i = ((i & 0x0F0F0F0Fu) << 4u) | ((i & 0xF0F0F0F0u) >> 4u);
-    i = ((i & 0x00FF00FFu) << 8u) | ((i & 0xFF00FF00u) >> 8u);
-    return static_cast<float>(i) * 2.3283064365386963e-10f;
-}
-
 glm::vec2 hammersley(int i, int n) {
     return {(static_cast<float>(i) + 0.5f) / static_cast<float>(n),
-            radical_inverse2(static_cast<uint32_t>(i))};
+            radical_inverse_f(static_cast<uint32_t>(i))};
 }
 
 // Half vector with density D(h) cos(theta_h) for isotropic GGX (local frame).
@@ -150,8 +143,8 @@ Kneiphof2025Environment::Kneiphof2025Environment(const EnvironmentMap& env,
     check_options(o);
     rotation_rad_ = glm::radians(env.rotation_deg());
     const int C = channels();
-    // Internally one more channel: the sun's luminance (Kneiphof2025Sun),
-    // filtered with the others and split off into sun_mips_ at the end. The
+    // Internally one more channel: the sources' luminance (Kneiphof2025Sources),
+    // filtered with the others and split off into source_mips_ at the end. The
     // channels are independent, so the first C are what they were without it.
     const int C1 = C + 1;
     const int W = o.base_width, H = o.base_width / 2;
@@ -187,7 +180,7 @@ Kneiphof2025Environment::Kneiphof2025Environment(const EnvironmentMap& env,
     radiance_levels_ =
         kneiphof2025_radiance_levels(min_luminance_, max_luminance_, levels_, o.black_level);
     for (size_t i = 0; i < lum.size(); ++i) partition(lum[i], &base.data[i * C1 + 3]);
-    find_sun(lum, W, H, base.data, C1);
+    find_sources(W, H, base.data, C1);
 
     // Source pyramid for filtered importance sampling: 2 x 2 box reductions.
     std::vector<Kneiphof2025Level> pyramid{base};
@@ -263,77 +256,46 @@ Kneiphof2025Environment::Kneiphof2025Environment(const EnvironmentMap& env,
         });
         mips_.push_back(std::move(lvl));
     }
-    // Split the sun channel off: mips_ keep the layout of 3 + K channels.
+    // Split the sources channel off: mips_ keep the layout of 3 + K channels.
     for (Kneiphof2025Level& l : mips_) {
         const size_t n = size_t(l.width) * size_t(l.height);
-        Kneiphof2025Level sun_level;
-        sun_level.width = l.width;
-        sun_level.height = l.height;
-        sun_level.data.resize(n);
+        Kneiphof2025Level source_level;
+        source_level.width = l.width;
+        source_level.height = l.height;
+        source_level.data.resize(n);
         std::vector<float> packed(n * size_t(C));
         for (size_t i = 0; i < n; ++i) {
             std::copy_n(&l.data[i * C1], C, &packed[i * C]);
-            sun_level.data[i] = l.data[i * C1 + C];
+            source_level.data[i] = l.data[i * C1 + C];
         }
         l.data = std::move(packed);
-        sun_mips_.push_back(std::move(sun_level));
+        source_mips_.push_back(std::move(source_level));
     }
 }
 
-void Kneiphof2025Environment::find_sun(const std::vector<float>& lum, int W, int H,
-                                       std::vector<float>& base, int stride) {
-    // Solid-angle weighted mean luminance and the brightest texel.
-    const float texel = (2.0f * kPi / static_cast<float>(W)) * (kPi / static_cast<float>(H));
-    double mean = 0.0, area = 0.0;
-    size_t peak = 0;
-    for (int y = 0; y < H; ++y) {
-        const double sa = texel * std::sin((y + 0.5) * kPi / H);
+void Kneiphof2025Environment::find_sources(int W, int H, std::vector<float>& base, int stride) {
+    Image rgb(W, H);
+    for (int y = 0; y < H; ++y)
         for (int x = 0; x < W; ++x) {
-            const size_t i = size_t(y) * W + x;
-            mean += sa * lum[i];
-            area += sa;
-            if (lum[i] > lum[peak]) peak = i;
+            const float* t = &base[(size_t(y) * W + x) * size_t(stride)];
+            rgb.at(x, y) = glm::vec3(t[0], t[1], t[2]);
         }
+    const EnvironmentSourceSplit split = split_environment_sources(
+        rgb, Kneiphof2025Sources::kSamples, Kneiphof2025Sources::kTexelContrast);
+    if (split.directions.empty()) return;
+    for (int y = 0; y < H; ++y)
+        for (int x = 0; x < W; ++x)
+            base[(size_t(y) * W + x) * size_t(stride) + size_t(stride) - 1] =
+                std::max(luminance(rgb.at(x, y)) - luminance(split.residual.at(x, y)), 0.0f);
+    glm::vec3 total(0.0f);
+    for (size_t k = 0; k < split.directions.size(); ++k) {
+        sources_.map_directions.push_back(split.directions[k]);
+        sources_.directions.push_back(rotate_to_world(split.directions[k], rotation_rad_));
+        sources_.powers.push_back(split.powers[k]);
+        sources_.radii.push_back(split.radii[k]);
+        total += split.powers[k];
     }
-    mean /= area;
-    const float l_max = lum[peak];
-    if (!(l_max > Kneiphof2025Sun::kSunContrast * mean)) return;
-    const float threshold = std::max(Kneiphof2025Sun::kSunFraction * l_max,
-                                     Kneiphof2025Sun::kSunContrast * static_cast<float>(mean));
-    auto direction = [&](size_t i) {
-        return map_direction(
-            {(static_cast<float>(i % W) + 0.5f) / W, (static_cast<float>(i / W) + 0.5f) / H});
-    };
-    const glm::vec3 centre = direction(peak);
-    const float cos_cone = std::cos(glm::radians(Kneiphof2025Sun::kSunConeDeg));
-    glm::dvec3 power(0.0), dir(0.0);
-    std::vector<size_t> texels;
-    for (int y = 0; y < H; ++y) {
-        const double sa = texel * std::sin((y + 0.5) * kPi / H);
-        for (int x = 0; x < W; ++x) {
-            const size_t i = size_t(y) * W + x;
-            if (lum[i] < threshold) continue;
-            const glm::vec3 d = direction(i);
-            if (glm::dot(d, centre) < cos_cone) continue;
-            const float* t = &base[i * size_t(stride)];
-            power += sa * glm::dvec3(t[0], t[1], t[2]);
-            dir += (sa * lum[i]) * glm::dvec3(d);
-            base[i * size_t(stride) + size_t(stride) - 1] = lum[i];  // the sun channel
-            texels.push_back(i);
-        }
-    }
-    const glm::vec3 axis = glm::vec3(glm::normalize(dir));
-    float radius = 0.0f;
-    for (const size_t i : texels)
-        radius = std::max(radius, std::acos(std::clamp(glm::dot(direction(i), axis), -1.0f, 1.0f)));
-    const float l_power = luminance(glm::vec3(power));
-    if (!(l_power > 0.0f)) return;
-    sun_.found = true;
-    sun_.map_direction = axis;
-    sun_.direction = rotate_to_world(axis, rotation_rad_);
-    sun_.power = glm::vec3(power);
-    sun_.radius = radius + 0.5f * kPi / static_cast<float>(H);
-    sun_.color = sun_.power / l_power;
+    sources_.color = total / std::max(luminance(total), 1e-30f);
 }
 
 void Kneiphof2025Environment::partition(float L, float* w) const {
@@ -388,21 +350,21 @@ void Kneiphof2025Environment::fetch(glm::vec3 dir, float roughness, float* out) 
     fetch_channels(dir, roughness, out, channels());
 }
 
-glm::vec4 Kneiphof2025Environment::fetch_radiance_sun(glm::vec3 dir, float roughness) const {
+glm::vec4 Kneiphof2025Environment::fetch_radiance_sources(glm::vec3 dir, float roughness) const {
     const glm::vec3 rgb = fetch_radiance(dir, roughness);
-    if (!sun_.found) return glm::vec4(rgb, 0.0f);
-    // The same bilinear and level blend as fetch_channels, on the sun channel.
+    if (sources_.empty()) return glm::vec4(rgb, 0.0f);
+    // The same bilinear and level blend as fetch_channels, on the sources channel.
     const glm::vec2 uv = map_uv(dir, rotation_rad_);
-    const int last = static_cast<int>(sun_mips_.size()) - 1;
+    const int last = static_cast<int>(source_mips_.size()) - 1;
     const float l = std::clamp(roughness, 0.0f, 1.0f) * static_cast<float>(last);
     const int l0 = std::min(static_cast<int>(std::floor(l)), last);
     const int l1 = std::min(l0 + 1, last);
     const float t = l - static_cast<float>(l0);
     float a = 0.0f;
-    bilinear(sun_mips_[l0], 1, uv, &a, 1);
+    bilinear(source_mips_[l0], 1, uv, &a, 1);
     if (t > 0.0f && l1 != l0) {
         float b = 0.0f;
-        bilinear(sun_mips_[l1], 1, uv, &b, 1);
+        bilinear(source_mips_[l1], 1, uv, &b, 1);
         a += t * (b - a);
     }
     return glm::vec4(rgb, a);
@@ -538,11 +500,11 @@ std::vector<float> Kneiphof2025DfgLut::rgba_texture() const {
 // --- on-disk cache of the prefiltered maps ------------------------------------
 
 namespace {
-// Bumped whenever the constructor (or find_sun, partition, the kernel, the
+// Bumped whenever the constructor (or find_sources, partition, the kernel, the
 // radiance levels) changes what it computes, or write() / read() their layout.
-constexpr uint32_t kPrefilterTableVersion = 1;
+constexpr uint32_t kPrefilterTableVersion = 2;
 // The payload's own layout version, its first field (read() rejects others).
-constexpr uint32_t kPrefilterLayoutVersion = 1;
+constexpr uint32_t kPrefilterLayoutVersion = 2;
 static_assert(sizeof(glm::vec3) == 3 * sizeof(float));
 }  // namespace
 
@@ -554,18 +516,19 @@ uint64_t Kneiphof2025Environment::cache_key(const EnvironmentMap& env,
     key.add_bytes(img.pixels.data(), img.pixels.size() * sizeof(glm::vec3));
     key.add(env.scale());
     key.add(o.levels).add(o.black_level).add(o.base_width).add(o.mip_count).add(o.samples);
-    key.add(Kneiphof2025Sun::kSunContrast)
-        .add(Kneiphof2025Sun::kSunFraction)
-        .add(Kneiphof2025Sun::kSunConeDeg);
+    key.add(EnvironmentSourceCriteria::kContrast)
+        .add(EnvironmentSourceCriteria::kFraction)
+        .add(Kneiphof2025Sources::kSamples)
+        .add(Kneiphof2025Sources::kTexelContrast);
     return key.value();
 }
 
 // Layout (native endianness, as every table cache): u32 layout version;
 // i32 K, width, height, level count; f32 radiance levels[8], min and max
-// luminance; the sun (u32 found, f32 map_direction[3], power[3], radius,
-// color[3]; its world direction is not stored: the rotation is not in the
-// key); then each level's data and each sun level's data as u64 count +
-// f32 values.
+// luminance; the sources (u64 count + f32 map_directions[3] each, the same
+// for powers[3] and radii, then f32 color[3]; their world directions are not
+// stored: the rotation is not in the key); then each level's data and each
+// sources level's data as u64 count + f32 values.
 void Kneiphof2025Environment::write(ByteWriter& out) const {
     out.put(kPrefilterLayoutVersion);
     out.put(int32_t(levels_));
@@ -575,18 +538,17 @@ void Kneiphof2025Environment::write(ByteWriter& out) const {
     out.put(radiance_levels_);
     out.put(min_luminance_);
     out.put(max_luminance_);
-    out.put(uint32_t(sun_.found));
-    out.put(sun_.map_direction);
-    out.put(sun_.power);
-    out.put(sun_.radius);
-    out.put(sun_.color);
+    out.put_vector(sources_.map_directions);
+    out.put_vector(sources_.powers);
+    out.put_vector(sources_.radii);
+    out.put(sources_.color);
     for (const Kneiphof2025Level& l : mips_) out.put_vector(l.data);
-    for (const Kneiphof2025Level& l : sun_mips_) out.put_vector(l.data);
+    for (const Kneiphof2025Level& l : source_mips_) out.put_vector(l.data);
 }
 
 bool Kneiphof2025Environment::read(ByteReader& in, const Kneiphof2025PrefilterOptions& o,
                                    float rotation_deg) {
-    uint32_t version = 0, found = 0;
+    uint32_t version = 0;
     int32_t k = 0, w = 0, h = 0, count = 0;
     if (!(in.get(version) && version == kPrefilterLayoutVersion && in.get(k) && in.get(w) &&
           in.get(h) && in.get(count)))
@@ -596,11 +558,16 @@ bool Kneiphof2025Environment::read(ByteReader& in, const Kneiphof2025PrefilterOp
     levels_ = k;
     rotation_rad_ = glm::radians(rotation_deg);
     if (!(in.get(radiance_levels_) && in.get(min_luminance_) && in.get(max_luminance_) &&
-          in.get(found) && found <= 1 && in.get(sun_.map_direction) && in.get(sun_.power) &&
-          in.get(sun_.radius) && in.get(sun_.color)))
+          in.get_vector(sources_.map_directions) && in.get_vector(sources_.powers) &&
+          in.get_vector(sources_.radii) && in.get(sources_.color)))
         return false;
-    sun_.found = found == 1;
-    if (sun_.found) sun_.direction = rotate_to_world(sun_.map_direction, rotation_rad_);
+    const size_t n = sources_.map_directions.size();
+    if (n > size_t(Kneiphof2025Sources::kSamples) || sources_.powers.size() != n ||
+        sources_.radii.size() != n)
+        return false;
+    sources_.directions.clear();
+    for (const glm::vec3& d : sources_.map_directions)
+        sources_.directions.push_back(rotate_to_world(d, rotation_rad_));
     const size_t texels = size_t(w) * size_t(h);
     auto read_levels = [&](std::vector<Kneiphof2025Level>& levels, size_t channels) {
         levels.resize(size_t(count));
@@ -611,7 +578,7 @@ bool Kneiphof2025Environment::read(ByteReader& in, const Kneiphof2025PrefilterOp
         }
         return true;
     };
-    return read_levels(mips_, size_t(channels())) && read_levels(sun_mips_, 1) && in.at_end();
+    return read_levels(mips_, size_t(channels())) && read_levels(source_mips_, 1) && in.at_end();
 }
 
 std::shared_ptr<const Kneiphof2025Environment> Kneiphof2025Environment::load_or_build(

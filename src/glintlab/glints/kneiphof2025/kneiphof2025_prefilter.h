@@ -46,22 +46,25 @@ struct Kneiphof2025PrefilterOptions {
     int samples = 64;   // kernel samples per filtered texel
 };
 
-// The environment's sun: its brightest compact source, taken out of the
-// prefiltered radiance for the "lobe_sun" smooth term (docs/MODELS.md
-// "kneiphof2025", smooth term). Found on the 256 x 128 base level: the texel
-// of maximum luminance L_max, if L_max > kSunContrast times the map's mean
-// luminance; the sun is then every texel within kSunConeDeg of it whose
-// luminance is at least max(kSunFraction L_max, kSunContrast mean).
-struct Kneiphof2025Sun {
-    static constexpr float kSunContrast = 50.0f;
-    static constexpr float kSunFraction = 0.05f;
-    static constexpr float kSunConeDeg = 4.0f;
-    bool found = false;
-    glm::vec3 direction{0.0f, 1.0f, 0.0f};      // world (the map's rotation applied), unit
-    glm::vec3 map_direction{0.0f, 1.0f, 0.0f};  // in the map's own frame (rotation 0)
-    glm::vec3 power{0.0f};                      // RGB: sum of radiance x texel solid angle
-    float radius = 0.0f;    // angular radius (rad): the farthest texel + 1/2 texel
-    glm::vec3 color{0.0f};  // power / luminance(power)
+// The environment's bright sources (a sun, a studio's lamps, a window),
+// taken out of the prefiltered radiance for the "lobe_sun" smooth term and
+// shaded as kSamples directions inside them (docs/MODELS.md "kneiphof2025",
+// smooth term): split_environment_sources (scene/environment_sources.h) of
+// the 256 x 128 base level. A lobe's few dozen samples reading GGX-blurred
+// levels weight a lamp in the lobe's tail as if it sat where the lobe is
+// strong (blender's studio on a plane at grazing view: 4x the image).
+struct Kneiphof2025Sources {
+    static constexpr int kSamples = 16;  // kneiphof2025.glsl KNEIPHOF2025_SOURCES
+    // A source's texels: luminance >= 10 x the map's mean (its halo too;
+    // the split's default, max(5 % of the peak, 50 x mean), left +21 % on
+    // the studio plane at alpha 0.09; 10 x: +9 %).
+    static constexpr float kTexelContrast = 10.0f;
+    std::vector<glm::vec3> directions;      // world (the map's rotation applied), unit
+    std::vector<glm::vec3> map_directions;  // in the map's own frame (rotation 0)
+    std::vector<glm::vec3> powers;          // RGB: radiance above the surroundings x solid angle
+    std::vector<float> radii;               // angular radius (rad) each direction stands for
+    glm::vec3 color{0.0f};  // sum of powers / its luminance: the sources channel's colour
+    bool empty() const { return directions.empty(); }
 };
 
 // One lat-long level: channels per texel = 3 (RGB radiance) + K (weights).
@@ -89,9 +92,9 @@ class Kneiphof2025Environment {
         bool* from_cache = nullptr);
     // The key of every input the maps depend on: the image's size and
     // pixels, the map's scale (applied before the prefilter), every
-    // Kneiphof2025PrefilterOptions field, the sun constants and a table
+    // Kneiphof2025PrefilterOptions field, the sources' constants and a table
     // version. Not the rotation: the maps are in the map's own frame, the
-    // rotation enters at lookup (and in sun().direction, set on load).
+    // rotation enters at lookup (and in sources().directions, set on load).
     static uint64_t cache_key(const EnvironmentMap& env,
                               const Kneiphof2025PrefilterOptions& options);
 
@@ -109,12 +112,13 @@ class Kneiphof2025Environment {
     void fetch(glm::vec3 dir, float roughness, float* out) const;
     // The RGB radiance alone (out[0..2] of fetch).
     glm::vec3 fetch_radiance(glm::vec3 dir, float roughness) const;
-    // The RGB radiance and, in w, the sun's luminance in it (the sun's
-    // texels alone prefiltered by the same kernel; 0 without a sun).
-    glm::vec4 fetch_radiance_sun(glm::vec3 dir, float roughness) const;
-    const Kneiphof2025Sun& sun() const { return sun_; }
-    // The sun channel of each level (one float per texel, same layout).
-    const std::vector<Kneiphof2025Level>& sun_mips() const { return sun_mips_; }
+    // The RGB radiance and, in w, the sources' luminance in it (their
+    // radiance above their surroundings alone, prefiltered by the same
+    // kernel; 0 without sources).
+    glm::vec4 fetch_radiance_sources(glm::vec3 dir, float roughness) const;
+    const Kneiphof2025Sources& sources() const { return sources_; }
+    // The sources channel of each level (one float per texel, same layout).
+    const std::vector<Kneiphof2025Level>& source_mips() const { return source_mips_; }
 
     // Fuzzy indicator weights of Eq. 19 for a luminance (linear space),
     // into w[0 .. K).
@@ -128,10 +132,9 @@ class Kneiphof2025Environment {
     // sizes do not match what `options` imply.
     bool read(ByteReader& in, const Kneiphof2025PrefilterOptions& options, float rotation_deg);
     void fetch_channels(glm::vec3 dir, float roughness, float* out, int count) const;
-    // Sets sun_ from the base level's luminance and writes the sun's texels'
-    // luminance into the last of `stride` channels of `base`.
-    void find_sun(const std::vector<float>& lum, int W, int H, std::vector<float>& base,
-                  int stride);
+    // Sets sources_ from the base level's radiance and writes each texel's
+    // luminance above the residual into the last of `stride` channels of `base`.
+    void find_sources(int W, int H, std::vector<float>& base, int stride);
     void fetch_level(int level, glm::vec2 uv, float* out, int count) const;
 
     float rotation_rad_ = 0.0f;
@@ -139,8 +142,8 @@ class Kneiphof2025Environment {
     std::array<float, 8> radiance_levels_{};
     float min_luminance_ = 0.0f, max_luminance_ = 0.0f;
     std::vector<Kneiphof2025Level> mips_;
-    Kneiphof2025Sun sun_;
-    std::vector<Kneiphof2025Level> sun_mips_;
+    Kneiphof2025Sources sources_;
+    std::vector<Kneiphof2025Level> source_mips_;
 };
 
 // Eq. 18: the K radiance levels (L^(1) = 0, then log-spaced from

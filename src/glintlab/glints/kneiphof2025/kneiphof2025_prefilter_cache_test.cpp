@@ -41,21 +41,23 @@ void expect_same(const Kneiphof2025Environment& a, const Kneiphof2025Environment
     EXPECT_TRUE(same_bits(a.min_luminance(), b.min_luminance()));
     EXPECT_TRUE(same_bits(a.max_luminance(), b.max_luminance()));
     EXPECT_TRUE(same_levels(a.mips(), b.mips()));
-    EXPECT_TRUE(same_levels(a.sun_mips(), b.sun_mips()));
-    const Kneiphof2025Sun &sa = a.sun(), &sb = b.sun();
-    EXPECT_EQ(sa.found, sb.found);
-    EXPECT_TRUE(same_bits(sa.direction, sb.direction));
-    EXPECT_TRUE(same_bits(sa.map_direction, sb.map_direction));
-    EXPECT_TRUE(same_bits(sa.power, sb.power));
-    EXPECT_TRUE(same_bits(sa.radius, sb.radius));
+    EXPECT_TRUE(same_levels(a.source_mips(), b.source_mips()));
+    const Kneiphof2025Sources &sa = a.sources(), &sb = b.sources();
+    ASSERT_EQ(sa.directions.size(), sb.directions.size());
+    for (size_t k = 0; k < sa.directions.size(); ++k) {
+        EXPECT_TRUE(same_bits(sa.directions[k], sb.directions[k]));
+        EXPECT_TRUE(same_bits(sa.map_directions[k], sb.map_directions[k]));
+        EXPECT_TRUE(same_bits(sa.powers[k], sb.powers[k]));
+        EXPECT_TRUE(same_bits(sa.radii[k], sb.radii[k]));
+    }
     EXPECT_TRUE(same_bits(sa.color, sb.color));
     for (const glm::vec3 d : {glm::vec3(0.3f, 0.8f, -0.5f), glm::vec3(-0.7f, 0.1f, 0.7f)})
         for (const float r : {0.0f, 0.4f, 1.0f})
-            EXPECT_TRUE(same_bits(a.fetch_radiance_sun(glm::normalize(d), r),
-                                  b.fetch_radiance_sun(glm::normalize(d), r)));
+            EXPECT_TRUE(same_bits(a.fetch_radiance_sources(glm::normalize(d), r),
+                                  b.fetch_radiance_sources(glm::normalize(d), r)));
 }
 
-// A small sky with a bright compact sun (Kneiphof2025Sun finds it).
+// A small sky with a bright compact sun (a source of Kneiphof2025Sources).
 Image sky() {
     Image img(64, 32);
     for (int y = 0; y < 32; ++y)
@@ -87,7 +89,7 @@ TEST_F(Kneiphof2025PrefilterCache, HitEqualsBuiltAndBadFilesAreRebuilt) {
     const EnvironmentMap env(sky(), 1.5f, 30.0f);
     const Kneiphof2025PrefilterOptions o = small_options();
     const Kneiphof2025Environment built(env, o);
-    ASSERT_TRUE(built.sun().found);
+    ASSERT_FALSE(built.sources().empty());
     bool hit = true;
     expect_same(*Kneiphof2025Environment::load_or_build(env, o, &hit), built);  // stored
     EXPECT_FALSE(hit);
@@ -99,10 +101,10 @@ TEST_F(Kneiphof2025PrefilterCache, HitEqualsBuiltAndBadFilesAreRebuilt) {
     EXPECT_TRUE(hit);
 
     // The same image at another rotation shares the file; the lookups and
-    // the sun's world direction follow the rotation.
+    // the sources' world directions follow the rotation.
     const EnvironmentMap turned(sky(), 1.5f, -75.0f);
     const Kneiphof2025Environment built_turned(turned, o);
-    EXPECT_FALSE(same_bits(built_turned.sun().direction, built.sun().direction));
+    EXPECT_FALSE(same_bits(built_turned.sources().directions[0], built.sources().directions[0]));
     expect_same(*Kneiphof2025Environment::load_or_build(turned, o, &hit), built_turned);
     EXPECT_TRUE(hit);
     EXPECT_EQ(files_in(dir_).size(), 1u);

@@ -25,17 +25,32 @@
 // This test's own copy of the shared file, to call the multinomial directly;
 // it reads no map (the fetch functions are never called here).
 GLINTLAB_SHADER_FUNCTIONS_BEGIN
-vec3 kneiphof2025_radiance_fetch(vec3, float) { return vec3(0.0f); }
-vec4 kneiphof2025_weights_fetch(vec3, float, int) { return vec4(0.0f); }
-vec3 kneiphof2025_dfg_fetch(float, float) { return vec3(0.0f); }
-vec4 kneiphof2025_radiance_sun_fetch(vec3, float) { return vec4(0.0f); }
-void kneiphof2025_sun(vec3& d, vec3& p, float& r, vec3& c) {
+vec3 kneiphof2025_radiance_fetch(vec3, float) {
+    return vec3(0.0f);
+}
+vec4 kneiphof2025_weights_fetch(vec3, float, int) {
+    return vec4(0.0f);
+}
+vec3 kneiphof2025_dfg_fetch(float, float) {
+    return vec3(0.0f);
+}
+vec4 kneiphof2025_radiance_sources_fetch(vec3, float) {
+    return vec4(0.0f);
+}
+int kneiphof2025_source_count() {
+    return 0;
+}
+void kneiphof2025_source(int, vec3& d, vec3& p, float& r) {
     d = vec3(0.0f, 1.0f, 0.0f);
     p = vec3(0.0f);
     r = 0.0f;
-    c = vec3(0.0f);
 }
-vec2 kneiphof2025_cone_jitter() { return vec2(0.5f); }
+vec3 kneiphof2025_sources_color() {
+    return vec3(0.0f);
+}
+vec2 kneiphof2025_cone_jitter() {
+    return vec2(0.5f);
+}
 #include "glintlab/glints/kneiphof2025/kneiphof2025.glsl"
 GLINTLAB_SHADER_FUNCTIONS_END
 
@@ -125,8 +140,8 @@ TEST(Kneiphof2025Law, MultinomialMeanIsExactWithARareBrightLevel) {
             s2 += v * v;
         }
         const double mean = s / M, se = std::sqrt(std::max(s2 / M - mean * mean, 0.0) / M);
-        EXPECT_NEAR(mean, expected, 5.0 * se) << "N " << N << " relative error "
-                                              << mean / expected - 1.0 << " se " << se / expected;
+        EXPECT_NEAR(mean, expected, 5.0 * se)
+            << "N " << N << " relative error " << mean / expected - 1.0 << " se " << se / expected;
     }
 }
 
@@ -209,12 +224,14 @@ TEST(Kneiphof2025Smooth, LobeEstimateMatchesTheExactIntegral) {
                 const glm::vec3 n(px, py, std::sqrt(1.0f - r2));
                 if (n.z < 0.05f) continue;
                 const float a = -1.0f / (1.0f + n.z), bb = n.x * n.y * a;
-                const glm::vec3 t(1.0f + n.x * n.x * a, bb, -n.x), b(bb, 1.0f + n.y * n.y * a, -n.y);
+                const glm::vec3 t(1.0f + n.x * n.x * a, bb, -n.x),
+                    b(bb, 1.0f + n.y * n.y * a, -n.y);
                 const glm::vec3 wo(t.z, b.z, n.z);  // (0, 0, 1) in the local frame
                 const glm::vec3 wr = 2.0f * n.z * n - glm::vec3(0.0f, 0.0f, 1.0f);
                 const double e = exact_smooth_luminance(*env, n, t, b, wo, alpha, rng, 8);
                 const double l = luminance(kneiphof2025_environment_smooth(*pre, n, wr, n.z, lobe));
-                const double s = luminance(kneiphof2025_environment_smooth(*pre, n, wr, n.z, split));
+                const double s =
+                    luminance(kneiphof2025_environment_smooth(*pre, n, wr, n.z, split));
                 for (int ring = 0; ring < 2; ++ring) {
                     if (ring == 1 && n.z >= 0.45f) continue;
                     exact[ring] += e;
@@ -223,8 +240,9 @@ TEST(Kneiphof2025Smooth, LobeEstimateMatchesTheExactIntegral) {
                 }
                 const glm::vec3 dfg = Kneiphof2025DfgLut::get().lookup(n.z, sa);
                 const float e_rho = dfg.x + dfg.y;
-                EXPECT_NEAR(luminance(kneiphof2025_environment_smooth(*pre_white, n, wr, n.z, lobe)),
-                            e_rho, 1e-5f);
+                EXPECT_NEAR(
+                    luminance(kneiphof2025_environment_smooth(*pre_white, n, wr, n.z, lobe)), e_rho,
+                    1e-5f);
             }
         const double lobe_mean = l_sum[0] / exact[0] - 1.0, lobe_ring = l_sum[1] / exact[1] - 1.0;
         const double split_ring = s_sum[1] / exact[1] - 1.0;
@@ -263,8 +281,9 @@ SphereMeans perspective_sphere(const EnvironmentMap& env, const Kneiphof2025Envi
     const float alpha = desc.alpha_x;
     for (int y = 0; y < res; ++y)
         for (int x = 0; x < res; ++x) {
-            const glm::vec3 d = glm::normalize(glm::vec3((2.0f * (x + 0.5f) / res - 1.0f) * th,
-                                                         (1.0f - 2.0f * (y + 0.5f) / res) * th, -1.0f));
+            const glm::vec3 d =
+                glm::normalize(glm::vec3((2.0f * (x + 0.5f) / res - 1.0f) * th,
+                                         (1.0f - 2.0f * (y + 0.5f) / res) * th, -1.0f));
             const float bq = glm::dot(eye, d), disc = bq * bq - (glm::dot(eye, eye) - 1.0f);
             if (disc <= 0.0f) continue;
             const glm::vec3 n = glm::normalize(eye + (-bq - std::sqrt(disc)) * d);
@@ -325,12 +344,12 @@ TEST(Kneiphof2025Smooth, LobeSunDefaultMatchesTheExactIntegralOnSunMaps) {
             << path << " is missing: install Debian's blender-data (scripts/install-deps.sh)";
         const auto env = std::make_shared<const EnvironmentMap>(read_image(path), 1.0f, 0.0f);
         const auto pre = kneiphof2025_environment_for(env, 8, 1e-2f);
-        // Sunrise and city have a sun by the rule of Kneiphof2025Sun; courtyard
-        // (max luminance 53, no compact source) has none.
-        EXPECT_EQ(pre->sun().found, std::string(name) != "courtyard") << name;
+        // Sunrise and city have a sun by the rule of Kneiphof2025Sources;
+        // courtyard (max luminance 53, no compact source) has none.
+        EXPECT_EQ(pre->sources().empty(), std::string(name) == "courtyard") << name;
         for (const float alpha : {0.25f, 0.5f}) {
-            const SphereMeans m =
-                perspective_sphere(*env, *pre, ggx_desc(alpha, Kneiphof2025Params::Smooth::LobeSun), res, 6);
+            const SphereMeans m = perspective_sphere(
+                *env, *pre, ggx_desc(alpha, Kneiphof2025Params::Smooth::LobeSun), res, 6);
             EXPECT_LT(std::abs(m.rel(0)), 0.06) << name << " alpha " << alpha;
             EXPECT_LT(std::abs(m.rel(1)), 0.06) << name << " alpha " << alpha << " (rim)";
             std::printf("%-9s alpha %.2f: lobe_sun image %+.4f rim %+.4f\n", name, alpha, m.rel(0),
@@ -344,6 +363,75 @@ TEST(Kneiphof2025Smooth, LobeSunDefaultMatchesTheExactIntegralOnSunMaps) {
                 std::printf("sunrise   alpha %.2f: as_published image %+.4f rim %+.4f\n", alpha,
                             s.rel(0), s.rel(1));
             }
+        }
+    }
+}
+
+}  // namespace
+}  // namespace glintlab
+
+namespace glintlab {
+namespace {
+
+// Image-mean luminance of a smooth term and of the exact integral over the
+// 2 x 2 quad y = 0 seen 25 deg above it (eye (0, 1.268, 2.719), 45 deg field
+// of view: the scenes/compare plane's view), res x res pixels.
+SphereMeans grazing_plane(const EnvironmentMap& env, const Kneiphof2025Environment& pre,
+                          const GlintDesc& desc, int res, int strata) {
+    SphereMeans m;
+    Pcg32 rng(7u, 13u);
+    const glm::vec3 eye(0.0f, 1.268f, 2.719f);
+    const glm::vec3 fwd = glm::normalize(-eye);
+    const glm::vec3 right = glm::normalize(glm::cross(fwd, glm::vec3(0.0f, 1.0f, 0.0f)));
+    const glm::vec3 up = glm::cross(right, fwd);
+    const float th = std::tan(glm::radians(22.5f));
+    const glm::vec3 n(0.0f, 1.0f, 0.0f);
+    glm::vec3 t, b;
+    shader::tangent_frame(n, t, b);
+    for (int y = 0; y < res; ++y)
+        for (int x = 0; x < res; ++x) {
+            const glm::vec3 d = glm::normalize(fwd + (2.0f * (x + 0.5f) / res - 1.0f) * th * right +
+                                               (1.0f - 2.0f * (y + 0.5f) / res) * th * up);
+            if (!(d.y < 0.0f)) continue;
+            const glm::vec3 p = eye + (-eye.y / d.y) * d;
+            if (std::abs(p.x) > 1.0f || std::abs(p.z) > 1.0f) continue;
+            const float cos_o = -d.y;
+            const glm::vec3 wo(-glm::dot(d, t), -glm::dot(d, b), cos_o);
+            const glm::vec3 wr = glm::reflect(d, n);
+            const double e = exact_smooth_luminance(env, n, t, b, wo, desc.alpha_x, rng, strata);
+            const double s = luminance(kneiphof2025_environment_smooth(pre, n, wr, cos_o, desc));
+            m.exact[0] += e;
+            m.smooth[0] += s;
+        }
+    return m;
+}
+
+// The default smooth term against the exact integral on a plane seen 25 deg
+// above it under blender's studio map: several small lamps near the
+// horizon (87 % of the map's power above 10x its mean), reflected in the
+// lobe's tail at grazing view. The lobe's 32 samples read them through
+// blurred levels as if they sat near the lobe's peak; "lobe_sun" takes them
+// out as 16 directions. Measured at 32 x 32 (the exact means' Monte Carlo
+// error: 0.15 % between 8 x 8 and 24 x 24 strata): lobe_sun +4.3 % (alpha
+// 0.09), -1.3 % (0.25); the lobe alone +297 %, +48 %. Limits: lobe_sun
+// within 8 %; the lobe alone above +100 % at alpha 0.09 (what the sources fix).
+TEST(Kneiphof2025Smooth, LobeSunHoldsOnAGrazingPlaneUnderManyLamps) {
+    const std::string path = std::string(kWorld) + "studio.exr";
+    ASSERT_TRUE(std::filesystem::exists(path))
+        << path << " is missing: install Debian's blender-data (scripts/install-deps.sh)";
+    const auto env = std::make_shared<const EnvironmentMap>(read_image(path), 1.0f, 0.0f);
+    const auto pre = kneiphof2025_environment_for(env, 8, 1e-2f);
+    ASSERT_FALSE(pre->sources().empty());
+    for (const float alpha : {0.09f, 0.25f}) {
+        const SphereMeans sun =
+            grazing_plane(*env, *pre, ggx_desc(alpha, Kneiphof2025Params::Smooth::LobeSun), 32, 8);
+        const SphereMeans lobe =
+            grazing_plane(*env, *pre, ggx_desc(alpha, Kneiphof2025Params::Smooth::Lobe), 32, 8);
+        std::printf("studio plane alpha %.2f: lobe_sun %+.4f lobe %+.4f\n", alpha, sun.rel(0),
+                    lobe.rel(0));
+        EXPECT_LT(std::abs(sun.rel(0)), 0.08) << "alpha " << alpha;
+        if (alpha < 0.1f) {
+            EXPECT_GT(lobe.rel(0), 1.0);
         }
     }
 }
