@@ -22,37 +22,8 @@
 #include "glintlab/scene/environment.h"
 #include "glintlab/scene/scene.h"
 
-// This test's own copy of the shared file, to call the multinomial directly;
-// it reads no map (the fetch functions are never called here).
-GLINTLAB_SHADER_FUNCTIONS_BEGIN
-vec3 kneiphof2025_radiance_fetch(vec3, float) {
-    return vec3(0.0f);
-}
-vec4 kneiphof2025_weights_fetch(vec3, float, int) {
-    return vec4(0.0f);
-}
-vec3 kneiphof2025_dfg_fetch(float, float) {
-    return vec3(0.0f);
-}
-vec4 kneiphof2025_radiance_sources_fetch(vec3, float) {
-    return vec4(0.0f);
-}
-int kneiphof2025_source_count() {
-    return 0;
-}
-void kneiphof2025_source(int, vec3& d, vec3& p, float& r) {
-    d = vec3(0.0f, 1.0f, 0.0f);
-    p = vec3(0.0f);
-    r = 0.0f;
-}
-vec3 kneiphof2025_sources_color() {
-    return vec3(0.0f);
-}
-vec2 kneiphof2025_cone_jitter() {
-    return vec2(0.5f);
-}
-#include "glintlab/glints/kneiphof2025/kneiphof2025.glsl"
-GLINTLAB_SHADER_FUNCTIONS_END
+// Last: it compiles shader code (and its structs) into this file's own namespace.
+#include "glintlab/glints/kneiphof2025/kneiphof2025_without_maps_test_util.h"
 
 namespace glintlab {
 namespace {
