@@ -102,7 +102,8 @@ class ByteReader {
         uint64_t n = 0;
         if (!get(n) || n > (bytes_.size() - pos_) / sizeof(T)) return false;
         v.resize(size_t(n));
-        std::memcpy(v.data(), bytes_.data() + pos_, size_t(n) * sizeof(T));
+        // An empty vector's data() may be null, which memcpy must never get.
+        if (n != 0) std::memcpy(v.data(), bytes_.data() + pos_, size_t(n) * sizeof(T));
         pos_ += size_t(n) * sizeof(T);
         return true;
     }

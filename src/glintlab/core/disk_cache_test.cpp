@@ -128,3 +128,35 @@ TEST_F(DiskCacheTest, KeyChangesWithEveryInput) {
 
 }  // namespace
 }  // namespace glintlab
+
+namespace glintlab {
+namespace {
+
+// A payload's vectors round-trip, an empty one too (its data() may be null:
+// the reader must not pass it to memcpy, which UBSan reports), and a count
+// past the payload's end is refused.
+TEST(ByteReaderWriter, VectorsRoundTripEmptyOrNot) {
+    ByteWriter out;
+    out.put_vector(std::vector<float>{});
+    out.put_vector(std::vector<float>{1.5f, -2.0f});
+    out.put(uint32_t(7));
+    ByteReader in(out.bytes);
+    std::vector<float> empty{3.0f}, two;
+    uint32_t seven = 0;
+    ASSERT_TRUE(in.get_vector(empty));
+    EXPECT_TRUE(empty.empty());
+    ASSERT_TRUE(in.get_vector(two));
+    EXPECT_EQ(two, (std::vector<float>{1.5f, -2.0f}));
+    ASSERT_TRUE(in.get(seven));
+    EXPECT_EQ(seven, 7u);
+    EXPECT_TRUE(in.at_end());
+
+    ByteWriter bad;
+    bad.put(uint64_t(1000));  // 1000 floats announced, none follow
+    ByteReader short_in(bad.bytes);
+    std::vector<float> v;
+    EXPECT_FALSE(short_in.get_vector(v));
+}
+
+}  // namespace
+}  // namespace glintlab
