@@ -167,7 +167,7 @@ export class ExportedModel {
     model.environment = null;
     model.fixedMaterial = {};  // material keys the export fixes (wang2020)
     // The input bits the model reads per pixel (the manifest's inputs:
-    // wang2020 and kneiphof2025 take density and roughness as uniforms only).
+    // wang2020 takes density and roughness as uniforms only).
     model.perPixelInputs = new Set(
         (manifest.inputs?.textures ?? []).filter((i) => i.per_pixel).map((i) => i.bit));
     for (const r of manifest.resources) {

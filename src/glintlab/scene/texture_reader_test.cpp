@@ -197,6 +197,28 @@ TEST(TextureReader, ErrorsNameTheFileTheJsonPathAndTheRange) {
     }
 }
 
+// kneiphof2025's maps, tables and grids read α and ln N per hit, so it
+// takes density and roughness maps; its tables are isotropic GGX, so a
+// roughness is one texture for both axes, never an [α_x, α_y] pair.
+TEST(TextureReader, Kneiphof2025TakesDensityAndOneRoughnessMap) {
+    const TextureScene t;
+    const Scene s = t.load({{"type", "glint"},
+                            {"model", "kneiphof2025"},
+                            {"ndf", "ggx"},
+                            {"log_density", {{"texture", "density.exr"}}},
+                            {"roughness", {{"texture", "grey.png"}}}});
+    ASSERT_TRUE(s.materials[0].glint.textures);
+    EXPECT_TRUE(s.materials[0].glint.textures->density);
+    EXPECT_TRUE(s.materials[0].glint.textures->alpha_x_sq);
+    EXPECT_EQ(s.materials[0].glint.textures->alpha_x_sq, s.materials[0].glint.textures->alpha_y_sq);
+    const std::string pair = t.error({{"type", "glint"},
+                                      {"model", "kneiphof2025"},
+                                      {"ndf", "ggx"},
+                                      {"roughness", {{{"texture", "grey.png"}}, 0.2}}});
+    EXPECT_NE(pair.find("one roughness value or one roughness texture"), std::string::npos) << pair;
+    EXPECT_NE(pair.find("/materials/0"), std::string::npos) << pair;
+}
+
 // glTF's maps: a perceptual roughness r is α = r² ("power": 2), a base
 // colour factor scales each channel.
 TEST(TextureReader, PowerSquaresTheValueAndAColourScaleHasOneFactorAChannel) {

@@ -108,7 +108,7 @@ const Kneiphof2025Params& params_of(const GlintDesc& desc) {
 }
 
 float alpha_of(const GlintDesc& desc) {
-    return std::clamp(desc.alpha_x, 1e-4f, 1.0f);
+    return shader::kneiphof2025_isotropic_alpha(glm::vec2(desc.alpha_x, desc.alpha_y));
 }
 
 // Solid angle of the wang2020-style cone of half-angle gamma.
@@ -233,6 +233,7 @@ float kneiphof2025_footprint_ndf(glm::vec3 h, const Footprint& footprint, const 
     t.ndf = shader::NDF_GGX;
     t.alpha_x = desc.alpha_x;
     t.alpha_y = desc.alpha_y;
+    t.rho = desc.slope_correlation;
     t.log_density = desc.log_density;
     t.seed = desc.seed;
     Deliot2023Params d;

@@ -154,6 +154,17 @@ float kneiphof2025_total_facet_area(float alpha) {
     return 1.0f + a2 * f;
 }
 
+// The isotropic GGX alpha that the prefiltered maps, the split-sum tables
+// and the area lights' quadrature read for a per-hit (alpha_x, alpha_y): a
+// roughness map's, or a lobe widened by a normal map's or a curved surface's
+// slope covariance (docs/MODELS.md, "Normal maps"). It keeps the lobe's total
+// slope variance, alpha^2 = (alpha_x^2 + alpha_y^2) / 2, the trace of the
+// slope matrix, which the slopes' correlation does not change; the tables
+// cannot hold the anisotropy or the correlation, which drop out.
+float kneiphof2025_isotropic_alpha(vec2 alpha) {
+    return clamp(sqrt(0.5f * (alpha.x * alpha.x + alpha.y * alpha.y)), 1e-4f, 1.0f);
+}
+
 // Reflection probabilities (Eq. 15 with Eq. 21): p^(k) = (E_D / D_H) w^(k),
 // where w^(k) are the prefiltered fuzzy indicators renormalised by their sum
 // (prefiltering preserves the partition of unity only up to rounding; the

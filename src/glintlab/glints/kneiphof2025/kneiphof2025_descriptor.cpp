@@ -12,13 +12,18 @@
 namespace glintlab {
 namespace {
 
-// 003 §7-8: the split-sum tables are isotropic GGX.
+// 003 §7-8: the split-sum tables are isotropic GGX. A roughness map is one
+// texture for both axes (read_roughness_or_textures gives both axes the same
+// input); an [alpha_x, alpha_y] pair with a texture in it is anisotropic.
 void check_kneiphof2025(JsonObject& block, GlintDesc& desc) {
-    if (desc.ndf != NdfType::GGX || desc.alpha_x != desc.alpha_y || desc.alpha_x > 1.0f)
+    const bool anisotropic_map =
+        desc.textures != nullptr && desc.textures->alpha_x_sq != desc.textures->alpha_y_sq;
+    if (desc.ndf != NdfType::GGX || desc.alpha_x != desc.alpha_y || desc.alpha_x > 1.0f ||
+        anisotropic_map)
         block.error("",
                     "kneiphof2025 needs an isotropic GGX material with roughness <= 1 "
-                    "(\"ndf\": \"ggx\", one roughness value; 003 §7-8: the split-sum "
-                    "tables are isotropic GGX)");
+                    "(\"ndf\": \"ggx\", one roughness value or one roughness texture; "
+                    "003 §7-8: the split-sum tables are isotropic GGX)");
 }
 
 // 003 §7-8: the split-sum tables are isotropic GGX with alpha <= 1 (what
@@ -104,10 +109,14 @@ GlintModelDescriptor kneiphof2025_descriptor() {
         gp::number("density_randomization", &P::density_randomization, 0.0, 50.0, "",
                    "deliot2023's std-dev of the per-cell jitter of ln(density)"),
     };
-    d.textured_density = d.textured_roughness = d.filters_curvature = false;
-    d.untextured_reason =
-        "its prefiltered environment and smooth term (003 §4) are computed for one roughness and "
-        "one density per material";
+    // The maps, the split-sum tables and the grids read alpha and ln N per
+    // hit: roughness and density maps, and alpha widened by a normal map or
+    // a curved surface, reach every light path. The environment and area
+    // lights take the isotropic alpha of the same total slope variance
+    // (kneiphof2025_isotropic_alpha); point and delta directional lights,
+    // deliot2023's D_P, the widened (alpha_x, alpha_y) and the slopes'
+    // correlation.
+    d.reads_slope_correlation = [](const GlintDesc&) { return true; };
     d.check = check_kneiphof2025;
     d.fit_material = fit_kneiphof2025;
     d.shades_light = GLINTLAB_SHADES_LIGHT_HOOK(kneiphof2025_shades_light);

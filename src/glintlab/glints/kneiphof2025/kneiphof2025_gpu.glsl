@@ -36,9 +36,12 @@ uniform float u_kneiphof2025_screen_space_scale;
 uniform float u_kneiphof2025_density_randomization;
 uniform vec3 u_kneiphof2025_f0;             // kneiphof2025_f0(desc)
 uniform float u_kneiphof2025_radiance_scale; // current environment scale / prefiltered one
-float kneiphof2025_glue_alpha() { return clamp(u_glint_alpha.x, 1e-4f, 1.0f); }  // alpha_of
+// alpha_of (kneiphof2025.cpp): per fragment under a roughness map, a normal
+// map or curvature (glints/glint_uniforms.glsl).
+float kneiphof2025_glue_alpha() { return kneiphof2025_isotropic_alpha(u_glint_alpha); }
 vec3 glint_ndf(vec3 h, Footprint fp) {
-    return vec3(deliot2023_ndf(h, fp, NDF_GGX, u_glint_alpha.x, u_glint_alpha.y, 0.0f,
+    return vec3(deliot2023_ndf(h, fp, NDF_GGX, u_glint_alpha.x, u_glint_alpha.y,
+                               g_glint_slope_correlation,
                                u_glint_log_density, u_glint_seed,
                                u_kneiphof2025_microfacet_roughness,
                                u_kneiphof2025_screen_space_scale,
