@@ -13,8 +13,7 @@ Distribution1D::Distribution1D(std::span<const float> weights)
     const double n = static_cast<double>(func_.size());
     for (size_t i = 0; i < func_.size(); ++i) {
         if (!(func_[i] >= 0.0f) || !std::isfinite(func_[i]))
-            fail("Distribution1D: weight {} = {} is not a finite non-negative number", i,
-                 func_[i]);
+            fail("Distribution1D: weight {} = {} is not a finite non-negative number", i, func_[i]);
         cdf_[i + 1] = cdf_[i] + func_[i] / n;
     }
     const double total = cdf_.back();

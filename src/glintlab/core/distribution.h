@@ -10,7 +10,7 @@
 namespace glintlab {
 
 class Distribution1D {
-public:
+  public:
     Distribution1D() = default;
     explicit Distribution1D(std::span<const float> weights);  // weights >= 0
 
@@ -20,14 +20,14 @@ public:
     float integral() const { return integral_; }
     int size() const { return static_cast<int>(func_.size()); }
 
-private:
+  private:
     std::vector<float> func_;
     std::vector<double> cdf_;
     float integral_ = 0.0f;
 };
 
 class Distribution2D {
-public:
+  public:
     Distribution2D() = default;
     // weights[y * width + x] >= 0, over the unit square.
     Distribution2D(std::span<const float> weights, int width, int height);
@@ -36,7 +36,7 @@ public:
     float pdf(glm::vec2 p) const;
     float integral() const { return marginal_.integral(); }
 
-private:
+  private:
     std::vector<Distribution1D> conditional_;
     Distribution1D marginal_;
 };

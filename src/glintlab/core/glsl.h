@@ -36,7 +36,7 @@ using uint = unsigned int;
 
 // Opens/closes the namespace into which shared .glsl files are included.
 // Files that define only structs and constants use GLINTLAB_SHADER_BEGIN/END.
-#define GLINTLAB_SHADER_BEGIN   \
+#define GLINTLAB_SHADER_BEGIN    \
     namespace glintlab::shader { \
     using namespace glintlab::glsl;
 #define GLINTLAB_SHADER_END }
@@ -45,10 +45,10 @@ using uint = unsigned int;
 // several C++ translation units they would collide at link time, so they go
 // into an unnamed namespace (internal linkage) inside glintlab::shader.
 // Unused ones would warn, hence the pragma.
-#define GLINTLAB_SHADER_FUNCTIONS_BEGIN                                  \
-    GLINTLAB_SHADER_BEGIN                                                \
-    _Pragma("GCC diagnostic push")                                       \
-    _Pragma("GCC diagnostic ignored \"-Wunused-function\"") namespace {
+#define GLINTLAB_SHADER_FUNCTIONS_BEGIN \
+    GLINTLAB_SHADER_BEGIN               \
+    _Pragma("GCC diagnostic push")      \
+        _Pragma("GCC diagnostic ignored \"-Wunused-function\"") namespace {
 #define GLINTLAB_SHADER_FUNCTIONS_END \
     }                                 \
     _Pragma("GCC diagnostic pop") GLINTLAB_SHADER_END

@@ -9,7 +9,7 @@
 namespace glintlab {
 
 class Pcg32 {
-public:
+  public:
     static constexpr uint64_t kDefaultState = 0x853c49e6748fea9bULL;
     static constexpr uint64_t kDefaultStream = 0xda3e39cb94b95bdbULL;
     static constexpr uint64_t kMultiplier = 0x5851f42d4c957f2dULL;
@@ -69,7 +69,7 @@ public:
         state_ = acc_mult * state_ + acc_plus;
     }
 
-private:
+  private:
     uint64_t state_ = kDefaultState;
     uint64_t inc_ = kDefaultStream;
 };
@@ -86,8 +86,8 @@ constexpr uint64_t mix_bits(uint64_t v) {
 
 // The sample stream of one pixel: independent of tiles and threads.
 inline Pcg32 pixel_stream(int x, int y, uint64_t seed) {
-    const uint64_t pixel = (static_cast<uint64_t>(static_cast<uint32_t>(y)) << 32) |
-                           static_cast<uint32_t>(x);
+    const uint64_t pixel =
+        (static_cast<uint64_t>(static_cast<uint32_t>(y)) << 32) | static_cast<uint32_t>(x);
     return Pcg32(mix_bits(pixel), mix_bits(seed ^ 0x9e3779b97f4a7c15ULL));
 }
 

@@ -104,8 +104,9 @@ std::string map_shader_log(const AssembledShader& shader, std::string_view log) 
         return j;
     };
     while (i < log.size()) {
-        const bool starts_number = std::isdigit(static_cast<unsigned char>(log[i])) &&
-                                   (i == 0 || !std::isalnum(static_cast<unsigned char>(log[i - 1])));
+        const bool starts_number =
+            std::isdigit(static_cast<unsigned char>(log[i])) &&
+            (i == 0 || !std::isalnum(static_cast<unsigned char>(log[i - 1])));
         if (starts_number) {
             const size_t k_end = digits_end(i);
             if (k_end < log.size() && (log[k_end] == ':' || log[k_end] == '(')) {
@@ -115,7 +116,8 @@ std::string map_shader_log(const AssembledShader& shader, std::string_view log) 
                     n_end > k_end + 1 && (!paren || (n_end < log.size() && log[n_end] == ')'));
                 const size_t k = std::stoul(std::string(log.substr(i, k_end - i)));
                 if (well_formed && k < shader.files.size()) {
-                    out += shader.files[k] + ":" + std::string(log.substr(k_end + 1, n_end - k_end - 1));
+                    out += shader.files[k] + ":" +
+                           std::string(log.substr(k_end + 1, n_end - k_end - 1));
                     i = paren ? n_end + 1 : n_end;
                     continue;
                 }

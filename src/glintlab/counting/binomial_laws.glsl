@@ -86,7 +86,8 @@ float binomial_zirr2016(float N, float p, float xi_gauss, mat4 xi_trials) {
 // success plus a Gaussian for the N - 1 remaining trials (Eq. 17), floored
 // (Eq. 18). Eq. 18 writes H(theta_0 - P); the gate passes with probability P,
 // so we test theta_0 < P. The Gaussian is clamped to the N - 1 remaining
-// trials (a fix the authors' code lacked, see papers/README.md). Kept as
+// trials (a fix the authors' HLSL lacked: docs/MODELS.md, "Known defects of the
+// original HLSL"). Kept as
 // published for N < 1: the gate then overestimates P(count >= 1), since
 // 1 - (1 - p)^N > N p there (the defect 003 Appendix B fixes).
 float binomial_deliot2023(float N, float p, float xi0, float xi1) {
@@ -219,7 +220,7 @@ float binomial_single_gated(float N, float p, float xi1, float xi2) {
 // Law 6: kneiphof2025's dual-gated Gaussian, 003 Algorithm 1. Returns
 // (n, nbar): positive and negative samples. One uniform (xi1) makes every
 // gating decision, xi2 drives the Gaussian. Line 6 is garbled in the text;
-// per papers/README.md it is P(nbar = N) = clamp(N - 1, 0, 1) (1 - c p)^(N>=2 / c).
+// read as in the authors' code, it is P(nbar = N) = clamp(N - 1, 0, 1) (1 - c p)^(N>=2 / c).
 // For integer N the two counts sum to N; for real N < 2 the law is the
 // mixture of the neighbouring integer laws (003 Fig. 4), so they need not.
 // `integer_gaussian` rounds the Gaussian part so that integer N gives integer

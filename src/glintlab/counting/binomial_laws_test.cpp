@@ -233,8 +233,8 @@ TEST(CountingLaws, ClampedGaussianMeanMatchesQuadrature) {
             double sum = 0.0;
             constexpr int kSteps = 1 << 16;
             for (int k = 0; k < kSteps; ++k) {
-                const double x = mean + sd * shader::normal_quantile(
-                                                 static_cast<float>((k + 0.5) / kSteps));
+                const double x =
+                    mean + sd * shader::normal_quantile(static_cast<float>((k + 0.5) / kSteps));
                 sum += std::clamp(x, 1.0, static_cast<double>(hi));
             }
             EXPECT_NEAR(shader::clamped_gaussian_mean(mean, sd, 1.0f, hi), sum / kSteps, 2e-4)

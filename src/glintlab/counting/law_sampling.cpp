@@ -10,10 +10,13 @@ namespace glintlab {
 namespace {
 
 // Appended laws go last: the validation seeds each (law, cell) by its index.
-constexpr std::array<CountingLaw, 7> kLaws = {
-    CountingLaw::exact,        CountingLaw::gaussian,   CountingLaw::zirr2016,
-    CountingLaw::deliot2023,   CountingLaw::single_gated, CountingLaw::dual_gated,
-    CountingLaw::single_gated_conditional};
+constexpr std::array<CountingLaw, 7> kLaws = {CountingLaw::exact,
+                                              CountingLaw::gaussian,
+                                              CountingLaw::zirr2016,
+                                              CountingLaw::deliot2023,
+                                              CountingLaw::single_gated,
+                                              CountingLaw::dual_gated,
+                                              CountingLaw::single_gated_conditional};
 
 // Uniforms handed to the fp32 laws must stay below 1 after rounding to float.
 float to_unit_float(double u) {

@@ -12,12 +12,12 @@
 namespace glintlab {
 
 enum class CountingLaw {
-    exact,         // inversion of the exact (mixture) law, exact_binomial.h
-    gaussian,      // binomial_gaussian
-    zirr2016,      // binomial_zirr2016 (000 Eq. 15)
-    deliot2023,    // binomial_deliot2023 (000 Eq. 16-18)
-    single_gated,  // binomial_single_gated (003 Eq. 23)
-    dual_gated,    // binomial_dual_gated (003 Algorithm 1), positives
+    exact,                     // inversion of the exact (mixture) law, exact_binomial.h
+    gaussian,                  // binomial_gaussian
+    zirr2016,                  // binomial_zirr2016 (000 Eq. 15)
+    deliot2023,                // binomial_deliot2023 (000 Eq. 16-18)
+    single_gated,              // binomial_single_gated (003 Eq. 23)
+    dual_gated,                // binomial_dual_gated (003 Algorithm 1), positives
     single_gated_conditional,  // binomial_single_gated_conditional (Law 5b, unbiased mean)
 };
 

@@ -39,9 +39,8 @@ TEST(CountingValidation, ReportHasTheIssueChecksAndPasses) {
     const nlohmann::json j = r.to_json();
     EXPECT_EQ(j["suite"], "counting");
     EXPECT_EQ(j["checks"].size(), expected.size());
-    for (const char* law :
-         {"exact", "gaussian", "zirr2016", "deliot2023", "single_gated", "dual_gated",
-          "single_gated_conditional"})
+    for (const char* law : {"exact", "gaussian", "zirr2016", "deliot2023", "single_gated",
+                            "dual_gated", "single_gated_conditional"})
         EXPECT_EQ(j["laws"][law].size(), 13u * 7u) << law;
     EXPECT_TRUE(j.contains("fig4"));
     EXPECT_TRUE(j.contains("pow_fp32"));

@@ -29,6 +29,5 @@ std::string glint_model_glsl(GlintModelId model, unsigned program_options = 0);
 // Whether the GPU renderer implements `model`.
 bool gpu_supports_model(GlintModelId model);
 
-
 }  // namespace gl
 }  // namespace glintlab

@@ -798,7 +798,7 @@ TEST(GpuRenderer, ExampleScenesRenderOrNameTheMissingModel) {
     EXPECT_GE(rendered, 8);  // default, plane/heightmap/sphere/monkey, sweeps, car paint
 }
 
-// wang2020 (papers/001, wang2020_gpu.h): CPU `direct` vs GPU at 128x128 on
+// wang2020 (Wang et al. 2020, 001, wang2020_gpu.h): CPU `direct` vs GPU at 128x128 on
 // the SPHERE view, from the same CPU-built tables (reduced DPF resolution;
 // alpha 0.4 selects Table 2's small prefilter grid), under the forest map
 // (or a constant environment without blender-data) and under a point light.

@@ -25,8 +25,8 @@ struct Camera {
     glm::vec3 eye{0.0f, 0.0f, 5.0f};
     glm::vec3 target{0.0f};
     glm::vec3 up{0.0f, 1.0f, 0.0f};
-    float fov_deg = 40.0f;       // vertical field of view (perspective)
-    float ortho_height = 2.0f;   // world-space height of the view (orthographic)
+    float fov_deg = 40.0f;      // vertical field of view (perspective)
+    float ortho_height = 2.0f;  // world-space height of the view (orthographic)
     int width = 512;
     int height = 512;
 

@@ -75,9 +75,7 @@ glm::vec3 EnvironmentMap::eval(glm::vec3 dir) const {
     const float fy = uv.y * static_cast<float>(h) - 0.5f;
     const int x0 = static_cast<int>(std::floor(fx)), y0 = static_cast<int>(std::floor(fy));
     const float tx = fx - static_cast<float>(x0), ty = fy - static_cast<float>(y0);
-    auto texel = [&](int x, int y) {
-        return image_.at((x % w + w) % w, std::clamp(y, 0, h - 1));
-    };
+    auto texel = [&](int x, int y) { return image_.at((x % w + w) % w, std::clamp(y, 0, h - 1)); };
     const glm::vec3 top = glm::mix(texel(x0, y0), texel(x0 + 1, y0), tx);
     const glm::vec3 bottom = glm::mix(texel(x0, y0 + 1), texel(x0 + 1, y0 + 1), tx);
     return scale_ * glm::mix(top, bottom, ty);

@@ -15,7 +15,7 @@
 namespace glintlab {
 
 class EnvironmentMap {
-public:
+  public:
     // image: linear Rec.709 radiance; scale multiplies it; rotation about +y.
     EnvironmentMap(Image image, float scale, float rotation_deg);
     static EnvironmentMap constant(glm::vec3 radiance);
@@ -31,7 +31,7 @@ public:
     float scale() const { return scale_; }
     float rotation_deg() const { return rotation_deg_; }
 
-private:
+  private:
     Image image_;
     float scale_ = 1.0f;
     float rotation_deg_ = 0.0f;

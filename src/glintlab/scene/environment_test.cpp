@@ -28,7 +28,8 @@ double sphere_integral(F f, int n_theta = 1024, int n_phi = 2048) {
         const double theta = glm::pi<double>() * (i + 0.5) / n_theta;
         for (int j = 0; j < n_phi; ++j) {
             const double phi = 2.0 * glm::pi<double>() * (j + 0.5) / n_phi;
-            const glm::vec3 d(std::sin(theta) * std::cos(phi), std::cos(theta), std::sin(theta) * std::sin(phi));
+            const glm::vec3 d(std::sin(theta) * std::cos(phi), std::cos(theta),
+                              std::sin(theta) * std::sin(phi));
             sum += f(d) * std::sin(theta);
         }
     }
@@ -82,8 +83,10 @@ TEST(Environment, SamplesAgreeWithPdfAndEstimateTheIntegral) {
     // Importance sampling must beat uniform sphere sampling by far on this
     // map (dominated by a small bright block): uniform sampling has variance
     // 4π∫L² − (∫L)²; require at least a 3x smaller standard deviation.
-    const double second = sphere_integral([&](glm::vec3 d) { return double(env.eval(d).x) * env.eval(d).x; });
-    const double uniform_sigma = std::sqrt(4.0 * glm::pi<double>() * second - reference * reference);
+    const double second =
+        sphere_integral([&](glm::vec3 d) { return double(env.eval(d).x) * env.eval(d).x; });
+    const double uniform_sigma =
+        std::sqrt(4.0 * glm::pi<double>() * second - reference * reference);
     EXPECT_LT(sigma * std::sqrt(double(n)), uniform_sigma / 3.0);
 }
 
@@ -98,7 +101,8 @@ TEST(Environment, ConstantMapIsNearlyUniform) {
         const float t = glm::radians(theta_deg);
         const glm::vec3 d(std::sin(t) * 0.6f, std::cos(t), std::sin(t) * 0.8f);
         const float dtheta = glm::pi<float>() / 64.0f;
-        const float bound = 0.5f * dtheta * std::abs(std::cos(t) / std::sin(t)) + dtheta * dtheta / 6.0f;
+        const float bound =
+            0.5f * dtheta * std::abs(std::cos(t) / std::sin(t)) + dtheta * dtheta / 6.0f;
         EXPECT_NEAR(env.pdf(d) * 4.0f * glm::pi<float>(), 1.0f, 1.05f * bound) << theta_deg;
     }
 }

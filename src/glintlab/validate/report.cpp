@@ -8,15 +8,20 @@
 
 namespace glintlab {
 
-void ValidationReport::check(std::string name, double value, std::string relation,
-                             double limit) {
+void ValidationReport::check(std::string name, double value, std::string relation, double limit) {
     bool pass = false;
-    if (relation == "<=") pass = value <= limit;
-    else if (relation == "<") pass = value < limit;
-    else if (relation == ">=") pass = value >= limit;
-    else if (relation == ">") pass = value > limit;
-    else if (relation == "==") pass = value == limit;
-    else fail("validation check '{}': unknown relation '{}'", name, relation);
+    if (relation == "<=")
+        pass = value <= limit;
+    else if (relation == "<")
+        pass = value < limit;
+    else if (relation == ">=")
+        pass = value >= limit;
+    else if (relation == ">")
+        pass = value > limit;
+    else if (relation == "==")
+        pass = value == limit;
+    else
+        fail("validation check '{}': unknown relation '{}'", name, relation);
     // A NaN value never passes (every comparison above is false for NaN).
     checks.push_back({std::move(name), value, limit, std::move(relation), pass});
 }

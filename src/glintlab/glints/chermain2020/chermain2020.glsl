@@ -1,4 +1,4 @@
-// chermain2020 (papers/004): a P-SDF built from a dictionary of multiscale
+// chermain2020 (Chermain et al. 2020, 004): a P-SDF built from a dictionary of multiscale
 // marginal slope distributions over a MIP hierarchy of surface cells.
 //   Eq. 5-7   separable, even, multiscale SDF per cell: P_i(x, l) P_j(y, l)
 //   Eq. 8     coherent cell index s0 = floor(s / 2^l) 2^l (seeds the cell)

@@ -1,4 +1,4 @@
-// C++ host side of the chermain2020 glint model (papers/004): evaluation of
+// C++ host side of the chermain2020 glint model (Chermain et al. 2020, 004): evaluation of
 // the shared chermain2020.glsl over the default dictionary, and the reader of
 // its parameter block.
 #pragma once

@@ -1,8 +1,8 @@
 // `glintlab export` of chermain2020 (its descriptor's GlintModelExport): the
 // dictionary of 1D marginal distributions (004 §4.4-4.5).
-#include "glintlab/glints/model_export.h"
 #include "glintlab/glints/chermain2020/chermain2020_params.h"
 #include "glintlab/glints/chermain2020/dictionary.h"
+#include "glintlab/glints/model_export.h"
 
 namespace glintlab {
 

@@ -1,4 +1,5 @@
-// GPU glue of chermain2020 (papers/004) for the forward pass (realtime/forward_shaders.h):
+// GPU glue of chermain2020 (Chermain et al. 2020, 004) for the forward pass
+// (realtime/forward_shaders.h):
 // defines, from the model's shared .glsl and the uniforms set by
 // realtime/glint_programs.cpp (glint_model_glue_path selects this file),
 //     vec3 glint_ndf(vec3 h, Footprint fp);  // D_P(h), RGB (glints/material.glsl)

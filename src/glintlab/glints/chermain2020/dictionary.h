@@ -1,5 +1,5 @@
 // The chermain2020 dictionary of multiscale marginal slope distributions
-// (papers/004 §4.4-4.5): N even 1-D densities P_i(x, l), tabulated over
+// (Chermain et al. 2020, 004 §4.4-4.5): N even 1-D densities P_i(x, l), tabulated over
 // |x| in [0, 4 sigma) for every level l in [0, nLevels), each converging to
 // the Beckmann marginal of roughness alpha_dict as l grows.
 // Generated deterministically in memory (never committed as a binary);

@@ -1,6 +1,6 @@
 // deliot2023 footprint NDF D_P(h): Deliot & Belcour, "Real-Time Rendering of
 // Glinty Appearances using Distributed Binomial Laws on Anisotropic Grids",
-// HPG/CGF 2023 (papers/000). Equation numbers below are that paper's.
+// HPG/CGF 2023 (000). Equation numbers below are that paper's.
 //
 // Pipeline for one half vector h and one pixel footprint:
 //  1. footprint ellipse (§5.1): minor/major axis lengths and orientation;
@@ -15,10 +15,11 @@
 //     mean is D(h) (Eq. 5-6).
 // 4 x 3 x 4 = 48 binomial evaluations, constant for every footprint.
 //
-// `original_defects` reproduces the authors' HLSL as described in
-// papers/README.md (cancelling ellipse eigenvalue, Gaussian clamped to N,
-// gate 1-(1-p)^N for N < 1, naive fp32 (1-p)^N, LOD truncated toward zero,
-// no anisotropy clamp); otherwise each of these is fixed (docs/MODELS.md).
+// `original_defects` reproduces the authors' HLSL's defects as
+// docs/MODELS.md, "Known defects of the original HLSL", lists (cancelling
+// ellipse eigenvalue, Gaussian clamped to N, gate 1-(1-p)^N for N < 1,
+// naive fp32 (1-p)^N, LOD truncated toward zero, no anisotropy clamp);
+// otherwise each of these is fixed.
 #ifndef GLINTLAB_GLINTS_DELIOT2023_GLSL
 #define GLINTLAB_GLINTS_DELIOT2023_GLSL
 

@@ -1,4 +1,4 @@
-// C++ host side of the deliot2023 glint model (papers/000): the evaluation of
+// C++ host side of the deliot2023 glint model (Deliot & Belcour 2023, 000): the evaluation of
 // the shared deliot2023.glsl and the reader of its parameter block.
 #pragma once
 

@@ -1,7 +1,7 @@
 // `glintlab export` of deliot2023 (its descriptor's GlintModelExport): the
 // noise table of the noise_texture variant.
-#include "glintlab/glints/model_export.h"
 #include "glintlab/glints/deliot2023/deliot2023.h"
+#include "glintlab/glints/model_export.h"
 
 namespace glintlab {
 

@@ -12,7 +12,7 @@ struct Deliot2023Params {
     float screen_space_scale = 1.5f;
     // Std-dev of the per-cell jitter of the log density, [0, 50].
     float density_randomization = 0.0f;
-    // Reproduce the original HLSL's defects (papers/README.md) for comparisons.
+    // Reproduce the original HLSL's defects (docs/MODELS.md) for comparisons.
     bool original_defects = false;
     // "gaussian": the count's law. true ("conditional", default): Law 5b of
     // counting/binomial_laws.glsl, unbiased (E = N p); false ("single_gated"):

@@ -76,7 +76,8 @@ TEST(Deliot2023, ConditionalLawIsUnbiasedAtLowDensity) {
         if (ln == 12.0f || ln == 14.0f) {
             const auto [biased, se_b] = mean_and_se(single_gated, ln);
             EXPECT_GT(biased - 1.0, 4.5 * se_b) << "ln density " << ln;
-            RecordProperty("single_gated_mean_ln" + std::to_string(int(ln)), std::to_string(biased));
+            RecordProperty("single_gated_mean_ln" + std::to_string(int(ln)),
+                           std::to_string(biased));
         }
         RecordProperty("conditional_mean_ln" + std::to_string(int(ln)), std::to_string(mean));
     }
@@ -163,7 +164,8 @@ TEST(Deliot2023, DeterministicAndContinuous) {
 // The fixed ellipse decomposition keeps the minor axis of a 1:1e4 footprint
 // (fp32: ~1e-7 relative after a division); the original's
 // lambda_min = (a + c)/2 - sqrt(...) cancels (lambda_min / lambda_max = 1e-8
-// is below fp32 epsilon), which is the defect papers/README.md lists.
+// is below fp32 epsilon), one of the original HLSL's known defects
+// (docs/MODELS.md).
 TEST(Deliot2023, EllipseDecompositionIsStable) {
     const float angle = 0.3f;
     const glm::vec2 major(std::cos(angle), std::sin(angle));

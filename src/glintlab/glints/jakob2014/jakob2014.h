@@ -1,5 +1,5 @@
 // jakob2014 — Discrete stochastic microfacet models (Jakob, Hašan, Yan,
-// Lawrence, Ramamoorthi, Marschner, SIGGRAPH 2014; papers/002). Offline-only
+// Lawrence, Ramamoorthi, Marschner, SIGGRAPH 2014; 002). Offline-only
 // C++ (a 4-D tree traversal per query; no GLSL).
 //
 // The multiscale BRDF (Eq. 2-6) in glintlab's GlintBxdf form

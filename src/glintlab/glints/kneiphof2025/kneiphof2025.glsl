@@ -1,5 +1,5 @@
 // kneiphof2025: Kneiphof & Klein, "Real-Time Image-based Lighting of Glints",
-// EGSR/CGF 2025 (papers/003), with its area-light special case K = 1
+// EGSR/CGF 2025 (003), with its area-light special case K = 1
 // (kneiphof2024, restated in 003 Eq. 4-9). Equation numbers are 003's.
 //
 // The glint model only modulates the radiance of the equivalent smooth
@@ -137,7 +137,7 @@ const int KNEIPHOF2025_VARIANT_WANG2020 = 1;
 // GGX, in closed form: with t = tan^2(theta), D_H = alpha^2 int_0^inf
 // sqrt(1 + t) / (alpha^2 + t)^2 dt = 1 + alpha^2 atanh(b) / b, b = sqrt(1 - alpha^2)
 // (atan(b') / b' with b' = sqrt(alpha^2 - 1) for alpha > 1); 2 at alpha = 1.
-// (The authors' code approximates it by 1 + alpha^1.41, papers/README.md.)
+// (The authors' code approximates it by 1 + alpha^1.41.)
 float kneiphof2025_total_facet_area(float alpha) {
     float a2 = alpha * alpha;
     float d = 1.0f - a2;
@@ -168,7 +168,7 @@ float kneiphof2025_isotropic_alpha(vec2 alpha) {
 // Reflection probabilities (Eq. 15 with Eq. 21): p^(k) = (E_D / D_H) w^(k),
 // where w^(k) are the prefiltered fuzzy indicators renormalised by their sum
 // (prefiltering preserves the partition of unity only up to rounding; the
-// authors renormalise at lookup, papers/README.md). Level 1 (L^(1) = 0) also
+// authors' code renormalises at lookup too). Level 1 (L^(1) = 0) also
 // takes the facets that reflect nothing visible, 1 - E_D / D_H (003 §5
 // "Discrete Radiance Levels"), so the K probabilities sum to 1.
 void kneiphof2025_probabilities(vec4 w_a, vec4 w_b, int levels, float p_visible, OUT(vec4) p_a,

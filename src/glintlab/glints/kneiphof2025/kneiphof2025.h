@@ -1,4 +1,4 @@
-// C++ host side of the kneiphof2025 glint model (papers/003, and its K = 1
+// C++ host side of the kneiphof2025 glint model (Kneiphof & Klein 2025, 003, and its K = 1
 // area-light case kneiphof2024): the evaluation of the shared
 // kneiphof2025.glsl over the CPU prefiltered environment
 // (kneiphof2025_prefilter.h), the renderer hooks (glint_lighting.h) and the

@@ -46,13 +46,13 @@ struct SphereComparison {
     bool conditional = false;     // Gaussian moments: Algorithm 1 (false) or conditional
     double facets_per_pixel = 0;  // expected facets in a centre pixel's footprint
     int realizations = 0;
-    double mean_ours = 0.0;     // image mean luminance, averaged over realizations
+    double mean_ours = 0.0;  // image mean luminance, averaged over realizations
     // Standard error of that mean: the larger of the realizations' spread and
     // the pixels' deviations from the smooth mean taken as independent.
     double mean_ours_se = 0.0;
-    double mean_gt = 0.0;       // exact expectation of the explicit ground truth
+    double mean_gt = 0.0;  // exact expectation of the explicit ground truth
     double mean_gt_realized = 0.0;
-    double mean_rel_err = 0.0;    // |mean_ours - mean_gt| / mean_gt
+    double mean_rel_err = 0.0;  // |mean_ours - mean_gt| / mean_gt
     // Image mean of our smooth term L_o (Eq. 11) and its relative error
     // against mean_gt: the part of mean_rel_err that is not the glint factor's.
     double mean_smooth = 0.0;

@@ -46,10 +46,9 @@ void set_source_uniforms(unsigned program, UniformCache& u, const Kneiphof2025So
     const int n = sources ? static_cast<int>(sources->directions.size()) : 0;
     glProgramUniform1i(program, loc("u_kneiphof2025_source_count"), n);
     if (n == 0) return;
-    const float c = std::cos(rotation_rad), s = std::sin(rotation_rad);
     std::vector<glm::vec3> dirs;
     for (const glm::vec3& a : sources->map_directions)
-        dirs.push_back(glm::normalize(glm::vec3(a.x * c - a.z * s, a.y, a.z * c + a.x * s)));
+        dirs.push_back(kneiphof2025_map_to_world(a, rotation_rad));
     glProgramUniform3fv(program, loc("u_kneiphof2025_source_direction"), n,
                         glm::value_ptr(dirs[0]));
     glProgramUniform3fv(program, loc("u_kneiphof2025_source_power"), n,

@@ -1,4 +1,5 @@
-// GPU glue of kneiphof2025 (papers/003) for the forward pass (realtime/forward_shaders.h):
+// GPU glue of kneiphof2025 (Kneiphof & Klein 2025, 003) for the forward pass
+// (realtime/forward_shaders.h):
 // defines, from the model's shared .glsl and the uniforms set by
 // realtime/glint_programs.cpp and glints/kneiphof2025/kneiphof2025_gpu.cpp,
 //     vec3 glint_ndf(vec3 h, Footprint fp);  // D_P(h), RGB (glints/material.glsl)

@@ -1,4 +1,4 @@
-// The GPU resources of the kneiphof2025 glint model (papers/003): the
+// The GPU resources of the kneiphof2025 glint model (Kneiphof & Klein 2025, 003): the
 // environment prefiltered on the CPU (kneiphof2025_prefilter.h: K radiance
 // levels Eq. 18, fuzzy indicators Eq. 19, split-sum GGX prefilter Eq. 11,
 // 20-21) uploaded as the texture arrays that kneiphof2025.glsl's GLSL fetch

@@ -1,4 +1,4 @@
-// kneiphof2025 (papers/003 §5): the fuzzy partition of a luminance into the
+// kneiphof2025 (Kneiphof & Klein 2025, 003 §5): the fuzzy partition of a luminance into the
 // K radiance levels, shared by the CPU prefilter (kneiphof2025_prefilter.cpp)
 // and the GPU's per-frame prefilter (glints/kneiphof2025/kneiphof2025_prefilter_gpu.cpp).
 #ifndef GLINTLAB_GLINTS_KNEIPHOF2025_PARTITION_GLSL

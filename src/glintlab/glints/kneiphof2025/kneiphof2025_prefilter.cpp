@@ -127,14 +127,12 @@ void check_options(const Kneiphof2025PrefilterOptions& o) {
         fail("kneiphof2025: samples must be in [1, 65536], got {}", o.samples);
 }
 
-// The world direction of a direction in the map's own frame: the map's
-// rotation about +y (map_uv: world phi = map phi + rotation).
-glm::vec3 rotate_to_world(glm::vec3 d, float rotation_rad) {
+}  // namespace
+
+glm::vec3 kneiphof2025_map_to_world(glm::vec3 d, float rotation_rad) {
     const float c = std::cos(rotation_rad), s = std::sin(rotation_rad);
     return glm::normalize(glm::vec3(d.x * c - d.z * s, d.y, d.z * c + d.x * s));
 }
-
-}  // namespace
 
 Kneiphof2025Environment::Kneiphof2025Environment(const EnvironmentMap& env,
                                                  const Kneiphof2025PrefilterOptions& o,
@@ -290,7 +288,8 @@ void Kneiphof2025Environment::find_sources(int W, int H, std::vector<float>& bas
     glm::vec3 total(0.0f);
     for (size_t k = 0; k < split.directions.size(); ++k) {
         sources_.map_directions.push_back(split.directions[k]);
-        sources_.directions.push_back(rotate_to_world(split.directions[k], rotation_rad_));
+        sources_.directions.push_back(
+            kneiphof2025_map_to_world(split.directions[k], rotation_rad_));
         sources_.powers.push_back(split.powers[k]);
         sources_.radii.push_back(split.radii[k]);
         total += split.powers[k];
@@ -567,7 +566,7 @@ bool Kneiphof2025Environment::read(ByteReader& in, const Kneiphof2025PrefilterOp
         return false;
     sources_.directions.clear();
     for (const glm::vec3& d : sources_.map_directions)
-        sources_.directions.push_back(rotate_to_world(d, rotation_rad_));
+        sources_.directions.push_back(kneiphof2025_map_to_world(d, rotation_rad_));
     const size_t texels = size_t(w) * size_t(h);
     auto read_levels = [&](std::vector<Kneiphof2025Level>& levels, size_t channels) {
         levels.resize(size_t(count));

@@ -1,4 +1,4 @@
-// CPU prefiltering for kneiphof2025 (papers/003 §3.4, §5): the K radiance
+// CPU prefiltering for kneiphof2025 (Kneiphof & Klein 2025, 003 §3.4, §5): the K radiance
 // levels of an environment (Eq. 18), its fuzzy indicator maps (Eq. 19), and
 // the split-sum GGX prefiltering of the radiance and of the K indicator maps
 // with the same kernel (Eq. 11, 20-21), plus the DFG / E_D lookup table.
@@ -66,6 +66,10 @@ struct Kneiphof2025Sources {
     glm::vec3 color{0.0f};  // sum of powers / its luminance: the sources channel's colour
     bool empty() const { return directions.empty(); }
 };
+
+// The world direction of a direction in the map's own frame: the map's
+// rotation about +y (map_uv: world phi = map phi + rotation); unit.
+glm::vec3 kneiphof2025_map_to_world(glm::vec3 d, float rotation_rad);
 
 // One lat-long level: channels per texel = 3 (RGB radiance) + K (weights).
 struct Kneiphof2025Level {

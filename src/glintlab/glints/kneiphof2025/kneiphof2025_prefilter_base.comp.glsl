@@ -1,4 +1,5 @@
-// kneiphof2025 (papers/003) GPU prefilter (glints/kneiphof2025/kneiphof2025_prefilter_gpu.h),
+// kneiphof2025 (Kneiphof & Klein 2025, 003) GPU prefilter
+// (glints/kneiphof2025/kneiphof2025_prefilter_gpu.h),
 // pass 1: base level (Kneiphof2025Environment's level 0: ss x ss bilinear
 // source samples per texel, the CPU's source_sample), its luminance in
 // alpha, and the luminance range by atomics on the float bits (luminance

@@ -1,4 +1,4 @@
-// Properties of kneiphof2025 (papers/003): the environment partition
+// Properties of kneiphof2025 (Kneiphof & Klein 2025, 003): the environment partition
 // (Eq. 18-19), the prefilter and DFG / E_D tables (Eq. 11, 20-21), the mean
 // of the glint factor (Eq. 17, 33), the N < 1 and small-p fixes (Eq. 23-25)
 // and the parameter block. Fixed seeds; tolerances argued per test.

@@ -1,4 +1,4 @@
-// wang2020 per-pixel combination (Wang et al. 2020, papers/001 §4.3), the part
+// wang2020 per-pixel combination (Wang et al. 2020, 001 §4.3), the part
 // a GPU shader runs after fetching its tables: the three-scale selection and
 // Eqs. 18-21. Shared by the CPU path (wang2020_shading.cpp) and GLSL.
 // Inputs: lhat, phat = L̂o(n, o), P̂(n, o) (Eqs. 16-17, prefilter table);

@@ -1,4 +1,4 @@
-// wang2020 (papers/001) §4.4 screen-space post-process, on the GPU
+// wang2020 (Wang et al. 2020, 001) §4.4 screen-space post-process, on the GPU
 // (glints/wang2020/wang2020_gpu_blur.h): one axis of a clamped separable Gaussian.
 // u_mode selects what is blurred: 0: the source's visibility (a) -> r;
 // 1: the source as is; 2: rgb of the source times δ (r of u_aux).

@@ -1,4 +1,4 @@
-// GPU glue of wang2020 (papers/001) for the forward pass (realtime/forward_shaders.h):
+// GPU glue of wang2020 (Wang et al. 2020, 001) for the forward pass (realtime/forward_shaders.h):
 // defines, from the model's shared .glsl and the uniforms set by
 // glints/wang2020/wang2020_gpu.cpp,
 //     vec3 glint_ndf(vec3 h, Footprint fp);  // D_P(h), RGB (glints/material.glsl)

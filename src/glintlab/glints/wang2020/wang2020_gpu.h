@@ -1,4 +1,4 @@
-// wang2020 (papers/001) in the OpenGL renderer: the GLSL glue
+// wang2020 (Wang et al. 2020, 001) in the OpenGL renderer: the GLSL glue
 // (glints/wang2020/wang2020_gpu.glsl) over the shared wang2020_tables.glsl
 // and the three table buffers it reads. The tables are
 // the CPU renderer's own (wang2020_model_for: the same DPF extraction,

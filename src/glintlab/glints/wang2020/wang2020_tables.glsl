@@ -1,4 +1,4 @@
-// wang2020 (papers/001) table and quadtree reads for the GPU, in the shared
+// wang2020 (Wang et al. 2020, 001) table and quadtree reads for the GPU, in the shared
 // GLSL/C++ subset: the extracted DPF table P(i, o, γ) (Eq. 6, §4.4), the
 // prefiltered environment tables L̂o, P̂ (Eqs. 16-17, §4.2) and the compact
 // particle quadtree (§4.4 "Spatial Tree Construction"), each read exactly as

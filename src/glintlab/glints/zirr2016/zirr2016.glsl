@@ -1,8 +1,8 @@
 // zirr2016 footprint NDF D_P(h): Zirr & Kaplanyan, "Real-time Rendering of
-// Procedural Multiscale Materials", I3D 2016 ([ZK16]). Their text is not in
-// papers/; the model is implemented as restated by papers/000 (deliot2023)
-// §3 (Eq. 3-7), §5 (Eq. 11: square mip grids), §6.3 (Eq. 15) and §7
-// (anisotropy clamped at x16), and papers/004 (chermain2020) §2 (MIP
+// Procedural Multiscale Materials", I3D 2016 ([ZK16]), implemented as
+// restated by Deliot & Belcour 2023 (000, deliot2023) §3 (Eq. 3-7), §5
+// (Eq. 11: square mip grids), §6.3 (Eq. 15) and §7 (anisotropy clamped at
+// x16), and by Chermain et al. 2020 (004, chermain2020) §2 (MIP
 // hierarchy walked over the footprint's cells, binomial count per cell).
 // Equation numbers below are 000's unless marked 004.
 //
