@@ -21,6 +21,7 @@
 #include "glintlab/render/curvature_test_util.h"
 #include "glintlab/render/facing_away_test_util.h"
 #include "glintlab/render/renderer.h"
+#include "glintlab/render/sky_test_util.h"
 
 namespace glintlab {
 namespace {
@@ -329,14 +330,7 @@ TEST(GpuTextured, Kneiphof2025WithMapsAndANormalMapMatchesTheCpu) {
     GLINTLAB_REQUIRE_GL();
     const TexturedScenes t;
     write_bumps(t.dir / "bumps.exr");
-    Image sky(64, 32);
-    for (int y = 0; y < 32; ++y)
-        for (int x = 0; x < 64; ++x) {
-            const float up = 1.0f - float(y) / 31.0f;
-            sky.at(x, y) = glm::vec3(0.2f + 0.6f * up, 0.3f + 0.6f * up, 0.5f + 0.5f * up);
-            if (y >= 10 && y < 12 && x >= 30 && x < 32) sky.at(x, y) = glm::vec3(400.0f);
-        }
-    write_exr(sky, t.dir / "sky.exr");
+    testing::write_sky_with_sun(t.dir / "sky.exr");
     auto scene = [&](bool normal_map) {
         nlohmann::json m = {{"name", "m"},
                             {"type", "glint"},

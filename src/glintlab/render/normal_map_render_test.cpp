@@ -20,6 +20,7 @@
 #include "glintlab/loader/scene_loader.h"
 #include "glintlab/render/facing_away_test_util.h"
 #include "glintlab/render/renderer.h"
+#include "glintlab/render/sky_test_util.h"
 
 GLINTLAB_SHADER_FUNCTIONS_BEGIN
 #include "glintlab/core/slope_frame.glsl"
@@ -193,14 +194,7 @@ TEST(NormalMapRender, LeanFilteringKeepsTheTruthsMeanWithoutTheUnfilteredNoise) 
 // over the image ~0.5 %.
 TEST(NormalMapRender, Kneiphof2025UnderAnEnvironmentTakesTheWidenedLobe) {
     const RoughMap map;
-    Image sky(64, 32);
-    for (int y = 0; y < 32; ++y)
-        for (int x = 0; x < 64; ++x) {
-            const float up = 1.0f - float(y) / 31.0f;
-            sky.at(x, y) = glm::vec3(0.2f + 0.6f * up, 0.3f + 0.6f * up, 0.5f + 0.5f * up);
-            if (y >= 10 && y < 12 && x >= 30 && x < 32) sky.at(x, y) = glm::vec3(400.0f);
-        }
-    write_exr(sky, map.dir / "sky.exr");
+    testing::write_sky_with_sun(map.dir / "sky.exr");
     auto render = [&](const std::string& model, double rotation_deg) {
         const nlohmann::json m = {{"name", "m"},
                                   {"type", "glint"},
