@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "glintlab/core/error.h"
 
@@ -144,21 +145,40 @@ glm::vec4 MipTexture::trilinear(float lod, glm::vec2 uv) const {
     return f > 0.0f ? a + f * (bilinear(l0 + 1, uv) - a) : a;
 }
 
+namespace {
+struct Probes {
+    int count;
+    float lod;
+};
+// N = ⌈Pmax/Pmin⌉ ≤ 16 probes at λ = log2(Pmax/N) + bias (texture_filter.glsl).
+Probes probes_of(float px, float py, float lod_bias) {
+    const float pmax = std::max(px, py), pmin = std::min(px, py);
+    const int n = int(std::min<float>(float(MipTexture::kMaxAnisotropy),
+                                      std::ceil(pmax / std::max(pmin, pmax * 1e-6f))));
+    return {n, std::log2(pmax / float(n)) + lod_bias};
+}
+}  // namespace
+
+float MipTexture::filter_lod(glm::vec2 duvdx, glm::vec2 duvdy, float lod_bias) const {
+    const glm::vec2 size = glm::vec2(float(width()), float(height()));
+    const float px = glm::length(duvdx * size), py = glm::length(duvdy * size);
+    if (!std::isfinite(px) || !std::isfinite(py)) return std::numeric_limits<float>::infinity();
+    if (!(std::max(px, py) > 0.0f)) return -std::numeric_limits<float>::infinity();
+    return probes_of(px, py, lod_bias).lod;
+}
+
 glm::vec4 MipTexture::filtered(glm::vec2 uv, glm::vec2 duvdx, glm::vec2 duvdy,
                                float lod_bias) const {
     const glm::vec2 size = glm::vec2(float(width()), float(height()));
     const float px = glm::length(duvdx * size), py = glm::length(duvdy * size);
     if (!std::isfinite(px) || !std::isfinite(py)) return trilinear(float(level_count() - 1), uv);
-    const float pmax = std::max(px, py), pmin = std::min(px, py);
-    if (!(pmax > 0.0f)) return bilinear(0, uv);
-    const int n =
-        int(std::min<float>(float(kMaxAnisotropy), std::ceil(pmax / std::max(pmin, pmax * 1e-6f))));
-    const float lod = std::log2(pmax / float(n)) + lod_bias;
+    if (!(std::max(px, py) > 0.0f)) return bilinear(0, uv);
+    const Probes p = probes_of(px, py, lod_bias);
     const glm::vec2 major = px >= py ? duvdx : duvdy;
     glm::vec4 sum(0.0f);
-    for (int i = 0; i < n; ++i)
-        sum += trilinear(lod, uv + major * ((float(i) + 0.5f) / float(n) - 0.5f));
-    return sum / float(n);
+    for (int i = 0; i < p.count; ++i)
+        sum += trilinear(p.lod, uv + major * ((float(i) + 0.5f) / float(p.count) - 0.5f));
+    return sum / float(p.count);
 }
 
 }  // namespace glintlab

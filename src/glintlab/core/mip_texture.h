@@ -57,6 +57,9 @@ class MipTexture {
     // `lod_bias` is added to λ (OpenGL's TEXTURE_LOD_BIAS); the probes'
     // positions stay.
     glm::vec4 filtered(glm::vec2 uv, glm::vec2 duvdx, glm::vec2 duvdy, float lod_bias = 0.0f) const;
+    // The λ (bias included) `filtered` reads its probes at; +∞ for a
+    // footprint that is not finite, −∞ for an empty one.
+    float filter_lod(glm::vec2 duvdx, glm::vec2 duvdy, float lod_bias = 0.0f) const;
     // The largest texel value of level 0 in each channel.
     glm::vec4 max_value() const { return max_; }
 

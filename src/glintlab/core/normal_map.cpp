@@ -7,6 +7,7 @@
 
 GLINTLAB_SHADER_FUNCTIONS_BEGIN
 #include "glintlab/core/footprint_cell.glsl"
+#include "glintlab/core/slope_frame.glsl"
 GLINTLAB_SHADER_FUNCTIONS_END
 
 namespace glintlab {
@@ -33,6 +34,12 @@ Footprint NormalMap::sample_footprint(const Footprint& footprint, float u) const
                                   mixture);
 }
 
+float NormalMap::chain_weight(const Footprint& fp) const {
+    return shader::lean_chain_weight(
+        slopes->texture->filter_lod(slopes->transform.apply_vector(fp.duvdx),
+                                    slopes->transform.apply_vector(fp.duvdy), kMomentLodBias));
+}
+
 SlopeStatistics NormalMap::lookup(glm::vec2 uv, const Footprint* footprint) const {
     const Footprint* fp = filtering != Filtering::None ? footprint : nullptr;
     SlopeStatistics s;
@@ -42,17 +49,32 @@ SlopeStatistics NormalMap::lookup(glm::vec2 uv, const Footprint* footprint) cons
     // Σ_ii = E[s_i²] − s̄_i²; rounding can leave it slightly negative.
     s.covariance = glm::vec3(std::max(first.z - s.mean.x * s.mean.x, 0.0f),
                              std::max(first.w - s.mean.y * s.mean.y, 0.0f), 0.0f);
+    blend_surface(uv, *fp, false, s.mean, s.covariance);
     return s;
+}
+
+void NormalMap::blend_surface(glm::vec2 uv, const Footprint& fp, bool correlated, glm::vec2& mean,
+                              glm::vec3& cov) const {
+    const float t = chain_weight(fp);
+    if (t >= 1.0f) return;
+    const glm::vec2 gx = slope_at(uv + 0.5f * fp.duvdx) - slope_at(uv - 0.5f * fp.duvdx);
+    const glm::vec2 gy = slope_at(uv + 0.5f * fp.duvdy) - slope_at(uv - 0.5f * fp.duvdy);
+    shader::lean_blend_surface(t, slope_at(uv), gx, gy, correlated, mean, cov);
 }
 
 float NormalMap::covariance_xy(glm::vec2 uv, const Footprint* footprint,
                                const SlopeStatistics& s) const {
     const Footprint* fp = filtering != Filtering::None ? footprint : nullptr;
     if (!fp) return 0.0f;
+    // The chain's Σ_xy about the chain's mean, then the same blend as lookup's.
+    const glm::vec4 first = slopes->lookup4(uv, fp, kMomentLodBias);
     const float second = cross_moment->lookup4(uv, fp, kMomentLodBias).x;
+    glm::vec2 mean(first.x, first.y);
+    glm::vec3 cov(0.0f, 0.0f, second - first.x * first.y);
+    blend_surface(uv, *fp, true, mean, cov);
     // Kept where Σ stays positive semi-definite.
     const float bound = std::sqrt(s.covariance.x * s.covariance.y);
-    return std::clamp(second - s.mean.x * s.mean.y, -bound, bound);
+    return std::clamp(cov.z, -bound, bound);
 }
 
 glm::vec2 NormalMap::slope_at(glm::vec2 uv) const {

@@ -66,6 +66,16 @@ struct NormalMap {
     Footprint sample_footprint(const Footprint& footprint, float u) const;
     // The finest level's bilinear slope at uv (the ground truth's per-facet normal).
     glm::vec2 slope_at(glm::vec2 uv) const;
+
+  private:
+    // The weight of the mip chain's statistics at the footprint's λ
+    // (core/slope_frame.glsl lean_chain_weight; the rest is the finest
+    // level's own surface).
+    float chain_weight(const Footprint& fp) const;
+    // The chain's (mean, cov) at uv blended with the surface's own under
+    // footprints below a texel or two (lean_blend_surface).
+    void blend_surface(glm::vec2 uv, const Footprint& fp, bool correlated, glm::vec2& mean,
+                       glm::vec3& cov) const;
 };
 
 // A tangent frame around the unit normal n whose tangent is the projection

@@ -135,4 +135,27 @@ vec3 linear_slope_covariance(vec2 gx, vec2 gy) {
            12.0f;
 }
 
+// LEAN under footprints smaller than the finest level's texels. The chain's
+// level 0 holds each texel cell's moments of the bilinear surface, so a
+// footprint far inside a cell read the cell's spread (up to the spread of
+// the texels around it) where the surface it covers is nearly one normal:
+// lobes widened in a texel-sized pattern as the camera came close (a
+// sixteenth of a texel on uncorrelated texels: Σ 0.0037 against the
+// surface's 0.00002). From λ ≤ 0 (bias included: footprints up to 1.7
+// texels) the statistics are the surface's own, its slope at the centre and
+// the spread of its change across the footprint (linear_slope_covariance of
+// the level-0 differences over it); the chain's from λ ≥ 1, linear between.
+float lean_chain_weight(float lod) {
+    return clamp(lod, 0.0f, 1.0f);
+}
+// `t` = lean_chain_weight; (gx, gy) the surface's slope change across the
+// footprint along duvdx and duvdy; Σ_xy only where `correlated`.
+void lean_blend_surface(float t, vec2 surface_mean, vec2 gx, vec2 gy, bool correlated,
+                        INOUT(vec2) mean, INOUT(vec3) cov) {
+    vec3 surface_cov = linear_slope_covariance(gx, gy);
+    if (!correlated) surface_cov.z = 0.0f;
+    mean = mix(surface_mean, mean, t);
+    cov = mix(surface_cov, cov, t);
+}
+
 #endif

@@ -181,6 +181,9 @@ GlintInputs glint_inputs_from_textures(Footprint fp) {
                             .x;
 #endif
         vec3 cov = slope_covariance(mean, first.zw, second_xy, correlated);
+        lean_magnified(u_input_normal_slopes, vec2(textureSize(u_input_normal_slopes, 0)),
+                       u_input_texture_linear[GLINT_INPUT_NORMAL],
+                       u_input_texture_offset[GLINT_INPUT_NORMAL], fp, correlated, mean, cov);
         slopes_in_shading_frame(false, u_input_uv_mirrored ? -1.0f : 1.0f, mean, cov);
         inputs.mean_slope = mean;
         inputs.slope_variance = cov.xy;

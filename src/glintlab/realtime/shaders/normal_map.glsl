@@ -57,6 +57,8 @@ void normal_map_shade(Footprint fp, bool back, float bitangent_sign, vec3 wo_wor
                               : mat.type != MATERIAL_DIFFUSE;
         float second_xy = correlated ? normal_map_fetch(u_normal_moments, fp, true).x : 0.0f;
         cov = slope_covariance(mean, first.zw, second_xy, correlated);
+        lean_magnified(u_normal_slopes, u_normal_map_size, u_normal_map_linear,
+                       u_normal_map_offset, fp, correlated, mean, cov);
     }
     slopes_in_shading_frame(back, bitangent_sign, mean, cov);
     mean = visible_slope(mean, vec3(dot(wo_world, t), dot(wo_world, b), dot(wo_world, n)));
