@@ -43,23 +43,28 @@ float NormalMap::chain_weight(const Footprint& fp) const {
 SlopeStatistics NormalMap::lookup(glm::vec2 uv, const Footprint* footprint) const {
     const Footprint* fp = filtering != Filtering::None ? footprint : nullptr;
     SlopeStatistics s;
-    const glm::vec4 first = slopes->lookup4(uv, fp, kMomentLodBias);
-    s.mean = glm::vec2(first.x, first.y);
-    if (!fp) return s;  // one point of the bilinear surface: no spread to keep
-    // Σ_ii = E[s_i²] − s̄_i²; rounding can leave it slightly negative.
-    s.covariance = glm::vec3(std::max(first.z - s.mean.x * s.mean.x, 0.0f),
-                             std::max(first.w - s.mean.y * s.mean.y, 0.0f), 0.0f);
-    blend_surface(uv, *fp, false, s.mean, s.covariance);
+    if (!fp) {  // one point of the bilinear surface: no spread to keep
+        s.mean = slope_at(uv);
+        return s;
+    }
+    // The chain where it counts (t > 0), the surface where it does (t < 1).
+    const float t = chain_weight(*fp);
+    if (t > 0.0f) {
+        const glm::vec4 first = slopes->lookup4(uv, fp, kMomentLodBias);
+        s.mean = glm::vec2(first.x, first.y);
+        // Σ_ii = E[s_i²] − s̄_i²; rounding can leave it slightly negative.
+        s.covariance = glm::vec3(std::max(first.z - s.mean.x * s.mean.x, 0.0f),
+                                 std::max(first.w - s.mean.y * s.mean.y, 0.0f), 0.0f);
+    }
+    if (t < 1.0f) blend_surface(uv, *fp, t, false, s.mean, s.covariance);
     return s;
 }
 
-void NormalMap::blend_surface(glm::vec2 uv, const Footprint& fp, bool correlated, glm::vec2& mean,
-                              glm::vec3& cov) const {
-    const float t = chain_weight(fp);
-    if (t >= 1.0f) return;
-    const glm::vec2 gx = slope_at(uv + 0.5f * fp.duvdx) - slope_at(uv - 0.5f * fp.duvdx);
-    const glm::vec2 gy = slope_at(uv + 0.5f * fp.duvdy) - slope_at(uv - 0.5f * fp.duvdy);
-    shader::lean_blend_surface(t, slope_at(uv), gx, gy, correlated, mean, cov);
+void NormalMap::blend_surface(glm::vec2 uv, const Footprint& fp, float t, bool correlated,
+                              glm::vec2& mean, glm::vec3& cov) const {
+    shader::lean_blend_surface(t, slope_at(uv), slope_at(uv + 0.5f * fp.duvdx),
+                               slope_at(uv - 0.5f * fp.duvdx), slope_at(uv + 0.5f * fp.duvdy),
+                               slope_at(uv - 0.5f * fp.duvdy), correlated, mean, cov);
 }
 
 float NormalMap::covariance_xy(glm::vec2 uv, const Footprint* footprint,
@@ -67,11 +72,15 @@ float NormalMap::covariance_xy(glm::vec2 uv, const Footprint* footprint,
     const Footprint* fp = filtering != Filtering::None ? footprint : nullptr;
     if (!fp) return 0.0f;
     // The chain's Σ_xy about the chain's mean, then the same blend as lookup's.
-    const glm::vec4 first = slopes->lookup4(uv, fp, kMomentLodBias);
-    const float second = cross_moment->lookup4(uv, fp, kMomentLodBias).x;
-    glm::vec2 mean(first.x, first.y);
-    glm::vec3 cov(0.0f, 0.0f, second - first.x * first.y);
-    blend_surface(uv, *fp, true, mean, cov);
+    const float t = chain_weight(*fp);
+    glm::vec2 mean(0.0f);
+    glm::vec3 cov(0.0f);
+    if (t > 0.0f) {
+        const glm::vec4 first = slopes->lookup4(uv, fp, kMomentLodBias);
+        const float second = cross_moment->lookup4(uv, fp, kMomentLodBias).x;
+        cov.z = second - first.x * first.y;
+    }
+    if (t < 1.0f) blend_surface(uv, *fp, t, true, mean, cov);
     // Kept where Σ stays positive semi-definite.
     const float bound = std::sqrt(s.covariance.x * s.covariance.y);
     return std::clamp(cov.z, -bound, bound);

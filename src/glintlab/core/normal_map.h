@@ -72,9 +72,9 @@ struct NormalMap {
     // (core/slope_frame.glsl lean_chain_weight; the rest is the finest
     // level's own surface).
     float chain_weight(const Footprint& fp) const;
-    // The chain's (mean, cov) at uv blended with the surface's own under
-    // footprints below a texel or two (lean_blend_surface).
-    void blend_surface(glm::vec2 uv, const Footprint& fp, bool correlated, glm::vec2& mean,
+    // The chain's (mean, cov) at uv blended with weight t (chain_weight < 1)
+    // with the surface's own (lean_blend_surface).
+    void blend_surface(glm::vec2 uv, const Footprint& fp, float t, bool correlated, glm::vec2& mean,
                        glm::vec3& cov) const;
 };
 

@@ -135,26 +135,39 @@ vec3 linear_slope_covariance(vec2 gx, vec2 gy) {
            12.0f;
 }
 
-// LEAN under footprints smaller than the finest level's texels. The chain's
-// level 0 holds each texel cell's moments of the bilinear surface, so a
-// footprint far inside a cell read the cell's spread (up to the spread of
-// the texels around it) where the surface it covers is nearly one normal:
-// lobes widened in a texel-sized pattern as the camera came close (a
-// sixteenth of a texel on uncorrelated texels: Σ 0.0037 against the
-// surface's 0.00002). From λ ≤ 0 (bias included: footprints up to 1.7
-// texels) the statistics are the surface's own, its slope at the centre and
-// the spread of its change across the footprint (linear_slope_covariance of
-// the level-0 differences over it); the chain's from λ ≥ 1, linear between.
+// LEAN under footprints smaller than the finest level's texels. The
+// chain's level 0 holds each texel cell's moments of the bilinear surface,
+// so a footprint far inside a cell reads the cell's spread (up to the
+// spread of the texels around it) where the surface it covers is nearly one
+// normal: lobes would widen in a texel-sized pattern as the camera comes
+// close (Σ 10-470× the surface's own at a quarter to a sixteenth of a
+// texel; scene/normal_map_reader_test.cpp). Footprints up to half a texel
+// take the surface's own statistics (lean_blend_surface), footprints from
+// one texel the chain's, linear in log2(width) between. (Taking the
+// surface's up to 1.7 texels follows Σ closer there too, but one lobe per
+// cell then moved the scratches' lean_mixture image from +2-8 % to +17-23 %
+// of the truth for Beckmann lobes: near a texel neither Σ gives the image.)
+// `lod`: the chain's biased λ.
 float lean_chain_weight(float lod) {
-    return clamp(lod, 0.0f, 1.0f);
+    return clamp(lod - kSlopeMomentLodBias + 1.0f, 0.0f, 1.0f);
 }
-// `t` = lean_chain_weight; (gx, gy) the surface's slope change across the
-// footprint along duvdx and duvdy; Σ_xy only where `correlated`.
-void lean_blend_surface(float t, vec2 surface_mean, vec2 gx, vec2 gy, bool correlated,
-                        INOUT(vec2) mean, INOUT(vec3) cov) {
-    vec3 surface_cov = linear_slope_covariance(gx, gy);
+// `t` = lean_chain_weight; the surface's slope at the footprint's centre
+// and at ± half its axes (duvdx: px, nx; duvdy: py, ny). Along each axis the
+// slope is the quadratic through the three, the axis a uniform variable on
+// [−h, h]: mean c + q/6 and variance g²/12 + q²/45, g = p − n the change,
+// q = p + n − 2c the curvature (the curvature term keeps the spread where
+// the slope peaks, which the change alone misses); the two axes add. Σ_xy
+// only where `correlated`.
+void lean_blend_surface(float t, vec2 centre, vec2 px, vec2 nx, vec2 py, vec2 ny,
+                        bool correlated, INOUT(vec2) mean, INOUT(vec3) cov) {
+    vec2 gx = px - nx, gy = py - ny;
+    vec2 qx = px + nx - 2.0f * centre, qy = py + ny - 2.0f * centre;
+    vec3 surface_cov = linear_slope_covariance(gx, gy) +
+                       vec3(qx.x * qx.x + qy.x * qy.x, qx.y * qx.y + qy.y * qy.y,
+                            qx.x * qx.y + qy.x * qy.y) /
+                           45.0f;
     if (!correlated) surface_cov.z = 0.0f;
-    mean = mix(surface_mean, mean, t);
+    mean = mix(centre + (qx + qy) / 6.0f, mean, t);
     cov = mix(surface_cov, cov, t);
 }
 

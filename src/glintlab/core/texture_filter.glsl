@@ -47,19 +47,23 @@ vec4 material_texture_filtered4(sampler2D tex, vec2 size, mat2 linear, vec2 offs
     return sum / float(n);
 }
 
+// The weight of a normal map's chain at the footprint (slope_frame.glsl
+// lean_chain_weight): 0 needs no chain lookup, 1 no surface fetches.
+float lean_footprint_chain_weight(vec2 size, mat2 linear, Footprint fp) {
+    return lean_chain_weight(material_texture_lod(size, linear, fp, kSlopeMomentLodBias));
+}
+
 // LEAN's footprint statistics (mean, cov) with the finest level's own
-// surface blended in under footprints below a texel or two
-// (slope_frame.glsl lean_chain_weight; core/normal_map.cpp): `slopes`
-// holds (s_x, s_y, s_x², s_y²), (mean, cov) are the chain's.
-void lean_magnified(sampler2D slopes, vec2 size, mat2 linear, vec2 offset, Footprint fp,
+// surface blended in under footprints below a texel (core/normal_map.cpp):
+// `slopes` holds (s_x, s_y, s_x², s_y²), (mean, cov) are the chain's (any
+// value where t = 0), t = lean_footprint_chain_weight < 1.
+void lean_magnified(sampler2D slopes, mat2 linear, vec2 offset, Footprint fp, float t,
                     bool correlated, inout vec2 mean, inout vec3 cov) {
-    float t = lean_chain_weight(material_texture_lod(size, linear, fp, kSlopeMomentLodBias));
-    if (t >= 1.0f) return;
     vec2 st = linear * fp.uv + offset;
     vec2 hx = 0.5f * (linear * fp.duvdx), hy = 0.5f * (linear * fp.duvdy);
-    vec2 gx = textureLod(slopes, st + hx, 0.0f).xy - textureLod(slopes, st - hx, 0.0f).xy;
-    vec2 gy = textureLod(slopes, st + hy, 0.0f).xy - textureLod(slopes, st - hy, 0.0f).xy;
-    lean_blend_surface(t, textureLod(slopes, st, 0.0f).xy, gx, gy, correlated, mean, cov);
+    lean_blend_surface(t, textureLod(slopes, st, 0.0f).xy, textureLod(slopes, st + hx, 0.0f).xy,
+                       textureLod(slopes, st - hx, 0.0f).xy, textureLod(slopes, st + hy, 0.0f).xy,
+                       textureLod(slopes, st - hy, 0.0f).xy, correlated, mean, cov);
 }
 
 #endif

@@ -168,22 +168,32 @@ GlintInputs glint_inputs_from_textures(Footprint fp) {
         inputs.base_albedo = glint_input_filtered(u_input_base_albedo, GLINT_INPUT_BASE, fp, 0.0f);
     if ((mask & (1 << GLINT_INPUT_NORMAL)) != 0) {
         // LEAN mapping, read as the renderer reads its normal maps.
-        vec4 first = glint_input_filtered4(u_input_normal_slopes, GLINT_INPUT_NORMAL, fp,
-                                           kSlopeMomentLodBias);
-        vec2 mean = first.xy;
+        mat2 linear = u_input_texture_linear[GLINT_INPUT_NORMAL];
+        float t = lean_footprint_chain_weight(vec2(textureSize(u_input_normal_slopes, 0)), linear,
+                                              fp);
         bool correlated = false;
-        float second_xy = 0.0f;
 #ifdef GLINTLAB_GLINT_SLOPE_CORRELATION
         correlated = (mask & (1 << GLINT_INPUT_NORMAL_CROSS)) != 0;
-        if (correlated)
-            second_xy = glint_input_filtered4(u_input_normal_cross, GLINT_INPUT_NORMAL, fp,
-                                              kSlopeMomentLodBias)
-                            .x;
 #endif
-        vec3 cov = slope_covariance(mean, first.zw, second_xy, correlated);
-        lean_magnified(u_input_normal_slopes, vec2(textureSize(u_input_normal_slopes, 0)),
-                       u_input_texture_linear[GLINT_INPUT_NORMAL],
-                       u_input_texture_offset[GLINT_INPUT_NORMAL], fp, correlated, mean, cov);
+        vec2 mean = vec2(0.0f);
+        vec3 cov = vec3(0.0f);
+        if (t > 0.0f) {
+            vec4 first = glint_input_filtered4(u_input_normal_slopes, GLINT_INPUT_NORMAL, fp,
+                                               kSlopeMomentLodBias);
+            float second_xy = 0.0f;
+#ifdef GLINTLAB_GLINT_SLOPE_CORRELATION
+            if (correlated)
+                second_xy = glint_input_filtered4(u_input_normal_cross, GLINT_INPUT_NORMAL, fp,
+                                                  kSlopeMomentLodBias)
+                                .x;
+#endif
+            mean = first.xy;
+            cov = slope_covariance(mean, first.zw, second_xy, correlated);
+        }
+        if (t < 1.0f)
+            lean_magnified(u_input_normal_slopes, linear,
+                           u_input_texture_offset[GLINT_INPUT_NORMAL], fp, t, correlated, mean,
+                           cov);
         slopes_in_shading_frame(false, u_input_uv_mirrored ? -1.0f : 1.0f, mean, cov);
         inputs.mean_slope = mean;
         inputs.slope_variance = cov.xy;

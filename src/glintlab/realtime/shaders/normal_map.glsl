@@ -46,19 +46,26 @@ void normal_map_shade(Footprint fp, bool back, float bitangent_sign, vec3 wo_wor
                       inout vec3 t, inout vec3 b, inout vec3 n, inout SurfaceMaterial mat,
                       inout float glint_cov_xy) {
     bool lean = u_normal_map_filtering == 0;
-    vec4 first = normal_map_fetch(u_normal_slopes, fp, lean);
-    vec2 mean = first.xy;
+    vec2 mean = vec2(0.0f);
     vec3 cov = vec3(0.0f);
-    if (lean) {
+    if (!lean) {
+        mean = normal_map_fetch(u_normal_slopes, fp, false).xy;
+    } else {
         // Σ's correlation turns every lobe but a diffuse one and the glint
         // lobes of models that drop it.
         bool correlated = mat.type == MATERIAL_GLINT
                               ? u_normal_map_widens_glint != 0 && u_glint_reads_correlation != 0
                               : mat.type != MATERIAL_DIFFUSE;
-        float second_xy = correlated ? normal_map_fetch(u_normal_moments, fp, true).x : 0.0f;
-        cov = slope_covariance(mean, first.zw, second_xy, correlated);
-        lean_magnified(u_normal_slopes, u_normal_map_size, u_normal_map_linear,
-                       u_normal_map_offset, fp, correlated, mean, cov);
+        float t = lean_footprint_chain_weight(u_normal_map_size, u_normal_map_linear, fp);
+        if (t > 0.0f) {
+            vec4 first = normal_map_fetch(u_normal_slopes, fp, true);
+            float second_xy = correlated ? normal_map_fetch(u_normal_moments, fp, true).x : 0.0f;
+            mean = first.xy;
+            cov = slope_covariance(mean, first.zw, second_xy, correlated);
+        }
+        if (t < 1.0f)
+            lean_magnified(u_normal_slopes, u_normal_map_linear, u_normal_map_offset, fp, t,
+                           correlated, mean, cov);
     }
     slopes_in_shading_frame(back, bitangent_sign, mean, cov);
     mean = visible_slope(mean, vec3(dot(wo_world, t), dot(wo_world, b), dot(wo_world, n)));
