@@ -40,7 +40,7 @@ float NormalMap::chain_weight(const Footprint& fp) const {
                                     slopes->transform.apply_vector(fp.duvdy), kMomentLodBias));
 }
 
-SlopeStatistics NormalMap::lookup(glm::vec2 uv, const Footprint* footprint) const {
+SlopeStatistics NormalMap::lookup(glm::vec2 uv, const Footprint* footprint, bool correlated) const {
     const Footprint* fp = filtering != Filtering::None ? footprint : nullptr;
     SlopeStatistics s;
     if (!fp) {  // one point of the bilinear surface: no spread to keep
@@ -51,39 +51,17 @@ SlopeStatistics NormalMap::lookup(glm::vec2 uv, const Footprint* footprint) cons
     const float t = chain_weight(*fp);
     if (t > 0.0f) {
         const glm::vec4 first = slopes->lookup4(uv, fp, kMomentLodBias);
+        const float second_xy = correlated ? cross_moment->lookup4(uv, fp, kMomentLodBias).x : 0.0f;
         s.mean = glm::vec2(first.x, first.y);
-        // Σ_ii = E[s_i²] − s̄_i²; rounding can leave it slightly negative.
-        s.covariance = glm::vec3(std::max(first.z - s.mean.x * s.mean.x, 0.0f),
-                                 std::max(first.w - s.mean.y * s.mean.y, 0.0f), 0.0f);
+        s.covariance =
+            shader::slope_covariance(s.mean, glm::vec2(first.z, first.w), second_xy, correlated);
     }
-    if (t < 1.0f) blend_surface(uv, *fp, t, false, s.mean, s.covariance);
+    if (t < 1.0f)
+        shader::lean_blend_surface(t, slope_at(uv), slope_at(uv + 0.5f * fp->duvdx),
+                                   slope_at(uv - 0.5f * fp->duvdx), slope_at(uv + 0.5f * fp->duvdy),
+                                   slope_at(uv - 0.5f * fp->duvdy), correlated, s.mean,
+                                   s.covariance);
     return s;
-}
-
-void NormalMap::blend_surface(glm::vec2 uv, const Footprint& fp, float t, bool correlated,
-                              glm::vec2& mean, glm::vec3& cov) const {
-    shader::lean_blend_surface(t, slope_at(uv), slope_at(uv + 0.5f * fp.duvdx),
-                               slope_at(uv - 0.5f * fp.duvdx), slope_at(uv + 0.5f * fp.duvdy),
-                               slope_at(uv - 0.5f * fp.duvdy), correlated, mean, cov);
-}
-
-float NormalMap::covariance_xy(glm::vec2 uv, const Footprint* footprint,
-                               const SlopeStatistics& s) const {
-    const Footprint* fp = filtering != Filtering::None ? footprint : nullptr;
-    if (!fp) return 0.0f;
-    // The chain's Σ_xy about the chain's mean, then the same blend as lookup's.
-    const float t = chain_weight(*fp);
-    glm::vec2 mean(0.0f);
-    glm::vec3 cov(0.0f);
-    if (t > 0.0f) {
-        const glm::vec4 first = slopes->lookup4(uv, fp, kMomentLodBias);
-        const float second = cross_moment->lookup4(uv, fp, kMomentLodBias).x;
-        cov.z = second - first.x * first.y;
-    }
-    if (t < 1.0f) blend_surface(uv, *fp, t, true, mean, cov);
-    // Kept where Σ stays positive semi-definite.
-    const float bound = std::sqrt(s.covariance.x * s.covariance.y);
-    return std::clamp(cov.z, -bound, bound);
 }
 
 glm::vec2 NormalMap::slope_at(glm::vec2 uv) const {

@@ -54,11 +54,10 @@ struct NormalMap {
     std::shared_ptr<const TextureInput> cross_moment;
 
     // The statistics over the footprint at uv (the finest level's bilinear
-    // values without a footprint, or with Filtering::None), covariance.z
-    // (the correlation) left 0.
-    SlopeStatistics lookup(glm::vec2 uv, const Footprint* footprint) const;
-    // Σ_xy over the same footprint, for the statistics `s` lookup gave.
-    float covariance_xy(glm::vec2 uv, const Footprint* footprint, const SlopeStatistics& s) const;
+    // values without a footprint, or with Filtering::None). covariance.z,
+    // the correlation, only where `correlated` (one more chain lookup),
+    // otherwise 0.
+    SlopeStatistics lookup(glm::vec2 uv, const Footprint* footprint, bool correlated = false) const;
     // The footprint a lookup reads for the pixel sample whose uniform
     // number is u in [0, 1): under LeanMixture the cell floor(u · mixture²)
     // of the footprint's mixture × mixture grid (footprint_cell), otherwise
@@ -72,10 +71,6 @@ struct NormalMap {
     // (core/slope_frame.glsl lean_chain_weight; the rest is the finest
     // level's own surface).
     float chain_weight(const Footprint& fp) const;
-    // The chain's (mean, cov) at uv blended with weight t (chain_weight < 1)
-    // with the surface's own (lean_blend_surface).
-    void blend_surface(glm::vec2 uv, const Footprint& fp, float t, bool correlated, glm::vec2& mean,
-                       glm::vec3& cov) const;
 };
 
 // A tangent frame around the unit normal n whose tangent is the projection

@@ -47,23 +47,36 @@ vec4 material_texture_filtered4(sampler2D tex, vec2 size, mat2 linear, vec2 offs
     return sum / float(n);
 }
 
-// The weight of a normal map's chain at the footprint (slope_frame.glsl
-// lean_chain_weight): 0 needs no chain lookup, 1 no surface fetches.
-float lean_footprint_chain_weight(vec2 size, mat2 linear, Footprint fp) {
-    return lean_chain_weight(material_texture_lod(size, linear, fp, kSlopeMomentLodBias));
-}
-
-// LEAN's footprint statistics (mean, cov) with the finest level's own
-// surface blended in under footprints below a texel (core/normal_map.cpp):
-// `slopes` holds (s_x, s_y, s_x², s_y²), (mean, cov) are the chain's (any
-// value where t = 0), t = lean_footprint_chain_weight < 1.
-void lean_magnified(sampler2D slopes, mat2 linear, vec2 offset, Footprint fp, float t,
-                    bool correlated, inout vec2 mean, inout vec3 cov) {
-    vec2 st = linear * fp.uv + offset;
-    vec2 hx = 0.5f * (linear * fp.duvdx), hy = 0.5f * (linear * fp.duvdy);
-    lean_blend_surface(t, textureLod(slopes, st, 0.0f).xy, textureLod(slopes, st + hx, 0.0f).xy,
-                       textureLod(slopes, st - hx, 0.0f).xy, textureLod(slopes, st + hy, 0.0f).xy,
-                       textureLod(slopes, st - hy, 0.0f).xy, correlated, mean, cov);
+// LEAN's footprint statistics of a normal map (core/normal_map.cpp
+// NormalMap::lookup): the mean slope and Σ = (xx, yy, xy), the chain's
+// where the footprint spans a texel or more, the finest level's own surface
+// below half a texel (slope_frame.glsl lean_blend_surface), blended
+// between. `slopes` holds (s_x, s_y, s_x², s_y²), `cross` s_x s_y (read only
+// where `correlated`; any sampler otherwise). The chain's lookups are
+// skipped where its weight is 0, the five level-0 fetches where it is 1.
+void lean_statistics(sampler2D slopes, sampler2D cross, vec2 size, mat2 linear, vec2 offset,
+                     Footprint fp, bool correlated, out vec2 mean, out vec3 cov) {
+    mean = vec2(0.0f);
+    cov = vec3(0.0f);
+    float t = lean_chain_weight(material_texture_lod(size, linear, fp, kSlopeMomentLodBias));
+    if (t > 0.0f) {
+        vec4 first =
+            material_texture_filtered4(slopes, size, linear, offset, fp, kSlopeMomentLodBias);
+        float second_xy = correlated ? material_texture_filtered4(cross, size, linear, offset, fp,
+                                                                  kSlopeMomentLodBias)
+                                           .x
+                                     : 0.0f;
+        mean = first.xy;
+        cov = slope_covariance(mean, first.zw, second_xy, correlated);
+    }
+    if (t < 1.0f) {
+        vec2 st = linear * fp.uv + offset;
+        vec2 hx = 0.5f * (linear * fp.duvdx), hy = 0.5f * (linear * fp.duvdy);
+        lean_blend_surface(
+            t, textureLod(slopes, st, 0.0f).xy, textureLod(slopes, st + hx, 0.0f).xy,
+            textureLod(slopes, st - hx, 0.0f).xy, textureLod(slopes, st + hy, 0.0f).xy,
+            textureLod(slopes, st - hy, 0.0f).xy, correlated, mean, cov);
+    }
 }
 
 #endif

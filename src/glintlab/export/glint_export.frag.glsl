@@ -143,13 +143,10 @@ uniform vec2 u_input_texture_offset[5];
 // runs along −(n × t).
 uniform bool u_input_uv_mirrored;
 
-vec4 glint_input_filtered4(sampler2D tex, int slot, Footprint fp, float lod_bias) {
-    return material_texture_filtered4(tex, vec2(textureSize(tex, 0)), u_input_texture_linear[slot],
-                                      u_input_texture_offset[slot], fp, lod_bias);
-}
-
 vec3 glint_input_filtered(sampler2D tex, int slot, Footprint fp, float lod_bias) {
-    return glint_input_filtered4(tex, slot, fp, lod_bias).rgb;
+    return material_texture_filtered4(tex, vec2(textureSize(tex, 0)), u_input_texture_linear[slot],
+                                      u_input_texture_offset[slot], fp, lod_bias)
+        .rgb;
 }
 
 // The uniforms' inputs with the textured ones replaced by their filtered values.
@@ -167,33 +164,20 @@ GlintInputs glint_inputs_from_textures(Footprint fp) {
     if ((mask & (1 << GLINT_INPUT_BASE)) != 0)
         inputs.base_albedo = glint_input_filtered(u_input_base_albedo, GLINT_INPUT_BASE, fp, 0.0f);
     if ((mask & (1 << GLINT_INPUT_NORMAL)) != 0) {
-        // LEAN mapping, read as the renderer reads its normal maps.
+        // LEAN mapping, read as the renderer reads its normal maps. The
+        // cross moments' sampler exists only where the model reads them.
+        vec2 mean;
+        vec3 cov;
+        vec2 size = vec2(textureSize(u_input_normal_slopes, 0));
         mat2 linear = u_input_texture_linear[GLINT_INPUT_NORMAL];
-        float t = lean_footprint_chain_weight(vec2(textureSize(u_input_normal_slopes, 0)), linear,
-                                              fp);
-        bool correlated = false;
+        vec2 offset = u_input_texture_offset[GLINT_INPUT_NORMAL];
 #ifdef GLINTLAB_GLINT_SLOPE_CORRELATION
-        correlated = (mask & (1 << GLINT_INPUT_NORMAL_CROSS)) != 0;
+        lean_statistics(u_input_normal_slopes, u_input_normal_cross, size, linear, offset, fp,
+                        (mask & (1 << GLINT_INPUT_NORMAL_CROSS)) != 0, mean, cov);
+#else
+        lean_statistics(u_input_normal_slopes, u_input_normal_slopes, size, linear, offset, fp,
+                        false, mean, cov);
 #endif
-        vec2 mean = vec2(0.0f);
-        vec3 cov = vec3(0.0f);
-        if (t > 0.0f) {
-            vec4 first = glint_input_filtered4(u_input_normal_slopes, GLINT_INPUT_NORMAL, fp,
-                                               kSlopeMomentLodBias);
-            float second_xy = 0.0f;
-#ifdef GLINTLAB_GLINT_SLOPE_CORRELATION
-            if (correlated)
-                second_xy = glint_input_filtered4(u_input_normal_cross, GLINT_INPUT_NORMAL, fp,
-                                                  kSlopeMomentLodBias)
-                                .x;
-#endif
-            mean = first.xy;
-            cov = slope_covariance(mean, first.zw, second_xy, correlated);
-        }
-        if (t < 1.0f)
-            lean_magnified(u_input_normal_slopes, linear,
-                           u_input_texture_offset[GLINT_INPUT_NORMAL], fp, t, correlated, mean,
-                           cov);
         slopes_in_shading_frame(false, u_input_uv_mirrored ? -1.0f : 1.0f, mean, cov);
         inputs.mean_slope = mean;
         inputs.slope_variance = cov.xy;

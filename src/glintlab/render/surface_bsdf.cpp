@@ -32,13 +32,13 @@ MicrofacetDistribution distribution(NdfType ndf, float ax, float ay) {
 struct LocalBump {
     Footprint footprint;  // the one the map was read over (a sub-footprint under lean_mixture)
     bool filtered = false;
-    SlopeStatistics map_slopes;  // in the map's axes, as NormalMap::lookup gives them
-    SlopeStatistics slopes;      // in the shading frame's axes
+    SlopeStatistics slopes;  // in the shading frame's axes
     glm::vec2 axes{1.0f};
 };
 
+// `correlated`: the lobe reads Σ_xy (left 0 otherwise).
 LocalBump local_bump(const NormalMap& map, const SurfaceHit& hit, const ShadingFrame& frame,
-                     bool back, const SurfaceDifferentials* differentials) {
+                     bool back, const SurfaceDifferentials* differentials, bool correlated) {
     LocalBump bump;
     bump.footprint.uv = hit.uv;
     if (differentials) {
@@ -55,17 +55,22 @@ LocalBump local_bump(const NormalMap& map, const SurfaceHit& hit, const ShadingF
     // Seen from behind, the surface's normal is −n: the map's normal (x, y,
     // z) becomes (−x, y, z) in the flipped frame (t, −b, −n).
     if (back) bump.axes.x = -1.0f;
-    bump.map_slopes = map.lookup(bump.footprint.uv, bump.filtered ? &bump.footprint : nullptr);
-    bump.slopes = bump.map_slopes;
+    bump.slopes =
+        map.lookup(bump.footprint.uv, bump.filtered ? &bump.footprint : nullptr, correlated);
     bump.slopes.mean *= bump.axes;
+    bump.slopes.covariance.z *= bump.axes.x * bump.axes.y;
     return bump;
 }
 
-// Σ_xy over the footprint the bump was read over, in the shading frame's axes.
-float map_covariance_xy(const NormalMap& map, const LocalBump& bump) {
-    return map.covariance_xy(bump.footprint.uv, bump.filtered ? &bump.footprint : nullptr,
-                             bump.map_slopes) *
-           bump.axes.x * bump.axes.y;
+// Whether the lobe of material m reads the map's Σ_xy: every lobe but a
+// diffuse one, and the glint lobes of models that widen by the map and
+// shear their target by the correlation (as the forward pass decides it).
+bool reads_map_correlation(const MaterialDesc& m) {
+    if (m.type == MaterialDesc::Type::Diffuse) return false;
+    if (m.type != MaterialDesc::Type::Glint) return true;
+    const GlintModelDescriptor& model = glint_model(m.glint.model_id);
+    return m.glint.model_id != GlintModelId::Explicit && model.textured_roughness &&
+           model.reads_slope_correlation && model.reads_slope_correlation(m.glint);
 }
 
 // The frame around the footprint's mean normal, its tangent the projection
@@ -159,7 +164,8 @@ SurfaceBsdf make_surface_bsdf(const MaterialDesc& m, const SurfaceHit& hit, glm:
     // dielectric keeps its orientation (inside/outside matters for eta).
     const bool back = m.type != MaterialDesc::Type::Dielectric && glm::dot(wo, frame.n) < 0.0f;
     std::optional<LocalBump> bump;
-    if (m.normal_map) bump = local_bump(*m.normal_map, hit, frame, back, differentials);
+    if (m.normal_map)
+        bump = local_bump(*m.normal_map, hit, frame, back, differentials, reads_map_correlation(m));
     if (back) {
         frame.n = -frame.n;
         frame.b = -frame.b;  // keeps (t, b, n) right-handed
@@ -209,10 +215,9 @@ SurfaceBsdf make_surface_bsdf(const MaterialDesc& m, const SurfaceHit& hit, glm:
         // The lobe of slope covariance diag(α_x², α_y²)/2 + Σ, Σ_xy included,
         // is an anisotropic lobe along that matrix's principal axes: the
         // frame turns to them.
-        const glm::vec3 lobe =
-            shader::principal_slope_lobe(shader::slope_widened_alpha(alpha_x, c.x, 4.0f),
-                                         shader::slope_widened_alpha(alpha_y, c.y, 4.0f),
-                                         map_covariance_xy(*m.normal_map, *bump), 4.0f);
+        const glm::vec3 lobe = shader::principal_slope_lobe(
+            shader::slope_widened_alpha(alpha_x, c.x, 4.0f),
+            shader::slope_widened_alpha(alpha_y, c.y, 4.0f), c.z, 4.0f);
         alpha_x = lobe.x;
         alpha_y = lobe.y;
         if (lobe.z != 0.0f) {
@@ -288,7 +293,7 @@ SurfaceBsdf make_surface_bsdf(const MaterialDesc& m, const SurfaceHit& hit, glm:
     const bool map_widens = bump && model.textured_roughness;
     if (map_widens || widens_curvature) {
         glm::vec3 c = widens_curvature ? curvature_cov : glm::vec3(0.0f);
-        if (map_widens) c += bump->slopes.covariance;
+        if (map_widens) c += bump->slopes.covariance;  // Σ_xy 0 where not read
         // Glint NDF axes stay on the uv axes (the models' grids follow
         // them): a model that reads the slopes' correlation shears its
         // target by it (chermain2020 with Chermain et al. 2021's slope
@@ -296,7 +301,6 @@ SurfaceBsdf make_surface_bsdf(const MaterialDesc& m, const SurfaceHit& hit, glm:
         // the others drop it.
         const bool correlated =
             model.reads_slope_correlation && model.reads_slope_correlation(*resolved);
-        if (correlated && map_widens) c.z += map_covariance_xy(*m.normal_map, *bump);
         resolved->alpha_x = shader::slope_widened_alpha(resolved->alpha_x, c.x, 1.0f);
         resolved->alpha_y = shader::slope_widened_alpha(resolved->alpha_y, c.y, 1.0f);
         resolved->alpha_varies = true;

@@ -190,24 +190,29 @@ TEST(NormalMapReader, FootprintsNearATexelTakeTheSurfacesOwnSpread) {
                 fp.duvdx = glm::vec2(texels / 64.0f, 0.0f);
                 fp.duvdy = glm::vec2(0.0f, texels / 64.0f);
                 const SlopeStatistics truth = surface_statistics(map, fp);
-                const SlopeStatistics s = map.lookup(fp.uv, &fp);
+                const SlopeStatistics s = map.lookup(fp.uv, &fp, true);
                 // The mip chain alone (LEAN's interpolated moments).
                 const glm::vec4 c = map.slopes->lookup4(fp.uv, &fp, shader::kSlopeMomentLodBias);
-                const glm::vec2 chain(std::max(c.z - c.x * c.x, 0.0f),
-                                      std::max(c.w - c.y * c.y, 0.0f));
-                const glm::vec2 true_cov(truth.covariance.x, truth.covariance.y);
-                error += glm::dot(glm::abs(glm::vec2(s.covariance) - true_cov), glm::vec2(1.0f));
-                chain_error += glm::dot(glm::abs(chain - true_cov), glm::vec2(1.0f));
+                const float c_xy =
+                    map.cross_moment->lookup4(fp.uv, &fp, shader::kSlopeMomentLodBias).x;
+                const glm::vec3 chain =
+                    shader::slope_covariance(glm::vec2(c.x, c.y), glm::vec2(c.z, c.w), c_xy, true);
+                // Σ_xx, Σ_yy and Σ_xy (twice: Σ's off-diagonal pair).
+                const glm::vec3 weight(1.0f, 1.0f, 2.0f);
+                error += glm::dot(glm::abs(s.covariance - truth.covariance), weight);
+                chain_error += glm::dot(glm::abs(chain - truth.covariance), weight);
                 spread += truth.covariance.x + truth.covariance.y;
             }
             const std::string at = fmt::format("{}_{}", names[m], texels);
             RecordProperty("error_" + at, fmt::format("{:.3f}", error / spread));
             RecordProperty("chain_error_" + at, fmt::format("{:.3f}", chain_error / spread));
             SCOPED_TRACE(at);
-            // Measured error / spread up to half a texel: 0.007-0.11 (the
-            // chain: 2.5-474); from one texel the chain's own.
+            // Measured error / spread up to half a texel: 0.012-0.20 (the
+            // chain: 3.7-702); from one texel the chain's own. The largest
+            // is the uncorrelated texels' at half a texel: the five fetches
+            // miss the bilinear patch's twist (its uv term), which feeds Σ.
             if (texels <= 0.5f) {
-                EXPECT_LT(error, 0.15 * spread);
+                EXPECT_LT(error, 0.25 * spread);
             }
             EXPECT_LT(error, chain_error + 0.02 * spread);
         }
@@ -220,7 +225,7 @@ TEST(NormalMapReader, CrossMomentGivesTheCorrelationOfDiagonalRidges) {
     // diagonal bands of texels, so over a footprint of many texels the
     // slopes are perfectly correlated: Σ_xy = Σ_xx = Σ_yy. The bilinear
     // surface between the bands keeps that (both components interpolate
-    // alike), and lookup leaves Σ_xy to covariance_xy.
+    // alike). Σ_xy only where the caller asks for it.
     const Scene scene = scene_of_map(dir, [](int x, int y) {
         const float v = ((x + y) / 2) % 2 ? 0.2f : -0.2f;
         return glm::normalize(glm::vec3(-v, -v, 1.0f));
@@ -231,9 +236,12 @@ TEST(NormalMapReader, CrossMomentGivesTheCorrelationOfDiagonalRidges) {
     EXPECT_EQ(s.covariance.z, 0.0f);
     EXPECT_GT(s.covariance.x, 0.01f);
     EXPECT_NEAR(s.covariance.y, s.covariance.x, 1e-5f);
-    EXPECT_NEAR(map.covariance_xy(fp.uv, &fp, s), s.covariance.x, 1e-5f);
+    const SlopeStatistics c = map.lookup(fp.uv, &fp, true);
+    EXPECT_EQ(c.mean, s.mean);
+    EXPECT_EQ(glm::vec2(c.covariance), glm::vec2(s.covariance));
+    EXPECT_NEAR(c.covariance.z, s.covariance.x, 1e-5f);
     // Without a footprint there is no spread, hence no correlation.
-    EXPECT_EQ(map.covariance_xy(fp.uv, nullptr, s), 0.0f);
+    EXPECT_EQ(map.lookup(fp.uv, nullptr, true).covariance, glm::vec3(0.0f));
 }
 
 TEST(NormalMapReader, LeanMixtureTilesTheFootprintWithSubFootprints) {

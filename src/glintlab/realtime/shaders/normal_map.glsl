@@ -29,13 +29,6 @@ uniform vec2 u_normal_map_size;
 uniform int u_normal_map_filtering;     // 0: lean, 1: none (the finest level's normal)
 uniform int u_normal_map_widens_glint;  // the glint model reads a per-pixel α
 
-vec4 normal_map_fetch(sampler2D tex, Footprint fp, bool filtered) {
-    if (!filtered)
-        return textureLod(tex, u_normal_map_linear * fp.uv + u_normal_map_offset, 0.0f);
-    return material_texture_filtered4(tex, u_normal_map_size, u_normal_map_linear,
-                                      u_normal_map_offset, fp, kSlopeMomentLodBias);
-}
-
 // Tilts (t, b, n) to the footprint's mean normal, kept facing wo_world
 // (visible_slope), and widens the material's α by the slope covariance, as
 // make_surface_bsdf does. `back`: the frame was flipped to the side of wo;
@@ -49,23 +42,16 @@ void normal_map_shade(Footprint fp, bool back, float bitangent_sign, vec3 wo_wor
     vec2 mean = vec2(0.0f);
     vec3 cov = vec3(0.0f);
     if (!lean) {
-        mean = normal_map_fetch(u_normal_slopes, fp, false).xy;
+        mean = textureLod(u_normal_slopes, u_normal_map_linear * fp.uv + u_normal_map_offset, 0.0f)
+                   .xy;
     } else {
         // Σ's correlation turns every lobe but a diffuse one and the glint
         // lobes of models that drop it.
         bool correlated = mat.type == MATERIAL_GLINT
                               ? u_normal_map_widens_glint != 0 && u_glint_reads_correlation != 0
                               : mat.type != MATERIAL_DIFFUSE;
-        float t = lean_footprint_chain_weight(u_normal_map_size, u_normal_map_linear, fp);
-        if (t > 0.0f) {
-            vec4 first = normal_map_fetch(u_normal_slopes, fp, true);
-            float second_xy = correlated ? normal_map_fetch(u_normal_moments, fp, true).x : 0.0f;
-            mean = first.xy;
-            cov = slope_covariance(mean, first.zw, second_xy, correlated);
-        }
-        if (t < 1.0f)
-            lean_magnified(u_normal_slopes, u_normal_map_linear, u_normal_map_offset, fp, t,
-                           correlated, mean, cov);
+        lean_statistics(u_normal_slopes, u_normal_moments, u_normal_map_size, u_normal_map_linear,
+                        u_normal_map_offset, fp, correlated, mean, cov);
     }
     slopes_in_shading_frame(back, bitangent_sign, mean, cov);
     mean = visible_slope(mean, vec3(dot(wo_world, t), dot(wo_world, b), dot(wo_world, n)));
