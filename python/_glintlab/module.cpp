@@ -141,8 +141,15 @@ py::array_t<float> render(const Scene& parsed, bool gpu, std::optional<int> spp,
     Image image;
     if (gpu) {
 #if GLINTLAB_WITH_GL
-        py::gil_scoped_release release;
-        image = render_scene_gpu(scene);
+        uint64_t cut = 0;
+        {
+            py::gil_scoped_release release;
+            image = render_scene_gpu(scene, &cut);
+        }
+        // A RuntimeWarning, which notebooks show (stderr they may not).
+        if (cut > 0 &&
+            PyErr_WarnEx(PyExc_RuntimeWarning, cut_fragments_warning(cut).c_str(), 1) != 0)
+            throw py::error_already_set();
 #else
         throw py::value_error(
             "gpu=True: this glintlab was built without OpenGL (GLINTLAB_WITH_GL=OFF)");

@@ -423,6 +423,7 @@ CompareResult run_compare(const CompareOptions& o) {
                 }
                 gpu->render(s);
                 image = gpu->read_image();
+                row.cut_fragments += gpu->cut_fragments();
 #endif
             } else {
                 image = render_scene(s, accel, RenderOptions{o.threads, true});

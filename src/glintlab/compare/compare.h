@@ -91,8 +91,11 @@ struct ModelMetrics {
     double sampling_flicker = 0.0;
     double seconds = 0.0;  // mean render time of one image
     PixelFaults faults;    // over every image rendered for it
-    Image image;           // realization 0 (for the grid)
-    Plane mean_plane;      // luminance averaged over realizations
+    // OpenGL rows: fragments whose shading loops the OpenGL implementation
+    // cut short, over every image (GpuRenderer::cut_fragments; too dark).
+    uint64_t cut_fragments = 0;
+    Image image;       // realization 0 (for the grid)
+    Plane mean_plane;  // luminance averaged over realizations
 };
 
 struct CompareResult {

@@ -144,6 +144,7 @@ nlohmann::json CompareResult::to_json() const {
         r["nan_count"] = m.faults.nan;
         r["inf_count"] = m.faults.inf;
         r["negative_count"] = m.faults.negative;
+        r["cut_fragments"] = m.cut_fragments;
         j["models"].push_back(r);
     }
     return j;
@@ -204,6 +205,13 @@ std::string CompareResult::to_text() const {
             m.structure_variance_ratio, m.wasserstein, flicker, m.seconds, m.faults.nan,
             m.faults.inf, m.faults.negative);
     }
+    for (const ModelMetrics& m : models)
+        if (m.compared && m.cut_fragments > 0)
+            s += fmt::format(
+                "warning: {} ({}): the OpenGL implementation cut the shading loops of {} "
+                "fragments short over its renders (Mesa llvmpipe ends a shader's loops after "
+                "65535 iterations in all): its images are too dark\n",
+                m.model, m.backend, m.cut_fragments);
     s += "facet extents (under point and directional lights):\n";
     for (const ModelMetrics& m : models)
         if (m.compared) s += fmt::format("  {:<14} {}\n", m.model, m.facet_extent);

@@ -29,6 +29,8 @@
 namespace glintlab {
 namespace {
 
+constexpr GLuint kLoopProbeBinding = 5;  // forward.frag.glsl LoopProbe
+
 struct GpuShape {
     gl::VertexArray vao;
     gl::Buffer vertices, indices, triangles;
@@ -144,6 +146,9 @@ struct GpuRenderer::Impl {
         material_textures;
     gl::Program background;
     gl::UniformCache uniforms;
+    // The forward pass's count of fragments whose loops the implementation
+    // cut short (forward.frag.glsl u_cut_fragments), binding 5.
+    gl::Buffer loop_probe;
     // Each model's GPU state (GpuModelHooks::make_state, made on first use)
     // and option mask (set_model_option).
     std::map<GlintModelId, std::unique_ptr<GpuModelState>> model_states;
@@ -815,6 +820,13 @@ void GpuRenderer::render(const Scene& scene) {
     r.background_timer.end();
 
     // Pass 2: forward shading of every shape.
+    if (!r.loop_probe) {
+        r.loop_probe = gl::make_buffer();
+        glNamedBufferStorage(r.loop_probe.get(), sizeof(GLuint), nullptr, GL_DYNAMIC_STORAGE_BIT);
+    }
+    const GLuint zero = 0;
+    glNamedBufferSubData(r.loop_probe.get(), 0, sizeof(GLuint), &zero);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kLoopProbeBinding, r.loop_probe.get());
     r.forward_timer.begin();
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_LESS);
@@ -869,6 +881,7 @@ void GpuRenderer::render(const Scene& scene) {
             blur && shape.material >= 0 &&
             uses_glint_layer(scene.materials[static_cast<size_t>(shape.material)]);
         glProgramUniform1i(p, loc("u_glint_layer"), deferred ? 1 : 0);
+        glProgramUniform1i(p, loc("u_loop_probe"), 2);
         const bool shadowed = !r.shadow_matrices.empty();
         glProgramUniform1i(p, loc("u_shadows"), shadowed ? 1 : 0);
         if (shadowed) {
@@ -939,6 +952,24 @@ Image GpuRenderer::read_image() const {
         }
     }
     return image;
+}
+
+uint64_t GpuRenderer::cut_fragments() const {
+    const Impl& r = *impl_;
+    if (!r.loop_probe) return 0;
+    GLuint count = 0;
+    glGetNamedBufferSubData(r.loop_probe.get(), 0, sizeof(GLuint), &count);
+    return count;
+}
+
+std::string cut_fragments_warning(uint64_t cut) {
+    if (cut == 0) return {};
+    return fmt::format(
+        "OpenGL renderer: the OpenGL implementation cut the shading loops of {} "
+        "fragment{} short (Mesa llvmpipe ends a shader's loops after 65535 iterations in all): "
+        "those pixels are too dark. Fewer lights or lean_mixture cells, a hardware GPU or the "
+        "CPU renderer avoid it",
+        cut, cut == 1 ? "" : "s");
 }
 
 unsigned GpuRenderer::hdr_texture() const {
@@ -1019,11 +1050,17 @@ GpuPassTimes GpuRenderer::pass_times() {
             r.glint_post_frame ? r.glint_post_timer.elapsed_ms() : 0.0};
 }
 
-Image render_scene_gpu(const Scene& scene) {
+Image render_scene_gpu(const Scene& scene, uint64_t* cut_fragments) {
     HeadlessContext context;
     GpuRenderer renderer(scene);
     renderer.render(scene);
-    return renderer.read_image();
+    Image image = renderer.read_image();
+    const uint64_t cut = renderer.cut_fragments();
+    if (cut_fragments)
+        *cut_fragments = cut;
+    else if (cut > 0)
+        fmt::print(stderr, "warning: {}\n", cut_fragments_warning(cut));
+    return image;
 }
 
 }  // namespace glintlab

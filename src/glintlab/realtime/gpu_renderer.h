@@ -23,7 +23,9 @@
 // no directional-occlusion ray here.
 #pragma once
 
+#include <cstdint>
 #include <memory>
+#include <string>
 #include <string_view>
 
 #include "glintlab/core/image.h"
@@ -58,6 +60,10 @@ class GpuRenderer {
 
     // The last frame: linear RGB, top row first.
     Image read_image() const;
+    // Fragments of the last frame whose shading loops the OpenGL
+    // implementation cut short (Mesa llvmpipe's loop limit,
+    // forward.frag.glsl): 0 on a correct frame. Waits for the frame.
+    uint64_t cut_fragments() const;
     unsigned hdr_texture() const;  // GL name of the RGBA32F colour attachment
     int width() const;
     int height() const;
@@ -94,8 +100,12 @@ class GpuRenderer {
     std::unique_ptr<Impl> impl_;
 };
 
+// The warning for `cut` fragments of cut_fragments() ("" for 0).
+std::string cut_fragments_warning(uint64_t cut);
+
 // Renders `scene` headless (EGL) and returns the linear image: the GPU
-// counterpart of render_scene().
-Image render_scene_gpu(const Scene& scene);
+// counterpart of render_scene(). The frame's cut_fragments go to
+// *cut_fragments, or without it cut_fragments_warning to stderr.
+Image render_scene_gpu(const Scene& scene, uint64_t* cut_fragments = nullptr);
 
 }  // namespace glintlab

@@ -456,6 +456,7 @@ void run_viewer(Scene scene, const ViewerOptions& options) {
         renderer.set_model_option(o.model, o.option, true);
     }
     std::string status;
+    uint64_t cut_fragments = 0;  // the last frame's (GpuRenderer::cut_fragments)
     int selected_material = 0;
     bool p_was_down = false;
     glm::dvec2 last_cursor(0.0);
@@ -616,6 +617,7 @@ void run_viewer(Scene scene, const ViewerOptions& options) {
             }
             if (ImGui::CollapsingHeader("Timings", ImGuiTreeNodeFlags_DefaultOpen)) {
                 text(gl_description());
+                if (cut_fragments > 0) text(cut_fragments_warning(cut_fragments));
                 // The history holds the frames so far, up to 60.
                 report.timing_frames = static_cast<int>(shadow_ms.ms.size());
                 text(fmt::format("GPU ms (GL_TIME_ELAPSED), median of {} frame{}",
@@ -645,6 +647,7 @@ void run_viewer(Scene scene, const ViewerOptions& options) {
         shadow_ms.add(t.shadow_ms);
         background_ms.add(t.background_ms);
         forward_ms.add(t.forward_ms);
+        cut_fragments = renderer.cut_fragments();
         blur_ms.add(t.glint_post_ms);
         bloom_ms.add(bloom_timer.elapsed_ms());
         display_ms.add(display_timer.elapsed_ms());

@@ -45,7 +45,16 @@ struct TriangleFrame {
     vec4 ng;
 };
 layout(std430, binding = 0) readonly buffer Triangles { TriangleFrame u_triangles[]; };
-uniform bool u_per_triangle_frame;  // meshes: SSBO; spheres: analytic vertex attributes
+uniform bool u_per_triangle_frame;
+// Mesa llvmpipe ends every loop of a shader invocation once the iterations
+// of all its loops together pass 65535 (gallivm's
+// LP_MAX_TGSI_LOOP_ITERATIONS): a long traversal (wang2020's per-particle
+// quadtree, once per light and per lean_mixture cell) then returns a
+// darker pixel without a word. A loop of u_loop_probe (2) iterations after
+// shading runs once there; the fragments where it does are counted
+// (GpuRenderer::cut_fragments, which the callers report).
+layout(std430, binding = 5) buffer LoopProbe { uint u_cut_fragments; };
+uniform int u_loop_probe;  // meshes: SSBO; spheres: analytic vertex attributes
 // A closed surface (realtime/gpu_geometry.h): the environment below its
 // geometric tangent plane is occluded by the surface itself.
 uniform bool u_closed_surface;
@@ -534,6 +543,9 @@ void main() {
         glint_layer /= float(kMixtureCells);
 #endif
     }
+    int probe = 0;
+    for (int i = 0; i < u_loop_probe; ++i) ++probe;
+    if (probe < u_loop_probe) atomicAdd(u_cut_fragments, 1u);
     // Non-finite results are dropped as the CPU integrators do.
     if (any(isnan(radiance)) || any(isinf(radiance))) radiance = vec3(0.0f);
     if (any(isnan(glint_layer)) || any(isinf(glint_layer))) glint_layer = vec3(0.0f);
