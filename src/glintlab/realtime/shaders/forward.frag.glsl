@@ -45,7 +45,7 @@ struct TriangleFrame {
     vec4 ng;
 };
 layout(std430, binding = 0) readonly buffer Triangles { TriangleFrame u_triangles[]; };
-uniform bool u_per_triangle_frame;
+uniform bool u_per_triangle_frame;  // meshes: SSBO; spheres: analytic vertex attributes
 // Mesa llvmpipe ends every loop of a shader invocation once the iterations
 // of all its loops together pass 65535 (gallivm's
 // LP_MAX_TGSI_LOOP_ITERATIONS): a long traversal (wang2020's per-particle
@@ -54,7 +54,7 @@ uniform bool u_per_triangle_frame;
 // shading runs once there; the fragments where it does are counted
 // (GpuRenderer::cut_fragments, which the callers report).
 layout(std430, binding = 5) buffer LoopProbe { uint u_cut_fragments; };
-uniform int u_loop_probe;  // meshes: SSBO; spheres: analytic vertex attributes
+uniform int u_loop_probe;
 // A closed surface (realtime/gpu_geometry.h): the environment below its
 // geometric tangent plane is occluded by the surface itself.
 uniform bool u_closed_surface;
