@@ -314,7 +314,7 @@ vec3 glint_shade(vec3 p, vec3 n, vec3 dpdu, Footprint fp) {
             if (wi.z > 0.0f) {
 #ifdef GLINTLAB_GLINT_OWN_LIGHTS
                 vec3 irradiance = point ? u_point_intensity[i] / r2 : u_directional_irradiance[i];
-                radiance += g_glint_color_input * glint_own_light(wo, wi, irradiance, fp);
+                radiance += g_glint_color_input * glint_own_light_add(wo, wi, irradiance, fp);
 #else
                 vec3 f = glint_eval(wo, wi, fp);
                 radiance += point ? f * u_point_intensity[i] / r2 : f * u_directional_irradiance[i];
@@ -323,6 +323,9 @@ vec3 glint_shade(vec3 p, vec3 n, vec3 dpdu, Footprint fp) {
             ++k;
         } while (k < lights);
     }
+#ifdef GLINTLAB_GLINT_OWN_LIGHTS
+    radiance += g_glint_color_input * glint_own_lights_flush(wo, fp);
+#endif
 #ifdef GLINTLAB_GLINT_OWN_LIGHTS
     if (u_environment_on) radiance += g_glint_color_input * glint_own_environment(n, wo_world, fp);
 #endif

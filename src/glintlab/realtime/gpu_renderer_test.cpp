@@ -333,12 +333,12 @@ TEST(GpuRenderer, SparseGlintsMatchTheCpu) {
 
 // Mesa llvmpipe ends a shader invocation's loops once their iterations
 // together pass 65535. wang2020's per-particle traversal, once per light,
-// passes it on a sparse plane under eight (dark) point lights: the
-// directional light's glints, shaded last, came out 44 % too dark on 492
-// fragments with no word. The forward pass counts such fragments
-// (GpuRenderer::cut_fragments). Whatever the implementation: no darkening
-// beyond the two images' noise (5 %) without a count; on llvmpipe, whose
-// limit this scene passes (Debian 12's Mesa), a count.
+// passed it on a sparse plane under a few (dark) point lights: the
+// directional light's glints came out too dark with no word. The lights are
+// now shaded up to four to a traversal, and the forward pass counts the
+// fragments still cut (GpuRenderer::cut_fragments). Whatever the
+// implementation: no change in the image (dark lights add < 1e-4) without a
+// count; on llvmpipe (Debian 12's Mesa), six lights fit and nine do not.
 TEST(GpuRenderer, LoopsCutShortByTheImplementationAreCounted) {
     GLINTLAB_REQUIRE_GL();
     nlohmann::json j = test_scene("plane", "wang2020", 8.0f);
@@ -356,20 +356,30 @@ TEST(GpuRenderer, LoopsCutShortByTheImplementationAreCounted) {
         return std::pair{sum, renderer.cut_fragments()};
     };
     const auto [alone, alone_cut] = frame(j);
-    for (int i = 0; i < 8; ++i)
-        j["lights"].push_back(
-            {{"type", "point"}, {"position", {1.5, 2.5 + i, 1.0}}, {"intensity", 1e-6}});
-    const auto [lit, lit_cut] = frame(j);
-    fmt::print(
-        "wang2020 ln 8: directional alone {:.4g} (cut {}), with 8 dark lights {:.4g} (cut {})\n",
-        alone, alone_cut, lit, lit_cut);
     ASSERT_GT(alone, 0.0);
     EXPECT_EQ(alone_cut, 0u);
-    if (lit_cut == 0) {
-        EXPECT_NEAR(lit / alone, 1.0, 0.05);
-    }
-    if (gl_description().find("llvmpipe") != std::string::npos) {
-        EXPECT_GT(lit_cut, 0u);
+    // Point lights too dark to add anything: the image must not change. On
+    // llvmpipe five of them with the directional one (two batches of
+    // wang2020_lights) fit its loop budget (a traversal per light did not:
+    // 256 fragments cut, 13 % darker); eight (three batches) still do not
+    // (100 cut, 3.6 % darker; a traversal per light: 492, 44 %).
+    for (int i = 0; i < 8; ++i) {
+        j["lights"].push_back(
+            {{"type", "point"}, {"position", {1.5, 2.5 + i, 1.0}}, {"intensity", 1e-6}});
+        if (i != 4 && i != 7) continue;
+        const auto [lit, lit_cut] = frame(j);
+        fmt::print("wang2020 ln 8: directional alone {:.4g}, with {} dark lights {:.4g} (cut {})\n",
+                   alone, i + 1, lit, lit_cut);
+        if (lit_cut == 0) {
+            EXPECT_NEAR(lit / alone, 1.0, 1e-4) << i + 1;
+        }
+        if (gl_description().find("llvmpipe") != std::string::npos) {
+            if (i == 4) {
+                EXPECT_EQ(lit_cut, 0u);
+            } else {
+                EXPECT_GT(lit_cut, 0u);
+            }
+        }
     }
     EXPECT_NE(cut_fragments_warning(492).find("492 fragments short"), std::string::npos);
     EXPECT_EQ(cut_fragments_warning(0), "");

@@ -37,10 +37,47 @@ Wang2020Tables wang2020_tables() {
     t.fresnel_k = u_fresnel_k;
     return t;
 }
-// Eq. 21 (the CPU's wang2020_light_radiance, untinted).
-vec3 glint_own_light(vec3 wo, vec3 wi, vec3 li, Footprint fp) {
+// Eq. 21 (the CPU's wang2020_light_radiance, untinted) for the lights the
+// forward pass hands over one at a time: glint_own_light_add returns what
+// it shades at once, glint_own_lights_flush (called once after the last
+// light) the rest. Where the glue knows its light count
+// (GLINTLAB_WANG2020_LIGHTS, the renderer's several lights) they are
+// collected and shaded in batches from one traversal each, from one call
+// site (each inlined copy of the traversal lengthens llvmpipe's frame);
+// else each light on its own.
+#ifdef GLINTLAB_WANG2020_LIGHTS
+vec3 g_wang2020_wi[GLINTLAB_WANG2020_LIGHTS];
+vec3 g_wang2020_li[GLINTLAB_WANG2020_LIGHTS];
+int g_wang2020_pending = 0;
+vec3 glint_own_light_add(vec3 wo, vec3 wi, vec3 li, Footprint fp) {
+    g_wang2020_wi[g_wang2020_pending] = wi;
+    g_wang2020_li[g_wang2020_pending] = li;
+    ++g_wang2020_pending;
+    return vec3(0.0f);
+}
+vec3 glint_own_lights_flush(vec3 wo, Footprint fp) {
+    Wang2020Tables tb = wang2020_tables();
+    Wang2020Footprint A = wang2020_footprint(fp);
+    vec3 sum = vec3(0.0f);
+    for (int first = 0; first < g_wang2020_pending; first += WANG2020_LIGHT_BATCH) {
+        Wang2020LightBatch batch = wang2020_light_batch();
+        batch.lights = min(WANG2020_LIGHT_BATCH, g_wang2020_pending - first);
+        for (int j = 0; j < WANG2020_LIGHT_BATCH; ++j) {
+            if (j >= batch.lights) continue;
+            batch.wi[j] = g_wang2020_wi[first + j];
+            batch.li[j] = g_wang2020_li[first + j];
+        }
+        sum += wang2020_lights(tb, A, batch, wo);
+    }
+    g_wang2020_pending = 0;
+    return sum;
+}
+#else
+vec3 glint_own_light_add(vec3 wo, vec3 wi, vec3 li, Footprint fp) {
     return wang2020_light(wang2020_tables(), wang2020_footprint(fp), wi, wo, li);
 }
+vec3 glint_own_lights_flush(vec3 wo, Footprint fp) { return vec3(0.0f); }
+#endif
 // Eqs. 18-20 (untinted; no directional occlusion on the GPU).
 vec3 glint_own_environment(vec3 n, vec3 o_world, Footprint fp) {
     return wang2020_environment(wang2020_tables(), wang2020_footprint(fp), n, o_world);

@@ -3,7 +3,8 @@
 // glints/wang2020/wang2020_gpu.cpp,
 //     vec3 glint_ndf(vec3 h, Footprint fp);  // D_P(h), RGB (glints/material.glsl)
 // The model shades every light itself (GLINTLAB_GLINT_OWN_LIGHTS):
-//     vec3 glint_own_light(vec3 wo, vec3 wi, vec3 li, Footprint fp);
+//     vec3 glint_own_light_add(vec3 wo, vec3 wi, vec3 li, Footprint fp);
+//     vec3 glint_own_lights_flush(vec3 wo, Footprint fp);
 //     vec3 glint_own_environment(vec3 n, vec3 o_world, Footprint fp);
 // The SSBO bindings are kWang2020*Binding of glints/wang2020/wang2020_gpu.h;
 // the uniforms and the functions above are wang2020_glue_common.glsl's
@@ -11,6 +12,11 @@
 // wang2020_export_textures.glsl).
 #ifndef GLINTLAB_GLINTS_WANG2020_WANG2020_GPU_GLSL
 #define GLINTLAB_GLINTS_WANG2020_WANG2020_GPU_GLSL
+
+// Several lights: up to four to a quadtree traversal (wang2020_tables.glsl).
+#if GLINTLAB_POINT_LIGHTS + GLINTLAB_DIRECTIONAL_LIGHTS > 1
+#define GLINTLAB_WANG2020_LIGHTS (GLINTLAB_POINT_LIGHTS + GLINTLAB_DIRECTIONAL_LIGHTS)
+#endif
 
 #include "glintlab/glints/glint_uniforms.glsl"
 #include "glintlab/microfacet/ndf.glsl"

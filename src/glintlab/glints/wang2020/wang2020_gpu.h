@@ -7,7 +7,8 @@
 //
 // The model lights the camera's first hit itself (glint_lighting.h): the
 // glue defines GLINTLAB_GLINT_OWN_LIGHTS and
-//     vec3 glint_own_light(vec3 wo, vec3 wi, vec3 li, Footprint fp);   // Eq. 21
+//     vec3 glint_own_light_add(vec3 wo, vec3 wi, vec3 li, Footprint fp);  // Eq. 21, batched
+//     vec3 glint_own_lights_flush(vec3 wo, Footprint fp);                 // the batch's rest
 //     vec3 glint_own_environment(vec3 n, vec3 o_world, Footprint fp);  // Eqs. 18-20
 // which realtime/shaders/forward.frag.glsl calls instead of the BRDF for glint materials
 // (both before the material tint). Directional occlusion (§4.4) of the

@@ -229,15 +229,38 @@ float wang2020_m_term(vec3 wi, vec3 wo, float alpha);
 
 // What the traversal does per particle of A.
 const int WANG2020_VISIT_COUNT = 0;   // Σ 1_A
-const int WANG2020_VISIT_ACCEPT = 1;  // Σ 1_A H(p − λ_k) (Eq. 20)
+const int WANG2020_VISIT_ACCEPT = 1;  // per light j: Σ 1_A H(p_j − λ_k) (Eq. 20)
 const int WANG2020_VISIT_ENV = 2;     // sum += L_γ(reflect(o, m_k)) M (per_particle)
-const int WANG2020_VISIT_LIT = 3;     // Σ 1_A [reflect(i, m_k) in the γ cone of o]
+const int WANG2020_VISIT_LIT = 3;     // per light j: Σ 1_A [reflect(i_j, m_k) in the γ cone of o]
+// Lights one traversal serves (wang2020_lights). Each traversal enumerates
+// up to WANG2020_MICRO_ENUMERATION_MAX particles, and Mesa llvmpipe ends
+// every loop of a fragment once their iterations together pass 65535, so a
+// traversal per light darkened scenes of a few lights. The per-light loop
+// inside the per-particle one has a constant trip count and is unrolled,
+// but every slot costs: where the including glue knows its light count
+// (GLINTLAB_WANG2020_LIGHTS, the renderer), the fewest traversals of at
+// most four lights, their slots shared out evenly (9 lights: 3 × 3); else
+// (exports) one.
+#ifdef GLINTLAB_WANG2020_LIGHTS
+const int WANG2020_LIGHT_TRAVERSALS = (GLINTLAB_WANG2020_LIGHTS + 3) / 4;
+const int WANG2020_LIGHT_BATCH =
+    (GLINTLAB_WANG2020_LIGHTS + WANG2020_LIGHT_TRAVERSALS - 1) / WANG2020_LIGHT_TRAVERSALS;
+#else
+const int WANG2020_LIGHT_BATCH = 1;
+#endif
 struct Wang2020Visit {
     int mode;
-    float p;       // ACCEPT: the acceptance probability
-    vec3 o;        // local view direction (ENV, LIT)
-    vec3 wi;       // local light direction (LIT)
-    vec3 t, b, n;  // local -> world frame (ENV)
+    int lights;                        // ACCEPT, LIT: lights of the batch in use
+    vec4 p;                            // ACCEPT: each light's acceptance probability
+    mat4x3 wi;                         // LIT: each light's local direction
+    vec3 o;                            // local view direction (ENV, LIT)
+    vec3 t, b, n;                      // local -> world frame (ENV)
+};
+// What a traversal found.
+struct Wang2020Tally {
+    uint in_a;                         // Σ 1_A (every mode)
+    uvec4 hits;                        // ACCEPT, LIT: per light
+    vec3 sum;                          // ENV
 };
 
 // Footprint A of a query (Wang2020Model's UvBox): the uv box [lo, hi] the
@@ -281,17 +304,24 @@ float wang2020_footprint_area(Wang2020Footprint a) {
     return max(0.0f, a.hi.x - a.lo.x) * max(0.0f, a.hi.y - a.lo.y);
 }
 
+Wang2020Tally wang2020_tally() {
+    Wang2020Tally r;
+    r.in_a = 0u;
+    r.hits = uvec4(0u);
+    r.sum = vec3(0.0f);
+    return r;
+}
+
 // The particles of the uv box [A.lo, A.hi] (tiles repeat), of its
-// parallelogram only when `clip`, visited as v.mode says; total counts, sum accumulates (ENV). ParticleQuadtree::traverse:
-// nodes wholly inside A add their count (COUNT only), leaves cut by A's
-// border are resolved particle by particle; particle k of leaf (x, y) sits
-// at ((x, y) + hash(leaf, k, seed, 1|2)) / 2^depth with λ = hash(leaf, k,
-// seed, 3) and normal hashes 4, 5. Boxes over more than 64 tiles visit
-// nothing (the caller uses the macro scale).
+// parallelogram only when `clip`, visited as v.mode says, into `tally`.
+// ParticleQuadtree::traverse: nodes wholly inside A add their count (COUNT
+// only), leaves cut by A's border are resolved particle by particle;
+// particle k of leaf (x, y) sits at ((x, y) + hash(leaf, k, seed, 1|2)) /
+// 2^depth with λ = hash(leaf, k, seed, 3) and normal hashes 4, 5. Boxes
+// over more than 64 tiles visit nothing (the caller uses the macro scale).
 void wang2020_quadtree_visit(Wang2020Tables tb, Wang2020Footprint A, bool clip, Wang2020Visit v,
-                             OUT(uint) total, OUT(vec3) sum) {
-    total = 0u;
-    sum = vec3(0.0f);
+                             OUT(Wang2020Tally) tally) {
+    tally = wang2020_tally();
     vec2 lo = A.lo, hi = A.hi;
     clip = clip && A.parallelogram;
     if (!(lo.x <= hi.x && lo.y <= hi.y)) return;
@@ -317,7 +347,7 @@ void wang2020_quadtree_visit(Wang2020Tables tb, Wang2020Footprint A, bool clip, 
                 bool inside = n0x >= a.x && n1x <= b.x && n0y >= a.y && n1y <= b.y;
                 uint count = node.y & 0x0FFFFFFFu;
                 if (inside && !per_particle && !clip) {
-                    total += count;
+                    tally.in_a += count;
                     continue;
                 }
                 if (d == tb.depth) {
@@ -335,11 +365,12 @@ void wang2020_quadtree_visit(Wang2020Tables tb, Wang2020Footprint A, bool clip, 
                                         A, vec2(tx + (float(it.z) + hx) / leaves,
                                                 ty + (float(it.w) + hy) / leaves)))
                             continue;
-                        if (v.mode == WANG2020_VISIT_COUNT) {
-                            total += 1u;
-                        } else if (v.mode == WANG2020_VISIT_ACCEPT) {
-                            if (wang2020_hash_unit(leaf, k, tb.seed, 3u) < v.p) total += 1u;
-                        } else {
+                        tally.in_a += 1u;
+                        if (v.mode == WANG2020_VISIT_ACCEPT) {
+                            float lambda = wang2020_hash_unit(leaf, k, tb.seed, 3u);
+                            for (int j = 0; j < WANG2020_LIGHT_BATCH; ++j)
+                                if (j < v.lights && lambda < v.p[j]) tally.hits[j] += 1u;
+                        } else if (v.mode != WANG2020_VISIT_COUNT) {
                             vec3 m = wang2020_particle_normal(
                                 wang2020_hash_unit(leaf, k, tb.seed, 4u),
                                 wang2020_hash_unit(leaf, k, tb.seed, 5u), tb.alpha);
@@ -348,15 +379,17 @@ void wang2020_quadtree_visit(Wang2020Tables tb, Wang2020Footprint A, bool clip, 
                                 if (!(om > 0.0f)) continue;
                                 vec3 i = 2.0f * om * m - v.o;  // reflect(o, m_k)
                                 if (!(i.z > 0.0f)) continue;
-                                sum += wang2020_cone_lookup(tb.cone_res,
-                                                            i.x * v.t + i.y * v.b + i.z * v.n) *
-                                       wang2020_fresnel(tb, om) *
-                                       wang2020_m_term(i, v.o, tb.alpha);
-                                total += 1u;
+                                vec3 i_world = i.x * v.t + i.y * v.b + i.z * v.n;
+                                tally.sum += wang2020_cone_lookup(tb.cone_res, i_world) *
+                                             wang2020_fresnel(tb, om) *
+                                             wang2020_m_term(i, v.o, tb.alpha);
                             } else {
-                                float im = dot(v.wi, m);
-                                if (!(im > 0.0f)) continue;
-                                if (dot(2.0f * im * m - v.wi, v.o) >= tb.cos_gamma) total += 1u;
+                                for (int j = 0; j < WANG2020_LIGHT_BATCH; ++j) {
+                                    float im = dot(v.wi[j], m);
+                                    if (j < v.lights && im > 0.0f &&
+                                        dot(2.0f * im * m - v.wi[j], v.o) >= tb.cos_gamma)
+                                        tally.hits[j] += 1u;
+                                }
                             }
                         }
                     }
@@ -375,12 +408,13 @@ void wang2020_quadtree_visit(Wang2020Tables tb, Wang2020Footprint A, bool clip, 
     }
 }
 
-Wang2020Visit wang2020_visit(int mode, float p) {
+Wang2020Visit wang2020_visit(int mode) {
     Wang2020Visit v;
     v.mode = mode;
-    v.p = p;
+    v.lights = 0;
+    v.p = vec4(0.0f);
+    v.wi = mat4x3(0.0f);
     v.o = vec3(0.0f);
-    v.wi = vec3(0.0f);
     v.t = vec3(0.0f);
     v.b = vec3(0.0f);
     v.n = vec3(0.0f);
@@ -392,13 +426,12 @@ Wang2020Visit wang2020_visit(int mode, float p) {
 // scale, Eq. 20: a particle is accepted iff λ(x_k) < p).
 uint wang2020_quadtree_count(Wang2020Tables tb, Wang2020Footprint A, bool clip, bool per_particle,
                              float p) {
-    uint total;
-    vec3 sum;
-    wang2020_quadtree_visit(
-        tb, A, clip,
-        wang2020_visit(per_particle ? WANG2020_VISIT_ACCEPT : WANG2020_VISIT_COUNT, p), total,
-        sum);
-    return total;
+    Wang2020Visit v = wang2020_visit(per_particle ? WANG2020_VISIT_ACCEPT : WANG2020_VISIT_COUNT);
+    v.lights = 1;
+    v.p[0] = p;
+    Wang2020Tally tally;
+    wang2020_quadtree_visit(tb, A, clip, v, tally);
+    return per_particle ? tally.hits[0] : tally.in_a;
 }
 
 // The footprint parallelogram uv + s duvdx + t duvdy, s, t ∈ [-½, ½) and its
@@ -453,18 +486,21 @@ vec3 wang2020_environment(Wang2020Tables tb, Wang2020Footprint A, vec3 n_world, 
         // The table's w is the effective fraction r under "effective".
         bool effective = tb.micro == WANG2020_MICRO_MODE_PER_PARTICLE_EFFECTIVE;
         vec3 w = wang2020_weights_for(A, tb.particles, effective, phat);
-        uint n_visited;
+        // One traversal sums the particles' reflections and counts A's.
+        float count = 0.0f;
         vec3 sum = vec3(0.0f);
-        if (w.x > 0.0f) {
-            Wang2020Visit v = wang2020_visit(WANG2020_VISIT_ENV, 0.0f);
+        if (w.x > 0.0f || w.y > 0.0f) {
+            Wang2020Visit v = wang2020_visit(w.x > 0.0f ? WANG2020_VISIT_ENV
+                                                        : WANG2020_VISIT_COUNT);
             tangent_frame(n_world, v.t, v.b);
             v.n = n_world;
             vec3 ol = vec3(dot(o_world, v.t), dot(o_world, v.b), dot(o_world, n_world));
             v.o = ol / length(ol);
-            wang2020_quadtree_visit(tb, A, true, v, n_visited, sum);
+            Wang2020Tally tally;
+            wang2020_quadtree_visit(tb, A, true, v, tally);
+            sum = tally.sum;
+            count = float(tally.in_a);
         }
-        float count = 0.0f;
-        if (w.y > 0.0f) count = float(wang2020_quadtree_count(tb, A, true, false, 0.0f));
         return wang2020_environment_blend(w, lhat, sum, count, wang2020_footprint_area(A),
                                           tb.particles, tb.sigma);
     }
@@ -479,37 +515,98 @@ vec3 wang2020_environment(Wang2020Tables tb, Wang2020Footprint A, vec3 n_world, 
                                         tb.sigma);
 }
 
-// D̂'(A, o, i) of Eq. 21 for a light from local direction wi towards local
-// wo (Wang2020Model::light_radiance without M and the light's radiance).
-float wang2020_light_dprime(Wang2020Tables tb, Wang2020Footprint A, vec3 wi, vec3 wo) {
-    vec2 lo = A.lo, hi = A.hi;
-    if (!(wi.z > 0.0f) || !(wo.z > 0.0f)) return 0.0f;
-    float p = wang2020_dpf_lookup(tb.dpf_res, wi, wo);  // P(i, o, γ), §5
+// Up to WANG2020_LIGHT_BATCH lights shaded from one traversal of A.
+struct Wang2020LightBatch {
+    int lights;                     // in use
+    mat4x3 wi;   // columns: local directions towards the lights
+    mat4x3 li;   // columns: irradiance normal to wi
+};
+
+Wang2020LightBatch wang2020_light_batch() {
+    Wang2020LightBatch batch;
+    batch.lights = 0;
+    batch.wi = mat4x3(0.0f);
+    batch.li = mat4x3(0.0f);
+    return batch;
+}
+
+// The counts D̂' (Eq. 21) of a batch's lights take, from one traversal of A:
+// the particles in A and, per light j (p[j] >= 0: in use and above the
+// horizon), those lit (per_particle, weights w[j]) or accepted (as
+// published, micro scale).
+Wang2020Tally wang2020_batch_tally(Wang2020Tables tb, Wang2020Footprint A,
+                                   Wang2020LightBatch batch, vec3 wo, mat4x3 w, vec4 p,
+                                   int scale) {
+    Wang2020Tally tally = wang2020_tally();
     if (tb.micro != WANG2020_MICRO_MODE_AS_PUBLISHED) {
-        // Each particle is lit with probability p: fraction r = p.
-        bool effective = tb.micro == WANG2020_MICRO_MODE_PER_PARTICLE_EFFECTIVE;
-        vec3 w = wang2020_weights_for(A, tb.particles, effective, p);
-        uint lit = 0u;
-        vec3 unused;
-        if (w.x > 0.0f) {
-            Wang2020Visit v = wang2020_visit(WANG2020_VISIT_LIT, 0.0f);
-            v.o = wo;
-            v.wi = wi;
-            wang2020_quadtree_visit(tb, A, true, v, lit, unused);
+        bool enumerate = false, count = false;
+        for (int j = 0; j < WANG2020_LIGHT_BATCH; ++j) {
+            bool used = j < batch.lights && p[j] >= 0.0f;
+            enumerate = enumerate || (used && w[j].x > 0.0f);
+            count = count || (used && w[j].y > 0.0f);
         }
-        float count = 0.0f;
-        if (w.y > 0.0f) count = float(wang2020_quadtree_count(tb, A, true, false, 0.0f));
-        return wang2020_point_dprime_blend(w, p, count, float(lit), wang2020_footprint_area(A),
-                                           tb.particles, tb.sigma);
+        // The lit particles' traversal counts A's as well. Each call site
+        // with its own constant mode: the shader compiler folds the modes'
+        // branches out of the per-particle loop.
+        if (enumerate) {
+            Wang2020Visit v = wang2020_visit(WANG2020_VISIT_LIT);
+            v.lights = batch.lights;
+            v.o = wo;
+            v.wi = batch.wi;
+            wang2020_quadtree_visit(tb, A, true, v, tally);
+        } else if (count) {
+            tally.in_a = wang2020_quadtree_count(tb, A, true, false, 0.0f);
+        }
+    } else if (scale == WANG2020_MESO) {
+        tally.in_a = wang2020_quadtree_count(tb, A, false, false, 0.0f);
+    } else if (scale == WANG2020_MICRO) {
+        Wang2020Visit v = wang2020_visit(WANG2020_VISIT_ACCEPT);
+        v.lights = batch.lights;
+        v.p = min(p, vec4(1.0f));
+        wang2020_quadtree_visit(tb, A, false, v, tally);
     }
+    return tally;
+}
+
+// Eq. 21 summed over a batch of lights: Σ_j li_j D̂'(A, o, i_j) M(i_j, o),
+// before the tint; M's F at i·h (m_fresnel).
+vec3 wang2020_lights(Wang2020Tables tb, Wang2020Footprint A, Wang2020LightBatch batch, vec3 wo) {
+    vec2 lo = A.lo, hi = A.hi;
+    if (!(wo.z > 0.0f)) return vec3(0.0f);
+    // Vectors and matrices, not arrays: Mesa keeps arrays in scratch memory.
+    vec4 p = vec4(-1.0f);  // P(i, o, γ), §5; -1: light unused
+    mat4x3 w = mat4x3(0.0f);  // columns: per_particle blend weights (r = p)
+    bool effective = tb.micro == WANG2020_MICRO_MODE_PER_PARTICLE_EFFECTIVE;
+    bool any_lit = false;
+    for (int j = 0; j < WANG2020_LIGHT_BATCH; ++j) {
+        if (j < batch.lights && batch.wi[j].z > 0.0f) {
+            p[j] = wang2020_dpf_lookup(tb.dpf_res, batch.wi[j], wo);
+            w[j] = wang2020_weights_for(A, tb.particles, effective, p[j]);
+            any_lit = true;
+        }
+    }
+    if (!any_lit) return vec3(0.0f);
     int scale = wang2020_scale_for(lo, hi, tb.particles);
-    float count = 0.0f;
-    float accepted = 0.0f;
-    if (scale == WANG2020_MESO) count = float(wang2020_quadtree_count(tb, A, false, false, 0.0f));
-    if (scale == WANG2020_MICRO)
-        accepted = float(wang2020_quadtree_count(tb, A, false, true, min(p, 1.0f)));
+    Wang2020Tally tally = wang2020_batch_tally(tb, A, batch, wo, w, p, scale);
     float area = max(0.0f, hi.x - lo.x) * max(0.0f, hi.y - lo.y);
-    return wang2020_point_dprime(scale, p, count, accepted, area, tb.particles, tb.sigma);
+    vec3 radiance = vec3(0.0f);
+    for (int j = 0; j < WANG2020_LIGHT_BATCH; ++j) {
+        if (!(p[j] >= 0.0f)) continue;
+        float dprime;
+        if (tb.micro != WANG2020_MICRO_MODE_AS_PUBLISHED)
+            dprime = wang2020_point_dprime_blend(w[j], p[j], float(tally.in_a),
+                                                 float(tally.hits[j]), wang2020_footprint_area(A),
+                                                 tb.particles, tb.sigma);
+        else
+            dprime = wang2020_point_dprime(scale, p[j], float(tally.in_a), float(tally.hits[j]),
+                                           area, tb.particles, tb.sigma);
+        vec3 wi = batch.wi[j];
+        vec3 f = vec3(1.0f);
+        if (tb.fresnel_mode != GLINT_FRESNEL_NONE)
+            f = wang2020_fresnel(tb, dot(wi, normalize(wi + wo)));
+        radiance += batch.li[j] * f * (dprime * wang2020_m_term(wi, wo, tb.alpha));
+    }
+    return radiance;
 }
 
 // M(i, o) of Eq. 11 in wang2020_prefilter.h's form (i·h) G2 / ((h·n)(o·n))
@@ -521,12 +618,13 @@ float wang2020_m_term(vec3 wi, vec3 wo, float alpha) {
     return dot(wi, h) * G2_SmithCorrelated(NDF_BECKMANN, wo, wi, alpha, alpha) / (h.z * wo.z);
 }
 
-// Eq. 21 for a light of irradiance li normal to wi (local directions):
-// Lo = li D̂'(A, o, i) M(i, o), before the tint; M's F at i·h (m_fresnel).
+// Eq. 21 for one light of irradiance li normal to wi (local directions).
 vec3 wang2020_light(Wang2020Tables tb, Wang2020Footprint A, vec3 wi, vec3 wo, vec3 li) {
-    vec3 f = vec3(1.0f);
-    if (tb.fresnel_mode != GLINT_FRESNEL_NONE) f = wang2020_fresnel(tb, dot(wi, normalize(wi + wo)));
-    return li * f * (wang2020_light_dprime(tb, A, wi, wo) * wang2020_m_term(wi, wo, tb.alpha));
+    Wang2020LightBatch batch = wang2020_light_batch();
+    batch.lights = 1;
+    batch.wi[0] = wi;
+    batch.li[0] = li;
+    return wang2020_lights(tb, A, batch, wo);
 }
 
 #endif  // GLINTLAB_GLINTS_WANG2020_TABLES_GLSL

@@ -35,6 +35,8 @@ vec4 wang2020_cone_value(int index) {
     return glintlab::wang2020::g_model->particle_radiance_table()
         ->data()[static_cast<size_t>(index)];
 }
+// The renderer's batches of four lights (one traversal each).
+#define GLINTLAB_WANG2020_LIGHTS 4
 #include "glintlab/glints/wang2020/wang2020_tables.glsl"
 GLINTLAB_SHADER_FUNCTIONS_END
 
@@ -135,6 +137,15 @@ void random_box(Pcg32& rng, glm::vec2& lo, glm::vec2& hi) {
     hi = c + h;
 }
 
+// Trial i's footprint: odd trials a parallelogram (the per_particle modes
+// count and sum only its particles), even ones the box alone.
+shader::Wang2020Footprint random_footprint(Pcg32& rng, int i) {
+    if (i % 2 == 1) return random_parallelogram(rng);
+    glm::vec2 lo, hi;
+    random_box(rng, lo, hi);
+    return shader::wang2020_box_footprint(lo, hi);
+}
+
 TEST(Wang2020Tables, GlslQuadtreeCountsEqualTheCpuTraversal) {
     const Wang2020Model model(small_material(20000, 8));
     g_model = &model;
@@ -208,16 +219,7 @@ TEST_P(Wang2020TablesModes, GlslShadingEqualsTheCpuModelAtEveryScale) {
     // few are lit: more trials keep > 100 lit ones.
     const int trials = GetParam() == 2 ? 3000 : 600;
     for (int i = 0; i < trials; ++i) {
-        // Odd trials: a parallelogram footprint (the per_particle modes
-        // count and sum only its particles), even ones the box alone.
-        shader::Wang2020Footprint fp;
-        if (i % 2 == 1) {
-            fp = random_parallelogram(rng);
-        } else {
-            glm::vec2 lo, hi;
-            random_box(rng, lo, hi);
-            fp = shader::wang2020_box_footprint(lo, hi);
-        }
+        const shader::Wang2020Footprint fp = random_footprint(rng, i);
         const UvBox A = uv_box_of(fp);
         const glm::dvec3 wi = unit(rng, true), wo = unit(rng, true);
         Scale s = Scale::Macro;
@@ -249,6 +251,40 @@ TEST_P(Wang2020TablesModes, GlslShadingEqualsTheCpuModelAtEveryScale) {
     EXPECT_GT(lit, 100);
     EXPECT_LE(off, trials / 100) << "of " << 2 * trials;
     EXPECT_EQ(model.micro_mode_index(), GetParam());
+}
+
+// Lights shaded a batch at a time from one traversal (wang2020_lights, how
+// the forward pass and the exports shade them) give what each light gives
+// alone: the lit traversal's count of A's particles is the count
+// traversal's, and each light's terms are the same operations.
+TEST_P(Wang2020TablesModes, BatchedLightsEqualEachLightAlone) {
+    Wang2020Material mat = small_material(30000, 8);
+    mat.micro = GetParam() == 0 ? MicroMode::AsPublished : MicroMode::PerParticle;
+    mat.scale_count = GetParam() == 2 ? ScaleCount::Effective : ScaleCount::Particles;
+    Wang2020Model model(mat);
+    model.prefilter(sky);
+    g_model = &model;
+    const shader::Wang2020Tables tb = tables_of(model);
+    Pcg32 rng(33, 5);
+    int shaded = 0;
+    for (int i = 0; i < 400; ++i) {
+        const shader::Wang2020Footprint fp = random_footprint(rng, i);
+        const glm::vec3 wo(unit(rng, true));
+        shader::Wang2020LightBatch batch = shader::wang2020_light_batch();
+        batch.lights = 1 + i % shader::WANG2020_LIGHT_BATCH;
+        glm::vec3 alone(0.0f);
+        for (int j = 0; j < batch.lights; ++j) {
+            // Every fourth light below the horizon: it adds nothing.
+            batch.wi[j] = glm::vec3(unit(rng, (i + j) % 4 != 3));
+            batch.li[j] = glm::vec3(1.0f + j, 0.5f, 2.0f - 0.3f * j);
+            alone += shader::wang2020_light(tb, fp, batch.wi[j], wo, batch.li[j]);
+        }
+        const glm::vec3 together = shader::wang2020_lights(tb, fp, batch, wo);
+        for (int c = 0; c < 3; ++c)
+            EXPECT_NEAR(together[c], alone[c], 1e-6f * std::abs(alone[c])) << i << " " << c;
+        shaded += alone.x > 0.0f ? 1 : 0;
+    }
+    EXPECT_GT(shaded, 20);  // measured 34 (effective: mostly micro, rarely lit)
 }
 
 INSTANTIATE_TEST_SUITE_P(Wang2020Tables, Wang2020TablesModes, testing::Values(0, 1, 2));

@@ -481,9 +481,10 @@ void main() {
             if (visible <= 0.0f) continue;
 #ifdef GLINTLAB_GLINT_OWN_LIGHTS
             // Models that shade their lights themselves (glint_lighting.h;
-            // wang2020 Eq. 21, wang2020_gpu.h), untinted.
+            // wang2020 Eq. 21, wang2020_gpu.h), untinted, in batches.
             if (u_material_type == 4) {
-                radiance += u_glint_color * glint_own_light(wo, wi, u_point_intensity[i] * (visible / r2), fp);
+                radiance += u_glint_color *
+                            glint_own_light_add(wo, wi, u_point_intensity[i] * (visible / r2), fp);
                 continue;
             }
 #endif
@@ -530,12 +531,16 @@ void main() {
             if (visible <= 0.0f) continue;
 #ifdef GLINTLAB_GLINT_OWN_LIGHTS
             if (u_material_type == 4) {
-                radiance += u_glint_color * glint_own_light(wo, wi, u_directional_irradiance[i] * visible, fp);
+                radiance += u_glint_color *
+                            glint_own_light_add(wo, wi, u_directional_irradiance[i] * visible, fp);
                 continue;
             }
 #endif
             radiance += eval_bsdf(mat, wo, wi, fp) * u_directional_irradiance[i] * (wi.z * visible);
         }
+#endif
+#ifdef GLINTLAB_GLINT_OWN_LIGHTS
+        if (u_material_type == 4) radiance += u_glint_color * glint_own_lights_flush(wo, fp);
 #endif
 #ifdef GLINTLAB_NORMAL_MAP_MIXTURE
         }
