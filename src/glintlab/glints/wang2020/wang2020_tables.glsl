@@ -486,12 +486,12 @@ vec3 wang2020_environment(Wang2020Tables tb, Wang2020Footprint A, vec3 n_world, 
         // The table's w is the effective fraction r under "effective".
         bool effective = tb.micro == WANG2020_MICRO_MODE_PER_PARTICLE_EFFECTIVE;
         vec3 w = wang2020_weights_for(A, tb.particles, effective, phat);
-        // One traversal sums the particles' reflections and counts A's.
+        // The reflections' traversal counts A's as well; each call site with
+        // its own constant mode (as wang2020_batch_tally's).
         float count = 0.0f;
         vec3 sum = vec3(0.0f);
-        if (w.x > 0.0f || w.y > 0.0f) {
-            Wang2020Visit v = wang2020_visit(w.x > 0.0f ? WANG2020_VISIT_ENV
-                                                        : WANG2020_VISIT_COUNT);
+        if (w.x > 0.0f) {
+            Wang2020Visit v = wang2020_visit(WANG2020_VISIT_ENV);
             tangent_frame(n_world, v.t, v.b);
             v.n = n_world;
             vec3 ol = vec3(dot(o_world, v.t), dot(o_world, v.b), dot(o_world, n_world));
@@ -500,6 +500,8 @@ vec3 wang2020_environment(Wang2020Tables tb, Wang2020Footprint A, vec3 n_world, 
             wang2020_quadtree_visit(tb, A, true, v, tally);
             sum = tally.sum;
             count = float(tally.in_a);
+        } else if (w.y > 0.0f) {
+            count = float(wang2020_quadtree_count(tb, A, true, false, 0.0f));
         }
         return wang2020_environment_blend(w, lhat, sum, count, wang2020_footprint_area(A),
                                           tb.particles, tb.sigma);
@@ -517,7 +519,7 @@ vec3 wang2020_environment(Wang2020Tables tb, Wang2020Footprint A, vec3 n_world, 
 
 // Up to WANG2020_LIGHT_BATCH lights shaded from one traversal of A.
 struct Wang2020LightBatch {
-    int lights;                     // in use
+    int lights;  // in use
     mat4x3 wi;   // columns: local directions towards the lights
     mat4x3 li;   // columns: irradiance normal to wi
 };
