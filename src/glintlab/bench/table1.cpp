@@ -148,7 +148,9 @@ std::vector<Table1Row> run_table1(const Table1Options& options) {
     std::vector<Table1Row> rows;
     for (const std::string& scene_name : scenes) {
         for (const std::string& model : models) {
-            Table1Row row{scene_name, model, {}, 0.0, 0.0, {}, {}, {}, {}, {}};
+            Table1Row row;
+            row.scene = scene_name;
+            row.model = model;
             for (float log_density : options.log_densities) {
                 const nlohmann::json j =
                     table1_scene_document(options, scene_name, model, log_density);
@@ -208,6 +210,7 @@ nlohmann::json table1_to_json(const Table1Options& o, const std::vector<Table1Ro
         if (o.gpu) {
             row["p90_ms_per_density"] = r.p90_ms_per_density;
             row["frame_ms_per_density"] = r.frame_ms_per_density;
+            row["first_frame_ms_per_density"] = r.first_frame_ms_per_density;
             row["shadow_ms_per_density"] = r.shadow_ms_per_density;
             row["background_ms_per_density"] = r.background_ms_per_density;
             if (!r.pass_ms_per_density.empty()) row["pass_ms_per_density"] = r.pass_ms_per_density;
@@ -238,6 +241,9 @@ std::string table1_to_text(const Table1Options& o, const std::vector<Table1Row>&
         if (o.gpu && !r.frame_ms_per_density.empty())
             s += fmt::format("   frame (render + glFinish) ms: {:.1f}",
                              fmt::join(r.frame_ms_per_density, " "));
+        if (o.gpu && !r.first_frame_ms_per_density.empty())
+            s += fmt::format("   first frame (compile + link + draw) ms: {:.0f}",
+                             fmt::join(r.first_frame_ms_per_density, " "));
         s += "\n";
     }
     return s;

@@ -46,6 +46,10 @@ struct Table1Row {
     // the time to trust on software rasterisers whose timer queries do not
     // cover the deferred rasterisation (docs/BENCHMARKS.md).
     std::vector<double> frame_ms_per_density;
+    // GPU only: the first frame's render + glFinish per density, which holds
+    // the programs' compile and link (a driver's shader cache shortens it:
+    // MESA_SHADER_CACHE_DISABLE=true, __GL_SHADER_DISK_CACHE=0 for a cold one).
+    std::vector<double> first_frame_ms_per_density;
     // GPU only: median GL_TIME_ELAPSED of the other passes per density.
     std::vector<double> shadow_ms_per_density, background_ms_per_density;
     // GPU only, model-specific passes per density (empty for most models;

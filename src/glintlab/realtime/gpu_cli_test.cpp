@@ -144,6 +144,9 @@ TEST(GpuCli, BenchGpuWang2020ReportsItsPasses) {
     const nlohmann::json& row = j.at("results").at(0);
     EXPECT_EQ(row.at("model"), "wang2020");
     EXPECT_EQ(row.at("frame_ms_per_density").size(), 2u);
+    // The first frame (compile + link + draw) is timed apart from the others.
+    ASSERT_EQ(row.at("first_frame_ms_per_density").size(), 2u);
+    for (const auto& v : row.at("first_frame_ms_per_density")) EXPECT_GT(v.get<double>(), 0.0);
     const nlohmann::json& passes = row.at("pass_ms_per_density");
     for (const char* key : {"dpf_extract_ms", "quadtree_ms", "blur_ms"}) {
         ASSERT_EQ(passes.at(key).size(), 2u) << key;
