@@ -45,10 +45,10 @@ nlohmann::json scene_json(const std::string& name) {
         {"amplitude", 0.05},     {"frequency", 24}, {"octaves", 4},       {"material", "g"}};
     if (name == "PLANE_90" || name == "PLANE_25") {
         j["camera"] = camera_at(name == "PLANE_90" ? 90.0f : 25.0f, 3.0f);
-        j["shapes"] = {quad};
+        j["shapes"] = nlohmann::json::array({quad});
     } else if (name == "HEIGHTMAP_90" || name == "HEIGHTMAP_25") {
         j["camera"] = camera_at(name == "HEIGHTMAP_90" ? 90.0f : 25.0f, 3.0f);
-        j["shapes"] = {heightfield};
+        j["shapes"] = nlohmann::json::array({heightfield});
     } else if (name == "SPHERE") {
         j["camera"] = {{"eye", {0, 0, 3.2}}, {"target", {0, 0, 0}}, {"fov_deg", 45}};
         j["shapes"] = {{{"type", "sphere"}, {"radius", 1.0}, {"material", "g"}}};
@@ -73,7 +73,7 @@ nlohmann::json scene_json(const std::string& name) {
         j["lights"] = {{{"type", "point"}, {"position", {5, 5, 5}}, {"intensity", 100.0}}};
     } else if (name == "MANY") {
         j["camera"] = {{"eye", {0, 9, 9}}, {"target", {0, 0, 0}}, {"fov_deg", 50}};
-        nlohmann::json shapes = {quad};
+        nlohmann::json shapes = nlohmann::json::array({quad});
         for (int z = 0; z < 8; ++z)
             for (int x = 0; x < 8; ++x)
                 shapes.push_back({{"type", "sphere"},

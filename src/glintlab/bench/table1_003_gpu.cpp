@@ -70,7 +70,7 @@ nlohmann::json table1_003_scene_json(const std::string& scene, const std::string
         else
             m["kneiphof2025"] = {{"levels", model == "kneiphof2025_k4" ? 4 : 8}};
     }
-    j["materials"] = {m};
+    j["materials"] = nlohmann::json::array({m});
     if (scene == "DIRECTIONAL") {
         j["lights"] = {
             {{"type", "directional"}, {"direction", {0.3, 0.8, 0.5}}, {"irradiance", 2.0}}};

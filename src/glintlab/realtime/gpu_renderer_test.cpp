@@ -48,7 +48,7 @@ nlohmann::json test_scene(const std::string& which, const std::string& model, fl
     nlohmann::json j;
     j["film"] = {{"width", 128}, {"height", 128}};
     j["render"] = {{"integrator", "direct"}, {"spp", 1}, {"seed", 1}};
-    j["materials"] = {glint_material(model, log_density)};
+    j["materials"] = nlohmann::json::array({glint_material(model, log_density)});
     j["lights"] = {{{"type", "directional"}, {"direction", {0.0, 0.55, -1.0}}, {"irradiance", 1.0}},
                    {{"type", "point"}, {"position", {0.6, 1.2, 0.8}}, {"intensity", 1.5}}};
     if (which == "plane") {
@@ -272,14 +272,14 @@ TEST_P(GpuEnvironment, MatchesCpuDirect) {
         j["film"] = {{"width", 64}, {"height", 64}};
         j["camera"] = {{"eye", {0, 0.3, 3.0}}, {"target", {0, 0, 0}}, {"fov_deg", 30}};
         j["render"] = {{"integrator", "direct"}, {"spp", 64}, {"seed", 3}};
-        j["materials"] = {material};
+        j["materials"] = nlohmann::json::array({material});
         j["shapes"] = {{{"type", "sphere"}, {"radius", 0.7}, {"material", "m"}}};
         nlohmann::json env = {{"type", "environment"}};
         if (map)
             env.update({{"file", forest}, {"rotation_deg", 90}});
         else
             env["radiance"] = {1.0, 1.0, 1.0};
-        j["lights"] = {env};
+        j["lights"] = nlohmann::json::array({env});
         const Scene scene = parse_scene(j, "test:env");
         const ImageAgreement a = render_on_both(scene).all;
         ASSERT_GT(a.mean_b, 0.01);
@@ -535,7 +535,7 @@ nlohmann::json kneiphof2025_scene(const std::string& light) {
             env.update({{"file", forest}, {"rotation_deg", 90}});
         else
             env["radiance"] = {1.0, 1.0, 1.0};
-        j["lights"] = {env};
+        j["lights"] = nlohmann::json::array({env});
     } else if (light == "sun") {
         j["lights"] = {{{"type", "directional"},
                         {"direction", {0.3, 0.5, 1.0}},
@@ -674,7 +674,7 @@ TEST(GpuRenderer, OrthographicCameraAndSmoothMaterialsMatchCpu) {
         j["render"] = {{"integrator", "direct"}, {"spp", 1}};
         nlohmann::json m = {{"name", "m"}, {"type", type}};
         if (type != "diffuse") m["roughness"] = 0.3;
-        j["materials"] = {m};
+        j["materials"] = nlohmann::json::array({m});
         j["shapes"] = {
             {{"type", "quad"}, {"size", {3, 3}}, {"material", "m"}},
             {{"type", "sphere"}, {"center", {0.4, 0.5, 0.3}}, {"radius", 0.4}, {"material", "m"}}};
@@ -892,7 +892,7 @@ TEST_P(GpuWang2020, MatchesCpuDirect) {
             env["file"] = forest;
         else
             env["radiance"] = {1.0, 1.0, 1.0};
-        j["lights"] = {env};
+        j["lights"] = nlohmann::json::array({env});
     } else {
         j["lights"] = {{{"type", "point"}, {"position", {0.6, 1.2, 2.0}}, {"intensity", 4.0}}};
     }

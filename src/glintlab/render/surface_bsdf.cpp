@@ -135,6 +135,10 @@ template <typename... Ts>
 struct Overloaded : Ts... {
     using Ts::operator()...;
 };
+// C++20 deduces this from the aggregate; clang 14 (the sanitizer tree's
+// compiler) does not yet, so the guide is spelled out.
+template <typename... Ts>
+Overloaded(Ts...) -> Overloaded<Ts...>;
 
 }  // namespace
 
