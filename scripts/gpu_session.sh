@@ -13,7 +13,10 @@
 # (STAGE.jsonl), tests.log and stages.txt. The glintlab_tests binary is read
 # from the bundle when scripts/gpu_bundle.sh was given it as well (second
 # binary argument), else the tests stage is skipped. RES (1920x1080), FRAMES
-# (20), WARMUP (5) and ROUNDS (3) override the defaults.
+# (20), WARMUP (5), ROUNDS (3) and STAGE_SECONDS (100, after which a stage
+# makes no more calls; each call has its own limit of 45-120 s) override
+# the defaults. About 5 min when nothing hangs, 16 at most: name the stages
+# a lease has time for.
 set -uo pipefail
 bundle=${1:?usage: gpu_session.sh BUNDLE_DIR|BUNDLE.tar.xz OUT_DIR [STAGE...]}
 out=${2:?usage: gpu_session.sh BUNDLE_DIR|BUNDLE.tar.xz OUT_DIR [STAGE...]}
@@ -40,10 +43,17 @@ t0=$(date +%s)
 log() { echo "$(($(date +%s) - t0)) s: $*" | tee -a "$out/stages.txt"; }
 # One bench call as one JSON line ({"error": ...} when it fails or passes
 # its limit), tagged with the variant.
+# A stage stops calling once it has run STAGE_SECONDS (100): the remaining
+# calls are recorded as skipped.
 bench() {
     local file=$1 tag=$2 limit=$3
     shift 3
     local json
+    if (($(date +%s) - stage_t0 > ${STAGE_SECONDS:-100})); then
+        echo "{\"variant\":\"$tag\",\"result\":{\"error\":\"skipped: the stage's time is spent\"}}" \
+            >> "$out/$file.jsonl"
+        return
+    fi
     json=$(timeout "$limit" "$G" bench --gpu --json "$@" 2>&1 | tr -d '\n')
     [[ $json == '{'* ]] || json="{\"error\":$(printf '%s' "${json:-timed out after $limit s}" |
         python3 -c 'import json,sys; print(json.dumps(sys.stdin.read()))')}"
@@ -54,6 +64,7 @@ MIX='/materials/0/normal_map/filtering="lean_mixture"'
 POINT='/lights/-={"type":"point","position":[0.6,1.2,1.8],"intensity":3.0}'
 for stage in "${stages[@]}"; do
     log "$stage"
+    stage_t0=$(date +%s)
     case $stage in
     compile)
         # Cold compile + link + first draw of each program, the driver's disk
@@ -61,15 +72,15 @@ for stage in "${stages[@]}"; do
         export __GL_SHADER_DISK_CACHE=0 MESA_SHADER_CACHE_DISABLE=true
         small=(--res 64x36 --frames 1 --warmup 0 --scene PLANE_25 --log-density 12)
         for m in smooth deliot2023 zirr2016 chermain2020 wang2020 kneiphof2025; do
-            bench compile "$m" 120 "${small[@]}" --model "$m"
-            bench compile "$m+1 light" 120 "${small[@]}" --model "$m" --set "$POINT"
-            bench compile "$m+3 lights" 120 "${small[@]}" --model "$m" --set "$POINT" \
+            bench compile "$m" 45 "${small[@]}" --model "$m"
+            bench compile "$m+1 light" 45 "${small[@]}" --model "$m" --set "$POINT"
+            bench compile "$m+3 lights" 45 "${small[@]}" --model "$m" --set "$POINT" \
                 --set "$POINT" --set "$POINT"
         done
         for m in deliot2023 chermain2020; do
-            bench compile "$m lean" 120 "${small[@]}" --model "$m" --set "$NM"
+            bench compile "$m lean" 45 "${small[@]}" --model "$m" --set "$NM"
             for k in 2 4; do
-                bench compile "$m lean_mixture $k" 120 "${small[@]}" --model "$m" --set "$NM" \
+                bench compile "$m lean_mixture $k" 45 "${small[@]}" --model "$m" --set "$NM" \
                     --set "$MIX" --set "/materials/0/normal_map/mixture=$k"
             done
         done
@@ -91,7 +102,7 @@ sys.stdout.buffer.write(b"\x89PNG\r\n\x1a\n" + chunk(b"IHDR", struct.pack(">IIBB
             for v in numbers maps; do
                 X=()
                 [[ $v == maps ]] && X=("${maps[@]}")
-                bench textured "$v" 120 --res "$RES" --frames "$FRAMES" --warmup "$WARMUP" \
+                bench textured "$v" 60 --res "$RES" --frames "$FRAMES" --warmup "$WARMUP" \
                     --scene PLANE_25 --model deliot2023 chermain2020 zirr2016 --log-density 12 "${X[@]}"
             done
         done
@@ -102,7 +113,7 @@ sys.stdout.buffer.write(b"\x89PNG\r\n\x1a\n" + chunk(b"IHDR", struct.pack(">IIBB
                 X=()
                 [[ $v != nomap ]] && X=(--set "$NM")
                 [[ $v == none ]] && X+=(--set '/materials/0/normal_map/filtering="none"')
-                bench normal_maps "$v" 120 --res "$RES" --frames "$FRAMES" --warmup "$WARMUP" \
+                bench normal_maps "$v" 60 --res "$RES" --frames "$FRAMES" --warmup "$WARMUP" \
                     --scene PLANE_25 --model smooth deliot2023 chermain2020 zirr2016 wang2020 \
                     --log-density 12 "${X[@]}"
             done
@@ -113,7 +124,7 @@ sys.stdout.buffer.write(b"\x89PNG\r\n\x1a\n" + chunk(b"IHDR", struct.pack(">IIBB
             for v in 1 2; do
                 X=()
                 [[ $v == 2 ]] && X=(--set "$POINT")
-                bench lights "$v" 120 --res "$RES" --frames "$FRAMES" --warmup "$WARMUP" \
+                bench lights "$v" 60 --res "$RES" --frames "$FRAMES" --warmup "$WARMUP" \
                     --scene SPHERE PLANE_25 --model smooth deliot2023 wang2020 \
                     --log-density 8 12 "${X[@]}"
             done
@@ -134,13 +145,13 @@ sys.stdout.buffer.write(b"\x89PNG\r\n\x1a\n" + chunk(b"IHDR", struct.pack(">IIBB
             mkdir -p build/release && ln -s "$G" build/release/glintlab
         fi
         filter='*Gpu*:Wang2020Tables*:*Export*'
-        timeout 240 "$bundle/glintlab_tests" --gtest_filter="$filter" > "$out/tests.log" 2>&1
+        timeout 180 "$bundle/glintlab_tests" --gtest_filter="$filter" > "$out/tests.log" 2>&1
         log "tests: exit $?"
         ;;
     table1)
-        bench table1 000 240 --res "$RES" --frames "$FRAMES" --warmup "$WARMUP" \
+        bench table1 000 120 --res "$RES" --frames "$FRAMES" --warmup "$WARMUP" \
             --scene PLANE_25 PLANE_90 SPHERE
-        bench table1 003 120 --table 003 --res "$RES" --frames "$FRAMES" --warmup "$WARMUP" \
+        bench table1 003 60 --table 003 --res "$RES" --frames "$FRAMES" --warmup "$WARMUP" \
             --log-density 8 20
         ;;
     *) log "unknown stage $stage (compile textured normal_maps lights tests table1)" ;;
