@@ -55,7 +55,7 @@ bench() {
         return
     fi
     json=$(timeout "$limit" "$G" bench --gpu --json "$@" 2>&1 | tr -d '\n')
-    [[ $json == '{'* ]] || json="{\"error\":$(printf '%s' "${json:-timed out after $limit s}" |
+    [[ $json == '{'* ]] || json="{\"error\":$(printf '%s' "${json:-no output: a failure or the limit of $limit s}" |
         python3 -c 'import json,sys; print(json.dumps(sys.stdin.read()))')}"
     echo "{\"variant\":\"$tag\",\"result\":$json}" >> "$out/$file.jsonl"
 }
