@@ -10,8 +10,8 @@
 #   LD_LIBRARY_PATH=BUNDLE_DIR/lib BUNDLE_DIR/glintlab bench --gpu ...
 #   scripts/gpu_session.sh BUNDLE_DIR OUT_DIR    # or every check in one go
 #
-# With the test binary too, the bundle records this checkout's path
-# (BUNDLE_DIR/source_dir), which the tests have compiled in, so that
+# With the test binary too, the bundle records the source tree it was built
+# from (BUNDLE_DIR/source_dir), which the tests have compiled in, so that
 # gpu_session.sh can link it to the checkout there.
 #
 # The target must have the GL vendor-neutral dispatch (libglvnd: libEGL.so.1
@@ -31,7 +31,9 @@ strip "$out/glintlab"
 if [[ -n $tests ]]; then
     cp "$tests" "$out/glintlab_tests"
     strip "$out/glintlab_tests"
-    git rev-parse --show-toplevel > "$out/source_dir"
+    # The source tree the test binary was configured from (its CMakeCache).
+    sed -n 's/^CMAKE_HOME_DIRECTORY:INTERNAL=//p' "$(dirname "$tests")/CMakeCache.txt" \
+        > "$out/source_dir"
 fi
 # glibc and the GL vendor-neutral dispatch stay the target's own: the first
 # must match its loader, the second must reach its driver.
