@@ -538,6 +538,7 @@ struct GpuRenderer::Impl {
                                float(slopes.texture->height()));
             glProgramUniform1i(p, loc("u_normal_map_filtering"),
                                map->filtering == NormalMap::Filtering::None ? 1 : 0);
+            glProgramUniform1i(p, loc("u_normal_map_mixture"), map->mixture);
             // Models whose tables hold one α take the mean normal only
             // (glint_model_descriptor.h textured_roughness).
             glProgramUniform1i(p, loc("u_normal_map_widens_glint"),

@@ -55,6 +55,9 @@ uniform bool u_per_triangle_frame;  // meshes: SSBO; spheres: analytic vertex at
 // (GpuRenderer::cut_fragments, which the callers report).
 layout(std430, binding = 5) buffer LoopProbe { uint u_cut_fragments; };
 uniform int u_loop_probe;
+#ifdef GLINTLAB_NORMAL_MAP_MIXTURE
+uniform int u_normal_map_mixture;  // "mixture": k of the k x k sub-footprints
+#endif
 // A closed surface (realtime/gpu_geometry.h): the environment below its
 // geometric tangent plane is occluded by the surface itself.
 uniform bool u_closed_surface;
@@ -415,7 +418,9 @@ void main() {
         // CPU draws one per pixel sample). The lights and the glint model
         // keep the whole footprint. The loop's body, left unindented, runs to
         // the end of the light loops.
-        const int kMixtureCells = GLINTLAB_NORMAL_MAP_MIXTURE * GLINTLAB_NORMAL_MAP_MIXTURE;
+        // k as a uniform: a trip count no compiler can unroll (the loop's body
+        // is the whole light shading).
+        const int kMixtureCells = u_normal_map_mixture * u_normal_map_mixture;
         vec3 unshaded_radiance = radiance;
         radiance = vec3(0.0f);
         SurfaceMaterial mixture_mat = mat;
@@ -432,7 +437,7 @@ void main() {
         g_glint_alpha = mixture_glint_alpha;
         g_alpha = mixture_alpha;
         g_glint_slope_correlation = mixture_correlation;
-        normal_map_shade(footprint_cell(fp, cell, GLINTLAB_NORMAL_MAP_MIXTURE), back_side,
+        normal_map_shade(footprint_cell(fp, cell, u_normal_map_mixture), back_side,
                          v_dpdu.w < 0.0f ? -1.0f : 1.0f, wo_world, t, b, n, mat, glint_cov_xy);
 #elif defined(GLINTLAB_NORMAL_MAP)
         normal_map_shade(fp, back_side, v_dpdu.w < 0.0f ? -1.0f : 1.0f, wo_world, t, b, n,
