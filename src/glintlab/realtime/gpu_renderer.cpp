@@ -615,6 +615,10 @@ struct GpuRenderer::Impl {
                 glProgramUniform3fv(p, loc(name), static_cast<GLsizei>(v.size()),
                                     glm::value_ptr(v[0]));
         };
+        glProgramUniform1i(p, loc("u_point_light_count"),
+                           static_cast<GLint>(point_position.size()));
+        glProgramUniform1i(p, loc("u_directional_light_count"),
+                           static_cast<GLint>(dir_direction.size()));
         set("u_point_position", point_position);
         set("u_point_intensity", point_intensity);
         set("u_directional_direction", dir_direction);

@@ -76,10 +76,14 @@ uniform vec3 u_view_forward;
 #endif
 
 #if GLINTLAB_POINT_LIGHTS > 0
+// The light loops run to these counts (GLINTLAB_*_LIGHTS, as uniforms): a
+// trip count no compiler unrolls, each iteration being a whole shading.
+uniform int u_point_light_count;
 uniform vec3 u_point_position[GLINTLAB_POINT_LIGHTS];
 uniform vec3 u_point_intensity[GLINTLAB_POINT_LIGHTS];
 #endif
 #if GLINTLAB_DIRECTIONAL_LIGHTS > 0
+uniform int u_directional_light_count;
 uniform vec3 u_directional_direction[GLINTLAB_DIRECTIONAL_LIGHTS];  // towards the light
 uniform vec3 u_directional_irradiance[GLINTLAB_DIRECTIONAL_LIGHTS];
 #endif
@@ -461,7 +465,7 @@ void main() {
                                                    back_side ? -1.0f : 1.0f);
 #endif
 #if GLINTLAB_POINT_LIGHTS > 0
-        for (int i = 0; i < GLINTLAB_POINT_LIGHTS; ++i) {
+        for (int i = 0; i < u_point_light_count; ++i) {
             vec3 d = u_point_position[i] - p;
 #ifdef GLINTLAB_GLINT_SHADES_AREA_LIGHTS
             if (u_material_type == 4 && u_point_radius[i] > 0.0f) {
@@ -517,7 +521,7 @@ void main() {
         radiance += environment_lighting(mat, wo, t, b, n, fp, horizon);
 #endif
 #if GLINTLAB_DIRECTIONAL_LIGHTS > 0
-        for (int i = 0; i < GLINTLAB_DIRECTIONAL_LIGHTS; ++i) {
+        for (int i = 0; i < u_directional_light_count; ++i) {
             vec3 w = u_directional_direction[i];
 #ifdef GLINTLAB_GLINT_SHADES_AREA_LIGHTS
             if (u_material_type == 4 && u_directional_solid_angle[i] > 0.0f) {
