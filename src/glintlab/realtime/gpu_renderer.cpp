@@ -538,6 +538,7 @@ struct GpuRenderer::Impl {
                                float(slopes.texture->height()));
             glProgramUniform1i(p, loc("u_normal_map_filtering"),
                                map->filtering == NormalMap::Filtering::None ? 1 : 0);
+            glProgramUniform1i(p, loc("u_normal_map_mixture"), map->mixture);
             // Models whose tables hold one α take the mean normal only
             // (glint_model_descriptor.h textured_roughness).
             glProgramUniform1i(p, loc("u_normal_map_widens_glint"),
@@ -614,6 +615,10 @@ struct GpuRenderer::Impl {
                 glProgramUniform3fv(p, loc(name), static_cast<GLsizei>(v.size()),
                                     glm::value_ptr(v[0]));
         };
+        glProgramUniform1i(p, loc("u_point_light_count"),
+                           static_cast<GLint>(point_position.size()));
+        glProgramUniform1i(p, loc("u_directional_light_count"),
+                           static_cast<GLint>(dir_direction.size()));
         set("u_point_position", point_position);
         set("u_point_intensity", point_intensity);
         set("u_directional_direction", dir_direction);

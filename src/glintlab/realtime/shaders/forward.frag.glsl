@@ -55,6 +55,9 @@ uniform bool u_per_triangle_frame;  // meshes: SSBO; spheres: analytic vertex at
 // (GpuRenderer::cut_fragments, which the callers report).
 layout(std430, binding = 5) buffer LoopProbe { uint u_cut_fragments; };
 uniform int u_loop_probe;
+#ifdef GLINTLAB_NORMAL_MAP_MIXTURE
+uniform int u_normal_map_mixture;  // "mixture": k of the k x k sub-footprints
+#endif
 // A closed surface (realtime/gpu_geometry.h): the environment below its
 // geometric tangent plane is occluded by the surface itself.
 uniform bool u_closed_surface;
@@ -73,10 +76,14 @@ uniform vec3 u_view_forward;
 #endif
 
 #if GLINTLAB_POINT_LIGHTS > 0
+// The light loops run to these counts (GLINTLAB_*_LIGHTS, as uniforms): a
+// trip count no compiler unrolls, each iteration being a whole shading.
+uniform int u_point_light_count;
 uniform vec3 u_point_position[GLINTLAB_POINT_LIGHTS];
 uniform vec3 u_point_intensity[GLINTLAB_POINT_LIGHTS];
 #endif
 #if GLINTLAB_DIRECTIONAL_LIGHTS > 0
+uniform int u_directional_light_count;
 uniform vec3 u_directional_direction[GLINTLAB_DIRECTIONAL_LIGHTS];  // towards the light
 uniform vec3 u_directional_irradiance[GLINTLAB_DIRECTIONAL_LIGHTS];
 #endif
@@ -415,7 +422,9 @@ void main() {
         // CPU draws one per pixel sample). The lights and the glint model
         // keep the whole footprint. The loop's body, left unindented, runs to
         // the end of the light loops.
-        const int kMixtureCells = GLINTLAB_NORMAL_MAP_MIXTURE * GLINTLAB_NORMAL_MAP_MIXTURE;
+        // k as a uniform: a trip count no compiler can unroll (the loop's body
+        // is the whole light shading).
+        const int kMixtureCells = u_normal_map_mixture * u_normal_map_mixture;
         vec3 unshaded_radiance = radiance;
         radiance = vec3(0.0f);
         SurfaceMaterial mixture_mat = mat;
@@ -432,7 +441,7 @@ void main() {
         g_glint_alpha = mixture_glint_alpha;
         g_alpha = mixture_alpha;
         g_glint_slope_correlation = mixture_correlation;
-        normal_map_shade(footprint_cell(fp, cell, GLINTLAB_NORMAL_MAP_MIXTURE), back_side,
+        normal_map_shade(footprint_cell(fp, cell, u_normal_map_mixture), back_side,
                          v_dpdu.w < 0.0f ? -1.0f : 1.0f, wo_world, t, b, n, mat, glint_cov_xy);
 #elif defined(GLINTLAB_NORMAL_MAP)
         normal_map_shade(fp, back_side, v_dpdu.w < 0.0f ? -1.0f : 1.0f, wo_world, t, b, n,
@@ -456,7 +465,7 @@ void main() {
                                                    back_side ? -1.0f : 1.0f);
 #endif
 #if GLINTLAB_POINT_LIGHTS > 0
-        for (int i = 0; i < GLINTLAB_POINT_LIGHTS; ++i) {
+        for (int i = 0; i < u_point_light_count; ++i) {
             vec3 d = u_point_position[i] - p;
 #ifdef GLINTLAB_GLINT_SHADES_AREA_LIGHTS
             if (u_material_type == 4 && u_point_radius[i] > 0.0f) {
@@ -512,7 +521,7 @@ void main() {
         radiance += environment_lighting(mat, wo, t, b, n, fp, horizon);
 #endif
 #if GLINTLAB_DIRECTIONAL_LIGHTS > 0
-        for (int i = 0; i < GLINTLAB_DIRECTIONAL_LIGHTS; ++i) {
+        for (int i = 0; i < u_directional_light_count; ++i) {
             vec3 w = u_directional_direction[i];
 #ifdef GLINTLAB_GLINT_SHADES_AREA_LIGHTS
             if (u_material_type == 4 && u_directional_solid_angle[i] > 0.0f) {
