@@ -17,6 +17,7 @@ import {leanTexture} from './normal_map.js';
 const HOST_PARAMS = {
   chermain2020: {
     slope_correlation: {uniform: 'u_chermain2020_correlated', value: (v) => (v === 'chermain2021' ? 1 : 0)},
+    masking: {uniform: 'u_glint_g2', value: (v) => (v === 'v_cavity' ? 1 : 0)},
   },
   deliot2023: {
     gaussian: {uniform: 'u_deliot2023_conditional', value: (v) => (v === 'conditional' ? 1 : 0)},
@@ -266,9 +267,9 @@ export class ExportedModel {
     const eta = fresnel.eta ?? 1.5;
     set('u_fresnel_eta', Array.isArray(eta) ? eta : [eta, eta, eta]);
     set('u_fresnel_k', fresnel.k ?? [0, 0, 0]);
-    // chermain2020's P-NDF has the V-cavity masking (004 Eq. 14-16), every
-    // other model the height-correlated Smith G2 (the export's header).
-    set('u_glint_g2', this.name === 'chermain2020' ? 1 : 0);
+    // The height-correlated Smith G2 (the export's header); chermain2020's
+    // "masking" parameter sets its V-cavity one (004 Eq. 14-16) below.
+    set('u_glint_g2', 0);
     const l = state.light;
     set('u_directional_count', l.on && part !== 'environment' ? 1 : 0);
     set('u_directional_direction', normalize3(l.direction));

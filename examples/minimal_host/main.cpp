@@ -541,7 +541,6 @@ int run(int argc, char** argv) {
     for (const auto& [name, value] : manifest.at("material").at("uniforms").items())
         set_uniform(program, types, name, value);
     if (argc >= 7) set_uniform(program, types, "u_glint_log_density", log_density);
-    set_uniform(program, types, "u_glint_g2", model == "chermain2020" ? 1 : 0);
     // One directional light towards (0.3, 0.8, 0.5), irradiance 2.
     const Vec3 l = normalize({0.3f, 0.8f, 0.5f});
     set_uniform(program, types, "u_directional_count", 1);

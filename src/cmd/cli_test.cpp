@@ -163,6 +163,9 @@ TEST(Cli, InfoListsModelsAndHelpWorks) {
     const RunResult info = run_cli("info");
     EXPECT_EQ(info.status, 0);
     EXPECT_NE(info.output.find("smooth"), std::string::npos) << info.output;
+    EXPECT_NE(info.output.find("not log_density, roughness, base_albedo: its quadtree"),
+              std::string::npos)
+        << info.output;
     const RunResult help = run_cli("render --help");
     EXPECT_EQ(help.status, 0);
     EXPECT_NE(help.output.find("--spp"), std::string::npos) << help.output;

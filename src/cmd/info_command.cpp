@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 #include <nlohmann/json.hpp>
 
 #include "commands.h"
@@ -59,6 +60,14 @@ void print_text() {
     fmt::print("glint models:\n");
     for (const GlintModelDescriptor& m : glint_models())
         fmt::print("  {:<14} {:<8} {}\n", m.name, backends(m), m.description);
+    fmt::print(
+        "texture inputs (a map in place of the number; docs/SCENE_FORMAT.md \"Textures\"):\n");
+    for (const GlintModelDescriptor& m : glint_models()) {
+        const GlintTextureInputs t = glint_texture_inputs(m);
+        fmt::print("  {:<14} {}\n", m.name, fmt::join(t.keys, ", "));
+        if (!t.refused.empty())
+            fmt::print("  {:<14} not {}: {}\n", "", fmt::join(t.refused, ", "), t.reason);
+    }
 }
 
 void print_json() {

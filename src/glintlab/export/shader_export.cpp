@@ -273,10 +273,8 @@ std::string header(const GlintModelDescriptor& d, ExportLanguage lang, const std
         "  u_fresnel_mode            int 0 none, 1 Schlick (u_fresnel_f0), 2 conductor\n"
         "                            (u_fresnel_eta, u_fresnel_k), 3 dielectric (u_fresnel_eta.x)\n"
         "  u_glint_g2                int masking: 0 Smith height-correlated, 1 V-cavity\n";
-    const std::vector<std::string> v_cavity =
-        model_names([](const GlintModelDescriptor& m) { return glint_g2_mode(m.id) == 1; });
-    h += fmt::format("                            ({} use{} 1, every other model 0)\n",
-                     fmt::join(v_cavity, ", "), v_cavity.size() == 1 ? "s" : "");
+    h += "                            (the manifest's material value; 1 only for\n"
+         "                            chermain2020's \"masking\": \"v_cavity\", 004)\n";
     h += "  u_directional_count       int <= GLINT_MAX_LIGHTS; u_directional_direction[i]\n"
          "                            (towards the light, unit), u_directional_irradiance[i]\n"
          "  u_point_count             int <= GLINT_MAX_LIGHTS; u_point_position[i],\n"
@@ -721,7 +719,8 @@ std::vector<ExportedFile> export_model(const ExportOptions& o) {
           {"u_fresnel_mode", static_cast<int>(g.fresnel.mode)},
           {"u_fresnel_f0", v3(g.fresnel.f0)},
           {"u_fresnel_eta", v3(g.fresnel.eta)},
-          {"u_fresnel_k", v3(g.fresnel.k)}}}};
+          {"u_fresnel_k", v3(g.fresnel.k)},
+          {"u_glint_g2", glint_g2_mode(g)}}}};
     // The per-pixel material inputs (glint_export.frag.glsl GlintInputs,
     // docs/INTEGRATION.md "Per-pixel material inputs").
     nlohmann::json inputs = nlohmann::json::array();

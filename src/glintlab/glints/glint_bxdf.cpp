@@ -65,7 +65,7 @@ shader::GlintMaterial material(const GlintDesc& desc) {
     m.alpha_x = desc.alpha_x;
     m.alpha_y = desc.alpha_y;
     m.rho = desc.slope_correlation;
-    m.g2 = glint_g2_mode(desc.model_id);
+    m.g2 = glint_g2_mode(desc);
     return m;
 }
 
@@ -77,10 +77,10 @@ glm::vec3 glint_fresnel(const FresnelDesc& fresnel, float cos_oh) {
     return shader::glint_fresnel(material(desc), cos_oh);
 }
 
-int glint_g2_mode(GlintModelId model) {
-    return with_kernel(model, []<class K>(K) {
-        if constexpr (requires { K::v_cavity_masking; })
-            if (K::v_cavity_masking) return shader::GLINT_G2_VCAVITY;
+int glint_g2_mode(const GlintDesc& desc) {
+    return with_kernel(desc.model_id, [&]<class K>(K) {
+        if constexpr (requires { K::v_cavity_masking(desc); })
+            if (K::v_cavity_masking(desc)) return shader::GLINT_G2_VCAVITY;
         return shader::GLINT_G2_SMITH_CORRELATED;
     });
 }

@@ -33,9 +33,10 @@ namespace glintlab {
 struct GlintDesc;
 struct FresnelDesc;
 
-// The masking-shadowing G2 of `model` (material.glsl GLINT_G2_*): the CPU's
-// GlintBxdf and the GPU's u_glint_g2 both take it from here.
-int glint_g2_mode(GlintModelId model);
+// The masking-shadowing G2 of a glint material (material.glsl GLINT_G2_*):
+// the CPU's GlintBxdf, the GPU's u_glint_g2 and an export's manifest all
+// take it from here.
+int glint_g2_mode(const GlintDesc& desc);
 
 // F(cos) of a material's Fresnel description (material.glsl glint_fresnel):
 // models that apply F inside their own integrals (wang2020's M, 001 Eq. 11)

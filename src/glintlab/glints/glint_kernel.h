@@ -11,7 +11,8 @@
 //   optional<vec3> sample_wi(desc, wo, uc, u) and float lobe_pdf(desc, wo, wi):
 //       the model's own sampling of the glint lobe with a footprint (both or
 //       neither; default: the smooth visible normals)
-//   constexpr bool v_cavity_masking = true: V-cavity G2 (default: Smith)
+//   bool v_cavity_masking(desc): true where the material takes the V-cavity G2
+//       (default: Smith)
 // An empty struct is the smooth limit D.
 #pragma once
 

@@ -23,9 +23,9 @@
 #include "glintlab/microfacet/masking.glsl"
 #include "glintlab/microfacet/ndf.glsl"
 
-// The model's masking-shadowing (glint_g2_mode in glint_bxdf.h): chermain2020's
-// P-NDF has no Smith masking, it uses the V-cavity one (004 Eq. 14-16); the
-// others the height-correlated Smith G2 of the smooth NDF.
+// The material's masking-shadowing (glint_g2_mode in glint_bxdf.h): the
+// height-correlated Smith G2 of the smooth NDF, or the V-cavity G2 that
+// chermain2020 takes as published (004 Eq. 14-16; its "masking" key).
 const int GLINT_G2_SMITH_CORRELATED = 0;
 const int GLINT_G2_VCAVITY = 1;
 

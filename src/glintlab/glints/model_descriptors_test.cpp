@@ -5,10 +5,12 @@
 // error naming the model, the light and the models that can shade it.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <set>
 #include <sstream>
+#include <string>
 #include <string_view>
 #include <type_traits>
 #include <utility>
@@ -337,6 +339,30 @@ TEST(ModelDescriptors, EveryParameterIsInThePanelModelAndInfoJson) {
             }
         }
     }
+}
+
+// Which keys take a texture comes from the descriptor's flags: `info` and
+// its JSON list them, with the reason for those a model refuses.
+TEST(ModelDescriptors, TextureInputsFollowTheDescriptorsFlags) {
+    for (const GlintModelDescriptor& m : glint_models()) {
+        SCOPED_TRACE(m.name);
+        const GlintTextureInputs t = glint_texture_inputs(m);
+        EXPECT_EQ(t.keys.size() + t.refused.size(), 5u);
+        const auto has = [&](const char* key) {
+            return std::find(t.keys.begin(), t.keys.end(), key) != t.keys.end();
+        };
+        EXPECT_EQ(has("log_density"), m.textured_density);
+        EXPECT_EQ(has("roughness"), m.textured_roughness);
+        EXPECT_TRUE(has("color") && has("normal_map"));
+        EXPECT_EQ(t.refused.empty(), t.reason.empty());
+        const nlohmann::json j = glint_model_to_json(m);
+        EXPECT_EQ(j.at("texture_inputs"), nlohmann::json(t.keys));
+        EXPECT_EQ(j.contains("texture_refused"), !t.refused.empty());
+    }
+    const GlintTextureInputs wang = glint_texture_inputs(*find_glint_model("wang2020"));
+    EXPECT_EQ(wang.keys, std::vector<std::string>({"color", "normal_map"}));
+    EXPECT_NE(wang.reason.find("quadtree tables"), std::string::npos) << wang.reason;
+    EXPECT_TRUE(glint_texture_inputs(*find_glint_model("deliot2023")).refused.empty());
 }
 
 // Colour lists outside the table: read from the scene file, exposed to the

@@ -152,9 +152,29 @@ nlohmann::json glint_model_to_json(const GlintModelDescriptor& m) {
     j["extra_keys"] = nlohmann::json::array();
     for (const GlintExtraKey& k : m.extra_keys)
         j["extra_keys"].push_back({{"key", k.key}, {"doc", k.doc}});
+    const GlintTextureInputs textures = glint_texture_inputs(m);
+    j["texture_inputs"] = textures.keys;
+    if (!textures.refused.empty())
+        j["texture_refused"] = {{"keys", textures.refused}, {"reason", textures.reason}};
     j["validation_suite"] =
         m.validation.name.empty() ? nlohmann::json() : nlohmann::json(m.validation.name);
     return j;
+}
+
+GlintTextureInputs glint_texture_inputs(const GlintModelDescriptor& m) {
+    GlintTextureInputs t;
+    auto take = [&](const char* key, bool reads) { (reads ? t.keys : t.refused).push_back(key); };
+    take("log_density", m.textured_density);
+    take("roughness", m.textured_roughness);
+    take("color", true);
+    // Models that shade lights themselves have no diffuse base (registry.cpp).
+    take("base_albedo", m.shades_light == nullptr);
+    take("normal_map", true);
+    std::vector<std::string> reasons;
+    if (!m.textured_density || !m.textured_roughness) reasons.push_back(m.untextured_reason);
+    if (m.shades_light != nullptr) reasons.push_back("it shades its lights without a diffuse base");
+    t.reason = fmt::format("{}", fmt::join(reasons, "; "));
+    return t;
 }
 
 std::vector<std::string> model_doc_sections() {

@@ -19,8 +19,17 @@ struct GlintModelDescriptor;
 
 // A descriptor as JSON: name, description, citations, lights, back ends,
 // parameters (key, type, default, range with open/closed ends, unit, doc,
-// choices), extra keys, validation suite.
+// choices), extra keys, texture inputs, validation suite.
 nlohmann::json glint_model_to_json(const GlintModelDescriptor& model);
+
+// The glint material keys a model reads from a texture (docs/MODELS.md,
+// "Textured parameters"), in the scene format's order; with its reason for
+// the keys it does not read (empty when it reads them all).
+struct GlintTextureInputs {
+    std::vector<std::string> keys, refused;
+    std::string reason;
+};
+GlintTextureInputs glint_texture_inputs(const GlintModelDescriptor& model);
 
 // The sections `glintlab info --markdown` prints.
 std::vector<std::string>

@@ -363,9 +363,11 @@ UvProjection read_uv_projection(JsonObject& o) {
 }
 
 // A mesh in world space with the checks and tangents its material needs.
+// `uv_source`: where the uvs were to come from (a glTF file's TEXCOORD_n),
+// named in the error when the mesh lacks them; empty for other sources.
 void finish_mesh(JsonObject& o, LoadContext& ctx, TriangleMesh& mesh, int material,
                  const Transform& transform, const std::optional<UvProjection>& uv,
-                 const std::string& where) {
+                 const std::string& where, const std::string& uv_source = "") {
     if (uv) {
         project_uvs(mesh, *uv);
         mesh.tangents.clear();  // a file's tangents follow its own uvs
@@ -376,11 +378,12 @@ void finish_mesh(JsonObject& o, LoadContext& ctx, TriangleMesh& mesh, int materi
     if (m.needs_uv() && !mesh.has_uvs())
         o.error(o.has("material") ? "material" : "file",
                 fmt::format("material \"{}\" {} and needs a uv parameterization, but this mesh "
-                            "has no uvs (give it one with \"uv\": {{\"projection\": ...}})",
+                            "has no uvs{} (give it one with \"uv\": {{\"projection\": ...}})",
                             m.name,
                             m.type == MaterialDesc::Type::Glint
                                 ? "is a glint material"
-                                : fmt::format("reads {} from textures", textured_keys(m))));
+                                : fmt::format("reads {} from textures", textured_keys(m)),
+                            uv_source.empty() ? std::string() : fmt::format(" ({})", uv_source)));
     // The file's tangents (glTF TANGENT) when it has them; else MikkTSpace's
     // convention, generated.
     if (m.normal_map && mesh.tangents.empty()) {
@@ -452,7 +455,9 @@ void read_gltf_shape_with_file_materials(JsonObject& o, LoadContext& ctx, const 
         shape.name = ctx.scene->materials.back().name;
         shape.material = static_cast<int>(ctx.scene->materials.size()) - 1;
         const std::string where = fmt::format("{}: {} ({})", o.file(), o.path(), shape.name);
-        finish_mesh(o, ctx, part.mesh, shape.material, transform, uv, where);
+        finish_mesh(o, ctx, part.mesh, shape.material, transform, uv, where,
+                    fmt::format("{} has no TEXCOORD_{}, the set its material reads", path.string(),
+                                file_material.uv_set));
         shape.geometry = std::move(part.mesh);
         ctx.scene->shapes.push_back(std::move(shape));
     }

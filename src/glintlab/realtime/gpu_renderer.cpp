@@ -458,7 +458,7 @@ struct GpuRenderer::Impl {
         glProgramUniform3fv(p, loc("u_fresnel_f0"), 1, glm::value_ptr(g.fresnel.f0));
         glProgramUniform3fv(p, loc("u_fresnel_eta"), 1, glm::value_ptr(g.fresnel.eta));
         glProgramUniform3fv(p, loc("u_fresnel_k"), 1, glm::value_ptr(g.fresnel.k));
-        glProgramUniform1i(p, loc("u_glint_g2"), glint_g2_mode(g.model_id));
+        glProgramUniform1i(p, loc("u_glint_g2"), glint_g2_mode(g));
         // Programs with a per-fragment α (textures, a normal map, curvature):
         // the model shears its target by the slopes' correlation.
         const GlintModelDescriptor& model = glint_model(g.model_id);

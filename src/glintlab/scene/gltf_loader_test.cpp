@@ -341,6 +341,37 @@ TEST_F(MeshGltf, FileMaterialsRenderAsTheSameMaterialWrittenInTheScene) {
     EXPECT_GT(sum, 0.0);
 }
 
+// A file material reading a uv set its primitive lacks: the error names the
+// set and the option that gives the mesh uvs.
+TEST_F(MeshGltf, AMissingUvSetIsNamedInTheError) {
+    write_test_png(dir_ / "colour.png");
+    Asset a = quad_asset(kU16);
+    a.doc["nodes"] = json::array({{{"mesh", 0}}});
+    a.doc["meshes"][0]["primitives"][0]["material"] = 0;
+    a.doc["materials"] = json::array(
+        {{{"name", "paint"},
+          {"pbrMetallicRoughness", {{"baseColorTexture", {{"index", 0}, {"texCoord", 1}}}}}}});
+    a.doc["textures"] = json::array({{{"source", 0}}});
+    a.doc["images"] = json::array({{{"uri", "colour.png"}}});
+    write_gltf("paint.gltf", a);
+    const json scene = {
+        {"film", {{"width", 8}, {"height", 8}}},
+        {"camera", {{"eye", {0.5, 0.5, 2}}, {"target", {0.5, 0.5, 0}}, {"fov_deg", 40}}},
+        {"shapes", {{{"type", "gltf"}, {"file", "paint.gltf"}}}},
+        {"lights", {{{"type", "environment"}, {"radiance", 1}}}}};
+    try {
+        parse_scene(scene, dir_ / "scene.json");
+        ADD_FAILURE() << "no error";
+    } catch (const Error& e) {
+        const std::string message = e.what();
+        EXPECT_NE(message.find("paint.gltf has no TEXCOORD_1, the set its material reads) (give "
+                               "it one with \"uv\""),
+                  std::string::npos)
+            << message;
+        EXPECT_NE(message.find("/shapes/0/file"), std::string::npos) << message;
+    }
+}
+
 // glTF TANGENT: read, mapped by the node transform (a mirror flips w), and
 // kept as the normal map's tangent space instead of generated ones.
 TEST_F(MeshGltf, FileTangentsAreTransformedAndKeptForNormalMaps) {

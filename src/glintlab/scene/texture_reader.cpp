@@ -59,7 +59,11 @@ TextureSource read_texture_source(JsonObject& b, TextureFileCache& files) {
         source.image = it->second;
     } else {
         source.file = b.file_path("texture");
-        source.image = load(source.file, files);
+        try {
+            source.image = load(source.file, files);
+        } catch (const Error& e) {
+            b.error("texture", e.what());  // the image's own error, under the JSON path
+        }
     }
     return source;
 }

@@ -5,7 +5,15 @@
 #include <unistd.h>
 #include <cmath>
 #include <filesystem>
+#include <fstream>
 #include <string>
+#include <utility>
+#include <vector>
+
+#include <OpenEXR/ImfChannelList.h>
+#include <OpenEXR/ImfFrameBuffer.h>
+#include <OpenEXR/ImfHeader.h>
+#include <OpenEXR/ImfOutputFile.h>
 
 #include <nlohmann/json.hpp>
 
@@ -195,6 +203,44 @@ TEST(TextureReader, ErrorsNameTheFileTheJsonPathAndTheRange) {
         EXPECT_NE(std::string(e.what()).find("reads roughness from a texture"), std::string::npos)
             << e.what();
     }
+}
+
+// A file's own defects: a non-finite texel (EXR holds NaN and Inf) and a
+// format no reader takes are errors naming the file, the texel or the
+// formats, and the JSON path that asked for the texture.
+TEST(TextureReader, NonFiniteTexelsAndUnsupportedFormatsAreErrors) {
+    const TextureScene t;
+    // write_exr refuses such pixels: OpenEXR's own writer, one channel.
+    auto write_raw_exr = [&](const char* name, int x, int y, float value) {
+        std::vector<float> texels(9, 0.2f);
+        texels[size_t(3 * y + x)] = value;
+        Imf::Header header(3, 3);
+        header.channels().insert("Y", Imf::Channel(Imf::FLOAT));
+        Imf::FrameBuffer frame;
+        frame.insert("Y", Imf::Slice(Imf::FLOAT, reinterpret_cast<char*>(texels.data()),
+                                     sizeof(float), 3 * sizeof(float)));
+        Imf::OutputFile out((t.dir / name).c_str(), header);
+        out.setFrameBuffer(frame);
+        out.writePixels(3);
+    };
+    write_raw_exr("nan.exr", 2, 1, std::nanf(""));
+    write_raw_exr("inf.exr", 0, 2, INFINITY);
+    for (const auto& [file, texel] : {std::pair{"nan.exr", "x=2, y=1"}, {"inf.exr", "x=0, y=2"}}) {
+        const std::string e = t.error({{"type", "glint"}, {"roughness", {{"texture", file}}}});
+        EXPECT_NE(e.find(file), std::string::npos) << e;
+        EXPECT_NE(e.find(texel), std::string::npos) << e;
+        EXPECT_NE(e.find("non-finite"), std::string::npos) << e;
+        EXPECT_NE(e.find("/materials/0/roughness"), std::string::npos) << e;
+    }
+    {
+        std::ofstream tga(t.dir / "tiles.tga", std::ios::binary);
+        tga << std::string(64, '\0');
+    }
+    const std::string format =
+        t.error({{"type", "diffuse"}, {"albedo", {{"texture", "tiles.tga"}}}});
+    EXPECT_NE(format.find("tiles.tga"), std::string::npos) << format;
+    EXPECT_NE(format.find("/materials/0/albedo"), std::string::npos) << format;
+    EXPECT_NE(format.find(".png"), std::string::npos) << format;  // names what it reads
 }
 
 // kneiphof2025's maps, tables and grids read α and ln N per hit, so it

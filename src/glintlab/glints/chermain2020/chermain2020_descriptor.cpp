@@ -90,6 +90,9 @@ GlintModelDescriptor chermain2020_descriptor() {
         gp::number("antialiasing_kernel", &P::antialiasing_kernel, 0.25, 4.0, "",
                    "the box's width in the half vector's slope sweep per pixel step "
                    "(Chermain et al. 2021's KernelSize)"),
+        gp::choice("masking", &P::v_cavity_masking, {{"smith", false}, {"v_cavity", true}},
+                   "masking-shadowing: the height-correlated Smith G2 of the target NDF, as "
+                   "the ground truth's facets, or 004's V-cavity G2 (Eq. 14-16)"),
     };
     d.reads_slope_correlation = [](const GlintDesc& g) {
         return std::get<P>(g.params).slope_correlation;

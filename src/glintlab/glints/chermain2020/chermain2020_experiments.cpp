@@ -194,10 +194,12 @@ double chermain2020_reciprocity(int pairs, uint64_t seed) {
     desc.model_id = GlintModelId::Chermain2020;
     desc.fresnel.mode = FresnelDesc::Mode::Schlick;
     desc.fresnel.f0 = glm::vec3(0.9f, 0.6f, 0.3f);
-    desc.params = Chermain2020Params{};
     Pcg32 rng(0x77u, seed);
     double worst = 0.0;
     for (int k = 0; k < pairs; ++k) {
+        Chermain2020Params params;
+        params.v_cavity_masking = k % 2 == 1;  // both masking choices, alternately
+        desc.params = params;
         desc.alpha_x = 0.05f + 0.6f * rng.next_float();
         desc.alpha_y = 0.05f + 0.6f * rng.next_float();
         desc.log_density = 10.0f + 30.0f * rng.next_float();

@@ -4,8 +4,8 @@
 // realtime/glint_programs.cpp (glint_model_glue_path selects this file),
 //     vec3 glint_ndf(vec3 h, Footprint fp);  // D_P(h), RGB (glints/material.glsl)
 // RGB D_P of Eq. 13 with the colour table, the dictionary through
-// chermain2020.glsl's own sampler `chermain2020_dictionary` (its V-cavity
-// masking, 004 Eq. 14-16, is material.glsl's GLINT_G2_VCAVITY).
+// chermain2020.glsl's own sampler `chermain2020_dictionary` (its masking,
+// Smith or 004 Eq. 14-16's V-cavity, is material.glsl's GLINT_G2_*).
 #ifndef GLINTLAB_GLINTS_CHERMAIN2020_CHERMAIN2020_GPU_GLSL
 #define GLINTLAB_GLINTS_CHERMAIN2020_CHERMAIN2020_GPU_GLSL
 

@@ -1,7 +1,8 @@
 // GlintBxdf's hooks of chermain2020 (glints/glint_kernel.h): D_P, its
-// per-channel form (the colour table, 004 §7.1) and V-cavity masking (004
-// §7; material.glsl GLINT_G2_VCAVITY, the GPU's too), with the pixel's view
-// differentials for Chermain et al. 2021's geometric glint anti-aliasing.
+// per-channel form (the colour table, 004 §7.1) and its masking choice
+// (Smith, or 004 §7's V-cavity: material.glsl GLINT_G2_*, the GPU's too),
+// with the pixel's view differentials for Chermain et al. 2021's geometric
+// glint anti-aliasing.
 #pragma once
 
 #include "glintlab/glints/chermain2020/chermain2020.h"
@@ -10,7 +11,9 @@
 namespace glintlab {
 
 struct Chermain2020Kernel {
-    static constexpr bool v_cavity_masking = true;
+    static bool v_cavity_masking(const GlintDesc& desc) {
+        return std::get<Chermain2020Params>(desc.params).v_cavity_masking;
+    }
     static float footprint_ndf(glm::vec3, glm::vec3, glm::vec3 h, const Footprint& footprint,
                                const ViewDifferentials* view, const GlintDesc& desc) {
         return chermain2020_footprint_ndf(h, footprint, desc, view);

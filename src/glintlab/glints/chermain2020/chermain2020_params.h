@@ -28,6 +28,10 @@ struct Chermain2020Params {
     // false, 004).
     bool antialiasing = false;
     float antialiasing_kernel = 1.0f;
+    // Masking-shadowing: the height-correlated Smith G2 of the target NDF
+    // ("smith", false), the ground truth's, or 004's V-cavity G2 (Eq. 14-16,
+    // "v_cavity", true), which departs from it at grazing angles.
+    bool v_cavity_masking = false;
     // Coloured glints (004 §7.1, Alg. 3 lines 11-12, 19): each cell tints its
     // SDF with colour_table[floor(colour_count * U_c)]; 0 colours = white.
     int colour_count = 0;
