@@ -357,8 +357,8 @@ TEST_F(MeshGltf, AMissingUvSetIsNamedInTheError) {
     const json scene = {
         {"film", {{"width", 8}, {"height", 8}}},
         {"camera", {{"eye", {0.5, 0.5, 2}}, {"target", {0.5, 0.5, 0}}, {"fov_deg", 40}}},
-        {"shapes", {{{"type", "gltf"}, {"file", "paint.gltf"}}}},
-        {"lights", {{{"type", "environment"}, {"radiance", 1}}}}};
+        {"shapes", json::array({{{"type", "gltf"}, {"file", "paint.gltf"}}})},
+        {"lights", json::array({{{"type", "environment"}, {"radiance", 1}}})}};
     try {
         parse_scene(scene, dir_ / "scene.json");
         ADD_FAILURE() << "no error";
