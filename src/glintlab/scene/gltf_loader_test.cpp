@@ -160,6 +160,10 @@ class MeshGltf : public ::testing::Test {
         return path;
     }
 
+    // paint.gltf: one quad whose primitive takes `material`, which reads
+    // colour.png (written beside it) as texture 0.
+    void write_paint_quad(const json& material) const;
+
     // Binary glTF: 12-byte header, then a JSON chunk padded with spaces and a
     // BIN chunk padded with zeros, each to a multiple of 4 bytes.
     fs::path write_glb(const std::string& name, Asset a) const {
@@ -244,6 +248,17 @@ std::vector<uint8_t> write_test_png(const fs::path& path) {
     return std::vector<uint8_t>(std::istreambuf_iterator<char>(in), {});
 }
 
+void MeshGltf::write_paint_quad(const json& material) const {
+    write_test_png(dir_ / "colour.png");
+    Asset a = quad_asset(kU16);
+    a.doc["nodes"] = json::array({{{"mesh", 0}}});
+    a.doc["meshes"][0]["primitives"][0]["material"] = 0;
+    a.doc["materials"] = json::array({material});
+    a.doc["textures"] = json::array({{{"source", 0}}});
+    a.doc["images"] = json::array({{{"uri", "colour.png"}}});
+    write_gltf("paint.gltf", a);
+}
+
 // Primitives split into one part per material; each part's uvs are the set
 // its material's textures read; images in data uris are decoded, those in
 // files named by path. A shape with its own "material" still gets one mesh
@@ -289,21 +304,14 @@ TEST_F(MeshGltf, PrimitivesSplitByMaterialWithTheirUvSetAndImages) {
 // The file's material renders exactly as the same material written in the
 // scene: the translation is the scene format's own reading.
 TEST_F(MeshGltf, FileMaterialsRenderAsTheSameMaterialWrittenInTheScene) {
-    write_test_png(dir_ / "colour.png");
-    Asset a = quad_asset(kU16);
-    a.doc["nodes"] = json::array({{{"mesh", 0}}});
-    a.doc["meshes"][0]["primitives"][0]["material"] = 0;
-    a.doc["materials"] = json::array(
-        {{{"name", "paint"},
-          {"pbrMetallicRoughness",
-           {{"baseColorFactor", {0.8, 0.6, 0.9, 1.0}},
-            {"baseColorTexture",
-             {{"index", 0}, {"extensions", {{"KHR_texture_transform", {{"scale", {2, 2}}}}}}}},
-            {"roughnessFactor", 0.8},
-            {"metallicRoughnessTexture", {{"index", 0}}}}}}});
-    a.doc["textures"] = json::array({{{"source", 0}}});
-    a.doc["images"] = json::array({{{"uri", "colour.png"}}});
-    write_gltf("paint.gltf", a);
+    write_paint_quad(
+        {{"name", "paint"},
+         {"pbrMetallicRoughness",
+          {{"baseColorFactor", {0.8, 0.6, 0.9, 1.0}},
+           {"baseColorTexture",
+            {{"index", 0}, {"extensions", {{"KHR_texture_transform", {{"scale", {2, 2}}}}}}}},
+           {"roughnessFactor", 0.8},
+           {"metallicRoughnessTexture", {{"index", 0}}}}}});
     const json written = {
         {"name", "m"},
         {"type", "metallic_roughness"},
@@ -344,16 +352,9 @@ TEST_F(MeshGltf, FileMaterialsRenderAsTheSameMaterialWrittenInTheScene) {
 // A file material reading a uv set its primitive lacks: the error names the
 // set and the option that gives the mesh uvs.
 TEST_F(MeshGltf, AMissingUvSetIsNamedInTheError) {
-    write_test_png(dir_ / "colour.png");
-    Asset a = quad_asset(kU16);
-    a.doc["nodes"] = json::array({{{"mesh", 0}}});
-    a.doc["meshes"][0]["primitives"][0]["material"] = 0;
-    a.doc["materials"] = json::array(
-        {{{"name", "paint"},
-          {"pbrMetallicRoughness", {{"baseColorTexture", {{"index", 0}, {"texCoord", 1}}}}}}});
-    a.doc["textures"] = json::array({{{"source", 0}}});
-    a.doc["images"] = json::array({{{"uri", "colour.png"}}});
-    write_gltf("paint.gltf", a);
+    write_paint_quad(
+        {{"name", "paint"},
+         {"pbrMetallicRoughness", {{"baseColorTexture", {{"index", 0}, {"texCoord", 1}}}}}});
     const json scene = {
         {"film", {{"width", 8}, {"height", 8}}},
         {"camera", {{"eye", {0.5, 0.5, 2}}, {"target", {0.5, 0.5, 0}}, {"fov_deg", 40}}},
