@@ -167,7 +167,7 @@ GlintTextureInputs glint_texture_inputs(const GlintModelDescriptor& m) {
     take("log_density", m.textured_density);
     take("roughness", m.textured_roughness);
     take("color", true);
-    // Models that shade lights themselves have no diffuse base (registry.cpp).
+    // Models that shade lights themselves have no diffuse base (glint_reader.cpp refuses one).
     take("base_albedo", m.shades_light == nullptr);
     take("normal_map", true);
     std::vector<std::string> reasons;
