@@ -28,6 +28,8 @@ const TYPED = {
 };
 // Extensions the page reads; any other is named in a warning.
 const READ_EXTENSIONS = ['KHR_texture_transform', 'KHR_materials_ior'];
+const WRAP_REPEAT = 10497;
+const WRAP_MODES = [WRAP_REPEAT, 33071, 33648];  // REPEAT, CLAMP_TO_EDGE, MIRRORED_REPEAT
 
 // The texel bytes' colour decoding (IEC 61966-2-1).
 function srgbDecode(c) {
@@ -363,7 +365,8 @@ async function decodeImage(r, index, path) {
 function inputMap(texels, w, h, t) {
   const mean = [0, 0, 0, 0];
   for (let i = 0; i < w * h; ++i) for (let c = 0; c < 4; ++c) mean[c] += texels[4 * i + c];
-  return {texels, w, h, mean: mean.map((x) => x / (w * h)), linear: t.linear, offset: t.offset};
+  return {texels, w, h, mean: mean.map((x) => x / (w * h)), linear: t.linear, offset: t.offset,
+          wrap: t.wrap};
 }
 
 // A textureInfo's image and uv transform (st = linear uv + offset, the
@@ -385,7 +388,21 @@ async function textureOf(r, info, path) {
     texCoord = t.texCoord ?? texCoord;
   }
   if (texCoord !== 0) r.warnings.push(`${path}: TEXCOORD_${texCoord} read as TEXCOORD_0 (the page carries one uv set)`);
-  return {image: await decodeImage(r, texture.source, `textures[${info.index}].source`), linear, offset};
+  // The sampler's wrapS and wrapT, apart (glTF's values are WebGL's enums);
+  // an unknown value repeats, as the native loader reads it, and is named.
+  const wrap = [WRAP_REPEAT, WRAP_REPEAT];
+  if (texture.sampler !== undefined) {
+    const sampler = r.item('samplers', texture.sampler, `textures[${info.index}].sampler`);
+    ['wrapS', 'wrapT'].forEach((axis, i) => {
+      const mode = sampler[axis] ?? WRAP_REPEAT;
+      if (WRAP_MODES.includes(mode)) wrap[i] = mode;
+      else {
+        const w = `samplers[${texture.sampler}].${axis} ${JSON.stringify(mode)} is not a glTF wrap mode; read as repeat`;
+        if (!r.warnings.includes(w)) r.warnings.push(w);  // once, however many textures share it
+      }
+    });
+  }
+  return {image: await decodeImage(r, texture.source, `textures[${info.index}].source`), linear, offset, wrap};
 }
 
 // Each material as the glint inputs the page feeds the export, as the

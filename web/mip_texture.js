@@ -27,8 +27,9 @@ function mipLevels(texels, w, h) {
 
 // RGBA32F where OES_texture_float_linear makes it filterable, else RGBA16F
 // (filterable in every WebGL2; `float32`: values past half floats' 65504,
-// an error without the extension); trilinear, repeating.
-export function uploadMipmapped(gl, texels, w, h, float32 = false) {
+// an error without the extension); trilinear; `wrap`: [wrap S, wrap T] as
+// WebGL enums (glTF samplers' values), repeating by default.
+export function uploadMipmapped(gl, texels, w, h, float32 = false, wrap = [gl.REPEAT, gl.REPEAT]) {
   const linear32 = gl.getExtension('OES_texture_float_linear') !== null;
   if (float32 && !linear32)
     throw new Error('this texture needs 32-bit float filtering (OES_texture_float_linear), ' +
@@ -40,8 +41,8 @@ export function uploadMipmapped(gl, texels, w, h, float32 = false) {
     gl.texImage2D(gl.TEXTURE_2D, i, format, l.w, l.h, 0, gl.RGBA, gl.FLOAT, l.data));
   gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_MIN_FILTER, gl.LINEAR_MIPMAP_LINEAR);
   gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_MAG_FILTER, gl.LINEAR);
-  gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_WRAP_S, gl.REPEAT);
-  gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_WRAP_T, gl.REPEAT);
+  gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_WRAP_S, wrap[0]);
+  gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_WRAP_T, wrap[1]);
   return t;
 }
 

@@ -335,7 +335,7 @@ export class ExportedModel {
       slots.forEach(([name, map, bit], i) => {
         if (!perPixel(bit, map) && !(bit === 4 && map)) return;
         gl.activeTexture(gl.TEXTURE0 + inputUnit + 1 + i);
-        gl.bindTexture(gl.TEXTURE_2D, oncePerContext(gl, map, () => uploadMipmapped(gl, map.texels, map.w, map.h)));
+        gl.bindTexture(gl.TEXTURE_2D, oncePerContext(gl, map, () => uploadMipmapped(gl, map.texels, map.w, map.h, false, map.wrap)));
         set(name, inputUnit + 1 + i);
         if (bit < 5) {
           linear[bit] = map.linear;

@@ -634,6 +634,42 @@ import('./gltf_asset.js').then(async ({readGlb, AssetError}) => {
 """
 
 
+# The asset with its textures' sampler replaced: first wrapS CLAMP_TO_EDGE
+# and wrapT MIRRORED_REPEAT, then wrapT 1234 (not a glTF mode); returns the
+# first material's colour map wraps and the second read's warnings.
+WRAP_SCRIPT = r"""
+const [b64, done] = arguments;
+import('./gltf_asset.js').then(async ({readGlb}) => {
+  const base = Uint8Array.from(atob(b64), (c) => c.charCodeAt(0));
+  const jlen = new DataView(base.buffer).getUint32(12, true);
+  const json = JSON.parse(new TextDecoder().decode(base.subarray(20, 20 + jlen)));
+  const bin = base.subarray(20 + jlen);
+  const glb = (j) => {
+    const t0 = new TextEncoder().encode(JSON.stringify(j));
+    const t = new Uint8Array(t0.length + (4 - t0.length % 4) % 4).fill(32); t.set(t0);
+    const out = new Uint8Array(20 + t.length + bin.length);
+    const v = new DataView(out.buffer);
+    v.setUint32(0, 0x46546c67, true); v.setUint32(4, 2, true); v.setUint32(8, out.length, true);
+    v.setUint32(12, t.length, true); v.setUint32(16, 0x4e4f534a, true);
+    out.set(t, 20); out.set(bin, 20 + t.length);
+    return out.buffer;
+  };
+  const read = async (wrapT) => {
+    const j = JSON.parse(JSON.stringify(json));
+    j.samplers = [{wrapS: 33071, wrapT}];
+    for (const t of j.textures) t.sampler = 0;
+    return readGlb(glb(j), 'samplers.glb');
+  };
+  try {
+    const apart = await read(33648), odd = await read(1234);
+    const color = (a) => a.parts.map((p) => p.material).find((m) => m.maps.color)?.maps.color.wrap;
+    done({wraps: [color(apart), color(odd)], warnings: odd.warnings});
+  } catch (e) {
+    done({error: String(e)});
+  }
+}, (e) => done({error: String(e)}));
+"""
+
 def test_asset(page, export_dir):
     """scenes/gltf/glint_tiles.glb (scripts/make_gltf_asset.py: a plate whose
     base colour is a blue/orange checker, with roughness and normal maps,
@@ -740,6 +776,15 @@ def test_asset(page, export_dir):
     print(f"{'ok  ' if good else 'FAIL'} asset mutations: {r['asset']} errors naming the file, "
           f"{r['ok']} read, {r['other']} other exceptions {r['examples']}")
     ok = ok and good
+    # Samplers: wrapS and wrapT reach the maps apart (as the native loader
+    # reads them); a value outside glTF's three is named and repeats.
+    r = page.driver.execute_async_script(WRAP_SCRIPT, glb_b64)
+    good = r.get("wraps") == [[33071, 33648], [33071, 10497]] and any(
+        "wrapT 1234 is not a glTF wrap mode" in w for w in r.get("warnings", [])) and sum(
+        "wrapT 1234" in w for w in r.get("warnings", [])) == 1
+    print(f"{'ok  ' if good else 'FAIL'} asset samplers: colour map wraps {r.get('wraps')}, "
+          f"warnings {r.get('warnings')} {r.get('error', '')}")
+    ok = ok and good
     # The same file by URL (`asset=`): fetched as the page starts, kept in
     # the page's own URL; a missing file is an error naming the parameter
     # and the HTTP status, and the page keeps drawing its shape.
@@ -754,6 +799,28 @@ def test_asset(page, export_dir):
     print(f"{'ok  ' if good else 'FAIL'} asset by URL {url}: "
           f"{r['asset']['triangles'] if r['asset'] else None} triangles, error {r['error']}, "
           f"URL keeps it: {f'asset={url}' in r['search']}")
+    ok = ok and good
+    # The same file dropped on the image (a DataTransfer carrying it, as a
+    # drag from the desktop delivers it).
+    page.open("model=smooth&w=128&h=96&env=0")
+    page.driver.execute_script(
+        "const bytes = Uint8Array.from(atob(arguments[0]), (c) => c.charCodeAt(0));"
+        "const dt = new DataTransfer();"
+        "dt.items.add(new File([bytes], 'dropped.glb', {type: 'model/gltf-binary'}));"
+        "document.getElementById('view').dispatchEvent("
+        "  new DragEvent('drop', {dataTransfer: dt, bubbles: true, cancelable: true}));",
+        glb_b64)
+    deadline, r = time.monotonic() + 40.0, {}
+    while time.monotonic() < deadline:
+        r = page.driver.execute_script(
+            "const g = window.glintlab; return {asset: g.asset, error: g.assetError, ready: g.ready};")
+        if r["error"] or (r["asset"] and r["asset"]["name"] == "dropped.glb" and r["ready"]):
+            break
+        time.sleep(0.05)
+    good = (not r.get("error") and r.get("asset") is not None
+            and r["asset"]["name"] == "dropped.glb" and r["asset"]["triangles"] == triangles)
+    print(f"{'ok  ' if good else 'FAIL'} asset dropped on the image: "
+          f"{r['asset']['triangles'] if r.get('asset') else None} triangles, error {r.get('error')}")
     ok = ok and good
     state, _ = page.open("model=smooth&w=128&h=96&env=0&asset=/gltf/missing.glb")
     r = page.driver.execute_script(

@@ -34,7 +34,7 @@ std::vector<Row> box_weights(int m, int n) {
 }  // namespace
 
 MipTexture::MipTexture(int width, int height, int channels, std::vector<float> texels,
-                       TextureWrap wrap)
+                       TextureWraps wrap)
     : channels_(channels), wrap_(wrap) {
     if (width < 1 || height < 1 || channels < 1 || channels > 4)
         fail("texture: {}x{} with {} channels (need a size of at least 1x1 and 1 to 4 channels)",
@@ -81,8 +81,8 @@ MipTexture::MipTexture(int width, int height, int channels, std::vector<float> t
     }
 }
 
-int MipTexture::wrap_index(int i, int n) const {
-    switch (wrap_) {
+int wrap_texel_index(int i, int n, TextureWrap wrap) {
+    switch (wrap) {
         case TextureWrap::Clamp:
             return std::clamp(i, 0, n - 1);
         case TextureWrap::Mirror: {
@@ -109,19 +109,19 @@ glm::vec4 MipTexture::bilinear(int level, glm::vec2 uv) const {
     const float tx = float(x - fx0), ty = float(y - fy0);
     // Indices of the two texels around f (texel units) under the wrap mode;
     // repeat and mirror first reduce f modulo 2n in double.
-    auto indices = [&](double f, int n, int out[2]) {
-        if (wrap_ == TextureWrap::Clamp) {
+    auto indices = [&](double f, int n, TextureWrap wrap, int out[2]) {
+        if (wrap == TextureWrap::Clamp) {
             const int i = int(std::clamp(f, -1.0, double(n)));
             out[0] = std::clamp(i, 0, n - 1), out[1] = std::clamp(i + 1, 0, n - 1);
             return;
         }
         const double period = 2.0 * n;
         const int i = int(f - period * std::floor(f / period));
-        out[0] = wrap_index(i, n), out[1] = wrap_index(i + 1, n);
+        out[0] = wrap_texel_index(i, n, wrap), out[1] = wrap_texel_index(i + 1, n, wrap);
     };
     int cx[2], cy[2];
-    indices(fx0, l.width, cx);
-    indices(fy0, l.height, cy);
+    indices(fx0, l.width, wrap_.u, cx);
+    indices(fy0, l.height, wrap_.v, cy);
     glm::vec4 out(0.0f);
     for (int ch = 0; ch < channels_; ++ch) {
         auto t = [&](int i, int j) {

@@ -19,6 +19,20 @@ namespace glintlab {
 
 enum class TextureWrap { Repeat, Clamp, Mirror };
 
+// The wrap along u (OpenGL's s) and along v (its t); glTF samplers set the
+// two apart (wrapS, wrapT), e.g. a label repeating around a bottle and
+// clamped at its top and bottom.
+struct TextureWraps {
+    TextureWrap u = TextureWrap::Repeat, v = TextureWrap::Repeat;
+    constexpr TextureWraps() = default;
+    constexpr TextureWraps(TextureWrap both) : u(both), v(both) {}  // NOLINT: one mode for both
+    constexpr TextureWraps(TextureWrap u_wrap, TextureWrap v_wrap) : u(u_wrap), v(v_wrap) {}
+    bool operator==(const TextureWraps&) const = default;
+};
+
+// Index i of a row or column of n texels under `wrap`.
+int wrap_texel_index(int i, int n, TextureWrap wrap);
+
 class MipTexture {
   public:
     static constexpr int kMaxAnisotropy = 16;
@@ -29,13 +43,13 @@ class MipTexture {
     // 0 over the texel's own rectangle of the unit square (fractional
     // overlaps where a size is odd), so a constant image stays constant and
     // every level keeps the image's mean.
-    MipTexture(int width, int height, int channels, std::vector<float> texels, TextureWrap wrap);
+    MipTexture(int width, int height, int channels, std::vector<float> texels, TextureWraps wrap);
 
     int width(int level = 0) const { return levels_[size_t(level)].width; }
     int height(int level = 0) const { return levels_[size_t(level)].height; }
     int channels() const { return channels_; }
     int level_count() const { return int(levels_.size()); }
-    TextureWrap wrap() const { return wrap_; }
+    TextureWraps wrap() const { return wrap_; }
     // Texel (x, y) of `level`, channel c (no wrapping: x, y inside the level).
     float texel(int level, int x, int y, int c) const {
         const Level& l = levels_[size_t(level)];
@@ -68,10 +82,9 @@ class MipTexture {
         int width = 0, height = 0;
         std::vector<float> texels;
     };
-    int wrap_index(int i, int n) const;
     std::vector<Level> levels_;
     int channels_ = 1;
-    TextureWrap wrap_ = TextureWrap::Repeat;
+    TextureWraps wrap_;
     glm::vec4 max_{0.0f};
 };
 

@@ -64,6 +64,25 @@ TEST(MipTexture, BilinearWrapsRepeatClampAndMirror) {
     EXPECT_NEAR(repeat.bilinear(0, {1e6f + 0.375f, 0.5f}).x, 1.0f, 1e-3f);
 }
 
+TEST(MipTexture, UAndVWrapApart) {
+    // 4x4: texel (x, y) holds 10 y + x.
+    std::vector<float> t(16);
+    for (int y = 0; y < 4; ++y)
+        for (int x = 0; x < 4; ++x) t[size_t(y * 4 + x)] = float(10 * y + x);
+    const MipTexture repeat_clamp(4, 4, 1, t, {TextureWrap::Repeat, TextureWrap::Clamp});
+    const MipTexture clamp_mirror(4, 4, 1, t, {TextureWrap::Clamp, TextureWrap::Mirror});
+    // Past the far corner: u repeats to column 0, v clamps to row 3.
+    EXPECT_NEAR(repeat_clamp.bilinear(0, {1.125f, 1.125f}).x, 30.0f, 1e-5f);
+    // Before the near corner: u clamps to column 0, v mirrors to row 1.
+    EXPECT_NEAR(clamp_mirror.bilinear(0, {-0.375f, -0.375f}).x, 10.0f, 1e-5f);
+    // The anisotropic filter wraps its probes the same way: a footprint
+    // straddling v = 1 reads rows 3 (clamped) only on the v-clamped texture.
+    const glm::vec2 du(0.0f), dv(0.0f, 0.25f);
+    EXPECT_NEAR(repeat_clamp.filtered({0.125f, 1.125f}, du, dv).x, 30.0f, 1e-4f);
+    EXPECT_EQ(repeat_clamp.wrap(), (TextureWraps{TextureWrap::Repeat, TextureWrap::Clamp}));
+    EXPECT_NE(repeat_clamp.wrap(), TextureWraps(TextureWrap::Repeat));
+}
+
 TEST(MipTexture, ConstantImageStaysConstantAtEveryLevelAndFootprint) {
     const MipTexture tex(13, 9, 3, std::vector<float>(13 * 9 * 3, 0.25f), TextureWrap::Repeat);
     for (float s : {1e-4f, 0.01f, 0.3f, 5.0f}) {

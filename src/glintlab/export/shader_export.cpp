@@ -224,6 +224,8 @@ std::string in_hlsl_terms(std::string text) {
         {std::regex(R"(\bsampler2D\b)"), "Texture2D + SamplerState"},
         {std::regex(R"(-dFdy in OpenGL window space)"), "ddy_fine as translated"},
         {std::regex(R"(\bdFdy\b)"), "ddy"},
+        {std::regex(R"(\bdFdx\b)"), "ddx"},
+        {std::regex(R"(unused\n(\s*)samplers)"), "unused\n$1Texture2D slots"},
         {std::regex(R"(Uniforms of every model)"), "Constants (cbuffer) of every model"},
         {std::regex(R"(uniform only)"), "constant only"},
         {std::regex(R"(\(uniform, type)"), "(constant, type"},
@@ -309,7 +311,7 @@ std::string header(const GlintModelDescriptor& d, ExportLanguage lang, const std
          "          box means, trilinear; bit i of u_input_texture_mask turns input i on\n"
          "          (0 density, 1 alpha, 2 color, 3 base_albedo, 4 normal map); uv' =\n"
          "          u_input_texture_linear[i] uv + u_input_texture_offset[i]. Point the unused\n"
-         "          samplers at a unit holding any 2D texture that is not the render target.\n"
+         "          samplers at any 2D texture that is not the render target.\n"
          "  Normal map (LEAN mapping): u_input_normal_slopes (RGBA) holds each texel's slope\n"
          "          s = (-x/z, -y/z) of its tangent-space unit normal and (s_x^2, s_y^2) of the\n"
          "          bilinear surface over the texel's cell, mip-mapped (box means).\n"
@@ -374,8 +376,29 @@ void run_tool(const std::string& command, const std::string& what, const fs::pat
     }
 }
 
+// SPIRV-Cross writes each resource's register from the binding glslang
+// auto-mapped from the uniform's location (up to s105 and t105, past
+// Direct3D 11's 16 sampler and 128 texture slots), and GLSL's separate
+// buffer and image bindings can meet in one u register. Each declaration
+// gets the next register of its class (t, s, u, b) instead.
+std::string compact_hlsl_registers(const std::string& hlsl) {
+    static const std::regex reg(R"(: register\(([tsub])\d+\))");
+    std::map<char, int> next;
+    std::string out;
+    auto from = hlsl.cbegin();
+    for (std::sregex_iterator it(hlsl.begin(), hlsl.end(), reg), end; it != end; ++it) {
+        const std::smatch& m = *it;
+        const char kind = m[1].str()[0];
+        out.append(from, m[0].first);
+        out += fmt::format(": register({}{})", kind, next[kind]++);
+        from = m[0].second;
+    }
+    out.append(from, hlsl.cend());
+    return out;
+}
+
 // GLSL 4.50 -> SPIR-V (glslang, OpenGL semantics: loose uniforms allowed)
-// -> HLSL SM 5.0 (SPIRV-Cross).
+// -> HLSL SM 5.0 (SPIRV-Cross), registers compacted.
 std::string glsl_to_hlsl(const ExportOptions& o, const std::string& glsl, const std::string& stage,
                          const std::string& name) {
     const fs::path tmp = fs::temp_directory_path() /
@@ -391,7 +414,7 @@ std::string glsl_to_hlsl(const ExportOptions& o, const std::string& glsl, const 
     run_tool(fmt::format("{} {} --hlsl --shader-model 50 --output {}", quote_arg(o.spirv_cross),
                          quote_arg(spv.string()), quote_arg(hlsl.string())),
              fmt::format("spirv-cross (SPIR-V -> HLSL) of {}", name), tmp / "spirv_cross.log");
-    std::string out = read_file(hlsl);
+    std::string out = compact_hlsl_registers(read_file(hlsl));
     fs::remove_all(tmp);
     return out;
 }
@@ -628,7 +651,10 @@ std::vector<ExportedFile> export_model(const ExportOptions& o) {
             const std::string glsl = text;
             text = header(*d, o.language, variant ? m->variant_glue : m->glue, glsl) +
                    "// Entry point: main (pixel stage). Uniform names are those of the GLSL\n"
-                   "// export (global uniforms, SPIRV-Cross's $Globals constant buffer).\n" +
+                   "// export (global uniforms, SPIRV-Cross's $Globals constant buffer).\n"
+                   "// Registers: numbered in declaration order per class (t0, t1, ...;\n"
+                   "// s0, s1, ...: under Direct3D 11's 16 sampler slots); texture NAME's\n"
+                   "// SamplerState is _NAME_sampler.\n" +
                    glsl_to_hlsl(o, glsl, "frag", model + suffix);
         }
         add(name, "fragment_shader", text);

@@ -10,9 +10,12 @@
 #include <cstdlib>
 #include <fstream>
 #include <map>
+#include <regex>
 #include <set>
 #include <sstream>
+#include <string>
 #include <utility>
+#include <vector>
 
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
@@ -53,6 +56,39 @@ std::pair<int, std::string> validate(const fs::path& file, ExportLanguage lang, 
     const fs::path log = file.string() + ".log";
     const int status = std::system((cmd + " > " + log.string() + " 2>&1").c_str());
     return {status, slurp(log)};
+}
+
+// An HLSL file speaks HLSL: its header comment names no GLSL type, sampler
+// or built-in, and its registers fit Direct3D 11's slots (16 samplers, 128
+// shader resources, 8 UAVs of a pixel or compute stage), each used once per
+// class, each SamplerState named after its texture.
+void expect_hlsl_terms_and_registers(const std::string& name, const std::string& text) {
+    std::string comment;
+    std::istringstream lines(text);
+    for (std::string line; std::getline(lines, line) && line.rfind("//", 0) == 0;)
+        comment += line + "\n";
+    static const std::regex glsl_words(
+        R"(\b(vec[234]|ivec[234]|uvec[234]|mat[234]|sampler2D\w*|sampler3D|samplerCube\w*|)"
+        R"(dFdx\w*|dFdy\w*|textureLod|textureGrad|texelFetch|textureSize|gl_\w+|texture unit)\b)");
+    std::smatch m;
+    EXPECT_FALSE(std::regex_search(comment, m, glsl_words)) << name << ": " << m.str();
+    static const std::regex reg(R"((\w+) : register\(([tsu])(\d+)\))");
+    std::map<char, std::set<int>> used;
+    std::set<std::string> textures;
+    std::vector<std::string> samplers;
+    for (std::sregex_iterator it(text.begin(), text.end(), reg), end; it != end; ++it) {
+        const char kind = (*it)[2].str()[0];
+        const int slot = std::stoi((*it)[3].str());
+        EXPECT_TRUE(used[kind].insert(slot).second) << name << ": " << kind << slot << " twice";
+        EXPECT_LT(slot, kind == 's' ? 16 : kind == 'u' ? 8 : 128) << name << ": " << (*it)[0];
+        if (kind == 't') textures.insert((*it)[1]);
+        if (kind == 's') samplers.push_back((*it)[1]);
+    }
+    for (const std::string& s : samplers) {
+        const bool paired = s.size() > 9 && s.front() == '_' && s.ends_with("_sampler") &&
+                            textures.contains(s.substr(1, s.size() - 9));
+        EXPECT_TRUE(paired) << name << ": " << s << " samples no texture";
+    }
 }
 
 struct Case {
@@ -111,6 +147,7 @@ TEST_P(ExportEach, EveryFileCompilesStandaloneAndTheManifestMatches) {
                 EXPECT_NE(text.find(std::to_string(cit.year)), std::string::npos) << f.name;
             EXPECT_NE(text.find(std::string("glintlab ") + GLINTLAB_VERSION), std::string::npos);
         }
+        if (c.lang == ExportLanguage::Hlsl) expect_hlsl_terms_and_registers(f.name, text);
         const auto [status, log] = validate(path, c.lang, f.kind == "compute_shader");
         EXPECT_EQ(status, 0) << f.name << ":\n" << log;
     }

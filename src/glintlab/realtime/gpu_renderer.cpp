@@ -568,11 +568,13 @@ struct GpuRenderer::Impl {
                                 GL_FLOAT, tex->level_texels(level).data());
         glTextureParameteri(t.get(), GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
         glTextureParameteri(t.get(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-        const GLint wrap = tex->wrap() == TextureWrap::Clamp    ? GL_CLAMP_TO_EDGE
-                           : tex->wrap() == TextureWrap::Mirror ? GL_MIRRORED_REPEAT
-                                                                : GL_REPEAT;
-        glTextureParameteri(t.get(), GL_TEXTURE_WRAP_S, wrap);
-        glTextureParameteri(t.get(), GL_TEXTURE_WRAP_T, wrap);
+        auto gl_wrap = [](TextureWrap w) -> GLint {
+            return w == TextureWrap::Clamp    ? GL_CLAMP_TO_EDGE
+                   : w == TextureWrap::Mirror ? GL_MIRRORED_REPEAT
+                                              : GL_REPEAT;
+        };
+        glTextureParameteri(t.get(), GL_TEXTURE_WRAP_S, gl_wrap(tex->wrap().u));
+        glTextureParameteri(t.get(), GL_TEXTURE_WRAP_T, gl_wrap(tex->wrap().v));
         if (grey) {
             const GLint swizzle[4] = {GL_RED, GL_RED, GL_RED, GL_ONE};
             glTextureParameteriv(t.get(), GL_TEXTURE_SWIZZLE_RGBA, swizzle);

@@ -472,5 +472,25 @@ TEST(GpuTextured, TheTexturedGltfAssetMatchesTheCpu) {
     }
 }
 
+TEST(GpuTextured, UAndVWrapApartAsOnTheCpu) {
+    GLINTLAB_REQUIRE_GL();
+    const TexturedScenes t;
+    // The quad's uv runs over [0, 4]²: the colour's v ramp repeats four
+    // times under "repeat" and holds its last row past v = 1 under "clamp".
+    auto material = [](const nlohmann::json& wrap) {
+        return nlohmann::json{{"type", "diffuse"},
+                              {"albedo", {{"texture", "colour.png"}, {"wrap", wrap}}}};
+    };
+    const Scene apart = t.scene(material(nlohmann::json::array({"mirror", "clamp"})));
+    expect_agreement("wrap_mirror_clamp", apart, 0.03, 0.05);
+    // The per-axis wrap changes the image (so the agreement above tests it).
+    const Scene both = t.scene(material("mirror"));
+    GpuRenderer a(apart), b(both);
+    a.render(apart);
+    b.render(both);
+    const ImageAgreement d = compare_images(a.read_image(), b.read_image(), 8, 0.02f, 0.1f);
+    EXPECT_GT(d.smoothed_relative_l1, 0.1);
+}
+
 }  // namespace
 }  // namespace glintlab

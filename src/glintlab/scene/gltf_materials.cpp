@@ -4,6 +4,7 @@
 #include <cmath>
 #include <numbers>
 #include <set>
+#include <utility>
 
 #include <fmt/format.h>
 
@@ -102,11 +103,16 @@ class Translator {
             size_t(sampler) < samplers->size()) {
             const nlohmann::json& smp = (*samplers)[size_t(sampler)];
             const int s = integer_or(smp, "wrapS", 10497), t = integer_or(smp, "wrapT", 10497);
+            for (const auto& [axis, mode] : {std::pair{"wrapS", s}, std::pair{"wrapT", t}})
+                if (mode != 10497 && mode != 33071 && mode != 33648)
+                    out_.unread.push_back(fmt::format(
+                        "{}: sampler {} {} {} is not a glTF wrap mode (10497, 33071, 33648); "
+                        "read as repeat",
+                        what, sampler, axis, mode));
             if (std::string_view(wrap_name(s)) != wrap_name(t))
-                out_.unread.push_back(fmt::format(
-                    "{}: sampler {} wraps s and t differently ({} and {}); both wrap as s does",
-                    what, sampler, wrap_name(s), wrap_name(t)));
-            if (s != 10497) block["wrap"] = wrap_name(s);
+                block["wrap"] = nlohmann::json::array({wrap_name(s), wrap_name(t)});
+            else if (std::string_view(wrap_name(s)) != "repeat")
+                block["wrap"] = wrap_name(s);
         }
         return block;
     }

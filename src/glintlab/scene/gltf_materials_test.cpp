@@ -103,8 +103,14 @@ TEST(GltfMaterials, WhatIsNotReadIsNamedAndTwoUvSetsAreAnError) {
     EXPECT_NE(unread.find("alphaMode BLEND"), std::string::npos) << unread;
     EXPECT_NE(unread.find("KHR_materials_clearcoat"), std::string::npos) << unread;
     EXPECT_NE(unread.find("ior 1 (outside (1, 4]"), std::string::npos) << unread;
-    EXPECT_NE(unread.find("wraps s and t differently (repeat and mirror)"), std::string::npos)
-        << unread;
+    EXPECT_EQ(unread.find("wrap"), std::string::npos) << unread;  // s and t apart: read
+    EXPECT_EQ(odd.block["base_color"]["wrap"], json::array({"repeat", "mirror"}));
+    doc["samplers"][1]["wrapS"] = 1234;
+    std::string bad_wrap;
+    for (const std::string& u : translate_gltf_material(doc, 0, kImages, "f.glb").unread)
+        bad_wrap += u + "|";
+    EXPECT_NE(bad_wrap.find("sampler 1 wrapS 1234 is not a glTF wrap mode"), std::string::npos)
+        << bad_wrap;
 
     json two_sets = textured_paint();
     two_sets["normalTexture"]["texCoord"] = 1;

@@ -16,21 +16,6 @@ namespace {
 // slopes grow without bound towards the plane and no lobe is defined below it.
 constexpr float kMinNormalZ = 0.05f;
 
-int wrapped(int i, int n, TextureWrap wrap) {
-    switch (wrap) {
-        case TextureWrap::Repeat:
-            return ((i % n) + n) % n;
-        case TextureWrap::Clamp:
-            return std::clamp(i, 0, n - 1);
-        case TextureWrap::Mirror: {
-            const int period = 2 * n;
-            const int j = ((i % period) + period) % period;
-            return j < n ? j : period - 1 - j;
-        }
-    }
-    return 0;
-}
-
 // The second moments (s_x², s_y², s_x s_y) of the surface the bilinear
 // lookup reconstructs, averaged over each texel's cell. LEAN mapping as
 // published squares the texels, which overstates the spread of a bilinear
@@ -41,14 +26,14 @@ int wrapped(int i, int n, TextureWrap wrap) {
 // s² is of degree 2 in each coordinate: 2 × 2 Gauss–Legendre points per
 // square integrate it exactly.
 std::vector<float> bilinear_cell_moments(const std::vector<glm::vec2>& s, int width, int height,
-                                         TextureWrap wrap) {
+                                         TextureWraps wrap) {
     const float g = 0.25f / std::sqrt(3.0f);  // node offset in a half-texel interval
     const float nodes[4] = {-0.25f - g, -0.25f + g, 0.25f - g, 0.25f + g};
     std::vector<float> out;
     out.reserve(s.size() * 3);
     auto at = [&](int x, int y) {
-        return s[size_t(wrapped(y, height, wrap)) * size_t(width) +
-                 size_t(wrapped(x, width, wrap))];
+        return s[size_t(wrap_texel_index(y, height, wrap.v)) * size_t(width) +
+                 size_t(wrap_texel_index(x, width, wrap.u))];
     };
     for (int y = 0; y < height; ++y)
         for (int x = 0; x < width; ++x) {
@@ -103,7 +88,7 @@ std::shared_ptr<const NormalMap> read_normal_map(JsonObject& material, std::stri
         b.error("mixture", fmt::format("applies only to \"filtering\": \"lean_mixture\" (here "
                                        "\"{}\")",
                                        filtering));
-    const TextureWrap wrap = read_texture_wrap(b);
+    const TextureWraps wrap = read_texture_wrap(b);
     const TextureUvTransform transform = read_uv_transform(b);
     b.finish();
     if (image->grey())

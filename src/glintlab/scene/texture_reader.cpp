@@ -1,9 +1,11 @@
 #include "glintlab/scene/texture_reader.h"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include "glintlab/core/error.h"
 #include "glintlab/core/image.h"
@@ -68,11 +70,23 @@ TextureSource read_texture_source(JsonObject& b, TextureFileCache& files) {
     return source;
 }
 
-TextureWrap read_texture_wrap(JsonObject& b) {
-    const std::string wrap_name = b.string("wrap", "repeat", kWraps);
-    return wrap_name == "clamp"    ? TextureWrap::Clamp
-           : wrap_name == "mirror" ? TextureWrap::Mirror
-                                   : TextureWrap::Repeat;
+TextureWraps read_texture_wrap(JsonObject& b) {
+    auto mode = [](const std::string& name) {
+        return name == "clamp"    ? TextureWrap::Clamp
+               : name == "mirror" ? TextureWrap::Mirror
+                                  : TextureWrap::Repeat;
+    };
+    const nlohmann::json* v = b.has("wrap") ? b.raw("wrap") : nullptr;
+    if (!v || !v->is_array()) return mode(b.string("wrap", "repeat", kWraps));
+    auto known = [](const nlohmann::json& e) {
+        return e.is_string() &&
+               std::find(kWraps.begin(), kWraps.end(), e.get<std::string>()) != kWraps.end();
+    };
+    if (v->size() != 2 || !known((*v)[0]) || !known((*v)[1]))
+        b.error("wrap", fmt::format("got {}: allowed one of {} or a list of two of them "
+                                    "([along u, along v])",
+                                    v->dump(), fmt::join(kWraps, ", ")));
+    return {mode((*v)[0].get<std::string>()), mode((*v)[1].get<std::string>())};
 }
 
 bool is_texture_form(JsonObject& o, std::string_view key) {
@@ -124,7 +138,7 @@ std::shared_ptr<const TextureInput> read_texture_block(JsonObject& b, const Text
     // value = (offset + scale x texel)^power: 2 turns glTF's perceptual
     // roughness maps into α.
     const int power = b.integer("power", 1, 1, 2);
-    const TextureWrap wrap = read_texture_wrap(b);
+    const TextureWraps wrap = read_texture_wrap(b);
     auto input = std::make_shared<TextureInput>();
     input->transform = read_uv_transform(b);
     input->source = file.string();

@@ -45,9 +45,10 @@ struct TextureSource {
     std::shared_ptr<const TextureImage> image;
 };
 TextureSource read_texture_source(JsonObject& block, TextureFileCache& files);
-// The block's "uv_transform" (KHR_texture_transform's keys) and "wrap".
+// The block's "uv_transform" (KHR_texture_transform's keys) and "wrap" (a
+// mode for both axes, or [along u, along v]).
 TextureUvTransform read_uv_transform(JsonObject& block);
-TextureWrap read_texture_wrap(JsonObject& block);
+TextureWraps read_texture_wrap(JsonObject& block);
 
 // True when `key` holds an object (the texture form) rather than a number or colour.
 bool is_texture_form(JsonObject& o, std::string_view key);

@@ -187,6 +187,21 @@ TEST(TextureReader, ErrorsNameTheFileTheJsonPathAndTheRange) {
     const std::string wrap =
         t.error({{"type", "glint"}, {"roughness", {{"texture", "grey.png"}, {"wrap", "tile"}}}});
     EXPECT_NE(wrap.find("mirror"), std::string::npos) << wrap;
+    for (const nlohmann::json& bad :
+         {nlohmann::json::array({"repeat"}), nlohmann::json::array({"repeat", "tile"}),
+          nlohmann::json::array({"clamp", "clamp", "clamp"})}) {
+        const std::string e =
+            t.error({{"type", "glint"}, {"roughness", {{"texture", "grey.png"}, {"wrap", bad}}}});
+        EXPECT_NE(e.find("/materials/0/roughness/wrap"), std::string::npos) << e;
+        EXPECT_NE(e.find("[along u, along v]"), std::string::npos) << e;
+    }
+    const Scene apart =
+        t.load({{"type", "glint"},
+                {"roughness",
+                 {{"texture", "grey.png"}, {"wrap", nlohmann::json::array({"mirror", "clamp"})}}}});
+    ASSERT_TRUE(apart.materials[0].glint.textures && apart.materials[0].glint.textures->alpha_x_sq);
+    EXPECT_EQ(apart.materials[0].glint.textures->alpha_x_sq->texture->wrap(),
+              (TextureWraps{TextureWrap::Mirror, TextureWrap::Clamp}));
     const std::string unknown =
         t.error({{"type", "glint"}, {"roughness", {{"texture", "grey.png"}, {"gamma", 2}}}});
     EXPECT_NE(unknown.find("gamma"), std::string::npos) << unknown;
