@@ -29,10 +29,11 @@ namespace {
 // every filtered model assumes; docs/VALIDATION.md.)
 const std::vector<std::string>& scene_list() {
     static const std::vector<std::string> list = {
-        "sphere_city",         "sphere_courtyard", "plane25_forest",
-        "plane25_interior",    "gltf_night",       "gltf_studio",
-        "sphere_sunrise",      "sphere_sunset",    "lights_point_directional",
-        "lights_sphere_light", "textured_lights",  "textured_sphere_forest"};
+        "sphere_city",          "sphere_courtyard", "plane25_forest",
+        "plane25_interior",     "gltf_night",       "gltf_studio",
+        "sphere_sunrise",       "sphere_sunset",    "lights_point_directional",
+        "lights_sphere_light",  "textured_lights",  "textured_sphere_forest",
+        "textured_dense_lights"};
     return list;
 }
 
