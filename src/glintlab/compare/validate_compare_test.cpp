@@ -172,7 +172,7 @@ TEST(CompareValidation, RejectsUnknownScenesAndSizes) {
     o.scenes = {"sphere_city"};
     o.size = 4;
     EXPECT_THROW(validate_compare(o), Error);
-    EXPECT_EQ(compare_scene_names().size(), 12u);
+    EXPECT_EQ(compare_scene_names().size(), 13u);
 }
 
 }  // namespace
