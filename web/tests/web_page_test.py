@@ -575,23 +575,13 @@ def warm_and_blue(hdr):
     return warm.sum() / n, blue.sum() / n, lit.sum() / cover.size
 
 
-# 600 mutations of a .glb (its bytes truncated or overwritten, or members of
-# its JSON replaced by values of other types), each read by readGlb.
-FUZZ_SCRIPT = r"""
-const [b64, n, done] = arguments;
-import('./gltf_asset.js').then(async ({readGlb, AssetError}) => {
+# JavaScript for the scripts below: the .glb of `b64` as its JSON `json` and
+# binary chunk `bin`, and glb(j), a .glb of JSON j with the same binary chunk.
+GLB_PARTS = r"""
   const base = Uint8Array.from(atob(b64), (c) => c.charCodeAt(0));
   const jlen = new DataView(base.buffer).getUint32(12, true);
   const json = JSON.parse(new TextDecoder().decode(base.subarray(20, 20 + jlen)));
   const bin = base.subarray(20 + jlen);
-  let seed = 7;
-  const rand = () => { seed = (seed * 1103515245 + 12345) & 0x7fffffff; return seed / 0x7fffffff; };
-  const VALUES = [null, 5, -1, 'x', [], {}, 1e9, 0.5, [1, 2], true];
-  const paths = (o, p = [], out = []) => {
-    if (o && typeof o === 'object') for (const k of Object.keys(o)) { out.push([...p, k]); paths(o[k], [...p, k], out); }
-    return out;
-  };
-  const all = paths(json);
   const glb = (j) => {
     const t0 = new TextEncoder().encode(JSON.stringify(j));
     const t = new Uint8Array(t0.length + (4 - t0.length % 4) % 4).fill(32); t.set(t0);
@@ -602,6 +592,21 @@ import('./gltf_asset.js').then(async ({readGlb, AssetError}) => {
     out.set(t, 20); out.set(bin, 20 + t.length);
     return out.buffer;
   };
+"""
+
+# 600 mutations of a .glb (its bytes truncated or overwritten, or members of
+# its JSON replaced by values of other types), each read by readGlb.
+FUZZ_SCRIPT = r"""
+const [b64, n, done] = arguments;
+import('./gltf_asset.js').then(async ({readGlb, AssetError}) => {
+""" + GLB_PARTS + r"""  let seed = 7;
+  const rand = () => { seed = (seed * 1103515245 + 12345) & 0x7fffffff; return seed / 0x7fffffff; };
+  const VALUES = [null, 5, -1, 'x', [], {}, 1e9, 0.5, [1, 2], true];
+  const paths = (o, p = [], out = []) => {
+    if (o && typeof o === 'object') for (const k of Object.keys(o)) { out.push([...p, k]); paths(o[k], [...p, k], out); }
+    return out;
+  };
+  const all = paths(json);
   const r = {asset: 0, ok: 0, other: 0, examples: []};
   for (let it = 0; it < n; ++it) {
     let buf;
@@ -640,21 +645,7 @@ import('./gltf_asset.js').then(async ({readGlb, AssetError}) => {
 WRAP_SCRIPT = r"""
 const [b64, done] = arguments;
 import('./gltf_asset.js').then(async ({readGlb}) => {
-  const base = Uint8Array.from(atob(b64), (c) => c.charCodeAt(0));
-  const jlen = new DataView(base.buffer).getUint32(12, true);
-  const json = JSON.parse(new TextDecoder().decode(base.subarray(20, 20 + jlen)));
-  const bin = base.subarray(20 + jlen);
-  const glb = (j) => {
-    const t0 = new TextEncoder().encode(JSON.stringify(j));
-    const t = new Uint8Array(t0.length + (4 - t0.length % 4) % 4).fill(32); t.set(t0);
-    const out = new Uint8Array(20 + t.length + bin.length);
-    const v = new DataView(out.buffer);
-    v.setUint32(0, 0x46546c67, true); v.setUint32(4, 2, true); v.setUint32(8, out.length, true);
-    v.setUint32(12, t.length, true); v.setUint32(16, 0x4e4f534a, true);
-    out.set(t, 20); out.set(bin, 20 + t.length);
-    return out.buffer;
-  };
-  const read = async (wrapT) => {
+""" + GLB_PARTS + r"""  const read = async (wrapT) => {
     const j = JSON.parse(JSON.stringify(json));
     j.samplers = [{wrapS: 33071, wrapT}];
     for (const t of j.textures) t.sampler = 0;
