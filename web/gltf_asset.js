@@ -390,17 +390,25 @@ async function textureOf(r, info, path) {
   if (texCoord !== 0) r.warnings.push(`${path}: TEXCOORD_${texCoord} read as TEXCOORD_0 (the page carries one uv set)`);
   // The sampler's wrapS and wrapT, apart (glTF's values are WebGL's enums);
   // an unknown value repeats, as the native loader reads it, and is named.
+  // Every map is filtered over the pixel footprint (trilinear, mip-mapped):
+  // a sampler's nearest or unmipmapped filter is named, not followed. A
+  // sampler the file lacks is named and read as glTF's default.
   const wrap = [WRAP_REPEAT, WRAP_REPEAT];
-  if (texture.sampler !== undefined) {
-    const sampler = r.item('samplers', texture.sampler, `textures[${info.index}].sampler`);
+  const warnOnce = (w) => { if (!r.warnings.includes(w)) r.warnings.push(w); };
+  const samplers = r.json.samplers;
+  const sampler = texture.sampler === undefined ? undefined : samplers?.[texture.sampler];
+  if (texture.sampler !== undefined && (sampler === null || typeof sampler !== 'object' || Array.isArray(sampler))) {
+    warnOnce(`textures[${info.index}].sampler ${JSON.stringify(texture.sampler)} is not one of the file's samplers; read as repeat, filtered`);
+  } else if (sampler) {
     ['wrapS', 'wrapT'].forEach((axis, i) => {
       const mode = sampler[axis] ?? WRAP_REPEAT;
       if (WRAP_MODES.includes(mode)) wrap[i] = mode;
-      else {
-        const w = `samplers[${texture.sampler}].${axis} ${JSON.stringify(mode)} is not a glTF wrap mode; read as repeat`;
-        if (!r.warnings.includes(w)) r.warnings.push(w);  // once, however many textures share it
-      }
+      else warnOnce(`samplers[${texture.sampler}].${axis} ${JSON.stringify(mode)} is not a glTF wrap mode; read as repeat`);
     });
+    const mag = sampler.magFilter ?? 9729, min = sampler.minFilter ?? 9987;
+    if (mag === 9728 || min === 9728 || min === 9729)
+      warnOnce(`samplers[${texture.sampler}] asks for ${mag === 9728 || min === 9728 ? 'nearest' : 'unmipmapped'} ` +
+               `filtering (magFilter ${mag}, minFilter ${min}); the page filters every map over the pixel footprint`);
   }
   return {image: await decodeImage(r, texture.source, `textures[${info.index}].source`), linear, offset, wrap};
 }

@@ -639,22 +639,25 @@ import('./gltf_asset.js').then(async ({readGlb, AssetError}) => {
 """
 
 
-# The asset with its textures' sampler replaced: first wrapS CLAMP_TO_EDGE
-# and wrapT MIRRORED_REPEAT, then wrapT 1234 (not a glTF mode); returns the
-# first material's colour map wraps and the second read's warnings.
+# The asset with its textures' sampler replaced: wrapS CLAMP_TO_EDGE and
+# wrapT MIRRORED_REPEAT; wrapT 1234 (not a glTF mode); magFilter NEAREST;
+# an index past the samplers. Returns the colour map's wraps and warnings.
 WRAP_SCRIPT = r"""
 const [b64, done] = arguments;
 import('./gltf_asset.js').then(async ({readGlb}) => {
-""" + GLB_PARTS + r"""  const read = async (wrapT) => {
+""" + GLB_PARTS + r"""  const read = async (sampler, index = 0) => {
     const j = JSON.parse(JSON.stringify(json));
-    j.samplers = [{wrapS: 33071, wrapT}];
-    for (const t of j.textures) t.sampler = 0;
+    j.samplers = [sampler];
+    for (const t of j.textures) t.sampler = index;
     return readGlb(glb(j), 'samplers.glb');
   };
   try {
-    const apart = await read(33648), odd = await read(1234);
+    const apart = await read({wrapS: 33071, wrapT: 33648});
+    const odd = await read({wrapS: 33071, wrapT: 1234});
+    const nearest = await read({magFilter: 9728}), missing = await read({}, 9);
     const color = (a) => a.parts.map((p) => p.material).find((m) => m.maps.color)?.maps.color.wrap;
-    done({wraps: [color(apart), color(odd)], warnings: odd.warnings});
+    done({wraps: [color(apart), color(odd), color(missing)], warnings: odd.warnings,
+          nearest: nearest.warnings, missing: missing.warnings});
   } catch (e) {
     done({error: String(e)});
   }
@@ -770,11 +773,13 @@ def test_asset(page, export_dir):
     # Samplers: wrapS and wrapT reach the maps apart (as the native loader
     # reads them); a value outside glTF's three is named and repeats.
     r = page.driver.execute_async_script(WRAP_SCRIPT, glb_b64)
-    good = r.get("wraps") == [[33071, 33648], [33071, 10497]] and any(
-        "wrapT 1234 is not a glTF wrap mode" in w for w in r.get("warnings", [])) and sum(
-        "wrapT 1234" in w for w in r.get("warnings", [])) == 1
+    good = (r.get("wraps") == [[33071, 33648], [33071, 10497], [10497, 10497]]
+            and sum("wrapT 1234 is not a glTF wrap mode" in w for w in r.get("warnings", [])) == 1
+            and any("asks for nearest filtering" in w for w in r.get("nearest", []))
+            and any("sampler 9 is not one of the file's samplers" in w for w in r.get("missing", [])))
     print(f"{'ok  ' if good else 'FAIL'} asset samplers: colour map wraps {r.get('wraps')}, "
-          f"warnings {r.get('warnings')} {r.get('error', '')}")
+          f"warnings {r.get('warnings')}, nearest {r.get('nearest')}, missing {r.get('missing')} "
+          f"{r.get('error', '')}")
     ok = ok and good
     # The same file by URL (`asset=`): fetched as the page starts, kept in
     # the page's own URL; a missing file is an error naming the parameter

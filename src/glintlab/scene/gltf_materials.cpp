@@ -99,8 +99,14 @@ class Translator {
         use_uv_set(tex_coord, what);
         const int sampler = integer_or(texture, "sampler", -1);
         const nlohmann::json* samplers = member(gltf_, "samplers");
-        if (sampler >= 0 && samplers && samplers->is_array() &&
-            size_t(sampler) < samplers->size()) {
+        const bool listed =
+            sampler >= 0 && samplers && samplers->is_array() && size_t(sampler) < samplers->size();
+        if (sampler >= 0 && !listed)
+            out_.unread.push_back(
+                fmt::format("{}: sampler {} is not in the file's samplers; read as glTF's default "
+                            "(repeat, filtered)",
+                            what, sampler));
+        if (listed) {
             const nlohmann::json& smp = (*samplers)[size_t(sampler)];
             const int s = integer_or(smp, "wrapS", 10497), t = integer_or(smp, "wrapT", 10497);
             for (const auto& [axis, mode] : {std::pair{"wrapS", s}, std::pair{"wrapT", t}})
@@ -109,6 +115,17 @@ class Translator {
                         "{}: sampler {} {} {} is not a glTF wrap mode (10497, 33071, 33648); "
                         "read as repeat",
                         what, sampler, axis, mode));
+            // Every input is filtered over the pixel footprint (mip-mapped,
+            // anisotropic): a density map's footprint mean is the facet count
+            // the models need, which a nearest or unmipmapped lookup is not.
+            const int mag = integer_or(smp, "magFilter", 9729);
+            const int min = integer_or(smp, "minFilter", 9987);
+            if (mag == 9728 || min == 9728 || min == 9729)
+                out_.unread.push_back(fmt::format(
+                    "{}: sampler {} asks for {} filtering (magFilter {}, minFilter {}); glintlab "
+                    "filters every texture over the pixel footprint (linear, mip-mapped)",
+                    what, sampler, mag == 9728 || min == 9728 ? "nearest" : "unmipmapped", mag,
+                    min));
             if (std::string_view(wrap_name(s)) != wrap_name(t))
                 block["wrap"] = nlohmann::json::array({wrap_name(s), wrap_name(t)});
             else if (std::string_view(wrap_name(s)) != "repeat")

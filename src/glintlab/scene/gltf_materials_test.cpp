@@ -111,6 +111,18 @@ TEST(GltfMaterials, WhatIsNotReadIsNamedAndTwoUvSetsAreAnError) {
         bad_wrap += u + "|";
     EXPECT_NE(bad_wrap.find("sampler 1 wrapS 1234 is not a glTF wrap mode"), std::string::npos)
         << bad_wrap;
+    // Filters other than the footprint's, and a sampler the file lacks, are named.
+    doc["samplers"][1] = {{"magFilter", 9728}, {"minFilter", 9728}};
+    std::string nearest;
+    for (const std::string& u : translate_gltf_material(doc, 0, kImages, "f.glb").unread)
+        nearest += u + "|";
+    EXPECT_NE(nearest.find("sampler 1 asks for nearest filtering"), std::string::npos) << nearest;
+    doc["textures"][2]["sampler"] = 7;
+    std::string missing;
+    for (const std::string& u : translate_gltf_material(doc, 0, kImages, "f.glb").unread)
+        missing += u + "|";
+    EXPECT_NE(missing.find("sampler 7 is not in the file's samplers"), std::string::npos)
+        << missing;
 
     json two_sets = textured_paint();
     two_sets["normalTexture"]["texCoord"] = 1;
